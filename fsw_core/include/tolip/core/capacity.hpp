@@ -1,0 +1,35 @@
+// Compile-time capacities of the core, sized like the 1966 program (manual Sec. 9, 14, 22).
+//
+// Every fixed array in fsw_core is dimensioned from this header. Exceeding a capacity is
+// reported as a Status (never an overflow); see status.hpp.
+#pragma once
+
+namespace tolip {
+
+inline constexpr int kMaxConstraints = 13;                 // data block 8 / 19 / 29
+inline constexpr int kMaxPoweredSteps = 168;               // stages 1-5 together (data block 16)
+inline constexpr int kMaxPoweredStepsWithFollowingCoast = 177;  // stages 1-5 plus coast 6
+inline constexpr int kMaxIntegrationVariables = 240;       // Sec. 9 storage of the adjoint runs
+inline constexpr int kMaxLinearSegments = 15;              // data block 18 / 26
+inline constexpr int kMaxThrustPoints = 120;               // data block 30, all stages together
+inline constexpr int kMaxWeightPoints = 120;               // data block 38, all stages together
+inline constexpr int kMaxRadarStations = 20;               // data block 41
+inline constexpr int kMaxAdjustableParameters = 11;        // data block 6 / 27
+inline constexpr int kMaxClosedLoopPoints = 20;            // Sec. 5: closed loop for the first 20 points
+inline constexpr int kMaxStages = 10;                      // codes 1-5 powered, 6-10 coasts
+inline constexpr int kMaxPoweredStages = 5;
+
+// Tables whose size the manual fixes by its card formats.
+inline constexpr int kMaxAeroTablePoints = 20;   // blocks 31/32: 42E12.8 = blank + 20 pairs + 1.0E10
+inline constexpr int kMaxPitchTablePoints = 15;  // block 40: 32E12.8 = blank + 15 pairs + 1.0E10
+
+// Our choices where the manual sets no limit (docs/architecture.md, "Capacities").
+inline constexpr int kMinStage1Steps = 25;              // data block 16: "at least 25 steps in stage 1"
+inline constexpr int kMaxCoastSteps = 100;              // per coast; the manual asks for 10-15 s steps
+// Every integration point of one trajectory: all powered steps, all coast steps, the lift-off point
+// of stage 1 and the final point.
+inline constexpr int kMaxTrajectoryPoints = kMaxPoweredSteps + 5 * kMaxCoastSteps + 2;
+// Modified (Sec. 14) thrust table of one stage: one entry per integration time plus the lift-off one.
+inline constexpr int kMaxModifiedThrustPoints = kMaxPoweredSteps + 2;
+
+}  // namespace tolip

@@ -1,0 +1,181 @@
+// The case: every datum of the manual's data blocks 1-40 that the core uses, in internal units.
+//
+// A Mission is plain fixed-size data. Ground tools fill it from a deck (converting degrees,
+// nautical miles, ...) and call validate_mission() at the boundary; the core trusts a Mission
+// that validated. Field comments name the data block and word (manual Sec. 22).
+#pragma once
+
+#include "tolip/core/capacity.hpp"
+#include "tolip/core/constants.hpp"
+#include "tolip/core/status.hpp"
+#include "tolip/math/table.hpp"
+
+namespace tolip {
+
+using ThrustTable = Table<kMaxThrustPoints>;      // stage time s -> vacuum thrust lbf (block 30)
+using WeightTable = Table<kMaxWeightPoints>;      // stage time s -> consumable weight lb (block 38)
+using AeroTable = Table<kMaxAeroTablePoints>;     // Mach -> coefficient (blocks 31, 32)
+using PitchTable = Table<kMaxPitchTablePoints>;   // s from launch -> theta rad (block 40)
+
+// Stage codes (manual KK2): 1-5 powered, 6-10 the coasts after stages 1-5.
+inline constexpr bool is_powered_stage(int code) { return code >= 1 && code <= 5; }
+inline constexpr bool is_coast_stage(int code) { return code >= 6 && code <= 10; }
+inline constexpr int stage_index(int code) { return code - 1; }
+
+// Data block 5: the flown order, a prefix of 1 6 2 7 3 8 4 9 5 10 ending after any stage.
+struct StageSequence {
+  int codes[kMaxStages] = {};
+  int count = 0;
+};
+
+struct StageData {
+  bool in_sequence = false;
+  double duration_s = 0.0;           // block 16 DA1(2k-1); for powered stages the last table time
+  int integration_steps = 0;         // block 16 DA1(2k); stage 1 counts steps after lift-off
+  double jettison_weight_lb = 0.0;   // block 39 SGk(1), dropped at the end of the stage
+  double reference_area_ft2 = 0.0;   // block 39 SGk(2)
+  double nozzle_exit_area_ft2 = 0.0; // block 39 SGk(3); net thrust T = Tv - p Ae
+  ThrustTable vacuum_thrust_lbf;     // block 30, powered stages
+  WeightTable consumable_weight_lb;  // block 38, powered stages: consumable weight remaining
+  AeroTable drag_coefficient;        // block 31: stages 1, 6, 2 (empty: no drag)
+  bool uses_lift_table = false;      // block 32 is used in stages 1 and 6
+};
+
+struct Vehicle {
+  StageSequence sequence;
+  StageData stages[kMaxStages];      // indexed by stage_index(code)
+  AeroTable lift_curve_slope_per_rad;  // block 32, C_L per radian of alpha
+  double payload_lb = 0.0;           // part of the jettison weight of the last powered stage (Sec. 14)
+};
+
+// Data block 4. Named options of IP(1..24) that the core reads; the raw words are kept for echo.
+struct Options {
+  int ip[25] = {};  // ip[n] = IP(n), ip[0] unused
+  int payoff() const { return ip[1]; }                      // 0 payload, 1 velocity, 2 altitude
+  bool heating_constraint() const { return ip[2] == 1; }
+  bool exchange_ratios() const { return ip[3] == 1; }
+  int body_dynamics_6d() const { return ip[6]; }
+  bool linearization() const { return ip[7] == 1; }
+  int spin_stages_4_5() const { return ip[9]; }
+  int stage5_chi() const { return ip[10]; }
+  bool zero_alpha_window() const { return ip[11] == 1; }
+  bool alpha_zero_at_stage2_ignition() const { return ip[12] == 1; }
+  int qbar_constraint_type() const { return ip[13]; }
+  bool print_input() const { return ip[17] == 1; }
+  bool dispersions() const { return ip[21] == 1; }
+  bool hardover() const { return ip[22] == 1; }
+  bool impact() const { return ip[23] == 1; }
+  bool radar() const { return ip[24] == 1; }
+};
+
+// Data blocks 20 and 21 (angles in rad).
+struct LaunchConditions {
+  double liftoff_duration_s = 0.0;            // DA5(1): vertical lift-off
+  double launch_space_age_date_days = 0.0;    // DA5(2): Julian date - 2,436,934.5
+  double altitude_ft = 0.0;                   // DA6(1)
+  double longitude_rad = 0.0;                 // DA6(2), east positive
+  double geocentric_latitude_rad = 0.0;       // DA6(3)
+  double velocity_ft_s = 0.0;                 // DA6(4), must be 0
+  double azimuth_rad = 0.0;                   // DA6(5), east of north
+  double flight_path_angle_rad = 0.0;         // DA6(6), must be 90 deg
+  // Not in the manual (docs/theory/liftoff.md): dpsi/dt is held at zero on integration steps
+  // that start before this time, where gamma is near 90 deg and the psi equation is singular.
+  double heading_hold_until_s = 0.0;
+};
+
+// Data block 22 (times from launch; rates in rad/s).
+struct ControlConstraints {
+  double zero_alpha_start_s = 0.0;            // DA7(1)
+  double zero_alpha_end_s = 0.0;              // DA7(2)
+  double max_pitch_rate_rad_s = 0.0;          // DA7(3)
+  double min_pitch_rate_rad_s = 0.0;          // DA7(4)
+  double min_pitch_rate_change_rad_s = 0.0;   // DA7(5)
+};
+
+// Data block 17 (angles in rad).
+struct MiscellaneousData {
+  double stage4_theta_rad = 0.0;              // DA2(5)
+  double stage4_chi_rad = 0.0;                // DA2(6)
+  double nose_radius_ft = 0.0;                // DA2(7), heating rate (Sec. 13)
+  double gyro_uncage_s_before_launch = 0.0;   // DA2(8)
+  double stage5_theta_rad = 0.0;              // DA2(9)
+  double stage5_chi_rad = 0.0;                // DA2(10)
+  double payload_weighting_factor = 1.0;      // DA2(15)
+  double coast_change_limit_s = 0.0;          // DA2(16)
+  double minimum_coast_s = 0.0;               // DA2(17)
+};
+
+// Data blocks 8, 19, 29: the payoff first, then terminal, then stage-point constraints.
+struct ConstraintList {
+  int count = 0;                              // IB3(1), includes the payoff
+  int codes[kMaxConstraints + 1] = {};        // IB3(2..14); heating (14) may follow
+  double desired[kMaxConstraints + 1] = {};   // DA4, pure units (ft, rad, ft/s, n.mi., Btu/ft^2)
+  double deadband_optimization[kMaxConstraints] = {};   // DA14(1..12)
+  double deadband_linearization[kMaxConstraints] = {};  // DA14(14..25)
+};
+
+// Data blocks 6 and 27.
+struct AdjustableParameters {
+  int count = 0;
+  int codes[kMaxAdjustableParameters] = {};
+  double weights[kMaxAdjustableParameters] = {};
+};
+
+// Data block 18 (TLIN) and 26 (ETALIN).
+struct LinearizationData {
+  int segment_count = 0;
+  double coded_start_times[kMaxLinearSegments] = {};   // 100 n + t
+  double segment_weights[kMaxLinearSegments] = {};     // eta, default 1
+};
+
+// Data block 28 (DA13).
+struct ConvergenceData {
+  double initial_payoff_improvement = 0.0;
+  double stop_improvement = 0.0;
+  int max_forward_trajectories = 30;
+  int max_linearization_iterations = 4;
+};
+
+// Data block 9: output every n-th computed point, per stage, for the three kinds of trajectory.
+struct OutputFrequency {
+  int initial[kMaxStages] = {1, 1, 1, 1, 1, 1, 1, 1, 1, 1};
+  int intermediate[kMaxStages] = {1, 1, 1, 1, 1, 1, 1, 1, 1, 1};
+  int final_trajectory[kMaxStages] = {1, 1, 1, 1, 1, 1, 1, 1, 1, 1};
+};
+
+struct Mission {
+  char title[73] = {};        // block 1 (12A6)
+  char case_heading[73] = {}; // block 2
+  char date[13] = {};         // block 3
+  Options options;
+  Constants constants;
+  AtmosphereTable atmosphere;
+  Vehicle vehicle;
+  LaunchConditions launch;
+  ControlConstraints control;
+  MiscellaneousData misc;
+  ConstraintList constraints;
+  AdjustableParameters adjustable;
+  LinearizationData linearization;
+  ConvergenceData convergence;
+  OutputFrequency output;
+  PitchTable pitch_program_rad;  // block 40: theta (rad) vs time from launch (s)
+};
+
+// Where validate_mission() found a fault, in the manual's vocabulary.
+struct MissionFault {
+  int data_block = 0;   // manual data block number
+  int stage_code = 0;   // 0 when not stage-coded
+  const char* field = "";
+};
+
+// Checks the case at the boundary: sequence, capacities, tables, weights, durations, steps,
+// initial conditions. Returns kOk or the first fault, described in *fault.
+Status validate_mission(const Mission& mission, MissionFault* fault);
+
+// Vehicle weight (lb) in stage `code` at stage time t: consumable weight remaining of the current
+// powered stage + jettison weights of this and all later stages (+ payload) + the initial
+// consumable weights of all later stages.
+double vehicle_weight_lb(const Vehicle& vehicle, int code, double stage_time_s);
+
+}  // namespace tolip

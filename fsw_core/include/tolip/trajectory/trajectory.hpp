@@ -1,0 +1,74 @@
+// Forward trajectory (manual Sec. 4, 19, 22): closed-form vertical lift-off, then every stage of
+// the sequence with the RKAD integrator (RK4 in powered stages, RK4 start then Adams-Bashforth 4
+// in coasts), a commanded pitch program (data block 40), the zero-alpha window (IP(11)), alpha = 0
+// at stage-2 ignition (IP(12)) and spun-stage attitudes (data block 17). Every integration point
+// is stored in the caller's fixed storage.
+#pragma once
+
+#include "tolip/core/capacity.hpp"
+#include "tolip/core/state.hpp"
+#include "tolip/core/status.hpp"
+#include "tolip/mission/mission.hpp"
+#include "tolip/orbit/orbit_elements.hpp"
+#include "tolip/vehicle/prepared_case.hpp"
+
+namespace tolip {
+
+// One integration point: the state and what the equations of motion saw there.
+struct TrajectoryPoint {
+  double time_s = 0.0;          // from launch (TIMCT), coasts included
+  int stage_code = 0;
+  double stage_time_s = 0.0;
+  StateVector state = StateVector::Zero();
+  double altitude_ft = 0.0;     // above the oblate surface
+  double earth_longitude_rad = 0.0;   // tau - omega t
+  double geodetic_latitude_rad = 0.0;
+  double weight_lb = 0.0;
+  double vacuum_thrust_lbf = 0.0;     // modified (Sec. 14) table
+  double net_thrust_lbf = 0.0;        // Tv - p Ae
+  double dynamic_pressure_lbf_ft2 = 0.0;
+  double mach = 0.0;
+  double alpha_rad = 0.0;       // in-plane angle between thrust axis and V
+  double theta_rad = 0.0;       // pitch attitude in the platform frame
+  double chi_rad = 0.0;         // yaw attitude in the platform frame
+  double drag_lbf = 0.0;
+  double lift_lbf = 0.0;
+  double heating_rate_btu_ft2_s = 0.0;  // Sec. 13 (0 when no nose radius)
+  double downrange_rad = 0.0;   // central angle from the launch point
+  InertialVelocity inertial;
+  bool heading_hold = false;    // dpsi/dt held at 0 on the step starting here
+  bool alpha_zero = false;      // theta set for alpha = 0 on the step starting here
+};
+
+struct StageEvent {
+  int code = 0;
+  int first_point = 0;   // index of the stage's first point
+  int last_point = 0;    // index of the stage's last point (before jettison)
+  double burnout_weight_lb = 0.0;   // at the end of the stage, before jettison
+  double weight_after_jettison_lb = 0.0;
+};
+
+struct Trajectory {
+  Status status = Status::kNotPrepared;
+  int point_count = 0;
+  TrajectoryPoint points[kMaxTrajectoryPoints];
+  int stage_count = 0;
+  StageEvent stages[kMaxStages];     // flight order
+  double heat_integral_btu_ft2 = 0.0;  // time integral of the heating rate
+  const TrajectoryPoint& final_point() const { return points[point_count - 1]; }
+};
+
+// Flies the case. On success trajectory->status is kOk and the final point is the end of the last
+// stage. On a failure (non-finite state, impact, ...) the points up to the failure are kept and
+// the status names the cause; no NaN is stored.
+Status fly_trajectory(const Mission& mission, const PreparedCase& prepared, Trajectory* trajectory);
+
+// Which of the trajectory kinds of data block 9 a run is, for output thinning.
+enum class TrajectoryKind : int { kInitial, kIntermediate, kFinal };
+
+// True when point `index` is listed at the data block 9 frequency: every n-th point of its stage,
+// and always the first and last point of each stage.
+bool is_output_point(const Mission& mission, const Trajectory& trajectory, int index,
+                     TrajectoryKind kind);
+
+}  // namespace tolip
