@@ -37,6 +37,7 @@ const char* status_name(Status status) {
     case Status::kAltitudeBelowSurface: return "kAltitudeBelowSurface";
     case Status::kZeroVelocity: return "kZeroVelocity";
     case Status::kMassNotPositive: return "kMassNotPositive";
+    case Status::kTrajectoryStorageFull: return "kTrajectoryStorageFull";
     case Status::kNotPrepared: return "kNotPrepared";
   }
   return "kUnknownStatus";
@@ -76,6 +77,7 @@ const char* status_message(Status status) {
     case Status::kAltitudeBelowSurface: return "the vehicle went below the Earth surface";
     case Status::kZeroVelocity: return "the velocity is zero where a direction is needed";
     case Status::kMassNotPositive: return "the vehicle mass is not positive";
+    case Status::kTrajectoryStorageFull: return "the trajectory has more integration points than its fixed storage";
     case Status::kNotPrepared: return "the case was not prepared (prepare_case) before use";
   }
   return "unknown status";

@@ -26,9 +26,10 @@ inline constexpr int kMaxPitchTablePoints = 15;  // block 40: 32E12.8 = blank + 
 // Our choices where the manual sets no limit (docs/architecture.md, "Capacities").
 inline constexpr int kMinStage1Steps = 25;              // data block 16: "at least 25 steps in stage 1"
 inline constexpr int kMaxCoastSteps = 100;              // per coast; the manual asks for 10-15 s steps
-// Every integration point of one trajectory: all powered steps, all coast steps, the lift-off point
-// of stage 1 and the final point.
-inline constexpr int kMaxTrajectoryPoints = kMaxPoweredSteps + 5 * kMaxCoastSteps + 2;
+// Every integration point of one trajectory: the start of every step of every stage, the end point
+// of every stage (kept separately from the next stage's first point, so the burnout values of the
+// stage are listed), and the pad point at t = 0.
+inline constexpr int kMaxTrajectoryPoints = kMaxPoweredSteps + 5 * kMaxCoastSteps + kMaxStages + 1;
 // Modified (Sec. 14) thrust table of one stage: one entry per integration time plus the lift-off one.
 inline constexpr int kMaxModifiedThrustPoints = kMaxPoweredSteps + 2;
 

@@ -43,6 +43,7 @@ enum class Status : int {
   kAltitudeBelowSurface,
   kZeroVelocity,
   kMassNotPositive,
+  kTrajectoryStorageFull,
   kNotPrepared,
 };
 

@@ -30,7 +30,9 @@ struct OrbitElements {
   double perigee_radius_ft = 0.0;            // r_p
   double inclination_rad = 0.0;             // i = acos(cos lambda sin psi_I)
   double right_ascension_rad = 0.0;         // alpha_e of the vehicle position, [0, 2 pi)
-  double nu_rad = 0.0;                      // inertial longitude angle from the node, [0, pi]
+  // Inertial longitude angle from the node, [0, 2 pi). The manual prints [0, pi], but a point
+  // south of the equator before its ascending node lies at nu in (pi, 2 pi); the oracle agrees.
+  double nu_rad = 0.0;
   double node_longitude_rad = 0.0;          // Omega_e = alpha_e - nu, [0, 2 pi)
   double in_plane_angle_from_node_rad = 0.0;// beta, [0, 2 pi)
   double true_anomaly_rad = 0.0;            // zeta, [0, 2 pi)
@@ -46,6 +48,10 @@ struct OrbitElements {
   double asymptote_right_ascension_rad = 0.0;    // alpha_eH = Omega_e + nu_H, [0, 2 pi)
   double asymptote_declination_rad = 0.0;        // delta_eH = asin(sin i sin beta_H)
 };
+
+// Right ascension of the inertial x axis (Greenwich at lift-off), [0, 2 pi): the tau-free part
+// of alpha_e, 99.659967 + 0.98564743 tG + 360 frac(tG) deg (Herget, as printed in Sec. 4).
+double launch_greenwich_right_ascension_rad(double launch_space_age_date_days);
 
 // Elements of the state at time t from launch. launch_space_age_date_days is DA5(2); the right
 // ascension is alpha_e = 99.659967 + 0.98564743 tG + 360 frac(tG) + tau (deg), tau inertial.
@@ -67,7 +73,14 @@ inline constexpr double kNauticalMilesPerRadian = 60.0 * 180.0 / kPi;
 
 // Stagnation heating rate (Sec. 13), Btu/ft^2/s:
 // Qdot = 20800 / sqrt(R_nose) sqrt(rho / rho_SL) (V / 10000)^3.25.
+// Precondition: nose radius and sea-level density positive, density and velocity non-negative
+// (stagnation_heating_rate_checked enforces it).
 double stagnation_heating_rate(double nose_radius_ft, double density_slug_ft3,
                                double sea_level_density_slug_ft3, double velocity_ft_s);
+// The same with its inputs checked: kValueNotFinite, or kValueOutOfRange for a non-positive nose
+// radius or sea-level density, or a negative density or velocity.
+Status stagnation_heating_rate_checked(double nose_radius_ft, double density_slug_ft3,
+                                       double sea_level_density_slug_ft3, double velocity_ft_s,
+                                       double* heating_rate_btu_ft2_s);
 
 }  // namespace tolip

@@ -1,0 +1,42 @@
+// Frames and thrust resolution of manual Sec. 4: platform P -> geocentric G [B'] -> inertial I [B]
+// -> local L [A], and [C] = [A][B][B'].
+//
+// The printed [A] is garbled by the scan. It is built here from the rotation sequence the manual
+// lists ("rotate about k_z by -tau, about k_y by 90 - lambda, about k_x by 90 - psi, about k_y by
+// -gamma"), which as passive (frame) rotations is [A] = Rx(gamma) Rz(90 - psi) Ry(90 - lambda) Rz(tau).
+// tests/core/frames_test.cpp proves it orthonormal, equal to the oracle's [A], and consistent with
+// the partial derivatives of [A] listed in Sec. 5. [B] and [B'] are as printed, evaluated once at
+// t = 0 with the launch latitude, azimuth and longitude.
+#pragma once
+
+#include "tolip/core/state.hpp"
+
+namespace tolip {
+
+// Passive rotations: the matrix that re-expresses a vector in a frame turned by `angle_rad`.
+Matrix3 frame_rotation_x(double angle_rad);
+Matrix3 frame_rotation_y(double angle_rad);
+Matrix3 frame_rotation_z(double angle_rad);
+
+// [A]: inertial -> local at the state's gamma, psi, lambda and inertial longitude tau.
+Matrix3 inertial_to_local(const StateVector& state);
+
+// [B]: geocentric launch frame -> inertial, at launch azimuth psi0, latitude lambda0, longitude tau0.
+Matrix3 geocentric_to_inertial(double azimuth_rad, double geocentric_latitude_rad,
+                               double longitude_rad);
+
+// [B']: platform -> geocentric launch frame, turning the geodetic vertical into the geocentric one.
+Matrix3 platform_to_geocentric(double azimuth_rad, double delta_lambda_rad);
+
+// Unit thrust axis in the platform frame: (cos theta sin chi, cos theta cos chi, sin theta).
+Vector3 thrust_axis_platform(double theta_rad, double chi_rad);
+
+// In-plane angle of attack: the angle from i_y (along V) to the thrust axis in the i_y-i_z plane.
+double angle_of_attack_rad(const Vector3& thrust_axis_local);
+
+// Pitch attitude theta that puts the thrust axis along V in the vertical plane (alpha = 0) for yaw
+// chi, given [C]: solves C31 cos(theta) sin(chi) + C32 cos(theta) cos(chi) + C33 sin(theta) = 0 on
+// the branch with a forward (positive i_y) thrust component.
+double theta_for_zero_alpha_rad(const Matrix3& platform_to_local, double chi_rad);
+
+}  // namespace tolip

@@ -1,0 +1,78 @@
+// Oblate Earth of manual Sec. 4 (see docs/theory/atmosphere-earth-orbit.md).
+#include "tolip/earth/earth_model.hpp"
+
+#include <cmath>
+
+namespace tolip {
+
+namespace {
+
+// Purcell-Cowan series coefficients as printed in Sec. 4.
+constexpr double kPurcellCowanC1 = 3.372672e-3;
+constexpr double kPurcellCowanC2 = -5.6873e-6;
+
+// "6 sigma" of Sec. 4: the oblate-figure part of the deflection of the vertical.
+constexpr double kFigureDeflectionCoefficient = 0.001638;
+
+}  // namespace
+
+double oblate_radius_ft(const Constants& constants, double geocentric_latitude_rad) {
+  const double f = constants.inverse_flattening;
+  // atan2 rather than the printed atan(tan) so the poles need no special case; the result is
+  // the same reduced latitude eta everywhere else.
+  const double eta = std::atan2(f * std::sin(geocentric_latitude_rad),
+                                (f - 1.0) * std::cos(geocentric_latitude_rad));
+  const double z = (f - 1.0) / f * std::sin(eta);
+  const double x = std::cos(eta);
+  return constants.earth_equatorial_radius_ft * std::sqrt(x * x + z * z);
+}
+
+double oblate_altitude_ft(const Constants& constants, double radius_ft, double geocentric_latitude_rad) {
+  return radius_ft - oblate_radius_ft(constants, geocentric_latitude_rad);
+}
+
+double geodetic_from_geocentric_rad(double geocentric_latitude_rad) {
+  return geocentric_latitude_rad + kPurcellCowanC1 * std::sin(2.0 * geocentric_latitude_rad) +
+         kPurcellCowanC2 * std::sin(4.0 * geocentric_latitude_rad);
+}
+
+double geocentric_from_geodetic_rad(double geodetic_latitude_rad) {
+  // Newton on the forward series so that the round trip is exact to round-off (the closed-form
+  // ellipsoid inverse differs from the series by ~5e-4 deg, enough to shift the launch point).
+  // The series' slope is 1 +- 0.007, so convergence is quadratic from the geodetic value and
+  // four iterations reach round-off; the fixed bound keeps the loop's cost known.
+  constexpr int kMaxIterations = 8;
+  double geocentric_rad = geodetic_latitude_rad;
+  for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
+    const double residual_rad = geodetic_from_geocentric_rad(geocentric_rad) - geodetic_latitude_rad;
+    const double slope = 1.0 + 2.0 * kPurcellCowanC1 * std::cos(2.0 * geocentric_rad) +
+                         4.0 * kPurcellCowanC2 * std::cos(4.0 * geocentric_rad);
+    const double step_rad = residual_rad / slope;
+    geocentric_rad -= step_rad;
+    if (std::fabs(step_rad) <= 1e-16) break;
+  }
+  return geocentric_rad;
+}
+
+double delta_lambda_rad(const Constants& constants, double geocentric_latitude_rad, double radius_ft) {
+  const double omega = constants.earth_rotation_rate_rad_s;
+  const double g_ft_s2 = constants.gravitational_parameter_ft3_s2 / (radius_ft * radius_ft);
+  return (kFigureDeflectionCoefficient + omega * omega * radius_ft / (2.0 * g_ft_s2)) *
+         std::sin(2.0 * geocentric_latitude_rad);
+}
+
+Gravity j2_gravity(const Constants& constants, double radius_ft, double geocentric_latitude_rad) {
+  Gravity g;
+  g.spherical_ft_s2 = constants.gravitational_parameter_ft3_s2 / (radius_ft * radius_ft);
+  const double re_over_r = constants.earth_equatorial_radius_ft / radius_ft;
+  const double j2_scaled = constants.j2 * re_over_r * re_over_r;
+  const double sin_lat = std::sin(geocentric_latitude_rad);
+  const double cos_lat = std::cos(geocentric_latitude_rad);
+  // Sign of the J2/2 term follows the geopotential (reference README Sec. 6 item 2): the
+  // printed minus in equation F contradicts the i_z component of F_G.
+  g.radial_ft_s2 = g.spherical_ft_s2 * (1.0 + 0.5 * j2_scaled * (3.0 - 9.0 * sin_lat * sin_lat));
+  g.north_ft_s2 = -3.0 * g.spherical_ft_s2 * j2_scaled * sin_lat * cos_lat;
+  return g;
+}
+
+}  // namespace tolip

@@ -1,0 +1,89 @@
+#include "tolip/frames/frames.hpp"
+
+#include <cmath>
+
+#include "tolip/core/constants.hpp"
+
+namespace tolip {
+
+Matrix3 frame_rotation_x(double angle_rad) {
+  const double c = std::cos(angle_rad);
+  const double s = std::sin(angle_rad);
+  Matrix3 m;
+  m << 1.0, 0.0, 0.0,
+       0.0, c, s,
+       0.0, -s, c;
+  return m;
+}
+
+Matrix3 frame_rotation_y(double angle_rad) {
+  const double c = std::cos(angle_rad);
+  const double s = std::sin(angle_rad);
+  Matrix3 m;
+  m << c, 0.0, -s,
+       0.0, 1.0, 0.0,
+       s, 0.0, c;
+  return m;
+}
+
+Matrix3 frame_rotation_z(double angle_rad) {
+  const double c = std::cos(angle_rad);
+  const double s = std::sin(angle_rad);
+  Matrix3 m;
+  m << c, s, 0.0,
+       -s, c, 0.0,
+       0.0, 0.0, 1.0;
+  return m;
+}
+
+Matrix3 inertial_to_local(const StateVector& state) {
+  const double half_pi = 0.5 * kPi;
+  return frame_rotation_x(state[kStateGamma]) * frame_rotation_z(half_pi - state[kStatePsi]) *
+         frame_rotation_y(half_pi - state[kStateLambda]) * frame_rotation_z(state[kStateTau]);
+}
+
+Matrix3 geocentric_to_inertial(double azimuth_rad, double geocentric_latitude_rad,
+                               double longitude_rad) {
+  const double sp = std::sin(azimuth_rad), cp = std::cos(azimuth_rad);
+  const double sl = std::sin(geocentric_latitude_rad), cl = std::cos(geocentric_latitude_rad);
+  const double st = std::sin(longitude_rad), ct = std::cos(longitude_rad);
+  Matrix3 b;
+  b << sp * sl * ct - cp * st, -sp * st - cp * sl * ct, cl * ct,
+       cp * ct + sp * sl * st, sp * ct - cp * sl * st, cl * st,
+       -sp * cl, cp * cl, sl;
+  return b;
+}
+
+Matrix3 platform_to_geocentric(double azimuth_rad, double delta_lambda_rad) {
+  const double sp = std::sin(azimuth_rad), cp = std::cos(azimuth_rad);
+  const double sd = std::sin(delta_lambda_rad), cd = std::cos(delta_lambda_rad);
+  Matrix3 b;
+  b << sp * sp * cd + cp * cp, sp * cp * (1.0 - cd), -sp * sd,
+       sp * cp * (1.0 - cd), sp * sp + cp * cp * cd, cp * sd,
+       sp * sd, -cp * sd, cd;
+  return b;
+}
+
+Vector3 thrust_axis_platform(double theta_rad, double chi_rad) {
+  const double ct = std::cos(theta_rad);
+  return Vector3(ct * std::sin(chi_rad), ct * std::cos(chi_rad), std::sin(theta_rad));
+}
+
+double angle_of_attack_rad(const Vector3& thrust_axis_local) {
+  return std::atan2(thrust_axis_local.z(), thrust_axis_local.y());
+}
+
+double theta_for_zero_alpha_rad(const Matrix3& platform_to_local, double chi_rad) {
+  const Matrix3& c = platform_to_local;
+  // u_Lz = cos(theta) a + sin(theta) b = 0 with a = C31 sin chi + C32 cos chi, b = C33.
+  const double a = c(2, 0) * std::sin(chi_rad) + c(2, 1) * std::cos(chi_rad);
+  const double b = c(2, 2);
+  double theta = std::atan2(-a, b);
+  // Of the two roots theta and theta + pi, keep the one whose thrust points forward along V.
+  const double forward = c(1, 0) * std::cos(theta) * std::sin(chi_rad) +
+                         c(1, 1) * std::cos(theta) * std::cos(chi_rad) + c(1, 2) * std::sin(theta);
+  if (forward < 0.0) theta = (theta > 0.0) ? theta - kPi : theta + kPi;
+  return theta;
+}
+
+}  // namespace tolip

@@ -1,0 +1,122 @@
+// Sec. 4, 14, 19: the forward trajectory of the reference mission against the independent oracle.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "support/reference_data.hpp"
+#include "support/reference_mission.hpp"
+#include "tolip/trajectory/liftoff.hpp"
+#include "tolip/trajectory/trajectory.hpp"
+
+namespace tolip {
+namespace {
+
+struct Flown {
+  Mission mission;
+  PreparedCase prepared;
+  Trajectory trajectory;
+};
+
+// One flight of the oracle optimum, shared by the tests (the storage is large: static, not stack).
+const Flown& reference_flight() {
+  static Flown* flown = [] {
+    static Flown f;
+    test::build_reference_mission(test::ReferenceProgram::kOptimum, &f.mission);
+    EXPECT_EQ(prepare_case(f.mission, &f.prepared), Status::kOk);
+    EXPECT_EQ(fly_trajectory(f.mission, f.prepared, &f.trajectory), Status::kOk);
+    return &f;
+  }();
+  return *flown;
+}
+
+TEST(Sec14ThrustModification, MatchesOracleTablesIdealVelocitiesAndScale) {
+  const Flown& f = reference_flight();
+  const auto& tables = test::scout_reference()["oracle_solution"]["modified_thrust_tables_section14"];
+  for (const auto& [key, t] : tables.items()) {
+    const int code = std::stoi(key);
+    const ModifiedThrustTable& mine = f.prepared.modified_thrust_lbf[stage_index(code)];
+    const ThrustModification& mod = f.prepared.thrust_modification[stage_index(code)];
+    ASSERT_EQ(mine.size(), static_cast<int>(t["time_s"].size())) << "stage " << code;
+    for (int i = 0; i < mine.size(); ++i) {
+      EXPECT_NEAR(mine.x(i), t["time_s"][i].get<double>(), 1e-9) << code << " " << i;
+      EXPECT_NEAR(mine.y(i), t["vacuum_thrust_lbf"][i].get<double>(), 1e-6) << code << " " << i;
+    }
+    EXPECT_NEAR(mod.ideal_velocity_input_ft_s, t["ideal_velocity_input_fps"].get<double>(), 1e-6);
+    EXPECT_NEAR(mod.ideal_velocity_grid_ft_s, t["ideal_velocity_grid_fps"].get<double>(), 1e-6);
+    EXPECT_NEAR(mod.scale, t["scale"].get<double>(), 1e-11);
+  }
+}
+
+TEST(Sec4Liftoff, ClosedFormMatchesOracle) {
+  const Flown& f = reference_flight();
+  LiftoffResult liftoff;
+  ASSERT_EQ(closed_form_liftoff(f.mission, f.prepared, &liftoff), Status::kOk);
+  const auto& ref = test::scout_reference()["oracle_solution"]["liftoff"];
+  EXPECT_NEAR(liftoff.acceleration_at_0_ft_s2, ref["acceleration_at_0_fps2"].get<double>(), 1e-9);
+  EXPECT_NEAR(liftoff.acceleration_at_end_ft_s2, ref["acceleration_at_TL_fps2"].get<double>(), 1e-9);
+  EXPECT_NEAR(liftoff.velocity_ft_s, ref["V_L_fps"].get<double>(), 1e-8);
+  EXPECT_NEAR(liftoff.height_ft, ref["h_L_ft"].get<double>(), 1e-8);
+  EXPECT_NEAR(liftoff.c23, ref["C23_at_liftoff"].get<double>(), 1e-12);
+}
+
+TEST(Sec4Trajectory, EveryIntegrationPointMatchesOracle) {
+  const Flown& f = reference_flight();
+  const auto& rows = test::scout_reference()["oracle_solution"]["trajectory"]["rows"];
+  double worst[6] = {};
+  int matched = 0;
+  for (const auto& row : rows) {
+    const double t = row[0];
+    const int code = row[1];
+    // Find my point at (t, stage).
+    const TrajectoryPoint* mine = nullptr;
+    for (int i = 0; i < f.trajectory.point_count; ++i) {
+      const TrajectoryPoint& p = f.trajectory.points[i];
+      if (p.stage_code == code && std::fabs(p.time_s - t) < 1e-6) { mine = &p; break; }
+    }
+    if (mine == nullptr) {
+      // The oracle lists each stage boundary once, as the start of the next stage.
+      continue;
+    }
+    ++matched;
+    const double ref[6] = {row[3], row[4].get<double>() * kDegToRad, row[6],
+                           row[5].get<double>() * kDegToRad, row[8].get<double>() * kDegToRad,
+                           row[9].get<double>() * kDegToRad};
+    for (int k = 0; k < 6; ++k) {
+      worst[k] = std::fmax(worst[k], std::fabs(mine->state[k] - ref[k]));
+    }
+  }
+  std::printf("matched %d of %zu; worst |dV| %.3e ft/s, dgamma %.3e rad, dr %.3e ft, dpsi %.3e, dlat %.3e, dtau %.3e\n",
+              matched, rows.size(), worst[0], worst[1], worst[2], worst[3], worst[4], worst[5]);
+  EXPECT_EQ(matched, static_cast<int>(rows.size()));
+  // The oracle's rows carry 12 significant digits: 1e-4 ft in r is their rounding.
+  EXPECT_LT(worst[kStateV], 1e-6);
+  EXPECT_LT(worst[kStateGamma], 1e-11);
+  EXPECT_LT(worst[kStateR], 1e-3);
+  EXPECT_LT(worst[kStatePsi], 1e-10);
+  EXPECT_LT(worst[kStateLambda], 1e-11);
+  EXPECT_LT(worst[kStateTau], 1e-11);
+}
+
+TEST(Sec4Trajectory, BurnoutStateMatchesOracle) {
+  const Flown& f = reference_flight();
+  const auto& ref = test::scout_reference()["oracle_solution"]["burnout_state"];
+  const TrajectoryPoint& p = f.trajectory.final_point();
+  const auto& x = ref["state_vector_rad_order_V_gamma_r_psi_lambda_tau"];
+  std::printf("burnout: t %.6f vs %.6f; V %.6f vs %.6f; h %.4f vs %.4f; gamma %.3e; W %.6f\n",
+              p.time_s, ref["time_from_launch_s"].get<double>(), p.state[0], x[0].get<double>(),
+              p.altitude_ft, ref["altitude_ft"].get<double>(), p.state[1], p.weight_lb);
+  EXPECT_NEAR(p.time_s, ref["time_from_launch_s"].get<double>(), 1e-9);
+  // Same model choices and step counts: agreement to round-off, far inside "a few feet".
+  EXPECT_NEAR(p.state[kStateV], x[0].get<double>(), 1e-6);
+  EXPECT_NEAR(p.state[kStateGamma], x[1].get<double>(), 1e-11);
+  EXPECT_NEAR(p.state[kStateR], x[2].get<double>(), 1e-4);
+  EXPECT_NEAR(p.state[kStatePsi], x[3].get<double>(), 1e-11);
+  EXPECT_NEAR(p.state[kStateLambda], x[4].get<double>(), 1e-11);
+  EXPECT_NEAR(p.state[kStateTau], x[5].get<double>(), 1e-11);
+  EXPECT_NEAR(p.altitude_ft, ref["altitude_ft"].get<double>(), 1e-4);
+  EXPECT_NEAR(p.weight_lb, test::scout_reference()["oracle_solution"]["final_weight_lb"].get<double>(), 1e-6);
+}
+
+}  // namespace
+}  // namespace tolip

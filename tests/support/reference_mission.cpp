@@ -1,0 +1,130 @@
+#include "support/reference_mission.hpp"
+
+#include <stdexcept>
+#include <string>
+
+#include "support/reference_data.hpp"
+#include "tolip/core/constants.hpp"
+
+namespace tolip::test {
+namespace {
+
+template <typename TableT>
+void fill(TableT* table, const nlohmann::json& xs, const nlohmann::json& ys, double y_scale = 1.0) {
+  table->clear();
+  for (size_t i = 0; i < xs.size(); ++i) {
+    if (!ok(table->append(xs[i].get<double>(), ys[i].get<double>() * y_scale))) {
+      throw std::runtime_error("reference table does not fit");
+    }
+  }
+  if (!ok(table->finalize())) throw std::runtime_error("reference table not monotonic");
+}
+
+}  // namespace
+
+void build_reference_mission(ReferenceProgram program, Mission* m) {
+  const nlohmann::json& ref = scout_reference();
+  const nlohmann::json& ct = ref["constants_block10_CT1"];
+  m->constants.earth_rotation_rate_rad_s = ct["earth_rotation_rate_rad_per_s"];
+  m->constants.gravitational_parameter_ft3_s2 = ct["gravitational_parameter_ft3_per_s2"];
+  m->constants.earth_equatorial_radius_ft = ct["earth_equatorial_radius_ft"];
+  m->constants.gas_constant_ft2_s2_R = ct["gas_constant_ft2_per_s2_R"];
+  m->constants.g0_ft_s2 = ct["g0_weight_to_mass_ft_per_s2"];
+  m->constants.sea_level_pressure_lbf_ft2 = ct["sea_level_pressure_lbf_per_ft2"];
+  m->constants.haero_ft = ct["haero_aero_bypass_altitude_ft"];
+  m->constants.time_epsilon_s = ct["time_epsilon_s"];
+  m->constants.j2 = ct["j2"];
+  m->constants.inverse_flattening = ct["inverse_flattening"];
+
+  const nlohmann::json& atm = ref["atmosphere_blocks11_14_ARDC"];
+  for (int i = 0; i < kAtmosphereLayers; ++i) {
+    m->atmosphere.base_geopotential_altitude_ft[i] = atm["base_geopotential_altitude_ft"][i];
+    m->atmosphere.base_molecular_temperature_R[i] = atm["base_molecular_temperature_R"][i];
+    m->atmosphere.lapse_rate_R_per_ft[i] = atm["lapse_rate_R_per_geopotential_ft"][i];
+    m->atmosphere.base_density_slug_ft3[i] = atm["base_density_slug_per_ft3"][i];
+  }
+
+  const nlohmann::json& veh = ref["vehicle"];
+  const nlohmann::json& oracle = ref["oracle_solution"];
+  const bool optimum = program == ReferenceProgram::kOptimum;
+  const nlohmann::json& initial = oracle["tth_block40_initial_nominal"];
+  m->vehicle.sequence.count = 0;
+  for (const auto& code : veh["stage_sequence_block5"]) {
+    if (code.get<int>() == 0) break;
+    m->vehicle.sequence.codes[m->vehicle.sequence.count++] = code.get<int>();
+  }
+  for (const auto& [key, s] : veh["stages"].items()) {
+    const int code = std::stoi(key);
+    StageData& stage = m->vehicle.stages[stage_index(code)];
+    stage.in_sequence = true;
+    stage.duration_s = s["duration_s"];
+    stage.integration_steps = s["integration_steps"];
+    stage.jettison_weight_lb = s["jettison_weight_lb"];
+    stage.reference_area_ft2 = s.value("reference_area_ft2", 0.0);
+    stage.nozzle_exit_area_ft2 = s.value("nozzle_exit_area_ft2", 0.0);
+    if (s["kind"] == "powered") {
+      fill(&stage.vacuum_thrust_lbf, s["thrust_table"]["time_s"], s["thrust_table"]["vacuum_thrust_lbf"]);
+      fill(&stage.consumable_weight_lb, s["consumable_weight_table"]["time_s"],
+           s["consumable_weight_table"]["consumable_weight_remaining_lb"]);
+    }
+    if (code == 8) {
+      stage.duration_s = optimum ? oracle["coast8_duration_s"].get<double>()
+                                 : initial["coast8_s"].get<double>();
+    }
+  }
+  const nlohmann::json& aero = veh["aerodynamics"];
+  for (const auto& [key, t] : aero["drag_coefficient_tables"].items()) {
+    const int code = std::stoi(key.substr(key.find('_') + 1));
+    fill(&m->vehicle.stages[stage_index(code)].drag_coefficient, t["mach"], t["cd"]);
+  }
+  fill(&m->vehicle.lift_curve_slope_per_rad, aero["lift_curve_slope_table"]["mach"],
+       aero["lift_curve_slope_table"]["cl_alpha_per_rad"]);
+  for (const auto& code : aero["lift_curve_slope_table"]["used_in_stages"]) {
+    m->vehicle.stages[stage_index(code.get<int>())].uses_lift_table = true;
+  }
+  m->vehicle.payload_lb = optimum ? oracle["payload_lb"].get<double>() : initial["payload_lb"].get<double>();
+
+  const nlohmann::json& mis = ref["mission"];
+  const nlohmann::json& ic = mis["initial_conditions_block21"];
+  m->launch.liftoff_duration_s = mis["liftoff_duration_s_block20_word1"];
+  m->launch.launch_space_age_date_days = mis["launch_date_space_age_days_block20_word2"];
+  m->launch.altitude_ft = ic["altitude_ft"];
+  m->launch.longitude_rad = ic["longitude_deg"].get<double>() * kDegToRad;
+  m->launch.geocentric_latitude_rad = ic["geocentric_latitude_deg"].get<double>() * kDegToRad;
+  m->launch.velocity_ft_s = ic["velocity_ft_per_s"];
+  m->launch.azimuth_rad = ic["azimuth_deg"].get<double>() * kDegToRad;
+  m->launch.flight_path_angle_rad = ic["flight_path_angle_deg"].get<double>() * kDegToRad;
+  m->launch.heading_hold_until_s = mis["heading_hold_until_s"];
+
+  const nlohmann::json& b22 = mis["block22_control_constraints"];
+  m->control.zero_alpha_start_s = b22["alpha_zero_start_s"];
+  m->control.zero_alpha_end_s = b22["alpha_zero_end_s"];
+  m->control.max_pitch_rate_rad_s = b22["max_pitch_rate_deg_per_s"].get<double>() * kDegToRad;
+  m->control.min_pitch_rate_rad_s = b22["min_pitch_rate_deg_per_s"].get<double>() * kDegToRad;
+  m->control.min_pitch_rate_change_rad_s = b22["min_change_in_pitch_rate_deg_per_s"].get<double>() * kDegToRad;
+
+  const nlohmann::json& b17 = mis["block17"];
+  m->misc.stage4_theta_rad = (optimum ? oracle["stage4_theta_deg"].get<double>()
+                                      : initial["theta4_deg"].get<double>()) * kDegToRad;
+  m->misc.stage4_chi_rad = b17["stage4_chi_deg"].get<double>() * kDegToRad;
+  m->misc.nose_radius_ft = b17["nose_radius_ft"];
+
+  for (const auto& [key, value] : mis["block4_options_IP"].items()) {
+    m->options.ip[std::stoi(key.substr(0, key.find('_')))] = value.get<int>();
+  }
+
+  m->pitch_program_rad.clear();
+  if (optimum) {
+    const nlohmann::json& pp = oracle["pitch_program"];
+    m->pitch_program_rad.append(0.0, 0.5 * kPi);
+    for (size_t i = 0; i < pp["node_times_s"].size(); ++i) {
+      m->pitch_program_rad.append(pp["node_times_s"][i].get<double>(),
+                                  pp["theta_deg_as_flown"][i].get<double>() * kDegToRad);
+    }
+    m->pitch_program_rad.finalize();
+  } else {
+    fill(&m->pitch_program_rad, initial["time_s"], initial["theta_deg"], kDegToRad);
+  }
+}
+
+}  // namespace tolip::test
