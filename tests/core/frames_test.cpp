@@ -42,6 +42,14 @@ TEST(Sec4Frames, MatricesAreOrthonormalRotations) {
   }
 }
 
+TEST(Sec4Frames, MultipliedOutAEqualsTheRotationProduct) {
+  std::mt19937 rng(13);
+  for (int trial = 0; trial < 50; ++trial) {
+    const StateVector x = random_state(rng);
+    EXPECT_LT((inertial_to_local(StateTrig(x)) - inertial_to_local(x)).cwiseAbs().maxCoeff(), 1e-15);
+  }
+}
+
 TEST(Sec4Frames, MatchOracleAtLaunchAndStage2Ignition) {
   const auto& v = test::oracle_test_vectors();
   const auto& launch = v["launch"];

@@ -37,7 +37,9 @@ Status evaluate_atmosphere(const AtmosphereTable& table, const Constants& consta
   const double g0 = constants.g0_ft_s2;
 
   AtmosphereSample s;
-  s.geopotential_altitude_ft = earth_radius_ft * altitude_ft / radius_sum_ft;
+  // R h / (R + h) written so that a huge R (1e30, "no curvature") returns h exactly, keeping a
+  // base altitude in its own layer.
+  s.geopotential_altitude_ft = altitude_ft / (1.0 + altitude_ft / earth_radius_ft);
   const int b = layer_index(table, s.geopotential_altitude_ft);
   const double base_altitude_ft = table.base_geopotential_altitude_ft[b];
   const double base_temperature_R = table.base_molecular_temperature_R[b];

@@ -8,18 +8,23 @@ namespace tolip {
 
 StateVector state_derivative(const Constants& constants, const StateVector& state,
                              const AppliedForces& forces) {
+  return state_derivative(constants, state, StateTrig(state), forces);
+}
+
+StateVector state_derivative(const Constants& constants, const StateVector& state,
+                             const StateTrig& trig, const AppliedForces& forces) {
   const double v = state[kStateV];
   const double r = state[kStateR];
-  const double sg = std::sin(state[kStateGamma]), cg = std::cos(state[kStateGamma]);
-  const double sp = std::sin(state[kStatePsi]), cp = std::cos(state[kStatePsi]);
-  const double sl = std::sin(state[kStateLambda]), cl = std::cos(state[kStateLambda]);
+  const double sg = trig.sin_gamma, cg = trig.cos_gamma;
+  const double sp = trig.sin_psi, cp = trig.cos_psi;
+  const double sl = trig.sin_lambda, cl = trig.cos_lambda;
   const double omega = constants.earth_rotation_rate_rad_s;
   const double r_omega2 = r * omega * omega;
 
   // Gravity in the local frame: inward radial g_r and northward g_N; north = cos(psi) (horizontal
   // along V) - sin(psi) i_x, so its i_y, i_z, i_x parts are cos(psi) cos(gamma), -cos(psi) sin(gamma),
   // -sin(psi).
-  const Gravity gravity = j2_gravity(constants, r, state[kStateLambda]);
+  const Gravity gravity = j2_gravity(constants, r, sl, cl);
   const double gravity_y = -gravity.radial_ft_s2 * sg + gravity.north_ft_s2 * cp * cg;
   const double gravity_z = -gravity.radial_ft_s2 * cg - gravity.north_ft_s2 * cp * sg;
   const double gravity_x = -gravity.north_ft_s2 * sp;

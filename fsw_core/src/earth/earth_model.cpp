@@ -62,12 +62,21 @@ double delta_lambda_rad(const Constants& constants, double geocentric_latitude_r
 }
 
 Gravity j2_gravity(const Constants& constants, double radius_ft, double geocentric_latitude_rad) {
+  return j2_gravity(constants, radius_ft, std::sin(geocentric_latitude_rad),
+                    std::cos(geocentric_latitude_rad));
+}
+
+double oblate_radius_ft(const Constants& constants, double sin_latitude, double cos_latitude) {
+  const double a = constants.earth_equatorial_radius_ft;
+  const double b = a * (constants.inverse_flattening - 1.0) / constants.inverse_flattening;
+  return a * b / std::sqrt(b * b * cos_latitude * cos_latitude + a * a * sin_latitude * sin_latitude);
+}
+
+Gravity j2_gravity(const Constants& constants, double radius_ft, double sin_lat, double cos_lat) {
   Gravity g;
   g.spherical_ft_s2 = constants.gravitational_parameter_ft3_s2 / (radius_ft * radius_ft);
   const double re_over_r = constants.earth_equatorial_radius_ft / radius_ft;
   const double j2_scaled = constants.j2 * re_over_r * re_over_r;
-  const double sin_lat = std::sin(geocentric_latitude_rad);
-  const double cos_lat = std::cos(geocentric_latitude_rad);
   // Sign of the J2/2 term follows the geopotential (reference README Sec. 6 item 2): the
   // printed minus in equation F contradicts the i_z component of F_G.
   g.radial_ft_s2 = g.spherical_ft_s2 * (1.0 + 0.5 * j2_scaled * (3.0 - 9.0 * sin_lat * sin_lat));

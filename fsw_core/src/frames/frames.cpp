@@ -36,6 +36,33 @@ Matrix3 frame_rotation_z(double angle_rad) {
   return m;
 }
 
+StateTrig::StateTrig(const StateVector& state)
+    : sin_gamma(std::sin(state[kStateGamma])), cos_gamma(std::cos(state[kStateGamma])),
+      sin_psi(std::sin(state[kStatePsi])), cos_psi(std::cos(state[kStatePsi])),
+      sin_lambda(std::sin(state[kStateLambda])), cos_lambda(std::cos(state[kStateLambda])),
+      sin_tau(std::sin(state[kStateTau])), cos_tau(std::cos(state[kStateTau])) {}
+
+Matrix3 inertial_to_local(const StateTrig& t) {
+  // M = Rz(90 - psi) Ry(90 - lambda) Rz(tau); [A] = Rx(gamma) M.
+  const double m00 = t.sin_psi * t.sin_lambda * t.cos_tau - t.cos_psi * t.sin_tau;
+  const double m01 = t.sin_psi * t.sin_lambda * t.sin_tau + t.cos_psi * t.cos_tau;
+  const double m02 = -t.sin_psi * t.cos_lambda;
+  const double m10 = -t.cos_psi * t.sin_lambda * t.cos_tau - t.sin_psi * t.sin_tau;
+  const double m11 = -t.cos_psi * t.sin_lambda * t.sin_tau + t.sin_psi * t.cos_tau;
+  const double m12 = t.cos_psi * t.cos_lambda;
+  const double m20 = t.cos_lambda * t.cos_tau;
+  const double m21 = t.cos_lambda * t.sin_tau;
+  const double m22 = t.sin_lambda;
+  const double cg = t.cos_gamma, sg = t.sin_gamma;
+  Matrix3 a;
+  a << m00, m01, m02,
+       cg * m10 + sg * m20, cg * m11 + sg * m21, cg * m12 + sg * m22,
+       -sg * m10 + cg * m20, -sg * m11 + cg * m21, -sg * m12 + cg * m22;
+  return a;
+}
+
+// The definition as a product of frame rotations; kept as the readable form and tested against
+// the multiplied-out one.
 Matrix3 inertial_to_local(const StateVector& state) {
   const double half_pi = 0.5 * kPi;
   return frame_rotation_x(state[kStateGamma]) * frame_rotation_z(half_pi - state[kStatePsi]) *
@@ -66,6 +93,8 @@ Matrix3 platform_to_geocentric(double azimuth_rad, double delta_lambda_rad) {
 
 Vector3 thrust_axis_platform(double theta_rad, double chi_rad) {
   const double ct = std::cos(theta_rad);
+  // Yaw is zero on most trajectories; skip its sine and cosine then.
+  if (chi_rad == 0.0) return Vector3(0.0, ct, std::sin(theta_rad));
   return Vector3(ct * std::sin(chi_rad), ct * std::cos(chi_rad), std::sin(theta_rad));
 }
 

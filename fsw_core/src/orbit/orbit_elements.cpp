@@ -82,7 +82,10 @@ Status compute_orbit_elements(const Constants& constants, const StateVector& sta
   OrbitElements e;
   e.inertial = inertial_velocity(constants, state);
   const double v_i = e.inertial.velocity_ft_s;
-  if (!(v_i > 0.0)) return Status::kZeroVelocity;
+  // Below a micro-foot per second the direction of V_I, and every angle derived from it, is the
+  // round-off of cancelling relative and rotation velocities, not a property of the trajectory.
+  constexpr double kMinimumInertialSpeed_ft_s = 1e-6;
+  if (!(v_i > kMinimumInertialSpeed_ft_s)) return Status::kZeroVelocity;
   const double gamma_i = e.inertial.flight_path_angle_rad;
   const double psi_i = e.inertial.azimuth_rad;
 

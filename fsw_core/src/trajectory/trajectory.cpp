@@ -40,6 +40,9 @@ struct StageContext {
   double start_s = 0.0;  // time from launch at stage time 0
   const StageData* data = nullptr;
   const ModifiedThrustTable* thrust = nullptr;  // null in coasts
+  // Jettison weights of this and later stages, payload and later stages' consumables: the vehicle
+  // weight is this plus the stage's own consumable weight remaining.
+  double weight_above_consumable_lb = 0.0;
 };
 
 // Everything the equations of motion saw at one evaluation.
@@ -52,12 +55,16 @@ struct Evaluation {
   double dynamic_pressure_lbf_ft2 = 0.0;
   double density_slug_ft3 = 0.0;
   double mach = 0.0;
-  double alpha_rad = 0.0;
+  Vector3 thrust_axis_local = Vector3(0.0, 1.0, 0.0);
   double theta_rad = 0.0;
   double chi_rad = 0.0;
   double drag_lbf = 0.0;
   double lift_lbf = 0.0;
 };
+
+double powered_consumable_at_ignition(const Vehicle& vehicle, int code) {
+  return is_powered_stage(code) ? vehicle.stages[stage_index(code)].consumable_weight_lb(0.0) : 0.0;
+}
 
 class Flight {
  public:
@@ -150,7 +157,8 @@ void Flight::evaluate(const StageContext& stage, double t, const StateVector& st
   const StageData& data = *stage.data;
   const double stage_time = t - stage.start_s;
   const double v = state[kStateV];
-  const double surface_radius = oblate_radius_ft(constants, state[kStateLambda]);
+  const StateTrig trig(state);
+  const double surface_radius = oblate_radius_ft(constants, trig.sin_lambda, trig.cos_lambda);
   out->altitude_ft = state[kStateR] - surface_radius;
 
   // Above HAERO (CT1(7)) every aerodynamic computation is bypassed: no density, no pressure.
@@ -166,15 +174,15 @@ void Flight::evaluate(const StageContext& stage, double t, const StateVector& st
     }
   }
 
-  out->weight_lb = vehicle_weight_lb(mission_.vehicle, stage.code, stage_time);
+  out->weight_lb = stage.weight_above_consumable_lb +
+                   (is_powered_stage(stage.code) ? data.consumable_weight_lb(stage_time) : 0.0);
   out->vacuum_thrust_lbf = (stage.thrust != nullptr) ? (*stage.thrust)(stage_time) : 0.0;
   out->net_thrust_lbf =
       (stage.thrust != nullptr) ? out->vacuum_thrust_lbf - pressure * data.nozzle_exit_area_ft2 : 0.0;
 
-  const Matrix3 platform_to_local = inertial_to_local(state) * prepared_.platform_to_inertial;
+  const Matrix3 platform_to_local = inertial_to_local(trig) * prepared_.platform_to_inertial;
   out->theta_rad = commanded_theta(stage, t, controls, platform_to_local, &out->chi_rad);
-  const Vector3 axis_local = platform_to_local * thrust_axis_platform(out->theta_rad, out->chi_rad);
-  out->alpha_rad = angle_of_attack_rad(axis_local);
+  out->thrust_axis_local = platform_to_local * thrust_axis_platform(out->theta_rad, out->chi_rad);
 
   out->density_slug_ft3 = density;
   out->dynamic_pressure_lbf_ft2 = 0.5 * density * v * v;
@@ -185,17 +193,19 @@ void Flight::evaluate(const StageContext& stage, double t, const StateVector& st
     const double q_s = out->dynamic_pressure_lbf_ft2 * data.reference_area_ft2;
     if (!data.drag_coefficient.empty()) out->drag_lbf = q_s * data.drag_coefficient(out->mach);
     if (data.uses_lift_table && !mission_.vehicle.lift_curve_slope_per_rad.empty()) {
-      out->lift_lbf = q_s * mission_.vehicle.lift_curve_slope_per_rad(out->mach) * out->alpha_rad;
+      // Alpha (an atan2) is needed on the integration path only where there is lift.
+      out->lift_lbf = q_s * mission_.vehicle.lift_curve_slope_per_rad(out->mach) *
+                      angle_of_attack_rad(out->thrust_axis_local);
     }
   }
 
   AppliedForces forces;
   forces.mass_slug = out->weight_lb / constants.g0_ft_s2;
-  forces.thrust_local_lbf = out->net_thrust_lbf * axis_local;
+  forces.thrust_local_lbf = out->net_thrust_lbf * out->thrust_axis_local;
   forces.drag_lbf = out->drag_lbf;
   forces.lift_lbf = out->lift_lbf;
   forces.heading_hold = controls.heading_hold;
-  out->derivative = state_derivative(constants, state, forces);
+  out->derivative = state_derivative(constants, state, trig, forces);
 }
 
 Status Flight::record(const StageContext& stage, double t, const StateVector& state,
@@ -216,7 +226,7 @@ Status Flight::record(const StageContext& stage, double t, const StateVector& st
   p.net_thrust_lbf = eval.net_thrust_lbf;
   p.dynamic_pressure_lbf_ft2 = eval.dynamic_pressure_lbf_ft2;
   p.mach = eval.mach;
-  p.alpha_rad = eval.alpha_rad;
+  p.alpha_rad = angle_of_attack_rad(eval.thrust_axis_local);
   p.theta_rad = eval.theta_rad;
   p.chi_rad = eval.chi_rad;
   p.drag_lbf = eval.drag_lbf;
@@ -269,6 +279,9 @@ Status Flight::fly_stage(const StageTimeline& line, StateVector* state) {
   stage.data = &mission_.vehicle.stages[stage_index(line.code)];
   stage.thrust = is_powered_stage(line.code) ? &prepared_.modified_thrust_lbf[stage_index(line.code)]
                                              : nullptr;
+  stage.weight_above_consumable_lb =
+      vehicle_weight_lb(mission_.vehicle, line.code, 0.0) -
+      (powered_consumable_at_ignition(mission_.vehicle, line.code));
   const bool powered = stage.thrust != nullptr;
 
   StageEvent& event = trajectory_->stages[trajectory_->stage_count];
@@ -284,6 +297,7 @@ Status Flight::fly_stage(const StageTimeline& line, StateVector* state) {
     evaluate(stage, t, *state, controls, &eval);
     Status status = record(stage, t, *state, controls, eval);
     if (!ok(status)) return status;
+    if (eval.altitude_ft < kImpactAltitudeFt) return Status::kAltitudeBelowSurface;
 
     const auto derivative = [&](double time, const StateVector& x) {
       Evaluation e;
@@ -299,10 +313,6 @@ Status Flight::fly_stage(const StageTimeline& line, StateVector* state) {
     history.push(eval.derivative);
 
     if (!state->allFinite()) return Status::kNonFiniteState;
-    if ((*state)[kStateR] - oblate_radius_ft(mission_.constants, (*state)[kStateLambda]) <
-        kImpactAltitudeFt) {
-      return Status::kAltitudeBelowSurface;
-    }
   }
 
   // The stage's end point, with its burnout values (the next stage records the same state again
@@ -313,6 +323,7 @@ Status Flight::fly_stage(const StageTimeline& line, StateVector* state) {
   evaluate(stage, t_end, *state, controls, &eval);
   const Status status = record(stage, t_end, *state, controls, eval);
   if (!ok(status)) return status;
+  if (eval.altitude_ft < kImpactAltitudeFt) return Status::kAltitudeBelowSurface;
   event.last_point = trajectory_->point_count - 1;
   event.burnout_weight_lb = eval.weight_lb;
   ++trajectory_->stage_count;

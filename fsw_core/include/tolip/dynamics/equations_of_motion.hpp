@@ -9,6 +9,7 @@
 
 #include "tolip/core/constants.hpp"
 #include "tolip/core/state.hpp"
+#include "tolip/frames/frames.hpp"
 
 namespace tolip {
 
@@ -24,5 +25,8 @@ struct AppliedForces {
 // dX/dt = [F, G, I, H, J, K] in state order [V, gamma, r, psi, lambda, tau].
 StateVector state_derivative(const Constants& constants, const StateVector& state,
                              const AppliedForces& forces);
+// The same with the state's sines and cosines already computed.
+StateVector state_derivative(const Constants& constants, const StateVector& state,
+                             const StateTrig& trig, const AppliedForces& forces);
 
 }  // namespace tolip

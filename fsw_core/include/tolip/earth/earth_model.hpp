@@ -10,6 +10,11 @@ namespace tolip {
 // eta = atan(f/(f-1) tan lambda_c), R = R_eq sqrt(cos^2 eta + ((f-1)/f)^2 sin^2 eta).
 double oblate_radius_ft(const Constants& constants, double geocentric_latitude_rad);
 
+// The same radius from the latitude's sine and cosine, in the ellipse's polar form
+// R = a b / sqrt(b^2 cos^2 + a^2 sin^2) (b = a (f - 1) / f), which equals the manual's eta form
+// exactly; used on the integration path where the sine and cosine are already at hand.
+double oblate_radius_ft(const Constants& constants, double sin_latitude, double cos_latitude);
+
 // Altitude above the oblate surface, h = r - R_OBL(lambda).
 double oblate_altitude_ft(const Constants& constants, double radius_ft, double geocentric_latitude_rad);
 
@@ -34,5 +39,7 @@ struct Gravity {
   double north_ft_s2 = 0.0;
 };
 Gravity j2_gravity(const Constants& constants, double radius_ft, double geocentric_latitude_rad);
+Gravity j2_gravity(const Constants& constants, double radius_ft, double sin_latitude,
+                   double cos_latitude);
 
 }  // namespace tolip

@@ -18,8 +18,17 @@ Matrix3 frame_rotation_x(double angle_rad);
 Matrix3 frame_rotation_y(double angle_rad);
 Matrix3 frame_rotation_z(double angle_rad);
 
+// Sines and cosines of the state's angles, computed once per derivative evaluation and shared by
+// [A], the equations of motion, gravity and the oblate radius.
+struct StateTrig {
+  double sin_gamma, cos_gamma, sin_psi, cos_psi, sin_lambda, cos_lambda, sin_tau, cos_tau;
+  explicit StateTrig(const StateVector& state);
+};
+
 // [A]: inertial -> local at the state's gamma, psi, lambda and inertial longitude tau.
 Matrix3 inertial_to_local(const StateVector& state);
+// The same, multiplied out: row 1 = Rz(90 - psi) Ry(90 - lambda) Rz(tau) row 1, rows 2-3 turned by gamma.
+Matrix3 inertial_to_local(const StateTrig& trig);
 
 // [B]: geocentric launch frame -> inertial, at launch azimuth psi0, latitude lambda0, longitude tau0.
 Matrix3 geocentric_to_inertial(double azimuth_rad, double geocentric_latitude_rad,

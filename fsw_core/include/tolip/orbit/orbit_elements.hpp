@@ -55,7 +55,7 @@ double launch_greenwich_right_ascension_rad(double launch_space_age_date_days);
 
 // Elements of the state at time t from launch. launch_space_age_date_days is DA5(2); the right
 // ascension is alpha_e = 99.659967 + 0.98564743 tG + 360 frac(tG) + tau (deg), tau inertial.
-// Fails with kNonFiniteState or kZeroVelocity (V_I = 0 or r = 0).
+// Fails with kNonFiniteState, kValueNotFinite (date) or kZeroVelocity (V_I below 1e-6 ft/s, or r <= 0).
 Status compute_orbit_elements(const Constants& constants, const StateVector& state,
                               double launch_space_age_date_days, OrbitElements* out);
 
