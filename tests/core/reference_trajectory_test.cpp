@@ -120,3 +120,67 @@ TEST(Sec4Trajectory, BurnoutStateMatchesOracle) {
 
 }  // namespace
 }  // namespace tolip
+
+namespace tolip {
+namespace {
+
+// The crude starting program of the optimization case flies through every stage to burnout.
+TEST(Sec22Trajectory, CrudeInitialNominalFliesEveryStage) {
+  static Mission mission;
+  static PreparedCase prepared;
+  static Trajectory trajectory;
+  test::build_reference_mission(test::ReferenceProgram::kInitialNominal, &mission);
+  ASSERT_EQ(prepare_case(mission, &prepared), Status::kOk);
+  ASSERT_EQ(fly_trajectory(mission, prepared, &trajectory), Status::kOk);
+  EXPECT_EQ(trajectory.stage_count, 7);
+  EXPECT_NEAR(trajectory.final_point().time_s, 45.0 + 5.0 + 38.0 + 6.0 + 36.0 + 450.0 + 28.0, 1e-9);
+  EXPECT_NEAR(trajectory.final_point().weight_lb, 125.0 + 250.0, 1e-9);
+  // Stage events: weight drops by the jettison weight between a stage's end and the next start.
+  EXPECT_NEAR(trajectory.stages[0].burnout_weight_lb - trajectory.stages[0].weight_after_jettison_lb,
+              4800.0, 1e-9);
+}
+
+// Data block 9: every n-th point of a stage, and always its first and last point.
+TEST(Sec22Output, ThinsPointsPerStageKeepingStageEnds) {
+  static Mission mission;
+  static PreparedCase prepared;
+  static Trajectory trajectory;
+  test::build_reference_mission(test::ReferenceProgram::kOptimum, &mission);
+  for (int k = 0; k < kMaxStages; ++k) mission.output.final_trajectory[k] = 5;
+  ASSERT_EQ(prepare_case(mission, &prepared), Status::kOk);
+  ASSERT_EQ(fly_trajectory(mission, prepared, &trajectory), Status::kOk);
+  int listed = 0;
+  for (int i = 0; i < trajectory.point_count; ++i) {
+    listed += is_output_point(mission, trajectory, i, TrajectoryKind::kFinal) ? 1 : 0;
+  }
+  for (int k = 0; k < trajectory.stage_count; ++k) {
+    EXPECT_TRUE(is_output_point(mission, trajectory, trajectory.stages[k].first_point, TrajectoryKind::kFinal));
+    EXPECT_TRUE(is_output_point(mission, trajectory, trajectory.stages[k].last_point, TrajectoryKind::kFinal));
+  }
+  EXPECT_LT(listed, trajectory.point_count / 3);
+  EXPECT_GT(listed, trajectory.point_count / 6);
+  EXPECT_TRUE(is_output_point(mission, trajectory, 0, TrajectoryKind::kIntermediate));  // pad point
+}
+
+// A NaN in the case reaches the integrator only through a bypassed validation; it must come back as
+// a named status, with no NaN stored.
+TEST(Sec4Trajectory, NonFiniteInputEndsWithNamedStatusAndNoNaNStored) {
+  static Mission mission;
+  static PreparedCase prepared;
+  static Trajectory trajectory;
+  test::build_reference_mission(test::ReferenceProgram::kOptimum, &mission);
+  ASSERT_EQ(prepare_case(mission, &prepared), Status::kOk);
+  mission.control.zero_alpha_end_s = 46.0;
+  mission.vehicle.stages[stage_index(6)].reference_area_ft2 = std::nan("");
+  const Status status = fly_trajectory(mission, prepared, &trajectory);
+  EXPECT_EQ(status, Status::kNonFiniteState);
+  EXPECT_GT(trajectory.point_count, 40);  // stage 1 was flown and kept
+  for (int i = 0; i < trajectory.point_count; ++i) {
+    const TrajectoryPoint& p = trajectory.points[i];
+    EXPECT_TRUE(p.state.allFinite() && std::isfinite(p.drag_lbf) && std::isfinite(p.lift_lbf) &&
+                std::isfinite(p.alpha_rad) && std::isfinite(p.weight_lb)) << i;
+  }
+}
+
+}  // namespace
+}  // namespace tolip

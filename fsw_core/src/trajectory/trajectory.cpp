@@ -295,6 +295,7 @@ Status Flight::fly_stage(const StageTimeline& line, StateVector* state) {
     latch_segments(stage, t, *state);
     const StepControls controls = controls_at(t);
     evaluate(stage, t, *state, controls, &eval);
+    if (!eval.derivative.allFinite()) return Status::kNonFiniteState;  // nothing NaN is stored
     Status status = record(stage, t, *state, controls, eval);
     if (!ok(status)) return status;
     if (eval.altitude_ft < kImpactAltitudeFt) return Status::kAltitudeBelowSurface;
@@ -321,6 +322,7 @@ Status Flight::fly_stage(const StageTimeline& line, StateVector* state) {
   latch_segments(stage, t_end, *state);
   const StepControls controls = controls_at(t_end);
   evaluate(stage, t_end, *state, controls, &eval);
+  if (!eval.derivative.allFinite()) return Status::kNonFiniteState;
   const Status status = record(stage, t_end, *state, controls, eval);
   if (!ok(status)) return status;
   if (eval.altitude_ft < kImpactAltitudeFt) return Status::kAltitudeBelowSurface;
