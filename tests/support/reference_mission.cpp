@@ -108,6 +108,36 @@ void build_reference_mission(ReferenceProgram program, Mission* m) {
                                       : initial["theta4_deg"].get<double>()) * kDegToRad;
   m->misc.stage4_chi_rad = b17["stage4_chi_deg"].get<double>() * kDegToRad;
   m->misc.nose_radius_ft = b17["nose_radius_ft"];
+  m->misc.gyro_uncage_s_before_launch = b17["gyro_uncage_s_before_launch"];
+  m->misc.payload_weighting_factor = b17["payload_weighting_factor"];
+  m->misc.coast_change_limit_s = b17["coast_change_limit_per_iteration_s"];
+  m->misc.minimum_coast_s = b17["minimum_coast_duration_s"];
+  const nlohmann::json& tlin = mis["pitch_program_definition"]["tlin_block18"];
+  m->linearization.segment_count = tlin[0];
+  for (size_t i = 1; i < tlin.size(); ++i) m->linearization.coded_start_times[i - 1] = tlin[i];
+  for (int i = 0; i < m->linearization.segment_count; ++i) m->linearization.segment_weights[i] = 1.0;
+  const nlohmann::json& b28 = mis["block28_convergence"];
+  m->convergence.initial_payoff_improvement = b28["initial_payoff_improvement_lb"];
+  m->convergence.stop_improvement = b28["stop_when_attempt_below_lb"];
+  m->convergence.max_forward_trajectories = b28["max_forward_trajectories"];
+  m->convergence.max_linearization_iterations = b28["max_linearization_iterations"];
+
+  const nlohmann::json& tc = mis["terminal_constraints"];
+  m->constraints.count = tc["block8_codes"][0];
+  for (int i = 0; i < m->constraints.count; ++i) {
+    m->constraints.codes[i] = tc["block8_codes"][i + 1];
+    m->constraints.desired[i] = tc["block19_desired_values"][i];
+  }
+  for (int i = 0; i + 1 < m->constraints.count; ++i) {
+    m->constraints.deadband_optimization[i] = tc["block29_allowed_deviations_optimization"][i];
+    m->constraints.deadband_linearization[i] = tc["block29_allowed_deviations_linearization"][i];
+  }
+  const nlohmann::json& adjustable = mis["adjustable_parameters_block6"]["codes"];
+  m->adjustable.count = adjustable[0];
+  m->adjustable.codes[0] = adjustable[1];
+  m->adjustable.codes[1] = adjustable[2];
+  m->adjustable.weights[0] = mis["weighting_block27"]["stage4_theta"];
+  m->adjustable.weights[1] = mis["weighting_block27"]["coast_after_stage3"];
 
   for (const auto& [key, value] : mis["block4_options_IP"].items()) {
     m->options.ip[std::stoi(key.substr(0, key.find('_')))] = value.get<int>();

@@ -347,7 +347,17 @@ Status Flight::run() {
 
   for (int k = 0; k < prepared_.stage_count; ++k) {
     status = fly_stage(prepared_.timeline[k], &state);
-    if (!ok(status)) return status;
+    if (!ok(status)) {
+      // Keep the stage that failed as an event over the points it did fly.
+      StageEvent& event = trajectory_->stages[trajectory_->stage_count];
+      if (trajectory_->point_count > event.first_point) {
+        event.last_point = trajectory_->point_count - 1;
+        event.burnout_weight_lb = trajectory_->points[event.last_point].weight_lb;
+        event.weight_after_jettison_lb = event.burnout_weight_lb;
+        ++trajectory_->stage_count;
+      }
+      return status;
+    }
   }
   // Weight after each jettison: the next stage's first weight (the last stage keeps its own).
   for (int k = 0; k < trajectory_->stage_count; ++k) {

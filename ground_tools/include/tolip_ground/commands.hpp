@@ -1,0 +1,37 @@
+// The subcommands of the `tolip` program and the program itself (docs/cli.md).
+//
+// Every command writes its normal output to `out` and its diagnostics to `err` as
+// "tolip: <message>", and returns the process exit code.
+#pragma once
+
+#include <ostream>
+#include <string>
+
+namespace tolip::ground {
+
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitFailure = 1;   // run-time or core failure (trajectory, orbit, file write)
+inline constexpr int kExitBadInput = 2;  // bad command line or deck
+
+// `tolip atmosphere --altitude-ft H [--json]`
+struct AtmosphereCommandOptions {
+  double altitude_ft = 0.0;  // geometric altitude
+  bool json = false;
+};
+int run_atmosphere_command(const AtmosphereCommandOptions& options, std::ostream& out,
+                           std::ostream& err);
+
+// `tolip simulate DECK [--csv FILE] [--json]`
+struct SimulateCommandOptions {
+  std::string deck_path;
+  std::string csv_path;  // empty: no CSV
+  bool json = false;
+};
+int run_simulate_command(const SimulateCommandOptions& options, std::ostream& out,
+                         std::ostream& err);
+
+// The whole program: parses the command line (CLI11), runs the subcommand, maps parse errors to
+// kExitBadInput. `tolip --help` and `--version` print to `out` and return kExitOk.
+int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream& err);
+
+}  // namespace tolip::ground

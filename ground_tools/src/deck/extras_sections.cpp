@@ -1,0 +1,445 @@
+// The deck sections of the optional computations (data blocks 33-37, 41-55) -> DeckExtras.
+//
+// Shape is checked here (numbers, table monotonicity, counts, the data each option needs); the
+// values are kept for the modules that will use them (docs/deck-format.md).
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "toml_reader.hpp"
+
+namespace tolip::ground::deck_detail {
+namespace {
+
+std::string str(int value) { return std::to_string(value); }
+
+// A table sub-section read completely (two arrays, nothing else).
+DeckTable read_table(Section& parent, std::string_view key, int block, std::string_view x_key,
+                     std::string_view y_key, const std::string& x_what, const std::string& y_what,
+                     double y_scale, const std::string& what) {
+  Section section = parent.table(key, block, what);
+  const ReadTable read = section.xy(x_key, y_key, block, x_what, y_what);
+  section.finish();
+  return to_deck_table(read, y_scale);
+}
+
+std::optional<DeckTable> read_optional_table(Section& parent, std::string_view key, int block,
+                                             std::string_view x_key, std::string_view y_key,
+                                             const std::string& x_what, const std::string& y_what,
+                                             double y_scale) {
+  std::optional<Section> section = parent.optional_table(key, block);
+  if (!section) return std::nullopt;
+  const ReadTable read = section->xy(x_key, y_key, block, x_what, y_what);
+  section->finish();
+  return to_deck_table(read, y_scale);
+}
+
+template <std::size_t N>
+std::array<double, N> fixed_numbers(Section& section, std::string_view key, int block, const std::string& what,
+                                    bool required, std::array<double, N> fallback, double scale = 1.0) {
+  std::optional<std::vector<double>> values =
+      required ? std::optional<std::vector<double>>(section.numbers(key, block, what, static_cast<int>(N)))
+               : section.optional_numbers(key, block, what, static_cast<int>(N));
+  if (!values) return fallback;
+  std::array<double, N> out{};
+  for (std::size_t i = 0; i < N; ++i) out[i] = (*values)[i] * scale;
+  return out;
+}
+
+int positive_integer(Section& section, std::string_view key, int block, const std::string& what) {
+  const int value = section.integer(key, block, what);
+  if (value < 1) section.fail_at(key, block, "expected a positive integer (" + what + "), got " + str(value));
+  return value;
+}
+
+// ---- data blocks 33-37 --------------------------------------------------------------------------
+void read_body_dynamics(Section& root, const Options& options, BodyDynamicsData* body) {
+  std::optional<Section> section = root.optional_table("body_dynamics", 33);
+  const bool six_d = options.body_dynamics_6d() >= 1 || options.dispersions();
+  const bool hardover = options.hardover();
+  const bool impact = options.impact();
+  if (!section) {
+    if (six_d || hardover || impact) {
+      root.fail(33, "body_dynamics",
+                std::string("missing [body_dynamics] (data blocks 33-37): required by ") +
+                    (six_d ? "options.body_dynamics_6d / options.dispersions (IP(6), IP(21))"
+                           : hardover ? "options.hardover (IP(22): block 33 words 7, 10, 11, 16 and block 37)"
+                                      : "options.impact (IP(23): block 33 words 17-19)"));
+    }
+    return;
+  }
+  body->present = true;
+  const bool all = six_d;
+  body->position_gain = fixed_numbers<3>(*section, "position_gain_deg_per_deg", 33,
+                                         "DA6D(1-3) K_theta position gain of stages 1-3, deg/deg", all, {});
+  body->rate_gain_s = fixed_numbers<3>(*section, "rate_gain_s", 33, "DA6D(4-6) K_theta-dot rate gain of stages 1-3, s",
+                                       all, {});
+  body->control_station_in = fixed_numbers<3>(
+      *section, "control_station_in", 33,
+      "DA6D(7-9) body station of the stage-1 jet vanes and fins and of the stage 2-3 control jets, in", all || hardover, {});
+  const std::string effectiveness_what =
+      "DA6D(10) jet vane effectiveness, lb per lb vacuum thrust per deg per vane";
+  body->jet_vane_effectiveness_per_rad_per_vane =
+      ((all || hardover) ? section->number("jet_vane_effectiveness_per_deg_per_vane", 33, effectiveness_what)
+                         : section->number_or("jet_vane_effectiveness_per_deg_per_vane", 33, effectiveness_what, 0.0)) /
+      kDegToRad;
+  const std::string station_what = "DA6D(11) X_FS, body station reference of the moment coefficients, in";
+  body->moment_reference_station_in = (all || hardover)
+                                          ? section->number("moment_reference_station_in", 33, station_what)
+                                          : section->number_or("moment_reference_station_in", 33, station_what, 0.0);
+  body->integration_frequency_multiplier =
+      fixed_numbers<4>(*section, "integration_frequency_multiplier", 33,
+                       "DA6D(12-15) 6D integration frequency multipliers of stages 1-4", false, {1.0, 1.0, 1.0, 1.0});
+  for (std::size_t i = 0; i < 4; ++i) {
+    if (!(body->integration_frequency_multiplier[i] >= 1.0)) {
+      section->fail_at("integration_frequency_multiplier", 33, "multipliers must be at least 1");
+    }
+  }
+  const std::string length_what = "DA6D(16) reference length of the aerodynamic moment data, ft";
+  body->reference_length_ft = (all || hardover) ? section->number("reference_length_ft", 33, length_what)
+                                                : section->number_or("reference_length_ft", 33, length_what, 0.0);
+  if (section->has("impact_every_nth_step") || impact) {
+    const std::vector<int> nth =
+        section->integers("impact_every_nth_step", 33, "DA6D(17-19) impact computed from every n-th step of stages 1-3");
+    if (nth.size() != 3) section->fail_at("impact_every_nth_step", 33, "expected 3 integers (stages 1-3), got " + str(static_cast<int>(nth.size())));
+    for (std::size_t i = 0; i < 3; ++i) {
+      if (nth[i] < 1) section->fail_at("impact_every_nth_step", 33, "every n-th step needs n >= 1");
+      body->impact_every_nth_step[i] = nth[i];
+    }
+  }
+
+  auto table = [&](std::string_view key, int block, std::string_view y_key, const std::string& y_what,
+                   double scale, bool required, DeckTable* out) {
+    if (required) {
+      *out = read_table(*section, key, block, "mach", y_key, "Mach number", y_what, scale,
+                        "data block " + str(block) + ": mach and " + std::string(y_key) + " arrays");
+    } else if (auto read = read_optional_table(*section, key, block, "mach", y_key, "Mach number", y_what, scale)) {
+      *out = *read;
+    }
+  };
+  table("fin_normal_force", 34, "cn_delta_per_rad_per_fin", "C_N per radian per fin", 1.0, all,
+        &body->fin_normal_force_per_rad_per_fin);
+  table("pitching_moment", 35, "cm_alpha_per_rad", "C_M per radian of alpha about X_FS", 1.0, all,
+        &body->pitching_moment_per_rad);
+  table("fin_pitching_moment", 36, "cm_delta_per_rad_per_fin", "C_M per radian per fin about X_FS", 1.0, all,
+        &body->fin_pitching_moment_per_rad_per_fin);
+
+  std::optional<Section> cg = section->optional_table("cg", 37);
+  if (cg) {
+    for (auto&& [key, value] : cg->table()) {
+      const std::string name(key.str());
+      if (name != "1" && name != "2" && name != "3" && name != "4") {
+        cg->fail_at(name, 37, "unknown stage '" + name + "': data block 37 has c.g. tables for stages 1-4 ([body_dynamics.cg.N])");
+      }
+    }
+    for (int stage = 1; stage <= 4; ++stage) {
+      if (auto read = read_optional_table(*cg, str(stage), 37, "stage_time_s", "station_in", "stage time in s",
+                                          "c.g. body station in inches", 1.0)) {
+        body->cg_station_in[static_cast<std::size_t>(stage - 1)] = *read;
+      }
+    }
+    cg->finish();
+  }
+  // Block 37: stage 1 for 6D; stages 1-3 for dispersions ("data for stages 2 and 3 in data blocks
+  // 33 and 37") and hardover turns ("#37 all of data").
+  const int needed = (options.dispersions() || hardover) ? 3 : (options.body_dynamics_6d() >= 1 ? 1 : 0);
+  for (int stage = 1; stage <= needed; ++stage) {
+    if (body->cg_station_in[static_cast<std::size_t>(stage - 1)].empty()) {
+      section->fail(37, section->key_path("cg." + str(stage)),
+                    "missing [body_dynamics.cg." + str(stage) + "]: data block 37 c.g. history of stage " + str(stage) +
+                        " (stage_time_s, station_in) is required by the selected options");
+    }
+  }
+  section->finish();
+}
+
+// ---- data block 41 ------------------------------------------------------------------------------
+void read_radar(Section& root, const Options& options, std::vector<RadarStation>* stations) {
+  std::vector<Section> entries = root.array_of_tables("radar_station", 41);
+  if (options.radar() && entries.empty()) {
+    root.fail(41, "radar_station", "options.radar (IP(24)) is set: at least one [[radar_station]] (data block 41) is required");
+  }
+  if (static_cast<int>(entries.size()) > kMaxRadarStations) {
+    entries[kMaxRadarStations].fail(41, entries[kMaxRadarStations].path(),
+                                    "too many radar stations (" + str(static_cast<int>(entries.size())) + "): at most 20");
+  }
+  for (Section& entry : entries) {
+    RadarStation station;
+    const std::optional<std::string> id = entry.optional_text("id", 41, "station identification, 2A6", 12);
+    if (!id || id->empty()) entry.missing("id", 41, "the station identification (up to 12 characters)");
+    station.id = *id;
+    station.name = entry.optional_text("name", 41, "station description (not a manual word)", 200).value_or("");
+    station.geodetic_latitude_rad = entry.number("geodetic_latitude_deg", 41, "geodetic latitude, deg") * kDegToRad;
+    station.longitude_rad = entry.number("longitude_deg", 41, "longitude, deg east") * kDegToRad;
+    station.altitude_ft = entry.number("altitude_ft", 41, "station altitude, ft");
+    if (std::abs(station.geodetic_latitude_rad) > 0.5 * kPi) {
+      entry.fail_at("geodetic_latitude_deg", 41, "latitude must be within -90..90 deg");
+    }
+    entry.finish();
+    stations->push_back(station);
+  }
+}
+
+// ---- data blocks 42-43 --------------------------------------------------------------------------
+void read_impact_group(Section& impact, std::string_view key, int block, bool casing, const Mission& mission,
+                       bool required, std::array<ImpactDragTable, 3>* tables) {
+  std::optional<Section> group = impact.optional_table(key, block);
+  if (group) {
+    for (auto&& [name_key, value] : group->table()) {
+      const std::string name(name_key.str());
+      if (name != "1" && name != "2" && name != "3") {
+        group->fail_at(name, block, "unknown stage '" + name + "': data block " + str(block) +
+                                        " has drag tables for stages 1-3 only");
+      }
+    }
+  }
+  for (int stage = 1; stage <= 3; ++stage) {
+    ImpactDragTable& table = (*tables)[static_cast<std::size_t>(stage - 1)];
+    const StageData& data = mission.vehicle.stages[stage_index(stage)];
+    std::optional<Section> section = group ? group->optional_table(str(stage), block) : std::nullopt;
+    if (!section) {
+      if (required && data.in_sequence) {
+        impact.fail(block, impact.key_path(std::string(key) + "." + str(stage)),
+                    "missing [" + impact.key_path(std::string(key) + "." + str(stage)) + "]: options.impact (IP(23)) needs the data block " +
+                        str(block) + " drag table of every stage 1-3 in the sequence");
+      }
+      continue;
+    }
+    const ReadTable read = section->xy("mach", "cd", block, "Mach number", "drag coefficient", 2);
+    if (read.x.front() != 0.0) {
+      section->fail_at("mach", block, "impact drag tables must start at Mach 0 (manual, data blocks 42-43), got " +
+                                          format_number(read.x.front()));
+    }
+    table.present = true;
+    table.cd_vs_mach = to_deck_table(read);
+    table.reference_area_ft2 = section->number_or(
+        "reference_area_ft2", block, "reference area of the table, ft^2 (extension; default the stage's block 39 area)",
+        data.reference_area_ft2);
+    if (!(table.reference_area_ft2 > 0.0)) section->fail_at("reference_area_ft2", block, "reference area must be positive");
+    if (casing) {
+      table.casing_weight_lb = section->number_or(
+          "casing_weight_lb", block, "weight of the expended casing, lb (extension; default the stage's jettison weight)",
+          data.jettison_weight_lb);
+      if (table.casing_weight_lb < 0.0) section->fail_at("casing_weight_lb", block, "casing weight must not be negative");
+    }
+    section->finish();
+  }
+  if (group) group->finish();
+}
+
+void read_impact(Section& root, const Mission& mission, ImpactData* impact) {
+  std::optional<Section> section = root.optional_table("impact", 42);
+  const bool required = mission.options.impact();
+  if (!section) {
+    if (required) {
+      root.fail(42, "impact", "options.impact (IP(23)) is set: [impact] with failure_drag and casing_drag tables "
+                              "(data blocks 42-43) is required");
+    }
+    return;
+  }
+  impact->present = true;
+  read_impact_group(*section, "failure_drag", 42, false, mission, required, &impact->failure_mode);
+  read_impact_group(*section, "casing_drag", 43, true, mission, required, &impact->expended_casing);
+  section->finish();
+}
+
+// ---- data blocks 44-45 --------------------------------------------------------------------------
+void read_hardover(Section& root, const Mission& mission, HardoverData* hardover) {
+  std::optional<Section> section = root.optional_table("hardover", 44);
+  if (!section) {
+    if (mission.options.hardover()) {
+      root.fail(44, "hardover", "options.hardover (IP(22)) is set: [hardover] (data blocks 44-45) is required");
+    }
+    return;
+  }
+  hardover->present = true;
+  std::optional<Section> inertia = section->optional_table("pitch_inertia", 44);
+  if (!inertia) section->missing("pitch_inertia", 44, "[hardover.pitch_inertia.N] I_yy tables of stages 1-3 (data block 44)");
+  for (auto&& [key, value] : inertia->table()) {
+    const std::string name(key.str());
+    if (name != "1" && name != "2" && name != "3") {
+      inertia->fail_at(name, 44, "unknown stage '" + name + "': data block 44 has I_yy tables for stages 1-3");
+    }
+  }
+  for (int stage = 1; stage <= 3; ++stage) {
+    if (!mission.vehicle.stages[stage_index(stage)].in_sequence) {
+      if (auto read = read_optional_table(*inertia, str(stage), 44, "stage_time_s", "iyy_slug_ft2", "stage time in s",
+                                          "pitch moment of inertia in slug ft^2", 1.0)) {
+        hardover->pitch_inertia_slug_ft2[static_cast<std::size_t>(stage - 1)] = *read;
+      }
+      continue;
+    }
+    hardover->pitch_inertia_slug_ft2[static_cast<std::size_t>(stage - 1)] =
+        read_table(*inertia, str(stage), 44, "stage_time_s", "iyy_slug_ft2", "stage time in s",
+                   "pitch moment of inertia in slug ft^2", 1.0,
+                   "data block 44 IYY" + str(stage) + ": stage_time_s and iyy_slug_ft2 arrays");
+  }
+  inertia->finish();
+  hardover->stage1_pitch_damping_per_rad =
+      read_table(*section, "pitch_damping", 44, "mach", "cmq_per_rad", "Mach number", "CMQ per radian", 1.0,
+                 "data block 44 (stage code 4): stage 1 pitch damping, mach and cmq_per_rad arrays");
+
+  Section p = section->table("parameters", 45, "data block 45: the 26 hardover words");
+  auto nth = [&p](const char* key, const std::string& what) { return positive_integer(p, key, 45, what); };
+  auto positive = [&p](const char* key, const std::string& what, double scale) {
+    const double value = p.number(key, 45, what);
+    if (!(value > 0.0)) p.fail_at(key, 45, "expected a positive value (" + what + "), got " + format_number(value));
+    return value * scale;
+  };
+  auto any = [&p](const char* key, const std::string& what, double scale) { return p.number(key, 45, what) * scale; };
+  hardover->stage1_every_nth_step = nth("stage1_every_nth_step", "word 1: stage 1 turns every n-th integration step");
+  hardover->max_qbar_alpha_lb_rad_ft2 =
+      positive("max_qbar_alpha_lb_deg_ft2", "word 2: (q alpha)max, lb deg/ft^2", kDegToRad);
+  hardover->stage1_max_attitude_step_rad =
+      positive("stage1_max_attitude_step_deg", "word 3: maximum pitch change per step, deg", kDegToRad);
+  hardover->stage1_max_step_s = positive("stage1_max_step_s", "word 4: maximum integration step, s", 1.0);
+  hardover->stage1_min_step_s = positive("stage1_min_step_s", "word 5: minimum integration step, s", 1.0);
+  hardover->stage1_max_steps_per_turn = nth("stage1_max_steps_per_turn", "word 6: maximum integration steps per turn");
+  hardover->thrust_misalignment_rad[0] =
+      any("stage1_thrust_misalignment_deg", "word 7: stage 1 thrust misalignment, deg", kDegToRad);
+  hardover->thrust_misalignment_rad[1] =
+      any("stage2_thrust_misalignment_deg", "word 8: stage 2 thrust misalignment, deg", kDegToRad);
+  hardover->thrust_misalignment_rad[2] =
+      any("stage3_thrust_misalignment_deg", "word 9: stage 3 thrust misalignment, deg", kDegToRad);
+  hardover->stage1_thrust_station_in = any("stage1_thrust_station_in", "word 10: stage 1 thrust application station, in", 1.0);
+  hardover->stage1_fin_vane_deflection_rad =
+      any("stage1_fin_vane_deflection_deg", "word 11: stage 1 fin and vane deflection, deg", kDegToRad);
+  hardover->mode_b_jet_force_lb[0] = any("mode_b_stage2_jet_force_lb", "word 12: mode B stage 2 control jet force, lb", 1.0);
+  hardover->mode_b_jet_force_lb[1] = any("mode_b_stage3_jet_force_lb", "word 13: mode B stage 3 control jet force, lb", 1.0);
+  hardover->mode_c_jet_force_lb[0] = any("mode_c_stage2_jet_force_lb", "word 14: mode C stage 2 control jet force, lb", 1.0);
+  hardover->mode_c_jet_force_lb[1] = any("mode_c_stage3_jet_force_lb", "word 15: mode C stage 3 control jet force, lb", 1.0);
+  hardover->thrust_station_in[0] = any("stage2_thrust_station_in", "word 16: stage 2 thrust application station, in", 1.0);
+  hardover->thrust_station_in[1] = any("stage3_thrust_station_in", "word 17: stage 3 thrust application station, in", 1.0);
+  hardover->control_jet_station_in[0] =
+      any("stage2_control_jet_station_in", "word 18: stage 2 control jet application station, in", 1.0);
+  hardover->control_jet_station_in[1] =
+      any("stage3_control_jet_station_in", "word 19: stage 3 control jet application station, in", 1.0);
+  hardover->output_interval_s = positive("output_interval_s", "word 20: output interval, s", 1.0);
+  hardover->stage2_every_nth_step = nth("stage2_every_nth_step", "word 21: stage 2 turns every n-th integration step");
+  hardover->stage3_every_nth_step = nth("stage3_every_nth_step", "word 22: stage 3 turns every n-th integration step");
+  hardover->upper_max_attitude_step_rad =
+      positive("upper_max_attitude_step_deg", "word 23: upper stages maximum pitch change per step, deg", kDegToRad);
+  hardover->upper_max_step_s = positive("upper_max_step_s", "word 24: upper stages maximum integration step, s", 1.0);
+  hardover->upper_min_step_s = positive("upper_min_step_s", "word 25: upper stages minimum integration step, s", 1.0);
+  hardover->upper_max_steps_per_turn =
+      nth("upper_max_steps_per_turn", "word 26: upper stages maximum integration steps per turn");
+  if (hardover->stage1_min_step_s > hardover->stage1_max_step_s) {
+    p.fail_at("stage1_min_step_s", 45, "minimum step (word 5) exceeds the maximum step (word 4)");
+  }
+  if (hardover->upper_min_step_s > hardover->upper_max_step_s) {
+    p.fail_at("upper_min_step_s", 45, "minimum step (word 25) exceeds the maximum step (word 24)");
+  }
+  p.finish();
+  section->finish();
+}
+
+// ---- data blocks 46-55 --------------------------------------------------------------------------
+const char* dispersion_name(int code) {
+  if (code >= 1 && code <= 8) return "vacuum thrust variation";
+  if (code >= 9 && code <= 16) return "weight increment";
+  if (code == 17 || code == 18) return "drag variation";
+  if (code == 19 || code == 20) return "C_M_alpha variation";
+  if (code >= 21 && code <= 23) return "stage 1 thrust misalignment";
+  if (code >= 24 && code <= 29) return "control system deadband";
+  if (code >= 30 && code <= 32) return "stage 4/5 tip-off";
+  if (code == 33) return "launch azimuth";
+  if (code == 34 || code == 35) return "launch attitude";
+  if (code >= 36 && code <= 38) return "winds";
+  if (code == 40) return "three-sigma summary";
+  return nullptr;
+}
+
+void read_dispersion(Section& entry, int code, DispersionCase* out) {
+  const std::string label = "code " + str(code) + " (" + dispersion_name(code) + ")";
+  if (code >= 1 && code <= 8) {
+    out->stage = (code + 1) / 2;
+    const std::string stage = "stage " + str(out->stage);
+    out->vacuum_thrust_lbf = read_table(entry, "thrust", 30, "time_s", "vacuum_thrust_lbf", "stage time in s",
+                                        "vacuum thrust in lbf", 1.0,
+                                        "data block 30 replacement thrust table of " + stage + " for " + label);
+    out->consumable_weight_lb = read_table(entry, "consumable_weight", 38, "time_s", "remaining_lb", "stage time in s",
+                                           "consumable weight remaining in lb", 1.0,
+                                           "data block 38 replacement weight table of " + stage + " for " + label);
+    if (code >= 7) {
+      if (auto durations = entry.optional_numbers("stage_durations_s", 55, "stage 4 and 5 durations, s", 2)) {
+        out->has_stage_durations = true;
+        out->stage4_5_durations_s = {(*durations)[0], (*durations)[1]};
+      }
+    }
+  } else if (code >= 9 && code <= 16) {
+    out->stage = (code - 7) / 2;
+    out->weight_increment_lb = entry.number("weight_increment_lb", 47, "jettison weight increment (signed), lb");
+  } else if (code == 17 || code == 18) {
+    out->drag_variation_fraction =
+        entry.number("drag_variation_fraction", 48, "drag variation as a signed fraction (0.xxxx)");
+    if (std::abs(out->drag_variation_fraction) >= 1.0) {
+      entry.fail_at("drag_variation_fraction", 48, "expected a fraction 0.xxxx (|value| < 1)");
+    }
+  } else if (code == 19 || code == 20) {
+    out->stage = 1;
+    out->pitching_moment_per_rad = read_table(entry, "pitching_moment", 35, "mach", "cm_alpha_per_rad", "Mach number",
+                                              "C_M per radian of alpha about X_FS", 1.0,
+                                              "the complete data block 35 table for " + label);
+  } else if (code >= 21 && code <= 23) {
+    out->stage = 1;
+    out->misalignment_rad = entry.number("misalignment_deg", 49, "thrust misalignment angle (signed), deg") * kDegToRad;
+    out->thrust_station_in = entry.number("thrust_station_in", 49, "thrust application station, in");
+  } else if (code >= 24 && code <= 29) {
+    out->stage = code <= 26 ? 2 : 3;
+    out->deadband_rad = entry.number("deadband_deg", 50, "control system deadband angle (signed), deg") * kDegToRad;
+  } else if (code >= 30 && code <= 32) {
+    out->stage = entry.optional_integer("stage", 51, "spun stage of the tip-off, 4 or 5").value_or(4);
+    if (out->stage != 4 && out->stage != 5) entry.fail_at("stage", 51, "tip-off applies to stage 4 or 5");
+    out->tipoff_rad = entry.number("tipoff_deg", 51, "effective attitude change from tip-off (signed), deg") * kDegToRad;
+  } else if (code == 33) {
+    out->stage = 1;
+    out->launch_change_rad = entry.number("launch_azimuth_change_deg", 52, "launch azimuth change (signed), deg") * kDegToRad;
+  } else if (code == 34 || code == 35) {
+    out->stage = 1;
+    out->launch_change_rad =
+        entry.number("launch_attitude_change_deg", 52, "launch attitude change (signed), deg") * kDegToRad;
+  } else if (code >= 36 && code <= 38) {
+    out->wind_speed_ft_s = read_table(entry, "wind_speed", 53, "altitude_ft", "speed_ft_s", "altitude in ft",
+                                      "wind speed in ft/s", 1.0, "data block 53 WINDVL table for " + label);
+    out->wind_azimuth_rad = read_table(entry, "wind_azimuth", 54, "altitude_ft", "azimuth_deg", "altitude in ft",
+                                       "azimuth of the wind vector in deg from north", kDegToRad,
+                                       "data block 54 WINDAZ table for " + label);
+  }
+}
+
+void read_dispersions(Section& root, const Options& options, std::vector<DispersionCase>* dispersions) {
+  std::vector<Section> entries = root.array_of_tables("dispersion", 46);
+  if (options.dispersions() && entries.empty()) {
+    root.fail(46, "dispersion", "options.dispersions (IP(21)) is set: at least one [[dispersion]] (data block 46) is required");
+  }
+  int previous = 0;
+  for (Section& entry : entries) {
+    DispersionCase dispersion;
+    dispersion.code = entry.integer("code", 46, "dispersion trajectory code 1-38 or 40");
+    if (dispersion_name(dispersion.code) == nullptr) {
+      entry.fail_at("code", 46, "unknown dispersion code " + str(dispersion.code) +
+                                    ": expected 1-38 (the manual's dispersion table) or 40 (three-sigma summary)");
+    }
+    if (dispersion.code <= previous) {
+      entry.fail_at("code", 46, "dispersion codes must be given in increasing order: " + str(dispersion.code) +
+                                    " follows " + str(previous));
+    }
+    previous = dispersion.code;
+    dispersion.title = entry.optional_text("title", 46, "data block 46 title, 2A6", 12).value_or("");
+    read_dispersion(entry, dispersion.code, &dispersion);
+    entry.finish();
+    dispersions->push_back(std::move(dispersion));
+  }
+}
+
+}  // namespace
+
+void read_extras_sections(Section& root, const Mission& mission, DeckExtras* extras) {
+  read_body_dynamics(root, mission.options, &extras->body_dynamics);
+  read_radar(root, mission.options, &extras->radar_stations);
+  read_impact(root, mission, &extras->impact);
+  read_hardover(root, mission, &extras->hardover);
+  read_dispersions(root, mission.options, &extras->dispersions);
+}
+
+}  // namespace tolip::ground::deck_detail

@@ -1,0 +1,717 @@
+// The deck sections that fill the core's Mission (data blocks 1-40; docs/deck-format.md).
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "toml_reader.hpp"
+
+namespace tolip::ground::deck_detail {
+namespace {
+
+constexpr int kCanonicalSequence[kMaxStages] = {1, 6, 2, 7, 3, 8, 4, 9, 5, 10};
+
+std::string str(int value) { return std::to_string(value); }
+
+void copy_text(const std::string& text, char* destination, std::size_t capacity) {
+  const std::size_t length = text.size() < capacity - 1 ? text.size() : capacity - 1;
+  std::memcpy(destination, text.data(), length);
+  destination[length] = '\0';
+}
+
+template <int N>
+void fill_table(Section& section, std::string_view x_key, const ReadTable& read, double y_scale,
+                int data_block, const std::string& capacity_note, Table<N>* table) {
+  table->clear();
+  if (static_cast<int>(read.x.size()) > N) {
+    section.fail_at(x_key, data_block,
+                    "table has " + str(static_cast<int>(read.x.size())) + " points; at most " + str(N) +
+                        " allowed (" + capacity_note + ")");
+  }
+  for (std::size_t i = 0; i < read.x.size(); ++i) {
+    const Status status = table->append(read.x[i], read.y[i] * y_scale);
+    if (!ok(status)) {
+      section.fail_at(x_key, data_block, std::string(status_name(status)) + ": " + status_message(status));
+    }
+  }
+  const Status status = table->finalize();
+  if (!ok(status)) {
+    section.fail_at(x_key, data_block, std::string(status_name(status)) + ": " + status_message(status));
+  }
+}
+
+// ---- data blocks 1-3 ----------------------------------------------------------------------------
+void read_case(Section& root, Mission* mission) {
+  Section section = root.table("case", 1, "data blocks 1-3: title, case heading and date");
+  const std::optional<std::string> title =
+      section.optional_text("title", 1, "data block 1 main heading, 12A6", 72);
+  if (!title) section.missing("title", 1, "the main heading (data block 1, up to 72 characters)");
+  copy_text(*title, mission->title, sizeof(mission->title));
+  copy_text(section.optional_text("heading", 2, "data block 2 case heading, 12A6", 72).value_or(""),
+            mission->case_heading, sizeof(mission->case_heading));
+  copy_text(section.optional_text("date", 3, "data block 3 date, 2A6", 12).value_or(""), mission->date,
+            sizeof(mission->date));
+  section.finish();
+}
+
+// ---- data block 4 -------------------------------------------------------------------------------
+void read_options(Section& root, Options* options) {
+  std::optional<Section> section = root.optional_table("options", 4);
+  if (!section) return;
+  struct Flag {
+    const char* key;
+    int ip;
+    const char* what;
+  };
+  static const Flag kFlags[] = {
+      {"heating_constraint", 2, "IP(2) heating inequality constraint"},
+      {"exchange_ratios", 3, "IP(3) performance exchange ratios"},
+      {"linearization", 7, "IP(7) pitch-program linearization after optimization"},
+      {"zero_alpha_window", 11, "IP(11) zero-alpha constraint in stage 1 (block 22 times)"},
+      {"alpha_zero_at_stage2_ignition", 12, "IP(12) alpha = 0 at stage 2 ignition"},
+      {"memory_dump", 15, "IP(15) memory dump"},
+      {"print_input", 17, "IP(17) output of the input data"},
+      {"dispersions", 21, "IP(21) dispersed trajectories"},
+      {"hardover", 22, "IP(22) failure-mode hardover turns"},
+      {"impact", 23, "IP(23) nominal impact locus"},
+      {"radar", 24, "IP(24) radar tracking coordinates"},
+  };
+  struct Choice {
+    const char* key;
+    int ip;
+    int low;
+    int high;
+    const char* what;
+  };
+  static const Choice kChoices[] = {
+      {"payoff", 1, 0, 2, "IP(1) payoff: 0 payload, 1 velocity, 2 altitude"},
+      {"body_dynamics_6d", 6, 0, 2, "IP(6) 6D: 0 none, 1 after successful linearization, 2 on the initial nominal"},
+      {"spin_stages_4_5", 9, 0, 3, "IP(9) stages 4 and 5: 1 both spun, 2 stage 4 continuous and 5 spun, 3 both continuous (0: no stage 4)"},
+      {"stage5_chi", 10, 0, 2, "IP(10) stage 5 chi: 0 fewer than 5 stages, 1 chi5 = chi4, 2 independent"},
+      {"qbar_constraint_type", 13, 0, 1, "IP(13) q-bar constraint at stage 2 ignition: 0 none or equality, 1 inequality"},
+  };
+  for (const Flag& flag : kFlags) {
+    if (const std::optional<int> value = section->optional_flag(flag.key, 4, flag.what)) {
+      options->ip[flag.ip] = *value;
+    }
+  }
+  for (const Choice& choice : kChoices) {
+    if (const std::optional<int> value = section->optional_integer(choice.key, 4, choice.what)) {
+      if (*value < choice.low || *value > choice.high) {
+        section->fail_at(choice.key, 4, "value " + str(*value) + " out of range: expected " +
+                                            str(choice.low) + "-" + str(choice.high) + " (" + choice.what + ")");
+      }
+      options->ip[choice.ip] = *value;
+    }
+  }
+  section->finish();
+  if (options->ip[6] == 1 && options->ip[7] != 1) {
+    section->fail_at("body_dynamics_6d", 4,
+                     "IP(6) = 1 (6D after successful linearization) requires linearization = true (IP(7) = 1)");
+  }
+}
+
+// ---- data block 10 ------------------------------------------------------------------------------
+void read_constants(Section& root, Constants* constants) {
+  std::optional<Section> section = root.optional_table("constants", 10);
+  if (!section) return;
+  struct Entry {
+    const char* key;
+    double Constants::*field;
+    const char* what;
+  };
+  static const Entry kEntries[] = {
+      {"earth_rotation_rate_rad_s", &Constants::earth_rotation_rate_rad_s, "CT1(1) Earth rotation rate, rad/s"},
+      {"gravitational_parameter_ft3_s2", &Constants::gravitational_parameter_ft3_s2, "CT1(2) mu, ft^3/s^2"},
+      {"earth_equatorial_radius_ft", &Constants::earth_equatorial_radius_ft, "CT1(3) equatorial radius, ft"},
+      {"gas_constant_ft2_s2_R", &Constants::gas_constant_ft2_s2_R, "CT1(4) gas constant, ft^2/(s^2 R)"},
+      {"g0_ft_s2", &Constants::g0_ft_s2, "CT1(5) weight-to-mass factor g0, ft/s^2"},
+      {"sea_level_pressure_lbf_ft2", &Constants::sea_level_pressure_lbf_ft2, "CT1(6) sea-level pressure, lbf/ft^2"},
+      {"haero_ft", &Constants::haero_ft, "CT1(7) HAERO, ft"},
+      {"lines_per_page", &Constants::lines_per_page, "CT1(8) lines per page"},
+      {"deg_to_rad_as_printed", &Constants::deg_to_rad_as_printed, "CT1(9) degrees to radians (echo only)"},
+      {"time_epsilon_s", &Constants::time_epsilon_s, "CT1(10) TIMEP, s"},
+      {"j2", &Constants::j2, "CT1(11) J2"},
+      {"inverse_flattening", &Constants::inverse_flattening, "CT1(12) inverse flattening"},
+      {"ct1_13", &Constants::ct1_13, "CT1(13)"},
+  };
+  for (const Entry& entry : kEntries) {
+    if (const std::optional<double> value = section->optional_number(entry.key, 10, entry.what)) {
+      constants->*entry.field = *value;
+    }
+  }
+  section->finish();
+}
+
+// ---- data blocks 11-14 --------------------------------------------------------------------------
+void read_atmosphere(Section& root, AtmosphereTable* atmosphere) {
+  std::optional<Section> section = root.optional_table("atmosphere", 11);
+  if (!section) return;
+  struct Entry {
+    const char* key;
+    int block;
+    double* values;
+    const char* what;
+  };
+  const Entry entries[] = {
+      {"base_geopotential_altitude_ft", 11, atmosphere->base_geopotential_altitude_ft,
+       "CT2, base geopotential altitude of the 8 layers, ft'"},
+      {"base_molecular_temperature_R", 12, atmosphere->base_molecular_temperature_R,
+       "CT3, base molecular-scale temperature of the 8 layers, deg R"},
+      {"lapse_rate_R_per_ft", 13, atmosphere->lapse_rate_R_per_ft,
+       "CT4, lapse rate of the 8 layers, deg R per geopotential ft"},
+      {"base_density_slug_ft3", 14, atmosphere->base_density_slug_ft3,
+       "CT5, base density of the 8 layers, slug/ft^3"},
+  };
+  for (const Entry& entry : entries) {
+    if (const auto values = section->optional_numbers(entry.key, entry.block, entry.what, kAtmosphereLayers)) {
+      for (int i = 0; i < kAtmosphereLayers; ++i) entry.values[i] = (*values)[static_cast<std::size_t>(i)];
+    }
+  }
+  section->finish();
+}
+
+// ---- data blocks 5, 32 and the payload ---------------------------------------------------------
+void read_vehicle(Section& root, Vehicle* vehicle) {
+  Section section = root.table("vehicle", 5, "data block 5 (stage sequence) and the payload");
+  std::vector<int> codes = section.integers("sequence", 5, "stage codes in flight order");
+  if (!codes.empty() && codes.back() == 0) codes.pop_back();  // the card's terminating 0
+  if (codes.empty()) {
+    section.fail_at("sequence", 5, "empty stage sequence: expected at least stage 1 (a prefix of 1 6 2 7 3 8 4 9 5 10)");
+  }
+  if (static_cast<int>(codes.size()) > kMaxStages) {
+    section.fail_at("sequence", 5, "too many stages (" + str(static_cast<int>(codes.size())) +
+                                       "): at most 10 codes, a prefix of 1 6 2 7 3 8 4 9 5 10");
+  }
+  Reader& reader = section.reader();
+  for (std::size_t k = 0; k < codes.size(); ++k) {
+    const int code = codes[k];
+    const int line = section.element_line("sequence", k);
+    const std::string field = section.key_path("sequence") + "[" + str(static_cast<int>(k)) + "]";
+    if (code == 0) {
+      reader.fail(line, 5, field, "0 ends the sequence and may appear only last");
+    }
+    if (!is_powered_stage(code) && !is_coast_stage(code)) {
+      reader.fail(line, 5, field,
+                  "unknown stage code " + str(code) +
+                      ": expected 1-5 (powered stages) or 6-10 (the coasts after stages 1-5)");
+    }
+    if (code != kCanonicalSequence[k]) {
+      reader.fail(line, 5, field,
+                  "stage code " + str(code) + " cannot be at position " + str(static_cast<int>(k) + 1) +
+                      ": the sequence must be a prefix of 1 6 2 7 3 8 4 9 5 10 starting with 1 (expected " +
+                      str(kCanonicalSequence[k]) + " here)");
+    }
+    vehicle->sequence.codes[k] = code;
+  }
+  vehicle->sequence.count = static_cast<int>(codes.size());
+  for (int k = 0; k < vehicle->sequence.count; ++k) {
+    vehicle->stages[stage_index(vehicle->sequence.codes[k])].in_sequence = true;
+  }
+
+  vehicle->payload_lb = section.number(
+      "payload_lb", 39, "payload weight in lb, carried in the jettison weight of the last powered stage");
+
+  if (std::optional<Section> lift = section.optional_table("lift_curve_slope", 32)) {
+    const ReadTable read = lift->xy("mach", "cl_alpha_per_rad", 32, "Mach number", "C_L per radian of alpha");
+    fill_table(*lift, "mach", read, 1.0, 32, "data block 32, 42E12.8: 20 pairs", &vehicle->lift_curve_slope_per_rad);
+    std::vector<int> used = {1, 6};
+    if (lift->has("used_in_stages")) {
+      used = lift->integers("used_in_stages", 32, "stage codes using the lift table (1 and/or 6)");
+    }
+    for (std::size_t i = 0; i < used.size(); ++i) {
+      if (used[i] != 1 && used[i] != 6) {
+        section.reader().fail(lift->element_line("used_in_stages", i), 32,
+                              lift->key_path("used_in_stages") + "[" + str(static_cast<int>(i)) + "]",
+                              "stage " + str(used[i]) + " cannot use the lift table: data block 32 is used in stages 1 and 6 only");
+      }
+      vehicle->stages[stage_index(used[i])].uses_lift_table = true;
+    }
+    lift->finish();
+  }
+  section.finish();
+}
+
+// ---- data blocks 16, 30, 31, 38, 39 -------------------------------------------------------------
+void read_stage(Section& section, int code, StageData* stage) {
+  const bool powered = is_powered_stage(code);
+  const std::string kind = powered ? "powered stage " + str(code) : "coast " + str(code);
+  section.optional_text("name", 16, "description of the stage (not a manual word)", 200);
+  stage->integration_steps = section.integer(
+      "integration_steps", 16, "data block 16 DA1(" + str(2 * code) + "): integration steps of " + kind);
+
+  const std::string sg = "data block 39 SG" + str(code);
+  if (powered) {
+    stage->jettison_weight_lb = section.number("jettison_weight_lb", 39, sg + "(1) jettison weight, lb");
+    stage->nozzle_exit_area_ft2 = section.number_or("nozzle_exit_area_ft2", 39, sg + "(3) nozzle exit area, ft^2", 0.0);
+  } else {
+    stage->jettison_weight_lb = section.number_or("jettison_weight_lb", 39, sg + "(1) jettison weight, lb", 0.0);
+    if (section.has("nozzle_exit_area_ft2")) {
+      section.fail_at("nozzle_exit_area_ft2", 39,
+                      "a coast has no nozzle: data block 39 gives coasts only the jettison weight and the reference area");
+    }
+  }
+  stage->reference_area_ft2 = section.number_or("reference_area_ft2", 39, sg + "(2) aerodynamic reference area, ft^2", 0.0);
+
+  if (powered) {
+    Section thrust = section.table("thrust", 30, "data block 30: time_s and vacuum_thrust_lbf arrays of " + kind);
+    const ReadTable thrust_read = thrust.xy("time_s", "vacuum_thrust_lbf", 30, "stage time in s", "vacuum thrust in lbf", 2);
+    fill_table(thrust, "time_s", thrust_read, 1.0, 30, "data block 30: 120 thrust points for all stages together",
+               &stage->vacuum_thrust_lbf);
+    thrust.finish();
+
+    Section weight = section.table("consumable_weight", 38,
+                                   "data block 38: time_s and remaining_lb arrays of " + kind);
+    const ReadTable weight_read = weight.xy("time_s", "remaining_lb", 38, "stage time in s",
+                                            "consumable weight remaining in lb", 2);
+    fill_table(weight, "time_s", weight_read, 1.0, 38, "data block 38: 120 weight points for all stages together",
+               &stage->consumable_weight_lb);
+    weight.finish();
+
+    stage->duration_s = section.number_or("duration_s", 16,
+                                          "data block 16 DA1(" + str(2 * code - 1) + "): duration of " + kind + " in s",
+                                          stage->vacuum_thrust_lbf.last_x());
+  } else {
+    for (const char* key : {"thrust", "consumable_weight"}) {
+      if (section.has(key)) {
+        section.fail_at(key, std::string(key) == "thrust" ? 30 : 38,
+                        "a coast has no thrust or consumable-weight table (data blocks 30 and 38 are for powered stages 1-5)");
+      }
+    }
+    stage->duration_s = section.number("duration_s", 16,
+                                       "data block 16 DA1(" + str(2 * code - 1) + "): duration of " + kind + " in s");
+  }
+
+  if (std::optional<Section> drag = section.optional_table("drag", 31)) {
+    if (code != 1 && code != 2 && code != 6) {
+      section.fail_at("drag", 31, "data block 31 has drag tables for stages 1, 6 and 2 only (TD1, TD6, TD2)");
+    }
+    const ReadTable read = drag->xy("mach", "cd", 31, "Mach number", "drag coefficient at alpha = 0");
+    fill_table(*drag, "mach", read, 1.0, 31, "data block 31: 20 pairs", &stage->drag_coefficient);
+    drag->finish();
+  }
+  section.finish();
+}
+
+void read_stages(Section& root, Vehicle* vehicle) {
+  Section stages = root.table("stage", 16,
+                              "one [stage.N] table for every stage code N of the sequence (data blocks 16, 30, 31, 38, 39)");
+  for (auto&& [key, value] : stages.table()) {
+    const std::string name(key.str());
+    bool known = false;
+    for (int code = 1; code <= kMaxStages; ++code) known = known || name == str(code);
+    if (!known) {
+      int line = static_cast<int>(key.source().begin.line);
+      if (line == 0) line = line_of_node(value);
+      stages.reader().fail(line, 16, stages.key_path(name),
+                           "unknown stage code '" + name +
+                               "': expected [stage.N] with N = 1-5 (powered stages) or 6-10 (the coasts after stages 1-5)");
+    }
+  }
+  for (int code = 1; code <= kMaxStages; ++code) {
+    StageData* stage = &vehicle->stages[stage_index(code)];
+    std::optional<Section> section = stages.optional_table(str(code), 16);
+    if (section) {
+      read_stage(*section, code, stage);
+    } else if (stage->in_sequence) {
+      stages.fail(16, stages.key_path(str(code)),
+                  "stage " + str(code) + " is in the sequence (data block 5) but [stage." + str(code) +
+                      "] is missing: expected its duration and integration steps (data block 16)" +
+                      (is_powered_stage(code) ? ", jettison weight (39), thrust (30) and consumable weight (38) tables"
+                                              : ""));
+    }
+  }
+  stages.finish();
+}
+
+// ---- data blocks 20, 21 -------------------------------------------------------------------------
+bool read_launch(Section& root, LaunchConditions* launch) {
+  Section section = root.table("launch", 20, "data blocks 20-21: lift-off time, launch date and initial conditions");
+  launch->liftoff_duration_s = section.number("liftoff_duration_s", 20, "DA5(1) vertical lift-off duration, s");
+  const std::optional<double> date = section.optional_number(
+      "space_age_date_days", 20, "DA5(2) launch time, days from 0 h 1 January 1960 (Julian date - 2436934.5)");
+  launch->launch_space_age_date_days = date.value_or(0.0);
+  launch->altitude_ft = section.number("altitude_ft", 21, "DA6(1) launch altitude, ft");
+  launch->longitude_rad = section.number("longitude_deg", 21, "DA6(2) longitude, deg east of Greenwich") * kDegToRad;
+  launch->geocentric_latitude_rad =
+      section.number("geocentric_latitude_deg", 21, "DA6(3) geocentric latitude, deg") * kDegToRad;
+  launch->velocity_ft_s = section.number_or("velocity_ft_s", 21, "DA6(4) initial velocity, ft/s (must be 0)", 0.0);
+  launch->azimuth_rad = section.number("azimuth_deg", 21, "DA6(5) launch azimuth, deg east of north") * kDegToRad;
+  launch->flight_path_angle_rad =
+      section.number_or("flight_path_angle_deg", 21, "DA6(6) flight-path angle, deg (must be 90)", 90.0) * kDegToRad;
+  launch->heading_hold_until_s = section.number_or(
+      "heading_hold_until_s", 21, "heading hold (extension): dpsi/dt = 0 on steps starting before this time, s", 0.0);
+  section.finish();
+  return date.has_value();
+}
+
+// ---- data block 22 ------------------------------------------------------------------------------
+void read_control(Section& root, const Options& options, ControlConstraints* control) {
+  std::optional<Section> section = root.optional_table("control_constraints", 22);
+  if (!section) {
+    if (options.zero_alpha_window()) {
+      root.fail(22, "control_constraints",
+                "option zero_alpha_window (IP(11)) needs [control_constraints] with zero_alpha_start_s and "
+                "zero_alpha_end_s (data block 22)");
+    }
+    return;
+  }
+  if (options.zero_alpha_window()) {
+    control->zero_alpha_start_s = section->number("zero_alpha_start_s", 22, "DA7(1) start of alpha = 0, s from launch");
+    control->zero_alpha_end_s = section->number("zero_alpha_end_s", 22, "DA7(2) end of alpha = 0, s from launch");
+  } else {
+    control->zero_alpha_start_s = section->number_or("zero_alpha_start_s", 22, "DA7(1) start of alpha = 0, s from launch", 0.0);
+    control->zero_alpha_end_s = section->number_or("zero_alpha_end_s", 22, "DA7(2) end of alpha = 0, s from launch", 0.0);
+  }
+  control->max_pitch_rate_rad_s =
+      section->number_or("max_pitch_rate_deg_s", 22, "DA7(3) maximum pitch rate, deg/s", 0.0) * kDegToRad;
+  control->min_pitch_rate_rad_s =
+      section->number_or("min_pitch_rate_deg_s", 22, "DA7(4) minimum pitch rate, deg/s", 0.0) * kDegToRad;
+  control->min_pitch_rate_change_rad_s =
+      section->number_or("min_pitch_rate_change_deg_s", 22, "DA7(5) minimum change in pitch rate, deg/s", 0.0) * kDegToRad;
+  section->finish();
+}
+
+// ---- data block 17 ------------------------------------------------------------------------------
+void read_misc(Section& root, MiscellaneousData* misc) {
+  std::optional<Section> section = root.optional_table("misc", 17);
+  if (!section) return;
+  misc->stage4_theta_rad = section->number_or("stage4_theta_deg", 17, "DA2(5) stage 4 theta, deg", 0.0) * kDegToRad;
+  misc->stage4_chi_rad = section->number_or("stage4_chi_deg", 17, "DA2(6) stage 4 chi, deg", 0.0) * kDegToRad;
+  misc->nose_radius_ft = section->number_or("nose_radius_ft", 17, "DA2(7) nose radius, ft", 0.0);
+  misc->gyro_uncage_s_before_launch =
+      section->number_or("gyro_uncage_s_before_launch", 17, "DA2(8) gyro uncage time before launch, s", 0.0);
+  misc->stage5_theta_rad = section->number_or("stage5_theta_deg", 17, "DA2(9) stage 5 theta, deg", 0.0) * kDegToRad;
+  misc->stage5_chi_rad = section->number_or("stage5_chi_deg", 17, "DA2(10) stage 5 chi, deg", 0.0) * kDegToRad;
+  misc->payload_weighting_factor =
+      section->number_or("payload_weighting_factor", 17, "DA2(15) payload weighting factor", 1.0);
+  misc->coast_change_limit_s =
+      section->number_or("coast_change_limit_s", 17, "DA2(16) limit on coast change per iteration, s", 0.0);
+  misc->minimum_coast_s = section->number_or("minimum_coast_s", 17, "DA2(17) minimum coast duration, s", 0.0);
+  section->finish();
+}
+
+// ---- data blocks 8, 19, 29 ----------------------------------------------------------------------
+struct ConstraintUnit {
+  const char* suffix;  // key suffix in the deck
+  double to_core;      // deck value * to_core = DA4 pure units
+  const char* name;
+};
+
+bool constraint_unit(int code, ConstraintUnit* unit) {
+  static const ConstraintUnit kTerminal[] = {
+      {"lb", 1.0, "payload"},
+      {"ft_s", 1.0, "inertial velocity"},
+      {"deg", kDegToRad, "inertial flight-path angle"},
+      {"ft_s", 1.0, "V_I minus local circular velocity"},
+      {"ft", 1.0, "radius"},
+      {"ft_s", 1.0, "aerodynamic velocity"},
+      {"deg", kDegToRad, "aerodynamic flight-path angle"},
+      {"ft", 1.0, "altitude"},
+      {"nmi", 1.0, "downrange distance"},
+      {"ft2_s2", 1.0, "2E = V_I^2 - 2 mu / r"},
+      {"deg", kDegToRad, "orbit inclination"},
+      {"ft", 1.0, "perigee radius"},
+      {"deg", kDegToRad, "longitude of the ascending node"},
+      {"deg", kDegToRad, "argument of perigee"},
+      {"btu_ft2", 1.0, "total heating"},
+  };
+  static const ConstraintUnit kStagePoint[] = {
+      {"ft_s", 1.0, "aerodynamic velocity"},
+      {"deg", kDegToRad, "aerodynamic flight-path angle"},
+      {"ft", 1.0, "altitude"},
+      {"nmi", 1.0, "downrange distance"},
+      {"lb_ft2", 1.0, "dynamic pressure"},
+  };
+  static const ConstraintUnit kAsymptote[] = {
+      {"ft_s", 1.0, "hyperbolic excess velocity"},
+      {"deg", kDegToRad, "right ascension of the outward radial"},
+      {"deg", kDegToRad, "declination of the outward radial"},
+  };
+  if (code >= 0 && code <= 14) {
+    *unit = kTerminal[code];
+    return true;
+  }
+  if (code >= 15 && code <= 99 && code % 10 >= 5) {
+    *unit = kStagePoint[code % 10 - 5];
+    return true;
+  }
+  if (code >= 100 && code <= 102) {
+    *unit = kAsymptote[code - 100];
+    return true;
+  }
+  return false;
+}
+
+// Returns true when a constraint needs the launch date (inertial longitude reference).
+bool read_constraints(Section& root, const Options& options, ConstraintList* list) {
+  std::vector<Section> entries = root.array_of_tables("constraint", 8);
+  if (entries.empty()) {
+    root.fail(8, "constraint",
+              "missing [[constraint]] entries: data block 8 needs at least the payoff (code 0 payload, 1 or 5 "
+              "velocity, 7 altitude) as the first entry");
+  }
+  std::vector<int> codes;
+  for (Section& entry : entries) codes.push_back(entry.integer("code", 8, "data block 8 constraint code"));
+  const bool heating_listed = codes.size() > 1 && codes.back() == 14;
+  const int count = static_cast<int>(codes.size()) - (heating_listed ? 1 : 0);
+  if (count > kMaxConstraints) {
+    entries[kMaxConstraints].fail_at("code", 8,
+                                     "too many constraints (" + str(count) + "): data block 8 takes at most 13 "
+                                     "including the payoff (IB3(2..14)), plus the heating code 14 last");
+  }
+  bool needs_date = false;
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    Section& entry = entries[i];
+    const int code = codes[i];
+    ConstraintUnit unit{};
+    if (!constraint_unit(code, &unit)) {
+      entry.fail_at("code", 8, "unknown constraint code " + str(code) +
+                                   ": expected 0-14 (terminal), X5-X9 (at the end of stage X = 1-9) or 100-102");
+    }
+    if (code == 14 && i + 1 != entries.size()) {
+      entry.fail_at("code", 8, "the heating constraint (code 14) must be the last entry");
+    }
+    if (code == 0 && i != 0) entry.fail_at("code", 8, "payload (code 0) can only be the payoff, the first entry");
+    for (std::size_t j = 0; j < i; ++j) {
+      if (codes[j] == code) entry.fail_at("code", 8, "constraint code " + str(code) + " is listed twice");
+    }
+    const std::string desired_key = std::string("desired_") + unit.suffix;
+    const std::string optimization_key = std::string("deadband_optimization_") + unit.suffix;
+    const std::string linearization_key = std::string("deadband_linearization_") + unit.suffix;
+    list->codes[i] = code;
+    if (i == 0) {
+      const int payoff = options.payoff();
+      const bool consistent = (payoff == 0 && code == 0) || (payoff == 1 && (code == 1 || code == 5)) ||
+                              (payoff == 2 && code == 7);
+      if (!consistent) {
+        entry.fail_at("code", 8, "the first entry is the payoff and must match options.payoff (IP(1) = " + str(payoff) +
+                                     "): expected code " +
+                                     (payoff == 0 ? std::string("0 (payload)")
+                                                  : payoff == 1 ? std::string("1 or 5 (velocity)")
+                                                                : std::string("7 (altitude)")) +
+                                     ", got " + str(code));
+      }
+      list->desired[0] =
+          entry.number_or(desired_key, 19, "DA4(1), the payoff entry (a placeholder) in " + std::string(unit.suffix), 0.0) *
+          unit.to_core;
+      for (const std::string& key : {optimization_key, linearization_key}) {
+        if (entry.has(key)) {
+          entry.fail_at(key, 29, "the payoff has no deadband: data block 29 lists the constraints after the payoff");
+        }
+      }
+    } else {
+      const std::string name = std::string(unit.name) + " (code " + str(code) + ")";
+      list->desired[i] = entry.number(desired_key, 19, "DA4 desired " + name + " in " + unit.suffix) * unit.to_core;
+      list->deadband_optimization[i - 1] =
+          entry.number(optimization_key, 29, "DA14 allowed deviation of " + name + " during optimization, " + unit.suffix) *
+          unit.to_core;
+      const std::string lin_what = "DA14(13+n) allowed deviation of " + name + " during linearization, " + unit.suffix;
+      list->deadband_linearization[i - 1] =
+          (options.linearization() ? entry.number(linearization_key, 29, lin_what)
+                                   : entry.number_or(linearization_key, 29, lin_what, 0.0)) *
+          unit.to_core;
+    }
+    entry.finish();
+    if (code == 12 || code == 101) needs_date = true;
+  }
+  list->count = count;
+  if (options.heating_constraint() && !heating_listed) {
+    root.fail(8, "constraint",
+              "options.heating_constraint (IP(2)) is set: the heating constraint code 14 must be the last [[constraint]]");
+  }
+  if (heating_listed && !options.heating_constraint()) {
+    entries.back().fail_at("code", 8, "the heating constraint (code 14) needs options.heating_constraint = true (IP(2))");
+  }
+  return needs_date;
+}
+
+// ---- data blocks 6, 27 --------------------------------------------------------------------------
+void read_adjustable(Section& root, AdjustableParameters* adjustable) {
+  std::vector<Section> entries = root.array_of_tables("adjustable_parameter", 6);
+  if (static_cast<int>(entries.size()) > kMaxAdjustableParameters) {
+    entries[kMaxAdjustableParameters].fail_at(
+        "code", 6, "too many adjustable parameters (" + str(static_cast<int>(entries.size())) + "): at most 11");
+  }
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    Section& entry = entries[i];
+    const int code = entry.integer("code", 6, "data block 6 adjustable parameter code 1-11");
+    if (code < 1 || code > 11) {
+      entry.fail_at("code", 6, "unknown adjustable parameter code " + str(code) +
+                                   ": expected 1-11 (1/2 stage-4 theta/chi, 3/4/5 coasts after stages 3/2/1, 6 launch "
+                                   "azimuth, 7 launch time, 8/9 stage-5 theta/chi, 10/11 coasts after stages 4/5)");
+    }
+    for (std::size_t j = 0; j < i; ++j) {
+      if (adjustable->codes[j] == code) entry.fail_at("code", 6, "adjustable parameter code " + str(code) + " is listed twice");
+    }
+    const double weight = entry.number("weight", 27, "data block 27 DA12 weighting constant");
+    if (!(weight > 0.0)) entry.fail_at("weight", 27, "weighting constant must be positive, got " + format_number(weight));
+    adjustable->codes[i] = code;
+    adjustable->weights[i] = weight;
+    entry.finish();
+  }
+  adjustable->count = static_cast<int>(entries.size());
+}
+
+// ---- data blocks 18, 26 -------------------------------------------------------------------------
+void read_linearization(Section& root, const Mission& mission, LinearizationData* linearization) {
+  std::optional<Section> section = root.optional_table("linearization", 18);
+  if (!section) {
+    if (mission.options.linearization()) {
+      root.fail(18, "linearization",
+                "options.linearization (IP(7)) is set: [linearization] with coded_times (data block 18) is required");
+    }
+    return;
+  }
+  const std::vector<double> times =
+      section->numbers("coded_times", 18, "TLIN times coded 100 n + t (n powered stage, t s from its ignition)");
+  if (times.size() < 2) {
+    section->fail_at("coded_times", 18, "expected at least 2 coded times (the start and end of one segment)");
+  }
+  if (static_cast<int>(times.size()) > kMaxLinearSegments) {
+    section->fail_at("coded_times", 18, "too many coded times (" + str(static_cast<int>(times.size())) +
+                                            "): the core stores at most 15 (14 segments)");
+  }
+  Reader& reader = section->reader();
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    const std::string field = section->key_path("coded_times") + "[" + str(static_cast<int>(i)) + "]";
+    const int line = section->element_line("coded_times", i);
+    const double stage = std::floor(times[i] / 100.0);
+    const int code = static_cast<int>(stage);
+    const double t = times[i] - 100.0 * stage;
+    if (code < 1 || code > kMaxPoweredStages || !mission.vehicle.stages[stage_index(code)].in_sequence) {
+      reader.fail(line, 18, field,
+                  "coded time " + format_number(times[i]) +
+                      " does not name a powered stage of the sequence: expected 100 n + t with n = 1-5");
+    }
+    const double duration = mission.vehicle.stages[stage_index(code)].duration_s;
+    if (t > duration + mission.constants.time_epsilon_s) {
+      reader.fail(line, 18, field,
+                  "coded time " + format_number(times[i]) + " is " + format_number(t) + " s into stage " + str(code) +
+                      ", after its burnout at " + format_number(duration) + " s");
+    }
+    if (i > 0 && !(times[i] > times[i - 1])) {
+      reader.fail(line, 18, field,
+                  "coded times must increase: " + format_number(times[i]) + " follows " + format_number(times[i - 1]));
+    }
+    linearization->coded_start_times[i] = times[i];
+  }
+  const int segments = static_cast<int>(times.size()) - 1;
+  if (const std::optional<int> count = section->optional_integer("segment_count", 18, "TLIN(1) number of linear segments")) {
+    if (*count != segments) {
+      section->fail_at("segment_count", 18,
+                       "TLIN(1) = " + str(*count) + " but " + str(static_cast<int>(times.size())) +
+                           " coded times make " + str(segments) +
+                           " segments (one coast segment between consecutive powered stages)");
+    }
+  }
+  linearization->segment_count = segments;
+  for (int i = 0; i < kMaxLinearSegments; ++i) linearization->segment_weights[i] = i < segments ? 1.0 : 0.0;
+  if (const auto weights = section->optional_numbers("segment_weights", 26, "ETALIN weighting constant per segment")) {
+    if (static_cast<int>(weights->size()) != segments) {
+      section->fail_at("segment_weights", 26,
+                       "expected one weight per segment (" + str(segments) + "), got " + str(static_cast<int>(weights->size())));
+    }
+    for (int i = 0; i < segments; ++i) {
+      const double weight = (*weights)[static_cast<std::size_t>(i)];
+      if (!(weight > 0.0)) {
+        reader.fail(section->element_line("segment_weights", static_cast<std::size_t>(i)), 26,
+                    section->key_path("segment_weights") + "[" + str(i) + "]",
+                    "segment weight must be positive, got " + format_number(weight));
+      }
+      linearization->segment_weights[i] = weight;
+    }
+  }
+  section->finish();
+}
+
+// ---- data block 28 ------------------------------------------------------------------------------
+void read_convergence(Section& root, ConvergenceData* convergence) {
+  std::optional<Section> section = root.optional_table("convergence", 28);
+  if (!section) return;
+  convergence->initial_payoff_improvement = section->number_or(
+      "initial_payoff_improvement", 28, "DA13(1) initial payoff improvement, payoff units", convergence->initial_payoff_improvement);
+  convergence->stop_improvement = section->number_or(
+      "stop_improvement", 28, "DA13(2) attempted improvement below which optimization stops, payoff units",
+      convergence->stop_improvement);
+  convergence->max_forward_trajectories =
+      section->optional_integer("max_forward_trajectories", 28, "DA13(3) maximum forward trajectories")
+          .value_or(convergence->max_forward_trajectories);
+  convergence->max_linearization_iterations =
+      section->optional_integer("max_linearization_iterations", 28, "DA13(4) maximum linearization iterations")
+          .value_or(convergence->max_linearization_iterations);
+  section->finish();
+}
+
+// ---- data block 9 -------------------------------------------------------------------------------
+void read_output_frequency(Section& root, OutputFrequency* output) {
+  std::optional<Section> section = root.optional_table("output_frequency", 9);
+  if (!section) return;
+  struct Entry {
+    const char* key;
+    int* values;
+    const char* what;
+  };
+  const Entry entries[] = {
+      {"initial", output->initial, "IB4 output every n-th point on the initial trajectory"},
+      {"intermediate", output->intermediate, "IB4 output every n-th point on intermediate trajectories"},
+      {"final", output->final_trajectory, "IB4 output every n-th point on the final trajectory"},
+  };
+  for (const Entry& entry : entries) {
+    const toml::node* node = section->node(entry.key);
+    if (node == nullptr) continue;
+    std::vector<int> values;
+    if (node->is_integer()) {
+      values.assign(kMaxStages, section->integer(entry.key, 9, entry.what));
+    } else {
+      values = section->integers(entry.key, 9, std::string(entry.what) + ", per stage code 1-10");
+      if (static_cast<int>(values.size()) != kMaxStages) {
+        section->fail_at(entry.key, 9, "expected one integer for all stages or an array of 10 (stage codes 1-10), got " +
+                                           str(static_cast<int>(values.size())) + " values");
+      }
+    }
+    for (int i = 0; i < kMaxStages; ++i) {
+      if (values[static_cast<std::size_t>(i)] < 1) {
+        section->fail_at(entry.key, 9, "output frequency must be at least 1 (every computed point), got " +
+                                           str(values[static_cast<std::size_t>(i)]));
+      }
+      entry.values[i] = values[static_cast<std::size_t>(i)];
+    }
+  }
+  section->finish();
+}
+
+// ---- data block 40 ------------------------------------------------------------------------------
+void read_pitch_program(Section& root, PitchTable* pitch) {
+  Section section = root.table("pitch_program", 40, "data block 40: time_s (from launch) and theta_deg arrays");
+  const ReadTable read = section.xy("time_s", "theta_deg", 40, "time from launch in s", "pitch attitude theta in deg");
+  fill_table(section, "time_s", read, kDegToRad, 40, "data block 40, 32E12.8: 15 pairs", pitch);
+  section.finish();
+}
+
+}  // namespace
+
+void read_mission_sections(Section& root, Mission* mission) {
+  read_case(root, mission);
+  read_options(root, &mission->options);
+  read_constants(root, &mission->constants);
+  read_atmosphere(root, &mission->atmosphere);
+  read_vehicle(root, &mission->vehicle);
+  read_stages(root, &mission->vehicle);
+  const bool has_date = read_launch(root, &mission->launch);
+  read_control(root, mission->options, &mission->control);
+  read_misc(root, &mission->misc);
+  const bool needs_date = read_constraints(root, mission->options, &mission->constraints);
+  if (needs_date && !has_date) {
+    root.fail(20, "launch.space_age_date_days",
+              "a constraint uses an inertial longitude reference (code 12 or 101): the launch date DA5(2) "
+              "space_age_date_days is required (data block 20)");
+  }
+  read_adjustable(root, &mission->adjustable);
+  read_linearization(root, *mission, &mission->linearization);
+  read_convergence(root, &mission->convergence);
+  read_output_frequency(root, &mission->output);
+  read_pitch_program(root, &mission->pitch_program_rad);
+}
+
+}  // namespace tolip::ground::deck_detail

@@ -1,0 +1,301 @@
+// load_toml_deck() / parse_toml_deck(): the modern TOML case deck (docs/deck-format.md).
+//
+// The deck is parsed into a temporary Mission (and DeckExtras), checked section by section with
+// located messages, then validated by the core (validate_mission); only a deck that passes every
+// check is copied to the caller's objects. Nothing throws out of these functions.
+#include <cerrno>
+#include <cstring>
+#include <exception>
+#include <fstream>
+#include <memory>
+#include <new>
+#include <sstream>
+#include <string>
+
+#include "toml_reader.hpp"
+#include "tolip_ground/deck.hpp"
+#include "tolip_ground/deck_extras.hpp"
+
+namespace tolip::ground {
+
+std::string DeckError::to_string() const {
+  std::string out = file.empty() ? std::string("<deck>") : file;
+  if (line > 0) {
+    out += ':';
+    out += std::to_string(line);
+  }
+  out += ": ";
+  if (data_block > 0) {
+    out += "data block ";
+    out += std::to_string(data_block);
+    out += ", ";
+  }
+  if (!field.empty()) {
+    out += "field ";
+    out += field;
+    out += ": ";
+  }
+  out += message;
+  return out;
+}
+
+namespace {
+
+using deck_detail::DeckFailure;
+using deck_detail::format_number;
+using deck_detail::Reader;
+using deck_detail::Section;
+
+// Every top-level table of the deck (docs/deck-format.md).
+constexpr const char* kTopLevelKeys[] = {
+    "case", "options", "constants", "atmosphere", "vehicle", "stage", "launch", "control_constraints", "misc",
+    "constraint", "adjustable_parameter", "linearization", "convergence", "output_frequency", "pitch_program",
+    "body_dynamics", "radar_station", "impact", "hardover", "dispersion"};
+
+void check_top_level(const toml::table& root, Reader& reader) {
+  for (auto&& [key, value] : root) {
+    bool known = false;
+    for (const char* name : kTopLevelKeys) known = known || key.str() == name;
+    if (known) continue;
+    std::string expected;
+    for (const char* name : kTopLevelKeys) expected += (expected.empty() ? "" : ", ") + std::string(name);
+    int line = static_cast<int>(key.source().begin.line);
+    if (line == 0) line = deck_detail::line_of_node(value);
+    reader.fail(line, 0, std::string(key.str()),
+                "unknown key '" + std::string(key.str()) + "' at the top level; expected one of: " + expected);
+  }
+}
+
+// "x_rad" -> "x_deg", "x_rad_s" -> "x_deg_s": the deck spells angles in degrees.
+std::string deck_key(const std::string& core_field) {
+  std::string key = core_field;
+  const std::size_t at = key.rfind("_rad");
+  if (at != std::string::npos && (at + 4 == key.size() || key.compare(at + 4, std::string::npos, "_s") == 0)) {
+    key.replace(at, 4, "_deg");
+  }
+  return key;
+}
+
+// The deck key path of a core fault (mission.hpp field names -> docs/deck-format.md keys).
+std::string fault_path(const MissionFault& fault) {
+  const std::string field = fault.field != nullptr ? fault.field : "";
+  const std::string stage = "stage." + std::to_string(fault.stage_code);
+  const bool staged = fault.stage_code > 0;
+  switch (fault.data_block) {
+    case 4: return "options";
+    case 5: return "vehicle.sequence";
+    case 6: case 27: return "adjustable_parameter";
+    case 8: case 19: case 29: return "constraint";
+    case 9: return "output_frequency." + std::string(field == "final_trajectory" ? "final" : field);
+    case 10: return field == "constants" ? "constants" : "constants." + field;
+    case 11: case 12: case 13: case 14: return "atmosphere." + field;
+    case 16: return staged ? stage + "." + field : "stage";
+    case 17: return field == "misc" ? "misc" : "misc." + deck_key(field);
+    case 18: return "linearization.coded_times";
+    case 20: case 21:
+      if (field == "launch_space_age_date_days") return "launch.space_age_date_days";
+      return "launch." + deck_key(field);
+    case 22: return field == "control" ? "control_constraints" : "control_constraints." + deck_key(field);
+    case 26: return "linearization.segment_weights";
+    case 28: return field == "convergence" ? "convergence" : "convergence." + field;
+    case 30: return staged ? stage + ".thrust" : "stage";
+    case 31: return stage + ".drag";
+    case 32: return "vehicle.lift_curve_slope";
+    case 38: return staged ? stage + ".consumable_weight" : "stage";
+    case 39:
+      if (field == "payload_lb") return "vehicle.payload_lb";
+      if (field == "stage_data" || !staged) return staged ? stage : "stage";
+      return stage + "." + field;
+    case 40: return "pitch_program";
+    default: return field;
+  }
+}
+
+int total_points(const Mission& mission, bool thrust) {
+  int total = 0;
+  for (const StageData& stage : mission.vehicle.stages) {
+    total += thrust ? stage.vacuum_thrust_lbf.size() : stage.consumable_weight_lb.size();
+  }
+  return total;
+}
+
+// Values behind a core fault, so the message says what was found and what was expected.
+std::string fault_detail(Status status, const MissionFault& fault, const Mission& mission) {
+  const int code = fault.stage_code;
+  const bool staged = code >= 1 && code <= kMaxStages;
+  const StageData* stage = staged ? &mission.vehicle.stages[stage_index(code)] : nullptr;
+  const std::string eps = format_number(mission.constants.time_epsilon_s);
+  switch (status) {
+    case Status::kStageDurationMismatch:
+      if (stage == nullptr) break;
+      return "stage " + std::to_string(code) + " duration_s = " + format_number(stage->duration_s) +
+             " s but its thrust table ends at " + format_number(stage->vacuum_thrust_lbf.last_x()) +
+             " s; expected them equal within CT1(10) = " + eps + " s";
+    case Status::kThrustWeightTimesDiffer:
+      if (stage == nullptr) break;
+      return "stage " + std::to_string(code) + " thrust table ends at " + format_number(stage->vacuum_thrust_lbf.last_x()) +
+             " s, consumable weight table at " + format_number(stage->consumable_weight_lb.last_x()) +
+             " s; expected the same end time within CT1(10) = " + eps + " s";
+    case Status::kNegativeWeight:
+      if (std::strcmp(fault.field, "payload_lb") == 0) {
+        return "payload_lb = " + format_number(mission.vehicle.payload_lb) + "; expected >= 0";
+      }
+      if (stage != nullptr && fault.data_block == 39) {
+        return "stage " + std::to_string(code) + " jettison_weight_lb = " + format_number(stage->jettison_weight_lb) +
+               "; expected >= 0";
+      }
+      return "expected every consumable weight remaining >= 0";
+    case Status::kLiftoffLongerThanStage1:
+      return "liftoff_duration_s = " + format_number(mission.launch.liftoff_duration_s) + " s but stage 1 lasts " +
+             format_number(mission.vehicle.stages[0].duration_s) + " s; expected 0 <= lift-off < stage 1 duration";
+    case Status::kInitialConditionsInvalid:
+      return "velocity_ft_s = " + format_number(mission.launch.velocity_ft_s) + ", flight_path_angle_deg = " +
+             format_number(mission.launch.flight_path_angle_rad * kRadToDeg) +
+             "; the manual requires velocity 0 and flight-path angle 90 deg";
+    case Status::kTooManyThrustPointsInAllStages:
+      return std::to_string(total_points(mission, true)) + " thrust points over all stages; at most " +
+             std::to_string(kMaxThrustPoints);
+    case Status::kTooManyWeightPointsInAllStages:
+      return std::to_string(total_points(mission, false)) + " weight points over all stages; at most " +
+             std::to_string(kMaxWeightPoints);
+    case Status::kTooFewStage1Steps:
+      return "stage 1 has " + std::to_string(mission.vehicle.stages[0].integration_steps) + " integration steps; at least " +
+             std::to_string(kMinStage1Steps);
+    case Status::kTooManyCoastSteps:
+      if (stage == nullptr) break;
+      return "coast " + std::to_string(code) + " has " + std::to_string(stage->integration_steps) +
+             " integration steps; at most " + std::to_string(kMaxCoastSteps) + " per coast";
+    case Status::kTooManyPoweredSteps:
+    case Status::kTooManyPoweredStepsWithFollowingCoast: {
+      int steps = 0;
+      for (int c = 1; c <= (status == Status::kTooManyPoweredSteps ? 5 : 6); ++c) {
+        if (mission.vehicle.stages[stage_index(c)].in_sequence) steps += mission.vehicle.stages[stage_index(c)].integration_steps;
+      }
+      return std::to_string(steps) + " integration steps; at most " +
+             std::to_string(status == Status::kTooManyPoweredSteps ? kMaxPoweredSteps : kMaxPoweredStepsWithFollowingCoast);
+    }
+    case Status::kNonPositiveDuration:
+      if (stage == nullptr) break;
+      return "duration_s = " + format_number(stage->duration_s) + "; expected > 0";
+    case Status::kNonPositiveStepCount:
+      if (stage == nullptr) break;
+      return "integration_steps = " + std::to_string(stage->integration_steps) + "; expected >= 1";
+    default:
+      break;
+  }
+  return "";
+}
+
+DeckError fault_error(Status status, const MissionFault& fault, const Mission& mission, const Reader& reader) {
+  DeckError error;
+  error.file = reader.file();
+  error.data_block = fault.data_block;
+  error.field = fault_path(fault);
+  error.line = reader.line_of(error.field);
+  error.message = std::string(status_name(status)) + ": " + status_message(status);
+  const std::string detail = fault_detail(status, fault, mission);
+  if (!detail.empty()) error.message += "; " + detail;
+  return error;
+}
+
+bool parse_deck(const std::string& text, const std::string& path, Mission* mission, DeckExtras* extras,
+                DeckError* error) {
+  DeckError failure;
+  failure.file = path;
+  try {
+    toml::table root;
+    try {
+      root = toml::parse(text, path);
+    } catch (const toml::parse_error& parse_error) {
+      failure.line = static_cast<int>(parse_error.source().begin.line);
+      failure.message = "TOML syntax error: " + std::string(parse_error.description()) +
+                        " (column " + std::to_string(parse_error.source().begin.column) + ")";
+      if (error != nullptr) *error = failure;
+      return false;
+    }
+    Reader reader(path);
+    check_top_level(root, reader);
+    auto parsed = std::make_unique<Mission>();
+    auto parsed_extras = std::make_unique<DeckExtras>();
+    Section top(&reader, &root, "", 0);
+    deck_detail::read_mission_sections(top, parsed.get());
+    deck_detail::read_extras_sections(top, *parsed, parsed_extras.get());
+    top.finish();
+
+    MissionFault fault;
+    const Status status = validate_mission(*parsed, &fault);
+    if (!ok(status)) {
+      if (error != nullptr) *error = fault_error(status, fault, *parsed, reader);
+      return false;
+    }
+    if (mission != nullptr) *mission = *parsed;
+    if (extras != nullptr) *extras = std::move(*parsed_extras);
+    return true;
+  } catch (const DeckFailure& deck_failure) {
+    failure = deck_failure.error;
+  } catch (const std::bad_alloc&) {
+    failure.message = "out of memory while reading the deck";
+  } catch (const std::exception& exception) {
+    failure.message = std::string("internal error while reading the deck: ") + exception.what();
+  } catch (...) {
+    failure.message = "internal error while reading the deck";
+  }
+  if (error != nullptr) *error = failure;
+  return false;
+}
+
+bool read_file(const std::string& path, std::string* text, DeckError* error) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    if (error != nullptr) {
+      *error = DeckError{};
+      error->file = path;
+      error->message = std::string("cannot open the deck file: ") + std::strerror(errno);
+    }
+    return false;
+  }
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  if (in.bad()) {
+    if (error != nullptr) {
+      *error = DeckError{};
+      error->file = path;
+      error->message = "cannot read the deck file";
+    }
+    return false;
+  }
+  *text = buffer.str();
+  return true;
+}
+
+}  // namespace
+
+bool parse_toml_deck(const std::string& text, const std::string& path, Mission* mission, DeckExtras* extras,
+                     DeckError* error) {
+  return parse_deck(text, path, mission, extras, error);
+}
+
+bool parse_toml_deck(const std::string& text, const std::string& path, Mission* mission, DeckError* error) {
+  return parse_deck(text, path, mission, nullptr, error);
+}
+
+bool load_toml_deck(const std::string& path, Mission* mission, DeckExtras* extras, DeckError* error) {
+  try {
+    std::string text;
+    if (!read_file(path, &text, error)) return false;
+    return parse_deck(text, path, mission, extras, error);
+  } catch (...) {
+    if (error != nullptr) {
+      *error = DeckError{};
+      error->file = path;
+      error->message = "internal error while reading the deck file";
+    }
+    return false;
+  }
+}
+
+bool load_toml_deck(const std::string& path, Mission* mission, DeckError* error) {
+  return load_toml_deck(path, mission, nullptr, error);
+}
+
+}  // namespace tolip::ground

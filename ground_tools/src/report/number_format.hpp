@@ -1,0 +1,19 @@
+// Number formatting shared by the reports (private to ground_tools/src/report).
+#pragma once
+
+#include <string>
+
+namespace tolip::ground::report_detail {
+
+// Shortest text that reads back to the same double ("" for a non-finite value).
+std::string round_trip(double value);
+
+// Right-aligned in `width` characters with `decimals` fixed decimals; when that does not fit in
+// width - 1 characters (one blank separates columns) the value is printed in E format instead.
+// Non-finite values print as "-".
+std::string fixed_cell(double value, int decimals, int width);
+
+// Copies a fixed, NUL-padded card field (title, heading, date) and strips trailing blanks.
+std::string card_text(const char* text, int capacity);
+
+}  // namespace tolip::ground::report_detail

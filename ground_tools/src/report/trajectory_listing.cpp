@@ -1,0 +1,333 @@
+// Manual-style trajectory listing (Sec. 22 "OUTPUT FORMAT"): page titles from data blocks 1-3,
+// the trajectory columns in two line groups of 12 columns of 11 characters (132 columns, the
+// width of the 1966 line printer), the stage events and the terminal conditions.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "number_format.hpp"
+#include "tolip/core/constants.hpp"
+#include "tolip/core/state.hpp"
+#include "tolip_ground/report.hpp"
+#include "tolip_ground/version.hpp"
+
+namespace tolip::ground {
+namespace {
+
+using report_detail::card_text;
+using report_detail::fixed_cell;
+
+constexpr int kCellWidth = 11;
+constexpr int kDefaultLinesPerPage = 54;
+
+double deg(double radians) { return radians * kRadToDeg; }
+
+struct ListingColumn {
+  const char* heading;
+  const char* unit;
+  int decimals;
+  double (*value)(const TrajectoryPoint& point);
+};
+
+// First line group: the state and the vehicle.
+constexpr ListingColumn kLine1[] = {
+    {"TIME", "SEC", 3, [](const TrajectoryPoint& p) { return p.time_s; }},
+    {"VEL", "FT/SEC", 2, [](const TrajectoryPoint& p) { return p.state[kStateV]; }},
+    {"GAMMA", "DEG", 4, [](const TrajectoryPoint& p) { return deg(p.state[kStateGamma]); }},
+    {"PSI", "DEG", 4, [](const TrajectoryPoint& p) { return deg(p.state[kStatePsi]); }},
+    {"ALTITUDE", "FT", 1, [](const TrajectoryPoint& p) { return p.altitude_ft; }},
+    {"GEOC LAT", "DEG", 4, [](const TrajectoryPoint& p) { return deg(p.state[kStateLambda]); }},
+    {"TAU", "DEG E", 4,
+     [](const TrajectoryPoint& p) { return wrap_degrees_180(deg(p.earth_longitude_rad)); }},
+    {"QBAR", "LB/FT2", 2, [](const TrajectoryPoint& p) { return p.dynamic_pressure_lbf_ft2; }},
+    {"THRUST", "LB", 1, [](const TrajectoryPoint& p) { return p.net_thrust_lbf; }},
+    {"WEIGHT", "LB", 2, [](const TrajectoryPoint& p) { return p.weight_lb; }},
+    {"GEOD LAT", "DEG", 4, [](const TrajectoryPoint& p) { return deg(p.geodetic_latitude_rad); }},
+    {"RADIUS", "FT", 1, [](const TrajectoryPoint& p) { return p.state[kStateR]; }},
+};
+
+// Second line group: inertial velocity, aerodynamics, range.
+constexpr ListingColumn kLine2[] = {
+    {"STG TIME", "SEC", 3, [](const TrajectoryPoint& p) { return p.stage_time_s; }},
+    {"HEAT RATE", "BTU/FT2S", 4, [](const TrajectoryPoint& p) { return p.heating_rate_btu_ft2_s; }},
+    {"THETA", "DEG", 4, [](const TrajectoryPoint& p) { return deg(p.theta_rad); }},
+    {"VI", "FT/SEC", 2, [](const TrajectoryPoint& p) { return p.inertial.velocity_ft_s; }},
+    {"GAMI", "DEG", 4, [](const TrajectoryPoint& p) { return deg(p.inertial.flight_path_angle_rad); }},
+    {"PSII", "DEG", 4, [](const TrajectoryPoint& p) { return deg(p.inertial.azimuth_rad); }},
+    {"MACH", "", 3, [](const TrajectoryPoint& p) { return p.mach; }},
+    {"ALPHA", "DEG", 4, [](const TrajectoryPoint& p) { return deg(p.alpha_rad); }},
+    {"DRAG", "LB", 1, [](const TrajectoryPoint& p) { return p.drag_lbf; }},
+    {"LIFT", "LB", 1, [](const TrajectoryPoint& p) { return p.lift_lbf; }},
+    {"QALPHA", "LB-DEG/FT2", 1,
+     [](const TrajectoryPoint& p) { return p.dynamic_pressure_lbf_ft2 * deg(p.alpha_rad); }},
+    {"RANGE", "N.MI.", 3,
+     [](const TrajectoryPoint& p) { return p.downrange_rad * kNauticalMilesPerRadian; }},
+};
+
+std::string right(const std::string& text, int width) {
+  if (static_cast<int>(text.size()) >= width) return text;
+  return std::string(static_cast<std::size_t>(width) - text.size(), ' ') + text;
+}
+
+template <std::size_t N>
+std::string heading_line(const ListingColumn (&columns)[N], bool units) {
+  std::string line;
+  for (const ListingColumn& column : columns) line += right(units ? column.unit : column.heading, kCellWidth);
+  return line;
+}
+
+template <std::size_t N>
+std::string value_line(const ListingColumn (&columns)[N], const TrajectoryPoint& point) {
+  std::string line;
+  for (const ListingColumn& column : columns) {
+    line += fixed_cell(column.value(point), column.decimals, kCellWidth);
+  }
+  return line;
+}
+
+std::string stage_name(int code) {
+  if (is_powered_stage(code)) return "STAGE " + std::to_string(code);
+  if (is_coast_stage(code)) return "COAST AFTER STAGE " + std::to_string(code - 5);
+  return "STAGE CODE " + std::to_string(code);
+}
+
+std::string format(const char* pattern, double value) {
+  if (!std::isfinite(value)) return "-";
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, pattern, value);
+  return buffer;
+}
+
+// Writes lines and starts a new page (title block and column headings) when one is full.
+class Pager {
+ public:
+  Pager(std::ostream& out, const Mission& mission) : out_(out) {
+    const double lines = mission.constants.lines_per_page;
+    lines_per_page_ = (std::isfinite(lines) && lines >= 20.0 && lines <= 1000.0)
+                          ? static_cast<int>(lines)
+                          : kDefaultLinesPerPage;
+    title_ = card_text(mission.title, sizeof mission.title);
+    heading_ = card_text(mission.case_heading, sizeof mission.case_heading);
+    date_ = card_text(mission.date, sizeof mission.date);
+  }
+
+  // Starts a page of the given kind; `columns` adds the trajectory column headings.
+  void new_page(const std::string& section, bool columns) {
+    section_ = section;
+    columns_ = columns;
+    if (page_ > 0) out_ << '\n';
+    ++page_;
+    line_ = 0;
+    emit(title_);
+    emit(heading_);
+    std::string third = date_;
+    const std::string tag = "TOLIP " + std::string(version_string()) + "   " + section_ +
+                            "   PAGE " + std::to_string(page_);
+    const int width = kCellWidth * 12;
+    if (static_cast<int>(third.size() + tag.size()) + 1 < width) {
+      third += std::string(static_cast<std::size_t>(width) - third.size() - tag.size(), ' ');
+    } else {
+      third += ' ';
+    }
+    emit(third + tag);
+    emit("");
+    if (columns_) {
+      emit(heading_line(kLine1, false));
+      emit(heading_line(kLine1, true));
+      emit(heading_line(kLine2, false));
+      emit(heading_line(kLine2, true));
+      emit("");
+    }
+  }
+
+  // Makes sure `count` lines fit on this page (starting a new page of the same kind if not).
+  void reserve(int count) {
+    if (page_ == 0 || line_ + count > lines_per_page_) new_page(section_, columns_);
+  }
+
+  void emit(const std::string& text) {
+    std::string trimmed = text;
+    while (!trimmed.empty() && trimmed.back() == ' ') trimmed.pop_back();
+    out_ << trimmed << '\n';
+    ++line_;
+  }
+
+ private:
+  std::ostream& out_;
+  int lines_per_page_ = kDefaultLinesPerPage;
+  int page_ = 0;
+  int line_ = 0;
+  bool columns_ = false;
+  std::string section_;
+  std::string title_, heading_, date_;
+};
+
+// Points past the last recorded stage event (the stage a failed run stopped in): the same rule as
+// is_output_point, every n-th point of the stage plus its first and last point, and always the
+// last point flown.
+bool listed_after_events(const Mission& mission, const Trajectory& trajectory, int index,
+                         int run_start) {
+  const int count = stored_point_count(trajectory);
+  const int code = trajectory.points[index].stage_code;
+  if (index == run_start || index == count - 1) return true;
+  if (trajectory.points[index + 1].stage_code != code) return true;
+  const int every = (code >= 1 && code <= kMaxStages)
+                        ? mission.output.final_trajectory[stage_index(code)]
+                        : 1;
+  return every <= 1 || (index - run_start) % every == 0;
+}
+
+void write_points(Pager& pager, const Mission& mission, const Trajectory& trajectory) {
+  const int count = stored_point_count(trajectory);
+  int covered_until = -1;  // last point index inside a recorded stage event
+  for (int s = 0; s < std::clamp(trajectory.stage_count, 0, kMaxStages); ++s) {
+    covered_until = std::max(covered_until, trajectory.stages[s].last_point);
+  }
+  int previous_stage = -1;
+  int run_start = 0;  // first index of the current stage among uncovered points
+  for (int i = 0; i < count; ++i) {
+    if (i > covered_until && (i == covered_until + 1 || i == 0 ||
+                              trajectory.points[i].stage_code != trajectory.points[i - 1].stage_code)) {
+      run_start = i;
+    }
+    const bool listed = i <= covered_until
+                            ? is_output_point(mission, trajectory, i, TrajectoryKind::kFinal)
+                            : listed_after_events(mission, trajectory, i, run_start);
+    if (!listed) continue;
+    const TrajectoryPoint& point = trajectory.points[i];
+    if (point.stage_code != previous_stage) {
+      pager.reserve(4);
+      std::string label(" ");
+      label.append(stage_name(point.stage_code));
+      if (is_powered_stage(point.stage_code)) label.append(" (POWERED)");
+      pager.emit(label);
+      previous_stage = point.stage_code;
+    } else {
+      pager.reserve(3);
+    }
+    pager.emit(value_line(kLine1, point));
+    pager.emit(value_line(kLine2, point));
+    pager.emit("");
+  }
+}
+
+std::string point_value(const Trajectory& trajectory, int index, const char* pattern,
+                        double (*value)(const TrajectoryPoint&)) {
+  if (index < 0 || index >= stored_point_count(trajectory)) return "-";
+  return format(pattern, value(trajectory.points[index]));
+}
+
+void write_stage_events(Pager& pager, const Trajectory& trajectory) {
+  const int count = std::clamp(trajectory.stage_count, 0, kMaxStages);
+  pager.reserve(4 + count);
+  pager.emit(" STAGE EVENTS");
+  pager.emit("                             START TIME    END TIME  START WEIGHT   END WEIGHT"
+             "    JETTISONED  WEIGHT AFTER");
+  pager.emit("                                    SEC         SEC            LB           LB"
+             "            LB            LB");
+  for (int s = 0; s < count; ++s) {
+    const StageEvent& event = trajectory.stages[s];
+    std::string name = stage_name(event.code);
+    name.resize(26, ' ');
+    const auto time = [](const TrajectoryPoint& p) { return p.time_s; };
+    const auto weight = [](const TrajectoryPoint& p) { return p.weight_lb; };
+    std::string line = " " + name;
+    line += right(point_value(trajectory, event.first_point, "%.3f", time), 12);
+    line += right(point_value(trajectory, event.last_point, "%.3f", time), 12);
+    line += right(point_value(trajectory, event.first_point, "%.2f", weight), 14);
+    line += right(format("%.2f", event.burnout_weight_lb), 13);
+    line += right(format("%.2f", event.burnout_weight_lb - event.weight_after_jettison_lb), 14);
+    line += right(format("%.2f", event.weight_after_jettison_lb), 14);
+    pager.emit(line);
+  }
+  pager.emit("");
+}
+
+std::string labelled(const std::string& label, const std::string& value, const std::string& unit) {
+  std::string text = "   " + label;
+  text.resize(20, ' ');
+  text += "= " + right(value, 20);
+  if (!unit.empty()) text += " " + unit;
+  return text;
+}
+
+void write_terminal_conditions(Pager& pager, const SimulationReport& report) {
+  const Trajectory& trajectory = *report.trajectory;
+  const int count = stored_point_count(trajectory);
+  pager.reserve(12);
+  if (!ok(report.status)) {
+    pager.emit(std::string(" TRAJECTORY TERMINATED: ") + status_name(report.status) + ": " +
+               status_message(report.status));
+    pager.emit("");
+  }
+  if (count == 0) return;
+  const TrajectoryPoint& last = trajectory.points[count - 1];
+  pager.reserve(14);
+  pager.emit(" TERMINAL CONDITIONS AT TIME " + format("%.3f", last.time_s) + " SEC, " +
+             stage_name(last.stage_code));
+  pager.emit(labelled("ALTITUDE", format("%.3f", last.altitude_ft), "FT"));
+  pager.emit(labelled("VEL", format("%.4f", last.state[kStateV]), "FT/SEC"));
+  pager.emit(labelled("GAMMA", format("%.6f", deg(last.state[kStateGamma])), "DEG"));
+  pager.emit(labelled("PSI", format("%.6f", deg(last.state[kStatePsi])), "DEG"));
+  pager.emit(labelled("GEOC LAT", format("%.6f", deg(last.state[kStateLambda])), "DEG"));
+  pager.emit(labelled("GEOD LAT", format("%.6f", deg(last.geodetic_latitude_rad)), "DEG"));
+  pager.emit(labelled("TAU", format("%.6f", wrap_degrees_180(deg(last.earth_longitude_rad))),
+                      "DEG EAST"));
+  pager.emit(labelled("RADIUS", format("%.3f", last.state[kStateR]), "FT"));
+  pager.emit(labelled("WEIGHT", format("%.3f", last.weight_lb), "LB"));
+  pager.emit(labelled("RANGE", format("%.3f", last.downrange_rad * kNauticalMilesPerRadian),
+                      "N.MI."));
+  const InertialVelocity& inertial = report.has_orbit ? report.orbit.inertial : last.inertial;
+  pager.emit(labelled("VI", format("%.4f", inertial.velocity_ft_s), "FT/SEC"));
+  pager.emit(labelled("GAMI", format("%.6f", deg(inertial.flight_path_angle_rad)), "DEG"));
+  pager.emit(labelled("PSII", format("%.6f", deg(inertial.azimuth_rad)), "DEG"));
+  pager.emit("");
+  if (!report.has_orbit) return;
+
+  const OrbitElements& orbit = report.orbit;
+  const char* type = orbit.type == OrbitType::kElliptic    ? "ELLIPTIC"
+                     : orbit.type == OrbitType::kParabolic ? "PARABOLIC"
+                                                           : "HYPERBOLIC";
+  pager.reserve(14);
+  pager.emit(std::string(" ORBIT ELEMENTS (") + type + ", SPHERICAL EARTH)");
+  pager.emit(labelled("TWOE", format("%.9E", orbit.twice_energy_ft2_s2), "FT2/SEC2"));
+  pager.emit(labelled("EH", format("%.9E", orbit.angular_momentum_ft2_s), "FT2/SEC"));
+  pager.emit(labelled("RP", format("%.3f", orbit.perigee_radius_ft), "FT"));
+  pager.emit(labelled("EYE", format("%.6f", deg(orbit.inclination_rad)), "DEG"));
+  pager.emit(labelled("BETAP", format("%.6f", deg(orbit.argument_of_perigee_rad)), "DEG"));
+  pager.emit(labelled("ECCENTRICITY", format("%.9f", orbit.eccentricity), ""));
+  if (orbit.has_semi_major_axis) {
+    pager.emit(labelled("RALPHA", format("%.3f", orbit.semi_major_axis_ft), "FT"));
+    pager.emit(labelled("PERIOD", format("%.5f", orbit.period_s / 60.0), "MIN"));
+  } else {
+    pager.emit(labelled("RALPHA", "NOT DEFINED", "(2E >= 0)"));
+    pager.emit(labelled("PERIOD", "NOT DEFINED", "(2E >= 0)"));
+  }
+  pager.emit(labelled("OMEGAE", format("%.6f", deg(orbit.node_longitude_rad)), "DEG"));
+  if (orbit.has_asymptote) {
+    pager.emit(labelled("VH", format("%.4f", orbit.hyperbolic_excess_velocity_ft_s), "FT/SEC"));
+    pager.emit(labelled("ASYMPTOTE RA", format("%.6f", deg(orbit.asymptote_right_ascension_rad)),
+                        "DEG"));
+    pager.emit(labelled("ASYMPTOTE DECL", format("%.6f", deg(orbit.asymptote_declination_rad)),
+                        "DEG"));
+  }
+  pager.emit("");
+}
+
+}  // namespace
+
+void write_trajectory_listing(std::ostream& out, const SimulationReport& report) {
+  const Mission& mission = *report.mission;
+  const Trajectory& trajectory = *report.trajectory;
+  Pager pager(out, mission);
+  pager.new_page("FINAL TRAJECTORY", true);
+  write_points(pager, mission, trajectory);
+  pager.new_page("TERMINAL CONDITIONS", false);
+  write_stage_events(pager, trajectory);
+  write_terminal_conditions(pager, report);
+}
+
+}  // namespace tolip::ground

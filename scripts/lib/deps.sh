@@ -1,0 +1,62 @@
+# shellcheck shell=bash
+# Shared helpers for scripts/setup.sh and scripts/test.sh: Debian packages the build needs,
+# installed only when missing. Source this file; it defines functions and changes nothing.
+
+# Everything needed to configure, build, test and benchmark the project.
+TOLIP_DEBIAN_PACKAGES=(
+  cmake g++ make
+  libeigen3-dev
+  libgtest-dev googletest
+  libbenchmark-dev
+  libcli11-dev
+  libtomlplusplus-dev
+  nlohmann-json3-dev
+  python3
+  hyperfine
+)
+
+# True when the package is fully installed ("install ok installed"; a removed package whose
+# configuration files remain is reported by dpkg -s but is not usable).
+tolip_package_installed() {
+  local status
+  status=$(dpkg-query -W -f='${Status}' "$1" 2>/dev/null) || return 1
+  [[ "$status" == "install ok installed" ]]
+}
+
+# Runs a command as root: directly when already root, through sudo otherwise.
+tolip_as_root() {
+  if [[ "$(id -u)" -eq 0 ]]; then
+    "$@"
+  elif command -v sudo >/dev/null 2>&1; then
+    sudo "$@"
+  else
+    echo "error: need root (or sudo) to run: $*" >&2
+    return 1
+  fi
+}
+
+# Installs the packages of TOLIP_DEBIAN_PACKAGES that are missing; does nothing when none is.
+tolip_ensure_packages() {
+  if ! command -v dpkg-query >/dev/null 2>&1; then
+    echo "error: dpkg-query not found; these scripts support Debian 12 (bookworm)" >&2
+    return 1
+  fi
+  local missing=() pkg
+  for pkg in "${TOLIP_DEBIAN_PACKAGES[@]}"; do
+    tolip_package_installed "$pkg" || missing+=("$pkg")
+  done
+  if [[ ${#missing[@]} -eq 0 ]]; then
+    echo "-- all required Debian packages are installed"
+    return 0
+  fi
+  echo "-- installing missing Debian packages: ${missing[*]}"
+  tolip_as_root env DEBIAN_FRONTEND=noninteractive apt-get update
+  tolip_as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends "${missing[@]}"
+}
+
+# Configures (Release) and builds the project into the given build directory with two jobs.
+tolip_configure_and_build() {
+  local source_dir=$1 build_dir=$2
+  cmake -S "$source_dir" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release
+  cmake --build "$build_dir" -j2
+}

@@ -1,0 +1,694 @@
+#!/usr/bin/env python3
+"""Generate the bundled Scout example decks from the reference mission.
+
+    python3 scripts/make_scout_examples.py [--reference PATH] [--out DIR]
+
+reads ../shared/reference/scout_reference.json (the independent reference case; see its
+README.md) and writes, in the TOML deck format of docs/deck-format.md:
+
+* examples/scout/mission.toml -- the maximum-payload optimization case, starting from the crude
+  initial program the oracle started from (oracle_solution.tth_block40_initial_nominal: the
+  block 40 theta table, stage-4 theta -20 deg, coast 8 = 450 s, payload 250 lb), with every
+  mission datum and the optional-computation data (6D blocks 33-37, radar 41, impact 42-43,
+  hardover 44-45, dispersions 46-55);
+* examples/scout/reference_optimum.toml -- the same mission flying the oracle's optimum: the
+  pitch table through the optimized nodes, the optimized stage-4 theta, coast-8 duration (steps
+  stay 40) and payload.
+
+Every number is written with repr(), i.e. the shortest text that reads back to the same double.
+Only the Python standard library is used. The output is deterministic; re-running the script on
+an unchanged reference leaves the files byte-identical.
+"""
+
+import argparse
+import json
+import math
+import os
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+DEFAULT_REFERENCE = os.path.join(ROOT, "..", "shared", "reference", "scout_reference.json")
+DEFAULT_OUT = os.path.join(ROOT, "examples", "scout")
+
+WRAP = 96  # characters per array line
+
+
+# ---- TOML emission ----------------------------------------------------------------------------
+
+def num(value):
+    """A TOML number: integers as integers, floats via repr (round-trips exactly)."""
+    if isinstance(value, bool):
+        raise TypeError("boolean where a number was expected")
+    if isinstance(value, int):
+        return str(value)
+    value = float(value)
+    if not math.isfinite(value):
+        raise ValueError("non-finite number %r" % value)
+    text = repr(value)
+    return text
+
+
+def text(value):
+    return json.dumps(value, ensure_ascii=True)  # JSON basic strings are TOML basic strings
+
+
+def boolean(value):
+    return "true" if value else "false"
+
+
+class Deck:
+    def __init__(self):
+        self.lines = []
+
+    def blank(self):
+        if self.lines and self.lines[-1] != "":
+            self.lines.append("")
+
+    def comment(self, *lines):
+        for line in lines:
+            self.lines.append(("# " + line).rstrip())
+
+    def table(self, name, comment=None):
+        self.blank()
+        self.lines.append("[%s]%s" % (name, "  # " + comment if comment else ""))
+
+    def array_table(self, name, comment=None):
+        self.blank()
+        self.lines.append("[[%s]]%s" % (name, "  # " + comment if comment else ""))
+
+    def key(self, key, rendered, comment=None):
+        line = "%s = %s" % (key, rendered)
+        if comment:
+            line = "%-44s # %s" % (line, comment)
+        self.lines.append(line)
+
+    def number(self, key, value, comment=None):
+        self.key(key, num(value), comment)
+
+    def string(self, key, value, comment=None):
+        self.key(key, text(value), comment)
+
+    def flag(self, key, value, comment=None):
+        self.key(key, boolean(value), comment)
+
+    def array(self, key, values, comment=None, render=num):
+        items = [render(v) for v in values]
+        one_line = "%s = [%s]" % (key, ", ".join(items))
+        if len(one_line) <= WRAP:
+            self.key(key, "[%s]" % ", ".join(items), comment)
+            return
+        if comment:
+            self.lines.append("# " + comment)
+        self.lines.append("%s = [" % key)
+        line = "  "
+        for item in items:
+            piece = item + ","
+            if len(line) + len(piece) + 1 > WRAP and line.strip():
+                self.lines.append(line.rstrip())
+                line = "  "
+            line += piece + " "
+        if line.strip():
+            self.lines.append(line.rstrip())
+        self.lines.append("]")
+
+    def render(self):
+        return "\n".join(self.lines).rstrip() + "\n"
+
+
+# ---- units of the constraint codes (data blocks 8, 19, 29) -------------------------------------
+
+TERMINAL_UNITS = {
+    0: ("lb", "payload"), 1: ("ft_s", "inertial velocity"), 2: ("deg", "inertial flight-path angle"),
+    3: ("ft_s", "V_I minus local circular velocity"), 4: ("ft", "radius"), 5: ("ft_s", "aerodynamic velocity"),
+    6: ("deg", "aerodynamic flight-path angle"), 7: ("ft", "altitude"), 8: ("nmi", "downrange distance"),
+    9: ("ft2_s2", "2E"), 10: ("deg", "orbit inclination"), 11: ("ft", "perigee radius"),
+    12: ("deg", "longitude of the ascending node"), 13: ("deg", "argument of perigee"),
+    14: ("btu_ft2", "total heating"),
+}
+
+
+def constraint_unit(code):
+    if code in TERMINAL_UNITS:
+        return TERMINAL_UNITS[code]
+    raise ValueError("constraint code %d not handled by the generator" % code)
+
+
+def deck_value(value, unit):
+    """Block 19/29 values are in the manual's pure units (rad); the deck spells angles in degrees."""
+    return math.degrees(value) if unit == "deg" else value
+
+
+# ---- the decks ------------------------------------------------------------------------------
+
+OPTION_KEYS = {  # IP(n) -> (deck key, binary)
+    1: ("payoff", False), 2: ("heating_constraint", True), 3: ("exchange_ratios", True),
+    6: ("body_dynamics_6d", False), 7: ("linearization", True), 9: ("spin_stages_4_5", False),
+    10: ("stage5_chi", False), 11: ("zero_alpha_window", True), 12: ("alpha_zero_at_stage2_ignition", True),
+    13: ("qbar_constraint_type", False), 15: ("memory_dump", True), 17: ("print_input", True),
+    21: ("dispersions", True), 22: ("hardover", True), 23: ("impact", True), 24: ("radar", True),
+}
+
+CONSTANT_KEYS = [  # JSON key, deck key, CT1 word
+    ("earth_rotation_rate_rad_per_s", "earth_rotation_rate_rad_s", 1),
+    ("gravitational_parameter_ft3_per_s2", "gravitational_parameter_ft3_s2", 2),
+    ("earth_equatorial_radius_ft", "earth_equatorial_radius_ft", 3),
+    ("gas_constant_ft2_per_s2_R", "gas_constant_ft2_s2_R", 4),
+    ("g0_weight_to_mass_ft_per_s2", "g0_ft_s2", 5),
+    ("sea_level_pressure_lbf_per_ft2", "sea_level_pressure_lbf_ft2", 6),
+    ("haero_aero_bypass_altitude_ft", "haero_ft", 7),
+    ("lines_per_page", "lines_per_page", 8),
+    ("deg_to_rad_as_printed", "deg_to_rad_as_printed", 9),
+    ("time_epsilon_s", "time_epsilon_s", 10),
+    ("j2", "j2", 11),
+    ("inverse_flattening", "inverse_flattening", 12),
+    ("ct1_13", "ct1_13", 13),
+]
+
+HARDOVER_WORDS = [  # block 45 word -> deck key (docs/deck-format.md)
+    "stage1_every_nth_step", "max_qbar_alpha_lb_deg_ft2", "stage1_max_attitude_step_deg", "stage1_max_step_s",
+    "stage1_min_step_s", "stage1_max_steps_per_turn", "stage1_thrust_misalignment_deg",
+    "stage2_thrust_misalignment_deg", "stage3_thrust_misalignment_deg", "stage1_thrust_station_in",
+    "stage1_fin_vane_deflection_deg", "mode_b_stage2_jet_force_lb", "mode_b_stage3_jet_force_lb",
+    "mode_c_stage2_jet_force_lb", "mode_c_stage3_jet_force_lb", "stage2_thrust_station_in",
+    "stage3_thrust_station_in", "stage2_control_jet_station_in", "stage3_control_jet_station_in",
+    "output_interval_s", "stage2_every_nth_step", "stage3_every_nth_step", "upper_max_attitude_step_deg",
+    "upper_max_step_s", "upper_min_step_s", "upper_max_steps_per_turn",
+]
+
+# Adjustable-parameter codes of block 6 -> keys of the reference's weighting_block27.
+WEIGHT_KEYS = {1: "stage4_theta", 3: "coast_after_stage3"}
+
+# The reference optimum's pitch nodes (brief and README section 3).
+OPTIMUM_NODE_TIMES = [3.0, 8.0, 15.0, 45.0, 50.0, 69.0, 88.0, 94.0, 112.0, 130.0]
+
+
+def header(deck, ref, variant):
+    deck.comment(
+        "TOLIP case deck (TOML; format: docs/deck-format.md).",
+        "GENERATED by scripts/make_scout_examples.py from ../shared/reference/scout_reference.json;",
+        "edit the generator, not this file.",
+        "",
+        ref["title"] + ".",
+        ref["disclaimer"].split(".")[0] + ".",
+        "",
+    )
+    if variant == "initial":
+        deck.comment(
+            "The maximum-payload optimization case as the oracle started it: the crude initial",
+            "pitch program (data block 40), stage-4 theta -20 deg, coast 8 = 450 s, payload 250 lb.",
+            "The oracle's optimum is examples/scout/reference_optimum.toml.",
+        )
+    else:
+        deck.comment(
+            "The same mission flying the oracle's optimum (oracle_solution): pitch nodes as flown,",
+            "optimized stage-4 theta, coast-8 duration (40 steps kept) and payload.",
+        )
+    deck.comment("Units are in the key names; angles in degrees (the reader converts to radians).")
+
+
+def case_section(deck, variant, ref):
+    deck.table("case", "data blocks 1-3")
+    deck.string("title", "SCOUT-CLASS 4-STAGE, WALLOPS ISLAND TO 300 NMI CIRCULAR ORBIT", "block 1, 12A6")
+    if variant == "initial":
+        heading = "MAXIMUM PAYLOAD FROM THE CRUDE INITIAL PITCH PROGRAM"
+    else:
+        heading = "REFERENCE OPTIMUM, PAYLOAD %.3f LB" % ref["oracle_solution"]["payload_lb"]
+    deck.string("heading", heading, "block 2, 12A6")
+    deck.string("date", ref["mission"]["launch"]["launch_utc"][:10], "block 3, 2A6")
+
+
+def options_section(deck, ref):
+    deck.table("options", "data block 4, IP(n)")
+    for key, value in ref["mission"]["block4_options_IP"].items():
+        n = int(key.split("_")[0])
+        if n not in OPTION_KEYS:
+            raise ValueError("option %s has no deck key" % key)
+        name, binary = OPTION_KEYS[n]
+        if binary:
+            if value not in (0, 1):
+                raise ValueError("option %s is not 0/1" % key)
+            deck.flag(name, value == 1, "IP(%d)" % n)
+        else:
+            deck.number(name, value, "IP(%d)" % n)
+
+
+def constants_sections(deck, ref):
+    deck.table("constants", "data block 10, CT1(1..13) (the manual's nominal values)")
+    ct1 = ref["constants_block10_CT1"]
+    if set(ct1) != {k for k, _, _ in CONSTANT_KEYS}:
+        raise ValueError("unexpected block 10 keys: %s" % sorted(ct1))
+    for json_key, deck_key, word in CONSTANT_KEYS:
+        deck.number(deck_key, ct1[json_key], "CT1(%d)" % word)
+
+    atm = ref["atmosphere_blocks11_14_ARDC"]
+    deck.table("atmosphere", "data blocks 11-14, the 1962 ARDC table of Sec. 19 (8 layers)")
+    deck.array("base_geopotential_altitude_ft", atm["base_geopotential_altitude_ft"], "block 11, CT2")
+    deck.array("base_molecular_temperature_R", atm["base_molecular_temperature_R"], "block 12, CT3")
+    deck.array("lapse_rate_R_per_ft", atm["lapse_rate_R_per_geopotential_ft"], "block 13, CT4")
+    deck.array("base_density_slug_ft3", atm["base_density_slug_per_ft3"], "block 14, CT5")
+
+
+def vehicle_sections(deck, ref, variant):
+    vehicle = ref["vehicle"]
+    sequence = list(vehicle["stage_sequence_block5"])
+    if sequence and sequence[-1] == 0:
+        sequence.pop()
+    payload = ref["oracle_solution"]["tth_block40_initial_nominal"]["payload_lb"] if variant == "initial" \
+        else ref["oracle_solution"]["payload_lb"]
+    if vehicle["payload_carried_in_jettison_of_stage"] != max(c for c in sequence if c <= 5):
+        raise ValueError("payload must ride in the last powered stage")
+
+    deck.table("vehicle", "data block 5 and the payload")
+    deck.array("sequence", sequence, "block 5 ISTGE (the card's terminating 0 is optional)")
+    deck.number("payload_lb", payload,
+                "added to the jettison weight of stage %d, the last powered stage (Sec. 14)"
+                % vehicle["payload_carried_in_jettison_of_stage"])
+
+    lift = vehicle["aerodynamics"]["lift_curve_slope_table"]
+    deck.table("vehicle.lift_curve_slope", "data block 32, TL1")
+    deck.comment(lift["note"])
+    deck.array("mach", lift["mach"])
+    deck.array("cl_alpha_per_rad", lift["cl_alpha_per_rad"])
+    deck.array("used_in_stages", lift["used_in_stages"])
+
+    drags = vehicle["aerodynamics"]["drag_coefficient_tables"]
+    coast8 = ref["oracle_solution"]["tth_block40_initial_nominal"]["coast8_s"] if variant == "initial" \
+        else ref["oracle_solution"]["coast8_duration_s"]
+    for code in sequence:
+        stage = vehicle["stages"][str(code)]
+        if stage["kind"] == "powered":
+            deck.table("stage.%d" % code, "powered stage %d: data blocks 16, 39, 30, 38%s"
+                       % (code, ", 31" if "stage_%d" % code in drags else ""))
+            deck.string("name", stage["name"])
+            deck.comment("propellant %s lb, vacuum Isp %s s, total vacuum impulse %s lbf s"
+                         % (num(stage["propellant_weight_lb"]), num(stage["isp_vacuum_s"]),
+                            num(stage["total_vacuum_impulse_lbf_s"])))
+            deck.number("duration_s", stage["duration_s"], "block 16 DA1(%d) = last thrust-table time" % (2 * code - 1))
+            deck.number("integration_steps", stage["integration_steps"],
+                        "block 16 DA1(%d)%s" % (2 * code, " (after the lift-off interval)" if code == 1 else ""))
+            deck.comment(stage["jettison_weight_note"])
+            deck.number("jettison_weight_lb", stage["jettison_weight_lb"], "block 39 SG%d(1)" % code)
+            deck.number("reference_area_ft2", stage["reference_area_ft2"], "block 39 SG%d(2)" % code)
+            deck.number("nozzle_exit_area_ft2", stage["nozzle_exit_area_ft2"], "block 39 SG%d(3)" % code)
+            thrust = stage["thrust_table"]
+            deck.table("stage.%d.thrust" % code, "data block 30: stage time vs vacuum thrust")
+            deck.array("time_s", thrust["time_s"])
+            deck.array("vacuum_thrust_lbf", thrust["vacuum_thrust_lbf"])
+            weight = stage["consumable_weight_table"]
+            deck.table("stage.%d.consumable_weight" % code, "data block 38: consumable weight remaining")
+            deck.array("time_s", weight["time_s"])
+            deck.array("remaining_lb", weight["consumable_weight_remaining_lb"])
+        else:
+            deck.table("stage.%d" % code, "coast after stage %d: data blocks 16, 39%s"
+                       % (code - 5, ", 31" if "stage_%d" % code in drags else ""))
+            deck.comment(stage["note"])
+            duration = coast8 if code == 8 else stage["duration_s"]
+            note = "block 16 DA1(%d)" % (2 * code - 1)
+            if stage.get("duration_is_initial_guess_of_adjustable_parameter"):
+                note += ("; adjustable parameter (initial guess)" if variant == "initial"
+                         else "; the oracle's optimized value")
+            deck.number("duration_s", duration, note)
+            deck.number("integration_steps", stage["integration_steps"], "block 16 DA1(%d)" % (2 * code))
+            deck.number("jettison_weight_lb", stage["jettison_weight_lb"], "block 39 SG%d(1)" % code)
+            deck.number("reference_area_ft2", stage["reference_area_ft2"], "block 39 SG%d(2)" % code)
+        key = "stage_%d" % code
+        if key in drags:
+            deck.table("stage.%d.drag" % code, "data block 31, TD%d: C_D at alpha = 0 vs Mach" % code)
+            deck.comment(drags[key]["note"])
+            deck.array("mach", drags[key]["mach"])
+            deck.array("cd", drags[key]["cd"])
+
+
+def mission_sections(deck, ref, variant):
+    mission = ref["mission"]
+    oracle = ref["oracle_solution"]
+    launch = mission["launch"]
+    ic = mission["initial_conditions_block21"]
+    deck.table("launch", "data blocks 20 and 21")
+    deck.comment("%s; geodetic latitude %s deg; %s UT" % (launch["site"], num(launch["geodetic_latitude_deg"]),
+                                                          launch["launch_utc"]))
+    deck.number("liftoff_duration_s", mission["liftoff_duration_s_block20_word1"], "block 20 DA5(1)")
+    deck.number("space_age_date_days", mission["launch_date_space_age_days_block20_word2"],
+                "block 20 DA5(2), Julian date - 2436934.5")
+    deck.number("altitude_ft", ic["altitude_ft"], "block 21 DA6(1)")
+    deck.number("longitude_deg", ic["longitude_deg"], "block 21 DA6(2), east positive")
+    deck.number("geocentric_latitude_deg", ic["geocentric_latitude_deg"], "block 21 DA6(3)")
+    deck.number("velocity_ft_s", ic["velocity_ft_per_s"], "block 21 DA6(4), must be 0")
+    deck.number("azimuth_deg", ic["azimuth_deg"], "block 21 DA6(5), east of north")
+    deck.number("flight_path_angle_deg", ic["flight_path_angle_deg"], "block 21 DA6(6), must be 90")
+    deck.number("heading_hold_until_s", mission["heading_hold_until_s"],
+                "extension: dpsi/dt = 0 on steps starting before this time")
+
+    block22 = mission["block22_control_constraints"]
+    deck.table("control_constraints", "data block 22, DA7")
+    deck.number("zero_alpha_start_s", block22["alpha_zero_start_s"], "DA7(1), s from launch")
+    deck.number("zero_alpha_end_s", block22["alpha_zero_end_s"], "DA7(2), s from launch")
+    deck.number("max_pitch_rate_deg_s", block22["max_pitch_rate_deg_per_s"], "DA7(3)")
+    deck.number("min_pitch_rate_deg_s", block22["min_pitch_rate_deg_per_s"], "DA7(4)")
+    deck.number("min_pitch_rate_change_deg_s", block22["min_change_in_pitch_rate_deg_per_s"], "DA7(5)")
+
+    block17 = mission["block17"]
+    theta4 = oracle["tth_block40_initial_nominal"]["theta4_deg"] if variant == "initial" else oracle["stage4_theta_deg"]
+    if variant == "initial" and theta4 != block17["stage4_theta_deg_initial"]:
+        raise ValueError("block 17 and the initial nominal disagree on stage-4 theta")
+    chi4 = block17["stage4_chi_deg"] if variant == "initial" else oracle["stage4_chi_deg"]
+    deck.table("misc", "data block 17, DA2")
+    deck.number("stage4_theta_deg", theta4, "DA2(5), spun stage 4 (adjustable parameter 1)")
+    deck.number("stage4_chi_deg", chi4, "DA2(6)")
+    deck.number("nose_radius_ft", block17["nose_radius_ft"], "DA2(7)")
+    deck.number("gyro_uncage_s_before_launch", block17["gyro_uncage_s_before_launch"], "DA2(8)")
+    deck.number("payload_weighting_factor", block17["payload_weighting_factor"], "DA2(15)")
+    deck.number("coast_change_limit_s", block17["coast_change_limit_per_iteration_s"], "DA2(16)")
+    deck.number("minimum_coast_s", block17["minimum_coast_duration_s"], "DA2(17)")
+
+    terminal = mission["terminal_constraints"]
+    codes = terminal["block8_codes"]
+    count, codes = codes[0], codes[1:]
+    if count != len(codes):
+        raise ValueError("block 8 count disagrees with its list")
+    desired = terminal["block19_desired_values"]
+    optimization = terminal["block29_allowed_deviations_optimization"]
+    linearization = terminal["block29_allowed_deviations_linearization"]
+    deck.blank()
+    deck.comment("Data blocks 8, 19, 29: the payoff first, then the terminal constraints, applied at the",
+                 terminal["applied_at"] + ".",
+                 "desired_* is block 19, deadband_* block 29 (optimization DA14(1..12), linearization",
+                 "DA14(14..25)); the unit is in the key (angles in deg; block 19/29 hold radians).")
+    for i, code in enumerate(codes):
+        unit, name = constraint_unit(code)
+        deck.array_table("constraint", "block 8 IB3(%d): %s%s" % (i + 2, name, " (payoff)" if i == 0 else ""))
+        deck.number("code", code)
+        if i == 0:
+            continue
+        deck.number("desired_" + unit, deck_value(desired[i], unit), "block 19 DA4(%d)" % (i + 1))
+        rad = " = %s rad" if unit == "deg" else ""
+        deck.number("deadband_optimization_" + unit, deck_value(optimization[i - 1], unit),
+                    "block 29 DA14(%d)%s" % (i, rad % num(optimization[i - 1]) if rad else ""))
+        deck.number("deadband_linearization_" + unit, deck_value(linearization[i - 1], unit),
+                    "block 29 DA14(%d)%s" % (i + 13, rad % num(linearization[i - 1]) if rad else ""))
+
+    adjustable = mission["adjustable_parameters_block6"]["codes"]
+    count, adjustable = adjustable[0], adjustable[1:]
+    if count != len(adjustable):
+        raise ValueError("block 6 count disagrees with its list")
+    deck.blank()
+    deck.comment("Data blocks 6 and 27: " + mission["adjustable_parameters_block6"]["meaning"] + ".")
+    for i, code in enumerate(adjustable):
+        deck.array_table("adjustable_parameter", "block 6 IB1(%d)" % (i + 2))
+        deck.number("code", code)
+        deck.number("weight", mission["weighting_block27"][WEIGHT_KEYS[code]], "block 27 DA12(%d)" % (i + 1))
+
+    pitch = mission["pitch_program_definition"]
+    tlin = pitch["tlin_block18"]
+    deck.table("linearization", "data blocks 18 (TLIN) and 26 (ETALIN: default 1.0 per segment)")
+    deck.comment(pitch["tlin_note"])
+    deck.number("segment_count", tlin[0], "TLIN(1)")
+    deck.array("coded_times", tlin[1:], "TLIN(2..): 100 x stage + s from stage ignition")
+
+    block28 = mission["block28_convergence"]
+    deck.table("convergence", "data block 28, DA13 (payoff units: lb)")
+    deck.number("initial_payoff_improvement", block28["initial_payoff_improvement_lb"], "DA13(1)")
+    deck.number("stop_improvement", block28["stop_when_attempt_below_lb"], "DA13(2)")
+    deck.number("max_forward_trajectories", block28["max_forward_trajectories"], "DA13(3)")
+    deck.number("max_linearization_iterations", block28["max_linearization_iterations"], "DA13(4)")
+
+    deck.table("output_frequency", "data block 9, IB4: every computed point, all stages")
+    deck.number("initial", 1)
+    deck.number("intermediate", 1)
+    deck.number("final", 1)
+
+    if variant == "initial":
+        tth = oracle["tth_block40_initial_nominal"]
+        deck.table("pitch_program", "data block 40, TTH: the oracle's crude starting program")
+        times, thetas = tth["time_s"], tth["theta_deg"]
+    else:
+        flown = oracle["pitch_program"]
+        if flown["node_times_s"] != OPTIMUM_NODE_TIMES:
+            raise ValueError("the oracle's pitch nodes moved: %s" % flown["node_times_s"])
+        deck.table("pitch_program", "data block 40, TTH: the oracle's optimum (theta as flown at the nodes)")
+        deck.comment("Between 15 and 45 s the zero-alpha rule (IP(11), block 22) is flown, not the straight line.")
+        times = [0.0] + OPTIMUM_NODE_TIMES
+        thetas = [90.0] + flown["theta_deg_as_flown"]
+    deck.array("time_s", times, "s from launch")
+    deck.array("theta_deg", thetas, "pitch attitude from the launch geodetic horizontal")
+
+
+def body_dynamics_sections(deck, ref):
+    body = ref["body_dynamics_6D"]
+    da6d = body["block33_DA6D"]
+    deck.table("body_dynamics", "data block 33, DA6D (6D simulation; body stations in inches)")
+    deck.comment(body["note"])
+
+    def staged(key, stages):
+        return [da6d[key]["stage_%d" % s] for s in stages]
+
+    deck.array("position_gain_deg_per_deg", staged("position_gain_K_theta_deg_per_deg", (1, 2, 3)), "DA6D(1-3)")
+    deck.array("rate_gain_s", staged("rate_gain_K_q_s", (1, 2, 3)), "DA6D(4-6)")
+    deck.array("control_station_in", staged("jet_vane_and_fin_station_in", (1, 2, 3)), "DA6D(7-9)")
+    deck.number("jet_vane_effectiveness_per_deg_per_vane",
+                da6d["jet_vane_effectiveness_lb_per_lb_vacuum_thrust_per_deg_per_vane"], "DA6D(10)")
+    deck.number("moment_reference_station_in", da6d["moment_reference_station_X_FS_in"], "DA6D(11) X_FS")
+    deck.array("integration_frequency_multiplier", staged("integration_frequency_multiplier", (1, 2, 3, 4)),
+               "DA6D(12-15)")
+    deck.number("reference_length_ft", da6d["reference_length_ft"], "DA6D(16)")
+    deck.array("impact_every_nth_step", staged("impact_every_nth_step", (1, 2, 3)), "DA6D(17-19)")
+
+    fin = body["block34_fin_normal_force_per_delta"]
+    deck.table("body_dynamics.fin_normal_force", "data block 34, CNDELTA (reference area %s ft^2)"
+               % num(fin["reference_area_ft2"]))
+    deck.array("mach", fin["mach"])
+    deck.array("cn_delta_per_rad_per_fin", fin["cn_delta_per_rad_per_fin"])
+
+    cma = body["block35_pitching_moment_per_alpha_about_X_FS"]
+    deck.table("body_dynamics.pitching_moment", "data block 35, CMALPHA about X_FS")
+    deck.comment("built from the lift table (%s) with the centre-of-pressure stations" % cma["normal_force_slope"])
+    deck.comment("x_cp (in) = " + ", ".join(num(v) for v in cma["center_of_pressure_station_in_used"]))
+    deck.array("mach", cma["mach"])
+    deck.array("cm_alpha_per_rad", cma["cm_alpha_per_rad"])
+
+    cmd = body["block36_fin_pitching_moment_per_delta_about_X_FS"]
+    deck.table("body_dynamics.fin_pitching_moment", "data block 36, CMDELTA about X_FS")
+    deck.array("mach", cmd["mach"])
+    deck.array("cm_delta_per_rad_per_fin", cmd["cm_delta_per_rad_per_fin"])
+
+    for stage in (1, 2, 3, 4):
+        cg = body["block37_center_of_gravity_station_in"]["stage_%d" % stage]
+        deck.table("body_dynamics.cg.%d" % stage, "data block 37, XCG%d" % stage)
+        deck.array("stage_time_s", cg["stage_time_s"])
+        deck.array("station_in", cg["cg_station_in"])
+
+
+def radar_sections(deck, ref):
+    deck.blank()
+    deck.comment("Data block 41: radar stations (one card each).")
+    for station in ref["radar_stations_block41"]:
+        deck.array_table("radar_station", "block 41")
+        deck.string("id", station["id"], "2A6")
+        deck.string("name", station["name"])
+        deck.number("geodetic_latitude_deg", station["geodetic_latitude_deg"])
+        deck.number("longitude_deg", station["longitude_deg"], "east positive")
+        deck.number("altitude_ft", station["altitude_ft"])
+
+
+def impact_sections(deck, ref):
+    impact = ref["impact"]
+    deck.blank()
+    deck.comment("Data blocks 42-43: impact drag tables (Mach from 0). " + impact["note"])
+    for group, block, json_key in (("failure_drag", 42, "block42_failure_mode_cd"),
+                                   ("casing_drag", 43, "block43_expended_casing_cd")):
+        for stage in (1, 2, 3):
+            table = impact[json_key]["stage_%d" % stage]
+            deck.table("impact.%s.%d" % (group, stage), "data block %d, CD%d%s" % (block, stage, "F" if block == 42 else "E"))
+            deck.comment(table["configuration"])
+            deck.number("reference_area_ft2", table["reference_area_ft2"])
+            if block == 43:
+                deck.number("casing_weight_lb", table["casing_weight_lb"])
+            deck.array("mach", table["mach"])
+            deck.array("cd", table["cd"])
+
+
+def hardover_sections(deck, ref):
+    hardover = ref["hardover"]
+    deck.blank()
+    deck.comment("Data blocks 44-45: failure-mode hardover turns. " + hardover["note"])
+    for stage in (1, 2, 3):
+        table = hardover["block44_pitch_inertia_slug_ft2"]["stage_%d" % stage]
+        deck.table("hardover.pitch_inertia.%d" % stage, "data block 44, IYY%d" % stage)
+        deck.array("stage_time_s", table["stage_time_s"])
+        deck.array("iyy_slug_ft2", table["iyy_slug_ft2"])
+    damping = hardover["block44_stage1_pitch_damping_CMQ_per_rad"]
+    deck.table("hardover.pitch_damping", "data block 44 (stage code 4): stage 1 CMQ")
+    deck.array("mach", damping["mach"])
+    deck.array("cmq_per_rad", damping["cmq_per_rad"])
+    deck.table("hardover.parameters", "data block 45, words 1-26")
+    words = hardover["block45"]
+    if len(words) != len(HARDOVER_WORDS):
+        raise ValueError("block 45 must have 26 words")
+    for key in sorted(words):
+        index = int(key[1:3])
+        deck.number(HARDOVER_WORDS[index - 1], words[key], "word %d" % index)
+
+
+def dispersion_sections(deck, ref):
+    disp = ref["dispersions"]
+    deck.blank()
+    deck.comment("Data blocks 46-55: dispersed trajectories, one [[dispersion]] per block 46 card, in",
+                 "increasing code order. " + disp["note"],
+                 "Signs (the manual: data carry their sign): high +, low -, yaw +.")
+    thrust = disp["codes_1_8_vacuum_thrust_variation"]
+    titles = {1: "THRUST HI", 2: "THRUST LO"}
+    for code in range(1, 9):
+        stage = (code + 1) // 2
+        high = code % 2 == 1
+        table = thrust["tables"]["stage_%d_%s" % (stage, "high" if high else "low")]
+        deck.array_table("dispersion", "block 46: vacuum thrust %s, stage %d (%s)"
+                         % ("high" if high else "low", stage, thrust["rule"].split(";")[0 if high else 1].strip()))
+        deck.number("code", code)
+        deck.string("title", "%s S%d" % (titles[1 if high else 2], stage))
+        deck.table("dispersion.thrust", "block 30 replacement table, stage %d" % stage)
+        deck.array("time_s", table["time_s"])
+        deck.array("vacuum_thrust_lbf", table["vacuum_thrust_lbf"])
+        deck.table("dispersion.consumable_weight", "block 38 replacement table, stage %d" % stage)
+        deck.array("time_s", table["time_s"])
+        deck.array("remaining_lb", table["consumable_weight_remaining_lb"])
+
+    weights = disp["codes_9_16_block47_weight_increment_lb"]
+    for code in range(9, 17):
+        stage = (code - 7) // 2
+        high = code % 2 == 1
+        deck.array_table("dispersion", "block 46: weight increment %s, stage %d" % ("high" if high else "low", stage))
+        deck.number("code", code)
+        deck.string("title", "WEIGHT %s S%d" % ("HI" if high else "LO", stage))
+        value = weights["stage_%d" % stage]
+        deck.number("weight_increment_lb", value if high else -value, "block 47")
+
+    drag = disp["codes_17_18_block48_drag_variation_fraction"]
+    for code, sign in ((17, 1.0), (18, -1.0)):
+        deck.array_table("dispersion", "block 46: drag variation %s" % ("high" if sign > 0 else "low"))
+        deck.number("code", code)
+        deck.string("title", "DRAG %s" % ("HIGH" if sign > 0 else "LOW"))
+        deck.number("drag_variation_fraction", sign * drag, "block 48")
+
+    # Codes 19-20: block 35 rebuilt with the centre of pressure moved 10 in forward / aft.
+    body = ref["body_dynamics_6D"]
+    cma = body["block35_pitching_moment_per_alpha_about_X_FS"]
+    lift = ref["vehicle"]["aerodynamics"]["lift_curve_slope_table"]
+    x_fs = body["block33_DA6D"]["moment_reference_station_X_FS_in"]
+    length_in = 40.0  # DA6D(16) = 3.33333 ft, the 40 in diameter, as the nominal table was built
+    if lift["mach"] != cma["mach"]:
+        raise ValueError("block 35 and the lift table must share their Mach numbers")
+    for cn, cp, cm in zip(lift["cl_alpha_per_rad"], cma["center_of_pressure_station_in_used"], cma["cm_alpha_per_rad"]):
+        if abs(cn * (x_fs - cp) / length_in - cm) > 1e-9:
+            raise ValueError("block 35 is not C_N_alpha (X_FS - x_cp) / 40 in")
+    shift = disp["codes_19_20_block35_cm_alpha_variation"]
+    for code, delta in ((19, -shift["center_of_pressure_shift_in"]), (20, shift["center_of_pressure_shift_in"])):
+        values = [round(cn * (x_fs - (cp + delta)) / length_in, 9)
+                  for cn, cp in zip(lift["cl_alpha_per_rad"], cma["center_of_pressure_station_in_used"])]
+        deck.array_table("dispersion", "block 46: C_M_alpha %s (%s)"
+                         % ("forward" if delta < 0 else "aft", shift["rule"].split(";")[0 if delta < 0 else 1].strip()))
+        deck.number("code", code)
+        deck.string("title", "CMA %s" % ("FORWARD" if delta < 0 else "AFT"))
+        deck.table("dispersion.pitching_moment", "complete block 35 table")
+        deck.array("mach", cma["mach"])
+        deck.array("cm_alpha_per_rad", values)
+
+    mis = disp["codes_21_23_block49_stage1_thrust_misalignment"]
+    for code, sign, kind in ((21, 1.0, "HI"), (22, -1.0, "LO"), (23, 1.0, "YAW")):
+        deck.array_table("dispersion", "block 46: stage 1 thrust misalignment %s" % kind.lower())
+        deck.number("code", code)
+        deck.string("title", "MISALIGN %s" % kind)
+        deck.number("misalignment_deg", sign * mis["angle_deg"], "block 49 word 1")
+        deck.number("thrust_station_in", mis["thrust_application_station_in"], "block 49 word 2")
+
+    deadband = disp["codes_24_29_block50_control_deadband_deg"]
+    for code in range(24, 30):
+        stage = 2 if code <= 26 else 3
+        kind = ("HI", "LO", "YAW")[(code - 24) % 3]
+        sign = -1.0 if kind == "LO" else 1.0
+        deck.array_table("dispersion", "block 46: control deadband %s, stage %d" % (kind.lower(), stage))
+        deck.number("code", code)
+        deck.string("title", "DBAND %s S%d" % (kind, stage))
+        deck.number("deadband_deg", sign * deadband["stage_%d" % stage], "block 50")
+
+    for code, kind in ((30, "HI"), (31, "LO"), (32, "YAW")):
+        sign = -1.0 if kind == "LO" else 1.0
+        deck.array_table("dispersion", "block 46: stage 4 tip-off %s" % kind.lower())
+        deck.number("code", code)
+        deck.string("title", "TIPOFF %s" % kind)
+        deck.number("tipoff_deg", sign * disp["codes_30_32_block51_stage4_tipoff_deg"], "block 51")
+
+    deck.array_table("dispersion", "block 46: launch azimuth (yaw)")
+    deck.number("code", 33)
+    deck.string("title", "LAUNCH AZ")
+    deck.number("launch_azimuth_change_deg", disp["code_33_block52_launch_azimuth_change_deg"], "block 52")
+    for code, sign, kind in ((34, 1.0, "HI"), (35, -1.0, "LO")):
+        deck.array_table("dispersion", "block 46: launch attitude %s" % kind.lower())
+        deck.number("code", code)
+        deck.string("title", "LAUNCH ATT %s" % kind[0])
+        deck.number("launch_attitude_change_deg", sign * disp["codes_34_35_block52_launch_attitude_change_deg"],
+                    "block 52")
+
+    winds = disp["codes_36_38_winds"]
+    azimuths = winds["block54_wind_vector_azimuth_deg"]
+    for code, key, kind in ((36, "code_36_high_headwind", "HIGH"), (37, "code_37_low_tailwind", "LOW"),
+                            (38, "code_38_yaw_crosswind", "YAW")):
+        deck.array_table("dispersion", "block 46: winds %s (%s)" % (kind.lower(), key.split("_", 3)[3]))
+        deck.number("code", code)
+        deck.string("title", "WINDS %s" % kind)
+        deck.table("dispersion.wind_speed", "block 53, WINDVL")
+        deck.array("altitude_ft", winds["block53_altitude_ft"])
+        deck.array("speed_ft_s", winds["block53_wind_speed_ft_per_s"])
+        deck.table("dispersion.wind_azimuth", "block 54, WINDAZ")
+        if code == 36:
+            deck.comment(winds["azimuth_convention"])
+        deck.array("altitude_ft", winds["block53_altitude_ft"])
+        deck.array("azimuth_deg", azimuths[key])
+
+    deck.array_table("dispersion", "block 46: three-sigma summary")
+    deck.number("code", 40)
+    deck.string("title", "NOMINAL TRAJ")
+    if disp.get("block55_stage4_5_durations_s") is not None:
+        raise ValueError("block 55 data present: the generator writes it only for five-stage vehicles")
+
+
+def build(ref, variant):
+    deck = Deck()
+    header(deck, ref, variant)
+    case_section(deck, variant, ref)
+    options_section(deck, ref)
+    constants_sections(deck, ref)
+    vehicle_sections(deck, ref, variant)
+    mission_sections(deck, ref, variant)
+    deck.blank()
+    deck.comment("=" * 94)
+    deck.comment("Optional computations (IP(6), IP(21)-IP(24)): data blocks 33-37 and 41-55.")
+    deck.comment("=" * 94)
+    body_dynamics_sections(deck, ref)
+    radar_sections(deck, ref)
+    impact_sections(deck, ref)
+    hardover_sections(deck, ref)
+    dispersion_sections(deck, ref)
+    return deck.render()
+
+
+def main(argv):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--reference", default=DEFAULT_REFERENCE, help="scout_reference.json")
+    parser.add_argument("--out", default=DEFAULT_OUT, help="output folder (examples/scout)")
+    args = parser.parse_args(argv)
+    with open(args.reference, encoding="utf-8") as handle:
+        ref = json.load(handle)
+    if ref.get("schema") != "tolip-scout-reference/1":
+        raise SystemExit("unexpected reference schema %r" % ref.get("schema"))
+    os.makedirs(args.out, exist_ok=True)
+    for name, variant in (("mission.toml", "initial"), ("reference_optimum.toml", "optimum")):
+        path = os.path.join(args.out, name)
+        with open(path, "w", encoding="utf-8", newline="\n") as handle:
+            handle.write(build(ref, variant))
+        print("wrote " + os.path.relpath(path, ROOT))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

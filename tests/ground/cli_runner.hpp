@@ -1,0 +1,103 @@
+// Runs the built `tolip` program (TOLIP_EXECUTABLE) in a shell and captures its exit code,
+// stdout and stderr, for the command-line tests.
+#pragma once
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <sstream>
+#include <string>
+#include <system_error>
+#include <vector>
+
+namespace tolip::test {
+
+struct CommandResult {
+  int exit_code = -1;  // -1 when the program did not exit normally
+  std::string out;
+  std::string err;
+};
+
+// Single-quotes an argument for /bin/sh.
+inline std::string shell_quote(const std::string& text) {
+  std::string quoted = "'";
+  for (char c : text) {
+    if (c == '\'') {
+      quoted += "'\\''";
+    } else {
+      quoted += c;
+    }
+  }
+  return quoted + "'";
+}
+
+inline std::string read_text_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// A fresh, empty scratch directory for one test; removed by the destructor.
+class ScratchDirectory {
+ public:
+  explicit ScratchDirectory(const std::string& name) {
+    path_ = std::filesystem::temp_directory_path() /
+            ("tolip_test_" + name + "_" + std::to_string(static_cast<long long>(::getpid())));
+    std::error_code ignored;
+    std::filesystem::remove_all(path_, ignored);
+    std::filesystem::create_directories(path_);
+  }
+  ~ScratchDirectory() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path_, ignored);
+  }
+  ScratchDirectory(const ScratchDirectory&) = delete;
+  ScratchDirectory& operator=(const ScratchDirectory&) = delete;
+
+  const std::filesystem::path& path() const { return path_; }
+  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
+
+  // Names of the entries in the directory (to spot left-over temporary files).
+  std::vector<std::string> entries() const {
+    std::vector<std::string> names;
+    for (const auto& entry : std::filesystem::directory_iterator(path_)) {
+      names.push_back(entry.path().filename().string());
+    }
+    return names;
+  }
+
+ private:
+  std::filesystem::path path_;
+};
+
+// Runs TOLIP_EXECUTABLE with the arguments; stderr is captured through a scratch file.
+inline CommandResult run_tolip_executable(std::initializer_list<std::string> arguments) {
+  static int counter = 0;
+  const std::filesystem::path err_path =
+      std::filesystem::temp_directory_path() /
+      ("tolip_test_stderr_" + std::to_string(static_cast<long long>(::getpid())) + "_" +
+       std::to_string(++counter));
+  std::string command = shell_quote(TOLIP_EXECUTABLE);
+  for (const std::string& argument : arguments) command += " " + shell_quote(argument);
+  command += " 2>" + shell_quote(err_path.string());
+
+  CommandResult result;
+  FILE* pipe = ::popen(command.c_str(), "r");
+  if (pipe == nullptr) return result;
+  char buffer[65536];
+  std::size_t got = 0;
+  while ((got = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) result.out.append(buffer, got);
+  const int status = ::pclose(pipe);
+  if (status != -1 && WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
+  result.err = read_text_file(err_path);
+  std::error_code ignored;
+  std::filesystem::remove(err_path, ignored);
+  return result;
+}
+
+}  // namespace tolip::test
