@@ -38,6 +38,7 @@ const char* status_name(Status status) {
     case Status::kZeroVelocity: return "kZeroVelocity";
     case Status::kMassNotPositive: return "kMassNotPositive";
     case Status::kTrajectoryStorageFull: return "kTrajectoryStorageFull";
+    case Status::kControlProgramSizeMismatch: return "kControlProgramSizeMismatch";
     case Status::kNotPrepared: return "kNotPrepared";
   }
   return "kUnknownStatus";
@@ -78,6 +79,7 @@ const char* status_message(Status status) {
     case Status::kZeroVelocity: return "the velocity is zero where a direction is needed";
     case Status::kMassNotPositive: return "the vehicle mass is not positive";
     case Status::kTrajectoryStorageFull: return "the trajectory has more integration points than its fixed storage";
+    case Status::kControlProgramSizeMismatch: return "the pitch program has a different number of points than the case's trajectory";
     case Status::kNotPrepared: return "the case was not prepared (prepare_case) before use";
   }
   return "unknown status";

@@ -3,8 +3,6 @@
 
 #include <cmath>
 
-#include "tolip/atmosphere/atmosphere.hpp"
-#include "tolip/dynamics/equations_of_motion.hpp"
 #include "tolip/earth/earth_model.hpp"
 #include "tolip/frames/frames.hpp"
 #include "tolip/integrator/rkad.hpp"
@@ -28,80 +26,31 @@ struct LatchedSegment {
   double end_theta_rad = 0.0;
 };
 
-// Controls held over one integration step.
-struct StepControls {
-  bool heading_hold = false;
-  bool alpha_zero = false;
-};
-
-// The stage being flown.
-struct StageContext {
-  int code = 0;
-  double start_s = 0.0;  // time from launch at stage time 0
-  const StageData* data = nullptr;
-  const ModifiedThrustTable* thrust = nullptr;  // null in coasts
-  // Jettison weights of this and later stages, payload and later stages' consumables: the vehicle
-  // weight is this plus the stage's own consumable weight remaining.
-  double weight_above_consumable_lb = 0.0;
-};
-
-// Everything the equations of motion saw at one evaluation.
-struct Evaluation {
-  StateVector derivative = StateVector::Zero();
-  double altitude_ft = 0.0;
-  double weight_lb = 0.0;
-  double vacuum_thrust_lbf = 0.0;
-  double net_thrust_lbf = 0.0;
-  double dynamic_pressure_lbf_ft2 = 0.0;
-  double density_slug_ft3 = 0.0;
-  double mach = 0.0;
-  Vector3 thrust_axis_local = Vector3(0.0, 1.0, 0.0);
-  double theta_rad = 0.0;
-  double chi_rad = 0.0;
-  double drag_lbf = 0.0;
-  double lift_lbf = 0.0;
-};
-
-double powered_consumable_at_ignition(const Vehicle& vehicle, int code) {
-  return is_powered_stage(code) ? vehicle.stages[stage_index(code)].consumable_weight_lb(0.0) : 0.0;
-}
-
 class Flight {
  public:
-  Flight(const Mission& mission, const PreparedCase& prepared, Trajectory* trajectory)
-      : mission_(mission), prepared_(prepared), trajectory_(trajectory) {}
+  Flight(const Mission& mission, const PreparedCase& prepared, const ControlProgram* program,
+         Trajectory* trajectory)
+      : mission_(mission), prepared_(prepared), program_(program), trajectory_(trajectory) {}
 
   Status run();
 
  private:
-  Status fly_stage(const StageTimeline& line, StateVector* state);
+  Status fly_stage(int slot, StateVector* state);
   void latch_segments(const StageContext& stage, double t, const StateVector& state);
-  StepControls controls_at(double t) const;
-  double commanded_theta(const StageContext& stage, double t, const StepControls& controls,
-                         const Matrix3& platform_to_local, double* chi_rad) const;
-  void evaluate(const StageContext& stage, double t, const StateVector& state,
-                const StepControls& controls, Evaluation* out) const;
+  StepCommand command_at(const StageContext& stage, int point, double t, double step_s,
+                         const StateVector& state);
+  double program_theta(int point, double t) const;
   Status record(const StageContext& stage, double t, const StateVector& state,
-                const StepControls& controls, const Evaluation& eval);
+                const StepCommand& command, const Evaluation& eval);
   Status record_pad_point();
 
   const Mission& mission_;
   const PreparedCase& prepared_;
+  const ControlProgram* program_;  // null: data block 40 table
   Trajectory* trajectory_;
   LatchedSegment latched_;
   bool window_end_latched_ = false;
 };
-
-StepControls Flight::controls_at(double t) const {
-  // Step-start times are sums of fixed steps; half of TIMEP (CT1(10)) absorbs their round-off.
-  const double eps = 0.5 * mission_.constants.time_epsilon_s;
-  StepControls controls;
-  controls.heading_hold = t + eps < mission_.launch.heading_hold_until_s;
-  controls.alpha_zero = mission_.options.zero_alpha_window() &&
-                        t + eps >= mission_.control.zero_alpha_start_s &&
-                        t + eps < mission_.control.zero_alpha_end_s;
-  return controls;
-}
 
 void Flight::latch_segments(const StageContext& stage, double t, const StateVector& state) {
   const double eps = 0.5 * mission_.constants.time_epsilon_s;
@@ -127,23 +76,10 @@ void Flight::latch_segments(const StageContext& stage, double t, const StateVect
   }
 }
 
-double Flight::commanded_theta(const StageContext& stage, double t, const StepControls& controls,
-                               const Matrix3& platform_to_local, double* chi_rad) const {
-  *chi_rad = 0.0;
-  const MiscellaneousData& misc = mission_.misc;
-  const int spin = mission_.options.spin_stages_4_5();
-  // Spun stages hold the attitudes of data block 17 (IP(9)); so do the coasts that follow them.
-  if ((stage.code == 4 || stage.code == 9) && spin == 1) {
-    *chi_rad = misc.stage4_chi_rad;
-    return misc.stage4_theta_rad;
-  }
-  if ((stage.code == 5 || stage.code == 10) && (spin == 1 || spin == 2)) {
-    const bool coupled = spin == 1;
-    *chi_rad = coupled ? misc.stage4_chi_rad : misc.stage5_chi_rad;
-    return coupled ? misc.stage4_theta_rad : misc.stage5_theta_rad;
-  }
-  if (t < mission_.launch.liftoff_duration_s) return kHalfPi;
-  if (controls.alpha_zero) return theta_for_zero_alpha_rad(platform_to_local, 0.0);
+// Theta of the pitch program at a point: the per-point control, or the data block 40 table with the
+// latched segment.
+double Flight::program_theta(int point, double t) const {
+  if (program_ != nullptr) return program_->theta_rad[point];
   if (latched_.active && t >= latched_.start_s && t < latched_.end_s) {
     const double fraction = (t - latched_.start_s) / (latched_.end_s - latched_.start_s);
     return latched_.start_theta_rad + fraction * (latched_.end_theta_rad - latched_.start_theta_rad);
@@ -151,65 +87,56 @@ double Flight::commanded_theta(const StageContext& stage, double t, const StepCo
   return mission_.pitch_program_rad(t);
 }
 
-void Flight::evaluate(const StageContext& stage, double t, const StateVector& state,
-                      const StepControls& controls, Evaluation* out) const {
-  const Constants& constants = mission_.constants;
-  const StageData& data = *stage.data;
-  const double stage_time = t - stage.start_s;
-  const double v = state[kStateV];
-  const StateTrig trig(state);
-  const double surface_radius = oblate_radius_ft(constants, trig.sin_lambda, trig.cos_lambda);
-  out->altitude_ft = state[kStateR] - surface_radius;
+// The attitude command of the step that starts at `point` (time t, state x), in order of
+// precedence: spun stages, lift-off, the zero-alpha window, alpha = 0 at stage-2 ignition, and
+// the pitch program.
+StepCommand Flight::command_at(const StageContext& stage, int point, double t, double step_s,
+                               const StateVector& state) {
+  // Step-start times are sums of fixed steps; half of TIMEP (CT1(10)) absorbs their round-off.
+  const double eps = 0.5 * mission_.constants.time_epsilon_s;
+  latch_segments(stage, t, state);
+  StepCommand command;
+  command.step_start_s = t;
+  command.step_s = step_s;
+  command.heading_hold = t + eps < mission_.launch.heading_hold_until_s;
 
-  // Above HAERO (CT1(7)) every aerodynamic computation is bypassed: no density, no pressure.
-  double pressure = 0.0;
-  double density = 0.0;
-  double speed_of_sound = 0.0;
-  if (out->altitude_ft <= constants.haero_ft) {
-    AtmosphereSample air;
-    if (ok(evaluate_atmosphere(mission_.atmosphere, constants, out->altitude_ft, surface_radius, &air))) {
-      pressure = air.pressure_lbf_ft2;
-      density = air.density_slug_ft3;
-      speed_of_sound = air.speed_of_sound_ft_s;
-    }
+  const MiscellaneousData& misc = mission_.misc;
+  const int spin = mission_.options.spin_stages_4_5();
+  // Spun stages hold the attitudes of data block 17 (IP(9)); so do the coasts that follow them.
+  if ((stage.code == 4 || stage.code == 9) && spin == 1) {
+    command.mode = AttitudeMode::kHeld;
+    command.theta_start_rad = command.theta_end_rad = misc.stage4_theta_rad;
+    command.chi_rad = misc.stage4_chi_rad;
+    return command;
   }
-
-  out->weight_lb = stage.weight_above_consumable_lb +
-                   (is_powered_stage(stage.code) ? data.consumable_weight_lb(stage_time) : 0.0);
-  out->vacuum_thrust_lbf = (stage.thrust != nullptr) ? (*stage.thrust)(stage_time) : 0.0;
-  out->net_thrust_lbf =
-      (stage.thrust != nullptr) ? out->vacuum_thrust_lbf - pressure * data.nozzle_exit_area_ft2 : 0.0;
-
-  const Matrix3 platform_to_local = inertial_to_local(trig) * prepared_.platform_to_inertial;
-  out->theta_rad = commanded_theta(stage, t, controls, platform_to_local, &out->chi_rad);
-  out->thrust_axis_local = platform_to_local * thrust_axis_platform(out->theta_rad, out->chi_rad);
-
-  out->density_slug_ft3 = density;
-  out->dynamic_pressure_lbf_ft2 = 0.5 * density * v * v;
-  out->mach = (speed_of_sound > 0.0) ? v / speed_of_sound : 0.0;
-  out->drag_lbf = 0.0;
-  out->lift_lbf = 0.0;
-  if (density > 0.0) {
-    const double q_s = out->dynamic_pressure_lbf_ft2 * data.reference_area_ft2;
-    if (!data.drag_coefficient.empty()) out->drag_lbf = q_s * data.drag_coefficient(out->mach);
-    if (data.uses_lift_table && !mission_.vehicle.lift_curve_slope_per_rad.empty()) {
-      // Alpha (an atan2) is needed on the integration path only where there is lift.
-      out->lift_lbf = q_s * mission_.vehicle.lift_curve_slope_per_rad(out->mach) *
-                      angle_of_attack_rad(out->thrust_axis_local);
-    }
+  if ((stage.code == 5 || stage.code == 10) && (spin == 1 || spin == 2)) {
+    const bool coupled = spin == 1;
+    command.mode = AttitudeMode::kHeld;
+    command.theta_start_rad = command.theta_end_rad = coupled ? misc.stage4_theta_rad : misc.stage5_theta_rad;
+    command.chi_rad = coupled ? misc.stage4_chi_rad : misc.stage5_chi_rad;
+    return command;
   }
-
-  AppliedForces forces;
-  forces.mass_slug = out->weight_lb / constants.g0_ft_s2;
-  forces.thrust_local_lbf = out->net_thrust_lbf * out->thrust_axis_local;
-  forces.drag_lbf = out->drag_lbf;
-  forces.lift_lbf = out->lift_lbf;
-  forces.heading_hold = controls.heading_hold;
-  out->derivative = state_derivative(constants, state, trig, forces);
+  if (t + eps < mission_.launch.liftoff_duration_s) {
+    command.mode = AttitudeMode::kHeld;
+    command.theta_start_rad = command.theta_end_rad = kHalfPi;
+    return command;
+  }
+  if (mission_.options.zero_alpha_window() && t + eps >= mission_.control.zero_alpha_start_s &&
+      t + eps < mission_.control.zero_alpha_end_s) {
+    command.mode = AttitudeMode::kZeroAlpha;
+    return command;
+  }
+  command.mode = AttitudeMode::kLinear;
+  const bool stage2_ignition = mission_.options.alpha_zero_at_stage2_ignition() && stage.code == 2 &&
+                               std::fabs(t - stage.start_s) < eps;
+  command.theta_start_rad = stage2_ignition ? zero_alpha_theta_rad(prepared_, state)
+                                            : program_theta(point, t);
+  command.theta_end_rad = program_theta(point + 1, t + step_s);
+  return command;
 }
 
 Status Flight::record(const StageContext& stage, double t, const StateVector& state,
-                      const StepControls& controls, const Evaluation& eval) {
+                      const StepCommand& command, const Evaluation& eval) {
   if (trajectory_->point_count >= kMaxTrajectoryPoints) return Status::kTrajectoryStorageFull;
   const Constants& constants = mission_.constants;
   TrajectoryPoint& p = trajectory_->points[trajectory_->point_count];
@@ -240,8 +167,8 @@ Status Flight::record(const StageContext& stage, double t, const StateVector& st
                                         mission_.launch.longitude_rad, state[kStateLambda],
                                         p.earth_longitude_rad);
   p.inertial = inertial_velocity(constants, state);
-  p.heading_hold = controls.heading_hold;
-  p.alpha_zero = controls.alpha_zero;
+  p.heading_hold = command.heading_hold;
+  p.alpha_zero = command.mode == AttitudeMode::kZeroAlpha;
   // The heating integral by the trapezoidal rule over the stored points.
   if (trajectory_->point_count > 0) {
     const TrajectoryPoint& previous = trajectory_->points[trajectory_->point_count - 1];
@@ -255,10 +182,7 @@ Status Flight::record(const StageContext& stage, double t, const StateVector& st
 Status Flight::record_pad_point() {
   // At the pad V = 0 and the equations of motion are singular; the point is filled directly.
   const StateVector& pad = prepared_.pad_state;
-  StageContext stage1;
-  stage1.code = 1;
-  stage1.data = &mission_.vehicle.stages[stage_index(1)];
-  stage1.thrust = &prepared_.modified_thrust_lbf[stage_index(1)];
+  const StageContext stage1 = make_stage_context(mission_, prepared_, prepared_.timeline[0]);
   LiftoffResult liftoff;
   const Status status = closed_form_liftoff(mission_, prepared_, &liftoff);
   if (!ok(status)) return status;
@@ -268,20 +192,16 @@ Status Flight::record_pad_point() {
   eval.vacuum_thrust_lbf = (*stage1.thrust)(0.0);
   eval.net_thrust_lbf = eval.vacuum_thrust_lbf - liftoff.pad_pressure_lbf_ft2 * stage1.data->nozzle_exit_area_ft2;
   eval.theta_rad = kHalfPi;
-  StepControls controls = controls_at(0.0);
-  return record(stage1, 0.0, pad, controls, eval);
+  StepCommand command;
+  command.mode = AttitudeMode::kHeld;
+  command.theta_start_rad = command.theta_end_rad = kHalfPi;
+  command.heading_hold = mission_.launch.heading_hold_until_s > 0.0;
+  return record(stage1, 0.0, pad, command, eval);
 }
 
-Status Flight::fly_stage(const StageTimeline& line, StateVector* state) {
-  StageContext stage;
-  stage.code = line.code;
-  stage.start_s = line.start_s;
-  stage.data = &mission_.vehicle.stages[stage_index(line.code)];
-  stage.thrust = is_powered_stage(line.code) ? &prepared_.modified_thrust_lbf[stage_index(line.code)]
-                                             : nullptr;
-  stage.weight_above_consumable_lb =
-      vehicle_weight_lb(mission_.vehicle, line.code, 0.0) -
-      (powered_consumable_at_ignition(mission_.vehicle, line.code));
+Status Flight::fly_stage(int slot, StateVector* state) {
+  const StageTimeline& line = prepared_.timeline[slot];
+  const StageContext stage = make_stage_context(mission_, prepared_, line);
   const bool powered = stage.thrust != nullptr;
 
   StageEvent& event = trajectory_->stages[trajectory_->stage_count];
@@ -292,20 +212,26 @@ Status Flight::fly_stage(const StageTimeline& line, StateVector* state) {
   Evaluation eval;
   for (int i = 0; i < line.steps; ++i) {
     const double t = line.start_s + line.first_step_stage_time_s + i * line.step_s;
-    latch_segments(stage, t, *state);
-    const StepControls controls = controls_at(t);
-    evaluate(stage, t, *state, controls, &eval);
+    const int point = trajectory_->point_count;
+    const StepCommand command = command_at(stage, point, t, line.step_s, *state);
+    evaluate_flight(mission_, prepared_, stage, command, t, *state, 0.0, &eval);
     if (!eval.derivative.allFinite()) return Status::kNonFiniteState;  // nothing NaN is stored
-    Status status = record(stage, t, *state, controls, eval);
+    Status status = record(stage, t, *state, command, eval);
     if (!ok(status)) return status;
     if (eval.altitude_ft < kImpactAltitudeFt) return Status::kAltitudeBelowSurface;
 
+    StepRecord& step = trajectory_->steps[trajectory_->step_count++];
+    step.point = point;
+    step.stage_slot = slot;
+    step.adams = !powered && i >= kRkadStartSteps;
+    step.command = command;
+
     const auto derivative = [&](double time, const StateVector& x) {
       Evaluation e;
-      evaluate(stage, time, x, controls, &e);
+      evaluate_flight(mission_, prepared_, stage, command, time, x, 0.0, &e);
       return e.derivative;
     };
-    if (powered || i < kRkadStartSteps) {
+    if (!step.adams) {
       *state = runge_kutta4_step(derivative, t, *state, eval.derivative, line.step_s);
     } else {
       *state = adams_bashforth4_step(*state, eval.derivative, history.back(0), history.back(1),
@@ -317,13 +243,13 @@ Status Flight::fly_stage(const StageTimeline& line, StateVector* state) {
   }
 
   // The stage's end point, with its burnout values (the next stage records the same state again
-  // with its own weight and thrust).
+  // with its own weight and thrust). Its attitude is the one a step starting there would fly.
   const double t_end = line.start_s + line.duration_s;
-  latch_segments(stage, t_end, *state);
-  const StepControls controls = controls_at(t_end);
-  evaluate(stage, t_end, *state, controls, &eval);
+  StepCommand command = command_at(stage, trajectory_->point_count, t_end, line.step_s, *state);
+  if (command.mode == AttitudeMode::kLinear) command.theta_end_rad = command.theta_start_rad;
+  evaluate_flight(mission_, prepared_, stage, command, t_end, *state, 0.0, &eval);
   if (!eval.derivative.allFinite()) return Status::kNonFiniteState;
-  const Status status = record(stage, t_end, *state, controls, eval);
+  const Status status = record(stage, t_end, *state, command, eval);
   if (!ok(status)) return status;
   if (eval.altitude_ft < kImpactAltitudeFt) return Status::kAltitudeBelowSurface;
   event.last_point = trajectory_->point_count - 1;
@@ -334,9 +260,13 @@ Status Flight::fly_stage(const StageTimeline& line, StateVector* state) {
 
 Status Flight::run() {
   trajectory_->point_count = 0;
+  trajectory_->step_count = 0;
   trajectory_->stage_count = 0;
   trajectory_->heat_integral_btu_ft2 = 0.0;
   if (!prepared_.prepared) return Status::kNotPrepared;
+  if (program_ != nullptr && program_->point_count != trajectory_point_count(prepared_)) {
+    return Status::kControlProgramSizeMismatch;
+  }
 
   Status status = record_pad_point();
   if (!ok(status)) return status;
@@ -346,7 +276,7 @@ Status Flight::run() {
   StateVector state = liftoff.state_at_end;
 
   for (int k = 0; k < prepared_.stage_count; ++k) {
-    status = fly_stage(prepared_.timeline[k], &state);
+    status = fly_stage(k, &state);
     if (!ok(status)) {
       // Keep the stage that failed as an event over the points it did fly.
       StageEvent& event = trajectory_->stages[trajectory_->stage_count];
@@ -373,9 +303,22 @@ Status Flight::run() {
 }  // namespace
 
 Status fly_trajectory(const Mission& mission, const PreparedCase& prepared, Trajectory* trajectory) {
-  Flight flight(mission, prepared, trajectory);
+  Flight flight(mission, prepared, nullptr, trajectory);
   trajectory->status = flight.run();
   return trajectory->status;
+}
+
+Status fly_trajectory(const Mission& mission, const PreparedCase& prepared,
+                      const ControlProgram& program, Trajectory* trajectory) {
+  Flight flight(mission, prepared, &program, trajectory);
+  trajectory->status = flight.run();
+  return trajectory->status;
+}
+
+int trajectory_point_count(const PreparedCase& prepared) {
+  int count = 1;
+  for (int k = 0; k < prepared.stage_count; ++k) count += prepared.timeline[k].steps + 1;
+  return count;
 }
 
 bool is_output_point(const Mission& mission, const Trajectory& trajectory, int index,

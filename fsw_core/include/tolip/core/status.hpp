@@ -44,6 +44,7 @@ enum class Status : int {
   kZeroVelocity,
   kMassNotPositive,
   kTrajectoryStorageFull,
+  kControlProgramSizeMismatch,
   kNotPrepared,
 };
 

@@ -10,6 +10,7 @@
 #include "tolip/core/status.hpp"
 #include "tolip/mission/mission.hpp"
 #include "tolip/orbit/orbit_elements.hpp"
+#include "tolip/trajectory/flight_dynamics.hpp"
 #include "tolip/vehicle/prepared_case.hpp"
 
 namespace tolip {
@@ -48,10 +49,28 @@ struct StageEvent {
   double weight_after_jettison_lb = 0.0;
 };
 
+// One integration step as flown, so a backward run can re-evaluate exactly the same model.
+struct StepRecord {
+  int point = 0;         // index of the step's start point; the step ends at point + 1
+  int stage_slot = 0;    // index into PreparedCase::timeline
+  bool adams = false;    // Adams-Bashforth step (RK4 otherwise)
+  StepCommand command;
+};
+
+// The pitch program as values at the trajectory's points (the optimizer's control): within a step
+// theta is linear between the values at the step's two points. Points whose attitude is decided
+// otherwise (lift-off, zero-alpha window, alpha = 0 at stage-2 ignition, spun stages) ignore it.
+struct ControlProgram {
+  int point_count = 0;
+  double theta_rad[kMaxTrajectoryPoints] = {};
+};
+
 struct Trajectory {
   Status status = Status::kNotPrepared;
   int point_count = 0;
   TrajectoryPoint points[kMaxTrajectoryPoints];
+  int step_count = 0;
+  StepRecord steps[kMaxTrajectoryPoints];
   int stage_count = 0;
   StageEvent stages[kMaxStages];     // flight order
   double heat_integral_btu_ft2 = 0.0;  // time integral of the heating rate
@@ -61,7 +80,18 @@ struct Trajectory {
 // Flies the case. On success trajectory->status is kOk and the final point is the end of the last
 // stage. On a failure (non-finite state, impact, ...) the points up to the failure are kept and
 // the status names the cause; no NaN is stored.
+// The pitch program is data block 40's table (theta at each point from the table, with the
+// in-flight latched segments described in docs/theory/trajectory.md).
 Status fly_trajectory(const Mission& mission, const PreparedCase& prepared, Trajectory* trajectory);
+
+// The same flown with an explicit per-point pitch program (its point_count must equal the number
+// of points the case produces, which depends only on the step counts).
+Status fly_trajectory(const Mission& mission, const PreparedCase& prepared,
+                      const ControlProgram& program, Trajectory* trajectory);
+
+// Number of points a flight of the prepared case stores (pad point, every step start, every stage
+// end point): the size a ControlProgram must have.
+int trajectory_point_count(const PreparedCase& prepared);
 
 // Which of the trajectory kinds of data block 9 a run is, for output thinning.
 enum class TrajectoryKind : int { kInitial, kIntermediate, kFinal };

@@ -1,0 +1,70 @@
+// The right-hand side the integrator sees: one evaluation of the point-mass model (Sec. 4) for a
+// stage, a step's attitude command and a state, with everything it computed on the way (weight,
+// thrust, atmosphere, aerodynamics, attitude). Forward runs and the optimizer's backward runs call
+// the same function, so the adjoint linearizes exactly what was flown.
+#pragma once
+
+#include "tolip/core/state.hpp"
+#include "tolip/mission/mission.hpp"
+#include "tolip/vehicle/prepared_case.hpp"
+
+namespace tolip {
+
+// The stage being flown.
+struct StageContext {
+  int code = 0;
+  double start_s = 0.0;  // time from launch at stage time 0
+  const StageData* data = nullptr;
+  const ModifiedThrustTable* thrust = nullptr;  // null in coasts
+  // Jettison weights of this and later stages, payload and later stages' consumables: the vehicle
+  // weight is this plus the stage's own consumable weight remaining.
+  double weight_above_consumable_lb = 0.0;
+};
+
+StageContext make_stage_context(const Mission& mission, const PreparedCase& prepared,
+                                 const StageTimeline& line);
+
+// How the attitude is decided during one integration step.
+enum class AttitudeMode : int {
+  kHeld,       // constant theta and chi: vertical lift-off, spun stages
+  kZeroAlpha,  // theta re-solved at every evaluation so that the in-plane alpha is 0 (IP(11))
+  kLinear,     // theta linear in time from theta_start (step start) to theta_end (step end)
+};
+
+struct StepCommand {
+  AttitudeMode mode = AttitudeMode::kLinear;
+  double theta_start_rad = 0.0;
+  double theta_end_rad = 0.0;
+  double chi_rad = 0.0;
+  double step_start_s = 0.0;  // time from launch
+  double step_s = 1.0;
+  bool heading_hold = false;  // dpsi/dt held at 0
+};
+
+// Everything the equations of motion saw at one evaluation.
+struct Evaluation {
+  StateVector derivative = StateVector::Zero();
+  double altitude_ft = 0.0;
+  double weight_lb = 0.0;
+  double vacuum_thrust_lbf = 0.0;
+  double net_thrust_lbf = 0.0;
+  double dynamic_pressure_lbf_ft2 = 0.0;
+  double density_slug_ft3 = 0.0;
+  double mach = 0.0;
+  Vector3 thrust_axis_local = Vector3(0.0, 1.0, 0.0);
+  double theta_rad = 0.0;
+  double chi_rad = 0.0;
+  double drag_lbf = 0.0;
+  double lift_lbf = 0.0;
+};
+
+// Evaluates the model at time t (from launch). `weight_offset_lb` is added to the vehicle weight
+// (the optimizer's mass perturbation; 0 on ordinary runs).
+void evaluate_flight(const Mission& mission, const PreparedCase& prepared, const StageContext& stage,
+                     const StepCommand& command, double t, const StateVector& state,
+                     double weight_offset_lb, Evaluation* out);
+
+// Pitch attitude that puts the thrust axis along V (alpha = 0) at this state, chi = 0.
+double zero_alpha_theta_rad(const PreparedCase& prepared, const StateVector& state);
+
+}  // namespace tolip
