@@ -92,12 +92,27 @@ TEST(Sec22Deck, RejectsNonMonotonicThrustTableNamingBlock30) {
   EXPECT_TRUE(contains(error.message, "strictly increasing"));
 }
 
-TEST(Sec22Deck, RejectsNonMonotonicWeightTableNamingBlock38) {
+TEST(Sec22Deck, RejectsUnknownKeyInWeightTableNamingBlock38) {
   const std::string text = replaced(scout_mission_text(), "remaining_lb = [\n  560.0, 559.448", "time_s_x = 1\nremaining_lb = [\n  560.0, 559.448");
   const DeckError error = rejected(text);
   EXPECT_EQ(error.data_block, 38);
   EXPECT_EQ(error.field, "stage.4.consumable_weight.time_s_x");
+  EXPECT_EQ(error.line, line_of(text, "time_s_x = 1"));
   EXPECT_TRUE(contains(error.message, "unknown key 'time_s_x'"));
+}
+
+TEST(Sec22Deck, RejectsNonMonotonicWeightTableNamingBlock38) {
+  // The stage 4 weight table is the second "0.0, 0.1, 0.25, 0.5, 2.0" time array after [stage.4].
+  std::string text = scout_mission_text();
+  const std::size_t table = text.find("[stage.4.consumable_weight]");
+  ASSERT_NE(table, std::string::npos);
+  const std::size_t at = text.find("0.0, 0.1, 0.25, 0.5, 2.0", table);
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, 24, "0.0, 0.1, 0.25, 0.25, 2.0");
+  const DeckError error = rejected(text);
+  EXPECT_EQ(error.data_block, 38);
+  EXPECT_EQ(error.field, "stage.4.consumable_weight.time_s[3]");
+  EXPECT_TRUE(contains(error.message, "not monotonic"));
 }
 
 std::string thrust_table(int points, double duration) {

@@ -504,19 +504,15 @@ Status check_linearization(const LinearizationData& l, const Options& options, c
     return check.fail(Status::kTooManyLinearSegments, 18, 0, "segment_count");
   }
   if (l.segment_count < 0) return check.fail(Status::kValueOutOfRange, 18, 0, "segment_count");
-  if (!all_finite(l.coded_start_times, kMaxLinearSegments)) {
+  if (!all_finite(l.coded_start_times, kMaxLinearSegments + 1)) {
     return check.fail(Status::kValueNotFinite, 18, 0, "coded_start_times");
   }
   if (!all_finite(l.segment_weights, kMaxLinearSegments)) {
     return check.fail(Status::kValueNotFinite, 26, 0, "segment_weights");
   }
-  // The Mission stores at most kMaxLinearSegments times, so at most kMaxLinearSegments - 1 segments.
-  if (l.segment_count + 1 > kMaxLinearSegments) {
-    return check.fail(Status::kTooManyLinearSegments, 18, 0, "coded_start_times");
-  }
   int times = 0;
-  while (times < kMaxLinearSegments && l.coded_start_times[times] != 0.0) ++times;
-  for (int i = times; i < kMaxLinearSegments; ++i) {
+  while (times < kMaxLinearSegments + 1 && l.coded_start_times[times] != 0.0) ++times;
+  for (int i = times; i < kMaxLinearSegments + 1; ++i) {
     if (l.coded_start_times[i] != 0.0) return check.fail(Status::kValueOutOfRange, 18, 0, "coded_start_times");
   }
   for (int i = 0; i < times; ++i) {

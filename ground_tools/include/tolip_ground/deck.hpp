@@ -17,7 +17,7 @@ struct DeckError {
   std::string file;
   int line = 0;            // 0 when unknown
   int data_block = 0;      // manual data block number, 0 when not tied to one
-  std::string field;       // TOML key path, e.g. "vehicle.stage.2.thrust_table"
+  std::string field;       // TOML key path, e.g. "stage.2.thrust.time_s[5]"
   std::string message;     // what is wrong and what was expected
   std::string to_string() const;  // "file:line: data block N, field F: message"
 };

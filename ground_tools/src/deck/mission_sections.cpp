@@ -568,9 +568,9 @@ void read_linearization(Section& root, const Mission& mission, LinearizationData
   if (times.size() < 2) {
     section->fail_at("coded_times", 18, "expected at least 2 coded times (the start and end of one segment)");
   }
-  if (static_cast<int>(times.size()) > kMaxLinearSegments) {
+  if (static_cast<int>(times.size()) > kMaxLinearSegments + 1) {
     section->fail_at("coded_times", 18, "too many coded times (" + str(static_cast<int>(times.size())) +
-                                            "): the core stores at most 15 (14 segments)");
+                                            "): at most 16 (15 segments, data block 18)");
   }
   Reader& reader = section->reader();
   for (std::size_t i = 0; i < times.size(); ++i) {

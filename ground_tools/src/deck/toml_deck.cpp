@@ -272,11 +272,15 @@ bool read_file(const std::string& path, std::string* text, DeckError* error) {
 
 bool parse_toml_deck(const std::string& text, const std::string& path, Mission* mission, DeckExtras* extras,
                      DeckError* error) {
-  return parse_deck(text, path, mission, extras, error);
+  try {
+    return parse_deck(text, path, mission, extras, error);
+  } catch (...) {  // only reachable if reporting an error itself runs out of memory
+    return false;
+  }
 }
 
 bool parse_toml_deck(const std::string& text, const std::string& path, Mission* mission, DeckError* error) {
-  return parse_deck(text, path, mission, nullptr, error);
+  return parse_toml_deck(text, path, mission, nullptr, error);
 }
 
 bool load_toml_deck(const std::string& path, Mission* mission, DeckExtras* extras, DeckError* error) {
@@ -285,10 +289,13 @@ bool load_toml_deck(const std::string& path, Mission* mission, DeckExtras* extra
     if (!read_file(path, &text, error)) return false;
     return parse_deck(text, path, mission, extras, error);
   } catch (...) {
-    if (error != nullptr) {
-      *error = DeckError{};
-      error->file = path;
-      error->message = "internal error while reading the deck file";
+    try {
+      if (error != nullptr) {
+        *error = DeckError{};
+        error->file = path;
+        error->message = "internal error while reading the deck file";
+      }
+    } catch (...) {  // out of memory while reporting: nothing more can be said
     }
     return false;
   }

@@ -124,7 +124,8 @@ struct AdjustableParameters {
 // Data block 18 (TLIN) and 26 (ETALIN).
 struct LinearizationData {
   int segment_count = 0;
-  double coded_start_times[kMaxLinearSegments] = {};   // 100 n + t
+  // 100 n + t: the segments' boundaries, one more than the segments (data block 18 words 2-17).
+  double coded_start_times[kMaxLinearSegments + 1] = {};
   double segment_weights[kMaxLinearSegments] = {};     // eta, default 1
 };
 
