@@ -38,12 +38,22 @@ Status closed_form_liftoff(const Mission& mission, const PreparedCase& prepared,
   };
   const double a0 = acceleration(0.0);
   const double a1 = acceleration(tl);
+  // da/dW = -(T - p0 Ae) C23 g0 / W^2 at both ends.
+  const auto dacceleration_dweight = [&](double t) {
+    const double weight = vehicle_weight_lb(mission.vehicle, 1, t);
+    const double net_thrust = thrust(t) - air.pressure_lbf_ft2 * stage1.nozzle_exit_area_ft2;
+    return -net_thrust * c23 * constants.g0_ft_s2 / (weight * weight);
+  };
+  const double da0 = dacceleration_dweight(0.0);
+  const double da1 = dacceleration_dweight(tl);
   if (!std::isfinite(a0) || !std::isfinite(a1)) return Status::kNonFiniteState;
 
   out->acceleration_at_0_ft_s2 = a0;
   out->acceleration_at_end_ft_s2 = a1;
   out->velocity_ft_s = tl * (a0 + a1) / 2.0;
   out->height_ft = tl * tl * (a0 / 3.0 + a1 / 6.0);
+  out->dvelocity_dweight_ft_s_per_lb = tl * (da0 + da1) / 2.0;
+  out->dheight_dweight_ft_per_lb = tl * tl * (da0 / 3.0 + da1 / 6.0);
   out->c23 = c23;
   out->pad_pressure_lbf_ft2 = air.pressure_lbf_ft2;
   out->state_at_end = pad;

@@ -28,9 +28,10 @@ struct LatchedSegment {
 
 class Flight {
  public:
-  Flight(const Mission& mission, const PreparedCase& prepared, const ControlProgram* program,
+  Flight(const Mission& mission, const PreparedCase& prepared, const FlightInputs& inputs,
          Trajectory* trajectory)
-      : mission_(mission), prepared_(prepared), program_(program), trajectory_(trajectory) {}
+      : mission_(mission), prepared_(prepared), program_(inputs.program), inputs_(inputs),
+        trajectory_(trajectory) {}
 
   Status run();
 
@@ -47,6 +48,7 @@ class Flight {
   const Mission& mission_;
   const PreparedCase& prepared_;
   const ControlProgram* program_;  // null: data block 40 table
+  const FlightInputs& inputs_;
   Trajectory* trajectory_;
   LatchedSegment latched_;
   bool window_end_latched_ = false;
@@ -213,6 +215,7 @@ Status Flight::fly_stage(int slot, StateVector* state) {
   for (int i = 0; i < line.steps; ++i) {
     const double t = line.start_s + line.first_step_stage_time_s + i * line.step_s;
     const int point = trajectory_->point_count;
+    if (point == inputs_.injection_point) *state += inputs_.injection;
     const StepCommand command = command_at(stage, point, t, line.step_s, *state);
     evaluate_flight(mission_, prepared_, stage, command, t, *state, 0.0, &eval);
     if (!eval.derivative.allFinite()) return Status::kNonFiniteState;  // nothing NaN is stored
@@ -302,17 +305,22 @@ Status Flight::run() {
 
 }  // namespace
 
-Status fly_trajectory(const Mission& mission, const PreparedCase& prepared, Trajectory* trajectory) {
-  Flight flight(mission, prepared, nullptr, trajectory);
+Status fly_trajectory(const Mission& mission, const PreparedCase& prepared, const FlightInputs& inputs,
+                      Trajectory* trajectory) {
+  Flight flight(mission, prepared, inputs, trajectory);
   trajectory->status = flight.run();
   return trajectory->status;
 }
 
+Status fly_trajectory(const Mission& mission, const PreparedCase& prepared, Trajectory* trajectory) {
+  return fly_trajectory(mission, prepared, FlightInputs{}, trajectory);
+}
+
 Status fly_trajectory(const Mission& mission, const PreparedCase& prepared,
                       const ControlProgram& program, Trajectory* trajectory) {
-  Flight flight(mission, prepared, &program, trajectory);
-  trajectory->status = flight.run();
-  return trajectory->status;
+  FlightInputs inputs;
+  inputs.program = &program;
+  return fly_trajectory(mission, prepared, inputs, trajectory);
 }
 
 int trajectory_point_count(const PreparedCase& prepared) {

@@ -118,6 +118,10 @@ Status modify_thrust_table(const Mission& mission, const StageTimeline& line,
 
 }  // namespace
 
+Status rebuild_timeline(const Mission& mission, PreparedCase* prepared) {
+  return build_timeline(mission, prepared);
+}
+
 Status prepare_case(const Mission& mission, PreparedCase* prepared) {
   prepared->prepared = false;
   Status status = build_timeline(mission, prepared);

@@ -25,6 +25,9 @@ struct LiftoffResult {
   double c23 = 0.0;                 // thrust-axis component along V at the pad
   double pad_pressure_lbf_ft2 = 0.0;
   StateVector state_at_end = StateVector::Zero();  // state at TL
+  // Sensitivity of V_L and h_L to the vehicle weight (a payload change), for the backward runs.
+  double dvelocity_dweight_ft_s_per_lb = 0.0;
+  double dheight_dweight_ft_per_lb = 0.0;
 };
 
 Status closed_form_liftoff(const Mission& mission, const PreparedCase& prepared, LiftoffResult* out);

@@ -80,6 +80,18 @@ struct Trajectory {
 // Flies the case. On success trajectory->status is kOk and the final point is the end of the last
 // stage. On a failure (non-finite state, impact, ...) the points up to the failure are kept and
 // the status names the cause; no NaN is stored.
+// What a forward run flies besides the Mission: an optional per-point pitch program, and an
+// optional state change injected at one point (how a perturbation of the state at a given time is
+// propagated; used by the optimizer's tests of its sensitivities).
+struct FlightInputs {
+  const ControlProgram* program = nullptr;  // null: data block 40 table
+  int injection_point = -1;                 // point whose state receives `injection` (-1: none)
+  StateVector injection = StateVector::Zero();
+};
+
+Status fly_trajectory(const Mission& mission, const PreparedCase& prepared, const FlightInputs& inputs,
+                      Trajectory* trajectory);
+
 // The pitch program is data block 40's table (theta at each point from the table, with the
 // in-flight latched segments described in docs/theory/trajectory.md).
 Status fly_trajectory(const Mission& mission, const PreparedCase& prepared, Trajectory* trajectory);

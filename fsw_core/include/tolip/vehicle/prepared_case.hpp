@@ -48,4 +48,8 @@ struct PreparedCase {
 // tables and the launch matrices. The Mission must have passed validate_mission().
 Status prepare_case(const Mission& mission, PreparedCase* prepared);
 
+// Rebuilds only the stage timeline (after a coast duration changed during an optimization); the
+// Sec. 14 thrust tables and the launch geometry are kept, as TOLIP re-tabulates once per case.
+Status rebuild_timeline(const Mission& mission, PreparedCase* prepared);
+
 }  // namespace tolip
