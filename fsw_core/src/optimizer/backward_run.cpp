@@ -160,10 +160,8 @@ void BackwardSweep::attribute_theta(const StepRecord& step, double, const Constr
     return;
   }
   if (c.mode != AttitudeMode::kLinear) return;
-  const int code = prepared_.timeline[step.stage_slot].code;
-  const bool ignition_override = mission_.options.alpha_zero_at_stage2_ignition() && code == 2 &&
-                                 step.point == trajectory_.stages[step.stage_slot].first_point;
-  if (ignition_override) {
+  const StageTimeline& line = prepared_.timeline[step.stage_slot];
+  if (attitude_set_in_flight(mission_, line.code, line.start_s, c.step_start_s)) {
     // theta_start is the alpha = 0 attitude of the state at this point: it acts through the state.
     const StateVector g = linearizer_.zero_alpha_gradient(trajectory_.points[step.point].state);
     state_.leftCols(count_) += g * start.head(count_).transpose();

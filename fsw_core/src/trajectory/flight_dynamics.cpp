@@ -22,6 +22,16 @@ StageContext make_stage_context(const Mission& mission, const PreparedCase& prep
   return stage;
 }
 
+bool attitude_set_in_flight(const Mission& mission, int stage_code, double stage_start_s, double t) {
+  // Step-start times are sums of fixed steps; half of TIMEP (CT1(10)) absorbs their round-off.
+  const double eps = 0.5 * mission.constants.time_epsilon_s;
+  const bool window_end = mission.options.zero_alpha_window() &&
+                          std::fabs(t - mission.control.zero_alpha_end_s) < eps;
+  const bool stage2_ignition = mission.options.alpha_zero_at_stage2_ignition() && stage_code == 2 &&
+                               std::fabs(t - stage_start_s) < eps;
+  return window_end || stage2_ignition;
+}
+
 double zero_alpha_theta_rad(const PreparedCase& prepared, const StateVector& state) {
   return theta_for_zero_alpha_rad(inertial_to_local(StateTrig(state)) * prepared.platform_to_inertial, 0.0);
 }

@@ -129,10 +129,9 @@ StepCommand Flight::command_at(const StageContext& stage, int point, double t, d
     return command;
   }
   command.mode = AttitudeMode::kLinear;
-  const bool stage2_ignition = mission_.options.alpha_zero_at_stage2_ignition() && stage.code == 2 &&
-                               std::fabs(t - stage.start_s) < eps;
-  command.theta_start_rad = stage2_ignition ? zero_alpha_theta_rad(prepared_, state)
-                                            : program_theta(point, t);
+  command.theta_start_rad = attitude_set_in_flight(mission_, stage.code, stage.start_s, t)
+                                ? zero_alpha_theta_rad(prepared_, state)
+                                : program_theta(point, t);
   command.theta_end_rad = program_theta(point + 1, t + step_s);
   return command;
 }

@@ -38,6 +38,10 @@ enum class Status : int {
   kLiftoffLongerThanStage1,
   kInitialConditionsInvalid,
   kAtmosphereTableInvalid,
+  // Constraint parameters (optimizer/constraint_parameters.hpp)
+  kUnknownConstraintCode,
+  kConstraintNotHyperbolic,
+  kConstraintSingular,
   // Run-time failures
   kNonFiniteState,
   kAltitudeBelowSurface,
@@ -45,7 +49,27 @@ enum class Status : int {
   kMassNotPositive,
   kTrajectoryStorageFull,
   kControlProgramSizeMismatch,
+  kSteeringMatrixSingular,
+  kOptimizerDidNotConverge,
+  kAdjustableParameterNotSupported,
+  kPayoffNotSupported,
   kNotPrepared,
+  // Guidance table image, loader and executor (table/; docs/table-format.md)
+  kTableImageTruncated,
+  kTableImageSizeMismatch,
+  kTableImageBadMagic,
+  kTableImageUnsupportedVersion,
+  kTableImageLayoutMismatch,
+  kTableImageCrcMismatch,
+  kTableImageReservedBytesSet,
+  kTableImageTextInvalid,
+  kSegmentStageInvalid,
+  kSegmentTimesNotMonotonic,
+  kSegmentRateExceedsLimit,
+  kTableNotStaged,
+  kTableNotValidated,
+  kNoActiveTable,
+  kStageEventOutOfOrder,
 };
 
 const char* status_name(Status status);

@@ -64,6 +64,11 @@ void evaluate_flight(const Mission& mission, const PreparedCase& prepared, const
                      const StepCommand& command, double t, const StateVector& state,
                      double weight_offset_lb, Evaluation* out);
 
+// True where the attitude at the start of a step is the alpha = 0 attitude of the state there,
+// whatever the pitch program says: the end of the zero-alpha window (IP(11)), where the next
+// segment starts from the attitude flown, and stage-2 ignition under IP(12).
+bool attitude_set_in_flight(const Mission& mission, int stage_code, double stage_start_s, double t);
+
 // Pitch attitude that puts the thrust axis along V (alpha = 0) at this state, chi = 0.
 double zero_alpha_theta_rad(const PreparedCase& prepared, const StateVector& state);
 

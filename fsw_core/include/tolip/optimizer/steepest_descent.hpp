@@ -1,0 +1,82 @@
+// Closed-loop steepest descent (manual Sec. 5 control law, Sec. 9 programming, Sec. 22 sequence).
+//
+// From an initial nominal flown with the data block 40 pitch table, backward/forward guidance runs
+// until the constraints are inside their data block 29 deadbands, then backward/forward
+// optimization runs asking for payoff improvement (initial size from dP^2, eqs. 5-31..5-34,
+// fallback DA13(1)), each judged by the corrected payoff (eqs. 9-18..9-22), halved on failure,
+// until the attempt falls under DA13(2) or the forward-run budget DA13(3) is one short; then a
+// final backward and forward guidance run. The controls are the per-point pitch program, the
+// adjustable parameters of data block 6 (weights Y of data block 27) and, for payload payoff, the
+// payload itself (Sec. 9 "Optimization for maximum payload"). See docs/theory/optimizer.md.
+#pragma once
+
+#include "tolip/core/capacity.hpp"
+#include "tolip/core/status.hpp"
+#include "tolip/mission/mission.hpp"
+#include "tolip/optimizer/backward_run.hpp"
+#include "tolip/trajectory/trajectory.hpp"
+#include "tolip/vehicle/prepared_case.hpp"
+
+namespace tolip {
+
+inline constexpr int kMaxOptimizerIterations = 80;  // history records kept (>= DA13(3))
+
+enum class RunKind : int { kInitialNominal, kGuidance, kOptimization, kFinalGuidance };
+
+// One forward run, as the manual prints at the start of each iteration.
+struct IterationRecord {
+  int forward_run = 0;
+  RunKind kind = RunKind::kInitialNominal;
+  bool successful = false;
+  double attempted_payoff_improvement = 0.0;  // delta m_d on optimization runs
+  double payoff = 0.0;                        // achieved on this run
+  double corrected_payoff = 0.0;              // corrected to zero constraint error (eq. 9-21)
+  double payload_lb = 0.0;
+  double payload_increment_lb = 0.0;
+  // d psi_i = desired - achieved for constraints i = 1..JC-1 (index 0 unused), data block 19 units.
+  double constraint_corrections[kMaxConstraints] = {};
+  // Partials of payoff with respect to each constraint (eq. 9-22) from the preceding backward run.
+  double payoff_partials[kMaxConstraints] = {};
+};
+
+struct OptimizerResult {
+  Status status = Status::kNotPrepared;  // kOk when the final trajectory meets every deadband
+  bool converged = false;
+  int forward_runs = 0;
+  int backward_runs = 0;
+  int constraint_count = 0;
+  int codes[kMaxConstraints] = {};
+  double desired[kMaxConstraints] = {};
+  double achieved[kMaxConstraints] = {};
+  double tolerance[kMaxConstraints] = {};      // data block 29 optimization deadbands (0 for payoff)
+  double payoff = 0.0;
+  double corrected_payoff = 0.0;
+  double payload_lb = 0.0;
+  double payoff_partials[kMaxConstraints] = {};
+  int adjustable_count = 0;
+  int adjustable_codes[kMaxAdjustableParameters] = {};
+  double adjustable_values[kMaxAdjustableParameters] = {};  // rad for attitudes, s for coasts
+  int iteration_count = 0;
+  IterationRecord iterations[kMaxOptimizerIterations];
+};
+
+// Everything the optimizer works on, in the caller's storage (large: keep it static or on the heap).
+// After optimize_trajectory, `mission` holds the optimized payload, spun attitudes and coasts,
+// `program` the optimized pitch program and `nominal` the final trajectory.
+struct OptimizerWorkspace {
+  Mission mission;
+  PreparedCase prepared;
+  ControlProgram program;
+  ControlProgram candidate_program;
+  Mission candidate_mission;
+  PreparedCase candidate_prepared;
+  Trajectory nominal;
+  Trajectory candidate;
+  BackwardRun backward;
+};
+
+// Runs the whole optimization of `mission` (which must have passed validate_mission). A failure to
+// converge still leaves the best trajectory found in the workspace and returns a named status.
+Status optimize_trajectory(const Mission& mission, OptimizerWorkspace* workspace, OptimizerResult* result);
+
+}  // namespace tolip

@@ -1,0 +1,154 @@
+// The guidance-computer table image: a fixed-size, versioned, little-endian binary image holding
+// the pitch program (linear segments), the spun-stage attitudes, the autopilot gains per stage and
+// the limits, protected by a CRC-32. docs/table-format.md is the specification: every field's
+// offset, type, unit and range; the constants below are that table in code.
+//
+// The image is written and read byte by byte (explicit little-endian serialization, IEEE-754
+// binary64 doubles through their bit patterns), never by copying a struct, so host and target
+// produce and accept the same bytes whatever their own byte order, padding or alignment.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "tolip/core/capacity.hpp"
+#include "tolip/core/status.hpp"
+
+namespace tolip {
+
+// ---- format constants (docs/table-format.md, "Layout") ------------------------------------------
+inline constexpr std::uint8_t kTableMagic[4] = {0x54, 0x4C, 0x47, 0x54};  // "TLGT"
+inline constexpr std::uint16_t kTableFormatVersion = 1;
+inline constexpr std::size_t kTableHeaderSize = 96;
+inline constexpr std::size_t kTableMissionIdBytes = 32;
+inline constexpr std::size_t kTableGeneratorVersionBytes = 16;
+inline constexpr std::size_t kTableSegmentRecordSize = 32;
+inline constexpr std::size_t kTableStageGainCount = static_cast<std::size_t>(kMaxStages);  // codes 1-10
+inline constexpr std::size_t kTableStageGainRecordSize = 16;
+
+// Header field offsets.
+inline constexpr std::size_t kOffsetMagic = 0;
+inline constexpr std::size_t kOffsetFormatVersion = 4;
+inline constexpr std::size_t kOffsetHeaderSize = 6;
+inline constexpr std::size_t kOffsetImageSize = 8;
+inline constexpr std::size_t kOffsetSegmentCapacity = 12;
+inline constexpr std::size_t kOffsetSegmentRecordSize = 14;
+inline constexpr std::size_t kOffsetSegmentCount = 16;
+inline constexpr std::size_t kOffsetStageGainCount = 18;
+inline constexpr std::size_t kOffsetHeaderReserved1 = 20;  // 4 bytes, zero
+inline constexpr std::size_t kOffsetCreatedUnixS = 24;
+inline constexpr std::size_t kOffsetMissionId = 32;
+inline constexpr std::size_t kOffsetGeneratorVersion = 64;
+inline constexpr std::size_t kOffsetHeaderReserved2 = 80;  // 16 bytes, zero
+// Body field offsets.
+inline constexpr std::size_t kOffsetLiftoffDuration = 96;
+inline constexpr std::size_t kOffsetMaxPitchRate = 104;
+inline constexpr std::size_t kOffsetMinPitchRate = 112;
+inline constexpr std::size_t kOffsetMinPitchRateChange = 120;
+inline constexpr std::size_t kOffsetMaxDeflection = 128;
+inline constexpr std::size_t kOffsetStage4Theta = 136;
+inline constexpr std::size_t kOffsetStage4Chi = 144;
+inline constexpr std::size_t kOffsetStage5Theta = 152;
+inline constexpr std::size_t kOffsetStage5Chi = 160;
+inline constexpr std::size_t kOffsetStageGains = 168;
+inline constexpr std::size_t kOffsetSegments =
+    kOffsetStageGains + kTableStageGainCount * kTableStageGainRecordSize;  // 328
+inline constexpr std::size_t kOffsetCrc =
+    kOffsetSegments + static_cast<std::size_t>(kMaxLinearSegments) * kTableSegmentRecordSize;  // 808
+inline constexpr std::size_t kTableImageSize = kOffsetCrc + 4;  // 812
+
+// Offsets inside one segment record and one gain record.
+inline constexpr std::size_t kSegmentOffsetStageCode = 0;   // u16
+inline constexpr std::size_t kSegmentOffsetReserved = 2;    // 6 bytes, zero
+inline constexpr std::size_t kSegmentOffsetStartTime = 8;   // f64
+inline constexpr std::size_t kSegmentOffsetTheta = 16;      // f64
+inline constexpr std::size_t kSegmentOffsetRate = 24;       // f64
+inline constexpr std::size_t kGainOffsetKTheta = 0;         // f64
+inline constexpr std::size_t kGainOffsetKq = 8;             // f64
+
+// ---- documented ranges (docs/table-format.md, "Ranges") -----------------------------------------
+inline constexpr double kTableMaxLiftoffDurationS = 60.0;              // (0, 60] s
+inline constexpr double kTableMaxPitchRateLimitRadS = 0.5235987755982988;  // pi/6 rad/s = 30 deg/s
+inline constexpr double kTableMaxDeflectionLimitRad = 0.5235987755982988;  // pi/6 rad = 30 deg
+inline constexpr double kTableMaxAttitudeRad = 3.141592653589793;     // |theta|, |chi| <= pi
+inline constexpr double kTableMaxSegmentStartS = 10000.0;              // [0, 10000] s stage time
+inline constexpr double kTableMaxGain = 100.0;                         // K_theta [0,100], K_q [0,100] s
+inline constexpr std::int64_t kTableMaxCreatedUnixS = 253402300799;    // 9999-12-31T23:59:59Z
+// A segment rate may exceed the image's maximum pitch rate by this fraction at most: it absorbs
+// the round-off of degree/radian conversions (a 5 deg/s segment against a 5 deg/s limit).
+inline constexpr double kTableRateLimitRelativeTolerance = 1e-9;
+
+// ---- decoded contents ---------------------------------------------------------------------------
+
+// One linear pitch segment: theta(t) = theta_start + rate (t - start), t in the stage's own time,
+// from `start_stage_time_s` until the next segment takes over (across stage boundaries too).
+struct GuidanceSegment {
+  int stage_code = 0;               // 1, 2, 3 (powered) or 6, 7, 8 (the coasts after them)
+  double start_stage_time_s = 0.0;  // s from the ignition (start) of that stage
+  double theta_start_rad = 0.0;     // pitch attitude at the start, platform frame
+  double rate_rad_s = 0.0;          // d theta / dt over the segment
+};
+
+struct StageGains {
+  double k_theta = 0.0;  // autopilot position gain K_theta, rad/rad
+  double k_q_s = 0.0;    // autopilot rate gain K_q, s (rad per rad/s)
+};
+
+struct GuidanceTable {
+  // Header.
+  std::uint16_t format_version = kTableFormatVersion;
+  std::int64_t created_unix_s = 0;  // creation stamp, s since 1970-01-01T00:00:00Z
+  char mission_id[kTableMissionIdBytes + 1] = {};                 // printable ASCII, NUL-terminated
+  char generator_version[kTableGeneratorVersionBytes + 1] = {};   // printable ASCII, NUL-terminated
+  // Body.
+  double liftoff_duration_s = 0.0;           // theta held at 90 deg from lift-off until this time
+  double max_pitch_rate_rad_s = 0.0;         // |segment rate| limit, enforced by validation
+  double min_pitch_rate_rad_s = 0.0;         // carried for the linearization (data block 22)
+  double min_pitch_rate_change_rad_s = 0.0;  // carried for the linearization (data block 22)
+  double max_deflection_rad = 0.0;           // control law deflection limit (+/-)
+  double stage4_theta_rad = 0.0;             // spun stage 4 (and coast 9) attitude
+  double stage4_chi_rad = 0.0;
+  double stage5_theta_rad = 0.0;             // spun stage 5 (and coast 10) attitude
+  double stage5_chi_rad = 0.0;
+  StageGains gains[kMaxStages];              // by stage_index(code), codes 1-10
+  int segment_count = 0;
+  GuidanceSegment segments[kMaxLinearSegments];
+};
+
+// True for the stage codes a pitch segment may belong to: 1, 2, 3, 6, 7, 8.
+bool is_segment_stage(int stage_code);
+
+// Position of a stage code (1-10) in the flight order 1 6 2 7 3 8 4 9 5 10 (0-9); -1 otherwise.
+int flight_order_index(int stage_code);
+
+// Checks every documented range and rule of the decoded contents (docs/table-format.md,
+// "Validation"): finiteness, ranges, text, segment count, stage codes, monotonic start times,
+// rates within the image's own limit. Returns the first fault.
+Status validate_guidance_table(const GuidanceTable& table);
+
+// Serializes `table` into exactly kTableImageSize bytes (CRC included). Validates first and writes
+// nothing when the table is invalid. Unused segment records are zero.
+Status encode_table_image(const GuidanceTable& table, std::uint8_t* image, std::size_t image_size);
+
+// Checks the raw image (size, magic, version, layout, CRC, reserved bytes) and decodes it into
+// *table, then validates the contents. *table is written only when the whole image is valid.
+Status decode_table_image(const std::uint8_t* image, std::size_t size, GuidanceTable* table);
+
+// The CRC stored in an image of kTableImageSize bytes (no checking).
+std::uint32_t stored_table_crc(const std::uint8_t* image);
+
+// Little-endian field access, for tools and tests that build or patch images byte by byte.
+void put_u16_le(std::uint8_t* at, std::uint16_t value);
+void put_u32_le(std::uint8_t* at, std::uint32_t value);
+void put_u64_le(std::uint8_t* at, std::uint64_t value);
+void put_f64_le(std::uint8_t* at, double value);
+std::uint16_t get_u16_le(const std::uint8_t* at);
+std::uint32_t get_u32_le(const std::uint8_t* at);
+std::uint64_t get_u64_le(const std::uint8_t* at);
+double get_f64_le(const std::uint8_t* at);
+
+// Recomputes and stores the CRC of an image of kTableImageSize bytes (tests and tools that patch
+// fields use it to isolate one fault from the CRC check).
+void reseal_table_image(std::uint8_t* image);
+
+}  // namespace tolip

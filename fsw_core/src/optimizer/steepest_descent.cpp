@@ -1,0 +1,599 @@
+// Steepest-descent iteration of manual Sec. 5, 9 and 22 (docs/theory/optimizer.md).
+#include "tolip/optimizer/steepest_descent.hpp"
+
+#include <Eigen/Cholesky>
+#include <cmath>
+
+#include "tolip/atmosphere/atmosphere.hpp"
+#include "tolip/earth/earth_model.hpp"
+#include "tolip/optimizer/constraint_parameters.hpp"
+
+namespace tolip {
+namespace {
+
+using SquareMatrix = Eigen::Matrix<double, kMaxConstraints, kMaxConstraints>;
+
+// The control measure's typical pitch change for the first payoff-improvement estimate (eq. 5-31):
+// 1 deg over the burn of the non-spun powered stages.
+constexpr double kTypicalPitchChangeRad = 1.0 * kDegToRad;
+// Guidance steps that make the constraint errors worse are retried at half size this many times.
+constexpr int kGuidanceStepHalvings = 3;
+
+// ---- the case's constraints and adjustable parameters -----------------------------------------
+
+struct Problem {
+  int constraint_count = 0;
+  ConstraintCode codes[kMaxConstraints];
+  double desired[kMaxConstraints] = {};
+  double scale[kMaxConstraints] = {};  // deadband (payoff: 1): constraints are steered in deadbands
+  bool payload_is_control = false;
+  double payload_weight = 1.0;         // DA2(15)
+  int adjustable_count = 0;
+  int adjustable_codes[kMaxAdjustableParameters] = {};
+  double adjustable_weight[kMaxAdjustableParameters] = {};
+  bool adjustable_active[kMaxAdjustableParameters] = {};
+};
+
+// Coast stage code of a coast-length adjustable parameter (Sec. 9 table), 0 if not a coast.
+int coast_of_parameter(int code) {
+  switch (code) {
+    case 3: return 8;
+    case 4: return 7;
+    case 5: return 6;
+    case 10: return 9;
+    case 11: return 10;
+    default: return 0;
+  }
+}
+
+Status make_problem(const Mission& mission, Problem* problem) {
+  const ConstraintList& list = mission.constraints;
+  problem->constraint_count = list.count;
+  for (int i = 0; i < list.count; ++i) {
+    const Status status = decode_constraint_code(list.codes[i], &problem->codes[i]);
+    if (!ok(status)) return status;
+    problem->desired[i] = list.desired[i];
+    problem->scale[i] = (i == 0) ? 1.0 : list.deadband_optimization[i - 1];
+    if (!(problem->scale[i] > 0.0)) return Status::kValueOutOfRange;
+  }
+  const int payoff = mission.options.payoff();
+  const ConstraintQuantity payoff_kind = problem->codes[0].kind;
+  const bool consistent = (payoff == 0 && payoff_kind == ConstraintQuantity::kPayload) ||
+                          (payoff == 1 && (payoff_kind == ConstraintQuantity::kInertialVelocity ||
+                                           payoff_kind == ConstraintQuantity::kAerodynamicVelocity)) ||
+                          (payoff == 2 && payoff_kind == ConstraintQuantity::kAltitude);
+  if (!consistent || problem->codes[0].is_stage_point) return Status::kPayoffNotSupported;
+  problem->payload_is_control = payoff == 0;
+  problem->payload_weight = mission.misc.payload_weighting_factor;
+
+  problem->adjustable_count = mission.adjustable.count;
+  for (int p = 0; p < mission.adjustable.count; ++p) {
+    const int code = mission.adjustable.codes[p];
+    const bool supported = code == 1 || code == 2 || code == 8 || code == 9 || coast_of_parameter(code) != 0;
+    if (!supported) return Status::kAdjustableParameterNotSupported;
+    problem->adjustable_codes[p] = code;
+    problem->adjustable_weight[p] = mission.adjustable.weights[p];
+    problem->adjustable_active[p] = true;
+  }
+  return Status::kOk;
+}
+
+// ---- constraint values and their adjoint initial conditions -----------------------------------
+
+int constraint_point_index(const ConstraintCode& code, const Trajectory& trajectory) {
+  if (!code.is_stage_point) return trajectory.point_count - 1;
+  for (int k = 0; k < trajectory.stage_count; ++k) {
+    if (trajectory.stages[k].code == code.stage_code) return trajectory.stages[k].last_point;
+  }
+  return -1;
+}
+
+ConstraintPoint make_constraint_point(const Mission& mission, const Trajectory& trajectory, int index) {
+  const TrajectoryPoint& p = trajectory.points[index];
+  ConstraintPoint c;
+  c.state = p.state;
+  c.time_from_launch_s = p.time_s;
+  c.weight_lb = p.weight_lb;
+  c.total_heating_btu_ft2 = trajectory.heat_integral_btu_ft2;
+  if (p.altitude_ft <= mission.constants.haero_ft) {
+    AtmosphereSample air;
+    if (ok(evaluate_atmosphere(mission.atmosphere, mission.constants, p.altitude_ft,
+                               oblate_radius_ft(mission.constants, p.state[kStateLambda]), &air))) {
+      c.density_slug_ft3 = air.density_slug_ft3;
+      c.ddensity_dh = air.ddensity_dh;
+    }
+  }
+  return c;
+}
+
+Status evaluate_constraints(const Problem& problem, const Mission& mission, const Trajectory& trajectory,
+                            double achieved[kMaxConstraints]) {
+  for (int i = 0; i < problem.constraint_count; ++i) {
+    const int index = constraint_point_index(problem.codes[i], trajectory);
+    if (index < 0) return Status::kValueOutOfRange;
+    const ConstraintPoint point = make_constraint_point(mission, trajectory, index);
+    const Status status = constraint_value(mission.constants, mission.launch, problem.codes[i], point, &achieved[i]);
+    if (!ok(status)) return status;
+  }
+  // The payload payoff is the payload itself (the final weight is the inert weight plus it).
+  if (problem.payload_is_control) achieved[0] = mission.vehicle.payload_lb;
+  return Status::kOk;
+}
+
+Status constraint_terminals(const Problem& problem, const Mission& mission, const Trajectory& trajectory,
+                            ConstraintTerminal terminals[kMaxConstraints]) {
+  for (int i = 0; i < problem.constraint_count; ++i) {
+    terminals[i].point = constraint_point_index(problem.codes[i], trajectory);
+    if (terminals[i].point < 0) return Status::kValueOutOfRange;
+    const ConstraintPoint point = make_constraint_point(mission, trajectory, terminals[i].point);
+    const Status status = constraint_partials(mission.constants, mission.launch, problem.codes[i], point,
+                                              &terminals[i].partials);
+    if (!ok(status)) return status;
+  }
+  return Status::kOk;
+}
+
+bool within_deadbands(const Problem& problem, const double achieved[kMaxConstraints]) {
+  for (int i = 1; i < problem.constraint_count; ++i) {
+    if (std::fabs(problem.desired[i] - achieved[i]) > problem.scale[i]) return false;
+  }
+  return true;
+}
+
+// Constraint errors measured in deadbands (the guidance runs' figure of merit).
+double error_norm(const Problem& problem, const double achieved[kMaxConstraints]) {
+  double sum = 0.0;
+  for (int i = 1; i < problem.constraint_count; ++i) {
+    const double e = (problem.desired[i] - achieved[i]) / problem.scale[i];
+    sum += e * e;
+  }
+  return std::sqrt(sum);
+}
+
+// ---- the steering law --------------------------------------------------------------------------
+
+// Sensitivity column of adjustable parameter p (scaled constraints), and its value accessors.
+ConstraintVector parameter_column(const Problem& problem, const BackwardRun& backward, int p) {
+  const int code = problem.adjustable_codes[p];
+  if (code == 1 || code == 8) return backward.spun_theta;
+  if (code == 2 || code == 9) return backward.spun_chi;
+  return backward.coast_duration[stage_index(coast_of_parameter(code))];
+}
+
+struct Steering {
+  int first = 0;  // 0 on optimization runs (payoff included), 1 on guidance runs
+  SquareMatrix matrix = SquareMatrix::Identity();  // integral of Lambda Lambda^T + S Y^-1 S^T (scaled)
+  Eigen::LLT<SquareMatrix> cholesky;
+};
+
+ConstraintVector scaled(const Problem& problem, const ConstraintVector& v, int first) {
+  ConstraintVector out = ConstraintVector::Zero();
+  for (int i = first; i < problem.constraint_count; ++i) out(i) = v(i) / problem.scale[i];
+  return out;
+}
+
+// Eqs. 9-7, 9-8: I + J over the active constraints; identity outside them.
+// dZ/d(payload mass, slug) = g0 dZ/d(payload weight, lb).
+ConstraintVector payload_mass_column(const BackwardRun& backward, double g0) { return g0 * backward.payload; }
+
+Status build_steering(const Problem& problem, const BackwardRun& backward, const bool* free_points,
+                      double g0_, int first, Steering* steering) {
+  SquareMatrix m = SquareMatrix::Zero();
+  for (int k = 0; k < backward.point_count; ++k) {
+    const double w = backward.quadrature_weight_s[k];
+    if (!(w > 0.0) || !free_points[k]) continue;
+    const ConstraintVector g = scaled(problem, backward.theta_gradient[k], first);
+    m += g * g.transpose() / w;
+  }
+  for (int p = 0; p < problem.adjustable_count; ++p) {
+    if (!problem.adjustable_active[p]) continue;
+    const ConstraintVector s = scaled(problem, parameter_column(problem, backward, p), first);
+    m += s * s.transpose() / problem.adjustable_weight[p];
+  }
+  if (problem.payload_is_control) {
+    // The payload enters as a mass in slug (the column of lambda_m at launch, Sec. 9).
+    const ConstraintVector s = scaled(problem, payload_mass_column(backward, g0_), first);
+    m += problem.payload_weight * s * s.transpose();
+  }
+  for (int i = 0; i < kMaxConstraints; ++i) {
+    if (i >= first && i < problem.constraint_count) continue;
+    m.row(i).setZero();
+    m.col(i).setZero();
+    m(i, i) = 1.0;
+  }
+  steering->first = first;
+  steering->matrix = m;
+  steering->cholesky.compute(m);
+  if (steering->cholesky.info() != Eigen::Success) return Status::kSteeringMatrixSingular;
+  return Status::kOk;
+}
+
+// Eq. 9-22: partials of the payoff with respect to each constraint, from the optimization matrix.
+void payoff_partials(const Problem& problem, const SquareMatrix& full, double out[kMaxConstraints]) {
+  SquareMatrix guidance = full;
+  guidance.row(0).setZero();
+  guidance.col(0).setZero();
+  guidance(0, 0) = 1.0;
+  const Eigen::LLT<SquareMatrix> cholesky(guidance);
+  ConstraintVector coupling = full.row(0).transpose();
+  coupling(0) = 0.0;
+  const ConstraintVector scaled_partials = cholesky.solve(coupling);
+  out[0] = 0.0;
+  for (int i = 1; i < problem.constraint_count; ++i) out[i] = scaled_partials(i) / problem.scale[i];
+}
+
+// Eqs. 5-32..5-34: the payoff improvement that a control change of size dP^2 buys while removing
+// the constraint errors d phi.
+bool initial_payoff_improvement(const Problem& problem, const Steering& optimization,
+                                const ConstraintVector& dphi, double dp2, double* improvement) {
+  const SquareMatrix a = optimization.cholesky.solve(SquareMatrix::Identity());
+  const double a11 = a(0, 0);
+  double n_dphi = 0.0;
+  double dphi_m_dphi = 0.0;
+  for (int i = 1; i < problem.constraint_count; ++i) {
+    n_dphi += a(i, 0) * dphi(i);
+    for (int j = 1; j < problem.constraint_count; ++j) dphi_m_dphi += dphi(i) * a(i, j) * dphi(j);
+  }
+  const double discriminant = n_dphi * n_dphi - a11 * (dphi_m_dphi - dp2);
+  if (!(a11 > 0.0) || !(discriminant > 0.0)) return false;
+  *improvement = (-n_dphi + std::sqrt(discriminant)) / a11;
+  return *improvement > 0.0;
+}
+
+// ---- control constraints ------------------------------------------------------------------------
+
+// Which per-point pitch values the optimizer steers: points of stages 1-3 whose value enters a
+// kLinear step, except the end of lift-off (theta = 90 deg there) and the points whose attitude is
+// set in flight (end of the zero-alpha window, stage-2 ignition under IP(12)). Coasts 6 and 7 fly one linear segment each between the attitudes of the
+// stages around them (data block 18: "one segment each for intermediate coast stages"), so a lift
+// pulse in coast 6 cannot be bought with an attitude spike; spun stages have their own parameters.
+struct PointRoles {
+  bool free[kMaxTrajectoryPoints] = {};
+  bool intermediate_coast[kMaxTrajectoryPoints] = {};
+  int last_shaped = 0;  // last point of stage 3
+};
+
+void classify_points(const Mission& mission, const Trajectory& t, PointRoles* roles) {
+  for (int k = 0; k < t.point_count; ++k) {
+    roles->free[k] = false;
+    roles->intermediate_coast[k] = false;
+  }
+  roles->last_shaped = 0;
+  for (int s = 0; s < t.step_count; ++s) {
+    const StepRecord& step = t.steps[s];
+    const StageEvent& stage = t.stages[step.stage_slot];
+    const int code = stage.code;
+    if (code == 6 || code == 7) {
+      roles->intermediate_coast[step.point] = true;
+      roles->intermediate_coast[step.point + 1] = true;
+      continue;
+    }
+    if (code > 3) continue;
+    if (code == 3) roles->last_shaped = stage.last_point;
+    if (step.command.mode != AttitudeMode::kLinear) continue;
+    const bool liftoff_end = code == 1 && step.point == stage.first_point;
+    const double stage_start = t.points[stage.first_point].time_s - t.points[stage.first_point].stage_time_s;
+    const bool set_in_flight = attitude_set_in_flight(mission, code, stage_start, step.command.step_start_s);
+    if (!liftoff_end && !set_in_flight) roles->free[step.point] = true;
+    if (step.point + 1 == stage.last_point) roles->free[stage.last_point] = true;
+  }
+}
+
+// Shapes a candidate program: the maximum pitch rate of data block 22 between consecutive shaped
+// points (projected forward from lift-off, back from the end of stage 3, and forward again;
+// points not steered anchor the projection at the attitude the nominal flew there), then the
+// intermediate coasts as straight lines between their neighbours. TOLIP imposed the maximum rate
+// only after lift-off; docs/theory/optimizer.md explains the projection.
+void shape_program(const Mission& mission, const Trajectory& nominal, const PointRoles& roles,
+                   ControlProgram* program) {
+  const int last = roles.last_shaped;
+  for (int k = 0; k <= last; ++k) {
+    if (!roles.free[k] && !roles.intermediate_coast[k]) program->theta_rad[k] = nominal.points[k].theta_rad;
+  }
+  const double rate = mission.control.max_pitch_rate_rad_s;
+  if (rate > 0.0) {
+    for (int pass = 0; pass < 3; ++pass) {
+      const bool forward = pass != 1;
+      int previous = -1;
+      for (int i = 1; i <= last; ++i) {
+        const int k = forward ? i : last + 1 - i;
+        if (roles.intermediate_coast[k]) continue;
+        if (previous >= 0 && roles.free[k]) {
+          const double dt = std::fabs(nominal.points[k].time_s - nominal.points[previous].time_s);
+          const double neighbour = program->theta_rad[previous];
+          program->theta_rad[k] =
+              std::fmax(neighbour - rate * dt, std::fmin(neighbour + rate * dt, program->theta_rad[k]));
+        }
+        previous = k;
+      }
+    }
+  }
+  // Coasts 6 and 7: linear in time from the previous stage's end to the next stage's start.
+  for (int s = 0; s < nominal.stage_count; ++s) {
+    const StageEvent& coast = nominal.stages[s];
+    if ((coast.code != 6 && coast.code != 7) || s == 0 || s + 1 >= nominal.stage_count) continue;
+    const int before = nominal.stages[s - 1].last_point;
+    const int after = nominal.stages[s + 1].first_point;
+    const double t0 = nominal.points[before].time_s;
+    const double t1 = nominal.points[after].time_s;
+    for (int k = coast.first_point; k <= coast.last_point; ++k) {
+      const double fraction = (t1 > t0) ? (nominal.points[k].time_s - t0) / (t1 - t0) : 0.0;
+      program->theta_rad[k] = program->theta_rad[before] + fraction * (program->theta_rad[after] - program->theta_rad[before]);
+    }
+  }
+}
+
+// ---- one forward run with the steering applied -------------------------------------------------
+
+class Iteration {
+ public:
+  Iteration(const Problem& problem, OptimizerWorkspace* ws, OptimizerResult* result)
+      : problem_(problem), ws_(ws), result_(result) {}
+
+  Status run(const Mission& input);
+
+ private:
+  Status fly_nominal_from_table();
+  Status backward(int first, Steering* steering);
+  Status fly_candidate(const Steering& steering, const ConstraintVector& dpsi, double step_fraction);
+  void accept_candidate();
+  void record(RunKind kind, bool successful, double attempted);
+  ConstraintVector corrections(const double achieved[kMaxConstraints]) const;
+  double corrected_payoff(const double achieved[kMaxConstraints]) const;
+  double burn_time_s() const;
+
+  const Problem& problem_;
+  OptimizerWorkspace* ws_;
+  OptimizerResult* result_;
+  double nominal_achieved_[kMaxConstraints] = {};
+  double candidate_achieved_[kMaxConstraints] = {};
+  double partials_[kMaxConstraints] = {};
+  double last_payload_lb_ = 0.0;
+  PointRoles roles_;
+};
+
+ConstraintVector Iteration::corrections(const double achieved[kMaxConstraints]) const {
+  ConstraintVector d = ConstraintVector::Zero();
+  for (int i = 1; i < problem_.constraint_count; ++i) d(i) = (problem_.desired[i] - achieved[i]) / problem_.scale[i];
+  return d;
+}
+
+double Iteration::corrected_payoff(const double achieved[kMaxConstraints]) const {
+  double corrected = achieved[0];
+  for (int i = 1; i < problem_.constraint_count; ++i) corrected += partials_[i] * (problem_.desired[i] - achieved[i]);
+  return corrected;
+}
+
+double Iteration::burn_time_s() const {
+  double total = 0.0;
+  for (int k = 0; k < ws_->prepared.stage_count; ++k) {
+    const int code = ws_->prepared.timeline[k].code;
+    if (code >= 1 && code <= 3) total += ws_->prepared.timeline[k].duration_s;
+  }
+  return total;
+}
+
+void Iteration::record(RunKind kind, bool successful, double attempted) {
+  if (result_->iteration_count >= kMaxOptimizerIterations) return;
+  IterationRecord& r = result_->iterations[result_->iteration_count++];
+  r.forward_run = result_->forward_runs;
+  r.kind = kind;
+  r.successful = successful;
+  r.attempted_payoff_improvement = attempted;
+  r.payoff = candidate_achieved_[0];
+  r.corrected_payoff = corrected_payoff(candidate_achieved_);
+  r.payload_lb = ws_->candidate_mission.vehicle.payload_lb;
+  r.payload_increment_lb = ws_->candidate_mission.vehicle.payload_lb - last_payload_lb_;
+  for (int i = 1; i < problem_.constraint_count; ++i) {
+    r.constraint_corrections[i] = problem_.desired[i] - candidate_achieved_[i];
+    r.payoff_partials[i] = partials_[i];
+  }
+}
+
+Status Iteration::fly_nominal_from_table() {
+  ++result_->forward_runs;
+  Status status = fly_trajectory(ws_->mission, ws_->prepared, &ws_->nominal);
+  if (!ok(status)) return status;
+  ws_->program.point_count = ws_->nominal.point_count;
+  for (int k = 0; k < ws_->nominal.point_count; ++k) ws_->program.theta_rad[k] = ws_->nominal.points[k].theta_rad;
+  classify_points(ws_->mission, ws_->nominal, &roles_);
+  status = evaluate_constraints(problem_, ws_->mission, ws_->nominal, nominal_achieved_);
+  if (!ok(status)) return status;
+  for (int i = 0; i < problem_.constraint_count; ++i) candidate_achieved_[i] = nominal_achieved_[i];
+  ws_->candidate_mission = ws_->mission;
+  last_payload_lb_ = ws_->mission.vehicle.payload_lb;
+  record(RunKind::kInitialNominal, within_deadbands(problem_, nominal_achieved_), 0.0);
+  return Status::kOk;
+}
+
+Status Iteration::backward(int first, Steering* steering) {
+  ConstraintTerminal terminals[kMaxConstraints];
+  Status status = constraint_terminals(problem_, ws_->mission, ws_->nominal, terminals);
+  if (!ok(status)) return status;
+  status = run_backward(ws_->mission, ws_->prepared, ws_->nominal, problem_.constraint_count, terminals, &ws_->backward);
+  if (!ok(status)) return status;
+  ++result_->backward_runs;
+  // The payoff partials come from the optimization form of the matrix (eq. 9-22).
+  Steering optimization;
+  status = build_steering(problem_, ws_->backward, roles_.free, ws_->mission.constants.g0_ft_s2, 0, &optimization);
+  if (ok(status)) payoff_partials(problem_, optimization.matrix, partials_);
+  if (first == 0) {
+    *steering = optimization;
+    return status;
+  }
+  return build_steering(problem_, ws_->backward, roles_.free, ws_->mission.constants.g0_ft_s2, first, steering);
+}
+
+// Eqs. 9-3, 9-4 (the open-loop law, K evaluated at launch with dx = 0): the change of every control
+// that yields the requested constraint changes d psi with the least control measure.
+Status Iteration::fly_candidate(const Steering& steering, const ConstraintVector& dpsi, double step_fraction) {
+  const ConstraintVector nu = step_fraction * steering.cholesky.solve(dpsi);
+  const BackwardRun& b = ws_->backward;
+  ws_->candidate_program = ws_->program;
+  for (int k = 0; k < b.point_count; ++k) {
+    const double w = b.quadrature_weight_s[k];
+    if (!(w > 0.0) || !roles_.free[k]) continue;
+    ws_->candidate_program.theta_rad[k] += scaled(problem_, b.theta_gradient[k], steering.first).dot(nu) / w;
+  }
+  shape_program(ws_->mission, ws_->nominal, roles_, &ws_->candidate_program);
+  ws_->candidate_mission = ws_->mission;
+  Mission& m = ws_->candidate_mission;
+  bool timeline_changed = false;
+  for (int p = 0; p < problem_.adjustable_count; ++p) {
+    if (!problem_.adjustable_active[p]) continue;
+    const double change = scaled(problem_, parameter_column(problem_, b, p), steering.first).dot(nu) /
+                          problem_.adjustable_weight[p];
+    const int code = problem_.adjustable_codes[p];
+    switch (code) {
+      case 1: m.misc.stage4_theta_rad += change; break;
+      case 2: m.misc.stage4_chi_rad += change; break;
+      case 8: m.misc.stage5_theta_rad += change; break;
+      case 9: m.misc.stage5_chi_rad += change; break;
+      default: {
+        // Coast lengths: at most DA2(16) per iteration, never below DA2(17) (Sec. 9).
+        StageData& coast = m.vehicle.stages[stage_index(coast_of_parameter(code))];
+        const double limit = m.misc.coast_change_limit_s;
+        const double bounded = (limit > 0.0) ? std::fmax(-limit, std::fmin(limit, change)) : change;
+        const double minimum = std::fmax(m.misc.minimum_coast_s, 1e-3 * coast.integration_steps);
+        coast.duration_s = std::fmax(minimum, coast.duration_s + bounded);
+        timeline_changed = true;
+        break;
+      }
+    }
+  }
+  if (problem_.payload_is_control) {
+    const double g0 = m.constants.g0_ft_s2;
+    const double mass_change_slug =
+        problem_.payload_weight * scaled(problem_, payload_mass_column(b, g0), steering.first).dot(nu);
+    m.vehicle.payload_lb += g0 * mass_change_slug;
+    if (m.vehicle.payload_lb < 0.0) m.vehicle.payload_lb = 0.0;
+  }
+  ws_->candidate_prepared = ws_->prepared;
+  if (timeline_changed) {
+    const Status status = rebuild_timeline(m, &ws_->candidate_prepared);
+    if (!ok(status)) return status;
+  }
+  ++result_->forward_runs;
+  Status status = fly_trajectory(m, ws_->candidate_prepared, ws_->candidate_program, &ws_->candidate);
+  if (!ok(status)) return status;
+  return evaluate_constraints(problem_, m, ws_->candidate, candidate_achieved_);
+}
+
+void Iteration::accept_candidate() {
+  last_payload_lb_ = ws_->mission.vehicle.payload_lb;
+  ws_->mission = ws_->candidate_mission;
+  ws_->prepared = ws_->candidate_prepared;
+  ws_->program = ws_->candidate_program;
+  ws_->nominal = ws_->candidate;
+  for (int i = 0; i < problem_.constraint_count; ++i) nominal_achieved_[i] = candidate_achieved_[i];
+  classify_points(ws_->mission, ws_->nominal, &roles_);
+}
+
+Status Iteration::run(const Mission& input) {
+  ws_->mission = input;
+  Status status = prepare_case(ws_->mission, &ws_->prepared);
+  if (!ok(status)) return status;
+  status = fly_nominal_from_table();
+  if (!ok(status)) return status;
+  const int budget = ws_->mission.convergence.max_forward_trajectories;
+
+  // Guidance: every forward guidance run becomes the new nominal (Sec. 22); a step that makes the
+  // errors worse is retried at half size first (our safeguard, docs/theory/optimizer.md).
+  Steering steering;
+  while (!within_deadbands(problem_, nominal_achieved_) && result_->forward_runs < budget - 1) {
+    status = backward(1, &steering);
+    if (!ok(status)) return status;
+    const double before = error_norm(problem_, nominal_achieved_);
+    double fraction = 1.0;
+    for (int attempt = 0; attempt <= kGuidanceStepHalvings; ++attempt, fraction *= 0.5) {
+      status = fly_candidate(steering, corrections(nominal_achieved_), fraction);
+      const bool better = ok(status) && error_norm(problem_, candidate_achieved_) < before;
+      record(RunKind::kGuidance, better && within_deadbands(problem_, candidate_achieved_), 0.0);
+      if (better || attempt == kGuidanceStepHalvings || result_->forward_runs >= budget - 1) break;
+    }
+    if (!ok(status)) return status;
+    accept_candidate();
+  }
+
+  // Optimization: ask for payoff improvement, judged by the corrected payoff; halve on failure.
+  double attempt_size = 0.0;
+  double best_corrected = -1e300;
+  bool first_attempt = true;
+  while (within_deadbands(problem_, nominal_achieved_) && result_->forward_runs < budget - 1) {
+    status = backward(0, &steering);
+    if (!ok(status)) return status;
+    best_corrected = corrected_payoff(nominal_achieved_);
+    const ConstraintVector dphi = corrections(nominal_achieved_);
+    if (first_attempt) {
+      const double dp2 = kTypicalPitchChangeRad * kTypicalPitchChangeRad * burn_time_s();
+      if (!initial_payoff_improvement(problem_, steering, dphi, dp2, &attempt_size)) {
+        attempt_size = ws_->mission.convergence.initial_payoff_improvement;
+      }
+      first_attempt = false;
+    }
+    bool improved = false;
+    while (attempt_size >= ws_->mission.convergence.stop_improvement && result_->forward_runs < budget - 1) {
+      ConstraintVector dpsi = dphi;
+      dpsi(0) = attempt_size;
+      status = fly_candidate(steering, dpsi, 1.0);
+      improved = ok(status) && within_deadbands(problem_, candidate_achieved_) &&
+                 corrected_payoff(candidate_achieved_) > best_corrected;
+      record(RunKind::kOptimization, improved, attempt_size);
+      if (improved) break;
+      attempt_size *= 0.5;
+    }
+    if (!improved) break;
+    accept_candidate();
+  }
+
+  // Final backward and forward guidance run.
+  status = backward(1, &steering);
+  if (!ok(status)) return status;
+  status = fly_candidate(steering, corrections(nominal_achieved_), 1.0);
+  const bool final_ok = ok(status) && error_norm(problem_, candidate_achieved_) <= error_norm(problem_, nominal_achieved_);
+  record(RunKind::kFinalGuidance, final_ok && within_deadbands(problem_, candidate_achieved_), 0.0);
+  if (final_ok) accept_candidate();
+
+  result_->converged = within_deadbands(problem_, nominal_achieved_);
+  result_->constraint_count = problem_.constraint_count;
+  for (int i = 0; i < problem_.constraint_count; ++i) {
+    result_->codes[i] = problem_.codes[i].code;
+    result_->desired[i] = problem_.desired[i];
+    result_->achieved[i] = nominal_achieved_[i];
+    result_->tolerance[i] = (i == 0) ? 0.0 : problem_.scale[i];
+    result_->payoff_partials[i] = partials_[i];
+  }
+  result_->payoff = nominal_achieved_[0];
+  result_->corrected_payoff = corrected_payoff(nominal_achieved_);
+  result_->payload_lb = ws_->mission.vehicle.payload_lb;
+  result_->adjustable_count = problem_.adjustable_count;
+  for (int p = 0; p < problem_.adjustable_count; ++p) {
+    const int code = problem_.adjustable_codes[p];
+    result_->adjustable_codes[p] = code;
+    const MiscellaneousData& misc = ws_->mission.misc;
+    result_->adjustable_values[p] =
+        code == 1 ? misc.stage4_theta_rad : code == 2 ? misc.stage4_chi_rad :
+        code == 8 ? misc.stage5_theta_rad : code == 9 ? misc.stage5_chi_rad :
+        ws_->mission.vehicle.stages[stage_index(coast_of_parameter(code))].duration_s;
+  }
+  return result_->converged ? Status::kOk : Status::kOptimizerDidNotConverge;
+}
+
+}  // namespace
+
+Status optimize_trajectory(const Mission& mission, OptimizerWorkspace* workspace, OptimizerResult* result) {
+  result->forward_runs = 0;
+  result->backward_runs = 0;
+  result->iteration_count = 0;
+  result->converged = false;
+  Problem problem;
+  Status status = make_problem(mission, &problem);
+  if (ok(status)) {
+    Iteration iteration(problem, workspace, result);
+    status = iteration.run(mission);
+  }
+  result->status = status;
+  return status;
+}
+
+}  // namespace tolip
