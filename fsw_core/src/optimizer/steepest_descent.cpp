@@ -97,10 +97,12 @@ ConstraintPoint make_constraint_point(const Mission& mission, const Trajectory& 
   c.total_heating_btu_ft2 = trajectory.heat_integral_btu_ft2;
   if (p.altitude_ft <= mission.constants.haero_ft) {
     AtmosphereSample air;
-    if (ok(evaluate_atmosphere(mission.atmosphere, mission.constants, p.altitude_ft,
-                               oblate_radius_ft(mission.constants, p.state[kStateLambda]), &air))) {
+    const double radius = oblate_radius_ft(mission.constants, p.state[kStateLambda]);
+    if (ok(evaluate_atmosphere(mission.atmosphere, mission.constants, p.altitude_ft, radius, &air))) {
       c.density_slug_ft3 = air.density_slug_ft3;
-      c.ddensity_dh = air.ddensity_dh;
+      // Sec. 19 gives d rho / dH*; the constraint needs the geometric derivative, dH*/dh = (R/(R+h))^2.
+      const double ratio = radius / (radius + p.altitude_ft);
+      c.ddensity_dh = air.ddensity_dh * ratio * ratio;
     }
   }
   return c;
@@ -133,9 +135,14 @@ Status constraint_terminals(const Problem& problem, const Mission& mission, cons
   return Status::kOk;
 }
 
+// desired - achieved, wrapped into [-pi, pi) for the angles that are longitudes.
+double correction(const Problem& problem, int i, const double achieved[kMaxConstraints]) {
+  return -constraint_deviation(problem.codes[i], achieved[i], problem.desired[i]);
+}
+
 bool within_deadbands(const Problem& problem, const double achieved[kMaxConstraints]) {
   for (int i = 1; i < problem.constraint_count; ++i) {
-    if (std::fabs(problem.desired[i] - achieved[i]) > problem.scale[i]) return false;
+    if (std::fabs(correction(problem, i, achieved)) > problem.scale[i]) return false;
   }
   return true;
 }
@@ -144,7 +151,7 @@ bool within_deadbands(const Problem& problem, const double achieved[kMaxConstrai
 double error_norm(const Problem& problem, const double achieved[kMaxConstraints]) {
   double sum = 0.0;
   for (int i = 1; i < problem.constraint_count; ++i) {
-    const double e = (problem.desired[i] - achieved[i]) / problem.scale[i];
+    const double e = correction(problem, i, achieved) / problem.scale[i];
     sum += e * e;
   }
   return std::sqrt(sum);
@@ -354,13 +361,13 @@ class Iteration {
 
 ConstraintVector Iteration::corrections(const double achieved[kMaxConstraints]) const {
   ConstraintVector d = ConstraintVector::Zero();
-  for (int i = 1; i < problem_.constraint_count; ++i) d(i) = (problem_.desired[i] - achieved[i]) / problem_.scale[i];
+  for (int i = 1; i < problem_.constraint_count; ++i) d(i) = correction(problem_, i, achieved) / problem_.scale[i];
   return d;
 }
 
 double Iteration::corrected_payoff(const double achieved[kMaxConstraints]) const {
   double corrected = achieved[0];
-  for (int i = 1; i < problem_.constraint_count; ++i) corrected += partials_[i] * (problem_.desired[i] - achieved[i]);
+  for (int i = 1; i < problem_.constraint_count; ++i) corrected += partials_[i] * correction(problem_, i, achieved);
   return corrected;
 }
 
@@ -385,7 +392,7 @@ void Iteration::record(RunKind kind, bool successful, double attempted) {
   r.payload_lb = ws_->candidate_mission.vehicle.payload_lb;
   r.payload_increment_lb = ws_->candidate_mission.vehicle.payload_lb - last_payload_lb_;
   for (int i = 1; i < problem_.constraint_count; ++i) {
-    r.constraint_corrections[i] = problem_.desired[i] - candidate_achieved_[i];
+    r.constraint_corrections[i] = correction(problem_, i, candidate_achieved_);
     r.payoff_partials[i] = partials_[i];
   }
 }
