@@ -1,0 +1,83 @@
+// Speed of the optimizer (issue: the full reference optimization, to the final guidance run, at
+// most 50 ms single thread), and of its parts: one backward run (adjoint of 4 constraints) and one
+// forward run with a per-point pitch program.
+// Run: build/bench/optimizer_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+
+#include "tolip/optimizer/steepest_descent.hpp"
+#include "tolip_ground/deck.hpp"
+
+namespace {
+
+tolip::Mission& load(const char* name) {
+  static std::unique_ptr<tolip::Mission> missions[2];
+  const int slot = name[0] == 'm' ? 0 : 1;
+  if (!missions[slot]) {
+    missions[slot] = tolip::ground::make_mission();
+    tolip::ground::DeckError error;
+    const std::string path = std::string(TOLIP_EXAMPLES_DIR) + "/scout/" + name;
+    if (!tolip::ground::load_toml_deck(path, missions[slot].get(), &error)) {
+      std::fprintf(stderr, "%s\n", error.to_string().c_str());
+      std::exit(1);
+    }
+  }
+  return *missions[slot];
+}
+
+tolip::OptimizerWorkspace& workspace() {
+  static auto ws = std::make_unique<tolip::OptimizerWorkspace>();
+  return *ws;
+}
+
+void BM_FullReferenceOptimization(benchmark::State& state) {
+  const tolip::Mission& mission = load("mission.toml");
+  auto result = std::make_unique<tolip::OptimizerResult>();
+  for (auto _ : state) {
+    const tolip::Status status = tolip::optimize_trajectory(mission, &workspace(), result.get());
+    benchmark::DoNotOptimize(status);
+  }
+  state.counters["forward_runs"] = result->forward_runs;
+  state.counters["backward_runs"] = result->backward_runs;
+  state.counters["payload_lb"] = result->payload_lb;
+}
+BENCHMARK(BM_FullReferenceOptimization)->Unit(benchmark::kMillisecond);
+
+// One backward run over the reference optimum with the mission's 4 constraints (payload, altitude,
+// gamma_I, V_I - V_circ), terminals given as unit partials.
+void BM_BackwardRun(benchmark::State& state) {
+  const tolip::Mission& mission = load("reference_optimum.toml");
+  tolip::OptimizerWorkspace& ws = workspace();
+  tolip::prepare_case(mission, &ws.prepared);
+  tolip::fly_trajectory(mission, ws.prepared, &ws.nominal);
+  tolip::ConstraintTerminal terminals[4];
+  for (int j = 0; j < 4; ++j) {
+    terminals[j].point = ws.nominal.point_count - 1;
+    terminals[j].partials.setZero();
+    terminals[j].partials[j == 0 ? 6 : j] = 1.0;
+  }
+  for (auto _ : state) {
+    const tolip::Status status = tolip::run_backward(mission, ws.prepared, ws.nominal, 4, terminals, &ws.backward);
+    benchmark::DoNotOptimize(status);
+  }
+}
+BENCHMARK(BM_BackwardRun)->Unit(benchmark::kMicrosecond);
+
+void BM_ForwardRunWithProgram(benchmark::State& state) {
+  const tolip::Mission& mission = load("reference_optimum.toml");
+  tolip::OptimizerWorkspace& ws = workspace();
+  tolip::prepare_case(mission, &ws.prepared);
+  tolip::fly_trajectory(mission, ws.prepared, &ws.nominal);
+  ws.program.point_count = ws.nominal.point_count;
+  for (int k = 0; k < ws.nominal.point_count; ++k) ws.program.theta_rad[k] = ws.nominal.points[k].theta_rad;
+  for (auto _ : state) {
+    const tolip::Status status = tolip::fly_trajectory(mission, ws.prepared, ws.program, &ws.candidate);
+    benchmark::DoNotOptimize(status);
+  }
+}
+BENCHMARK(BM_ForwardRunWithProgram)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
