@@ -1,0 +1,28 @@
+// Rules of the core: a full optimization (initial nominal, guidance, optimization, final guidance,
+// every backward run) allocates nothing.
+#include <gtest/gtest.h>
+
+#include "support/allocation_counter.hpp"
+#include "support/reference_mission.hpp"
+#include "tolip/optimizer/steepest_descent.hpp"
+
+namespace tolip {
+namespace {
+
+TEST(CoreNoHeap, FullOptimizationAllocatesNothing) {
+  static Mission mission;
+  static OptimizerWorkspace workspace;
+  static OptimizerResult result;
+  test::build_reference_mission(test::ReferenceProgram::kInitialNominal, &mission);
+
+  test::AllocationScope scope;
+  const Status status = optimize_trajectory(mission, &workspace, &result);
+  const auto allocations = scope.count();
+
+  EXPECT_EQ(status, Status::kOk);
+  EXPECT_GT(result.forward_runs, 5);  // the work really happened
+  EXPECT_EQ(allocations, 0u);
+}
+
+}  // namespace
+}  // namespace tolip
