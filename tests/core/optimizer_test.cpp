@@ -19,8 +19,20 @@ OptimizerWorkspace& workspace() {
 
 void expect_constraints_met(const OptimizerResult& r) {
   for (int i = 1; i < r.constraint_count; ++i) {
-    EXPECT_LE(std::fabs(r.desired[i] - r.achieved[i]), r.tolerance[i]) << "constraint code " << r.codes[i];
+    if (r.inequality[i]) {
+      EXPECT_LE(r.achieved[i], r.desired[i] + r.tolerance[i]) << "constraint code " << r.codes[i];
+    } else {
+      EXPECT_LE(std::fabs(r.desired[i] - r.achieved[i]), r.tolerance[i]) << "constraint code " << r.codes[i];
+    }
   }
+}
+
+// Payoff of the first run that met every constraint (the start of the optimization proper).
+double first_feasible_payoff(const OptimizerResult& r) {
+  for (int i = 0; i < r.iteration_count; ++i) {
+    if (r.iterations[i].successful) return r.iterations[i].payoff;
+  }
+  return -1e300;
 }
 
 // From the crude starting program of the reference (tth_block40_initial_nominal: 250 lb, theta4
@@ -88,13 +100,94 @@ TEST(Sec22Optimizer, FamilyOfStartingProgramsConvergesToTheSamePayload) {
   EXPECT_LE((high - low) / high, 0.002);
 }
 
-TEST(Sec22Optimizer, UnsupportedAdjustableParameterIsANamedFailure) {
+TEST(Sec22Optimizer, UnknownAdjustableParameterIsANamedFailure) {
   static Mission mission;
   static OptimizerResult result;
   test::build_reference_mission(test::ReferenceProgram::kInitialNominal, &mission);
-  mission.adjustable.codes[1] = 6;  // launch azimuth
+  mission.adjustable.codes[1] = 12;  // the manual defines codes 1-11
   EXPECT_EQ(optimize_trajectory(mission, &workspace(), &result), Status::kAdjustableParameterNotSupported);
   EXPECT_EQ(result.status, Status::kAdjustableParameterNotSupported);
+}
+
+// A second mission of our own: maximum burnout inertial velocity at 300 n.mi. and gamma_I = 0 with
+// a fixed payload, a stage-point constraint (altitude at stage-3 burnout, code 37), the coast after
+// stage 3, the launch azimuth and the stage-4 attitude adjusted, and the Sec. 13 heating inequality
+// with a limit below what the first trajectories produce, so that it joins the constraint list.
+TEST(Sec22Optimizer, VelocityPayoffWithStagePointConstraintAzimuthCoastAndHeating) {
+  static Mission mission;
+  static OptimizerResult result;
+  test::build_reference_mission(test::ReferenceProgram::kOptimum, &mission);
+  mission.options.ip[1] = 1;  // payoff: velocity
+  mission.options.ip[2] = 1;  // heating constraint
+  ConstraintList& c = mission.constraints;
+  c.count = 4;
+  c.codes[0] = 1;  c.desired[0] = 0.0;                                   // V_I (payoff)
+  c.codes[1] = 7;  c.desired[1] = 1822834.647; c.deadband_optimization[0] = 2000.0;   // altitude
+  c.codes[2] = 2;  c.desired[2] = 0.0;         c.deadband_optimization[1] = 0.002;    // gamma_I
+  c.codes[3] = 37; c.desired[3] = 430000.0;    c.deadband_optimization[2] = 2000.0;   // altitude, end of stage 3
+  c.codes[4] = 14; c.desired[4] = 13000.0;     c.deadband_optimization[3] = 100.0;    // heat, Btu/ft^2
+  mission.adjustable.count = 3;
+  mission.adjustable.codes[0] = 1; mission.adjustable.weights[0] = 10.0;    // stage-4 theta
+  mission.adjustable.codes[1] = 3; mission.adjustable.weights[1] = 1e-4;    // coast after stage 3
+  mission.adjustable.codes[2] = 6; mission.adjustable.weights[2] = 2.0;     // launch azimuth
+  mission.convergence.initial_payoff_improvement = 200.0;
+  mission.convergence.stop_improvement = 2.0;
+  mission.convergence.max_forward_trajectories = 60;
+  MissionFault fault;
+  ASSERT_EQ(validate_mission(mission, &fault), Status::kOk) << fault.data_block << " " << fault.field;
+
+  static PreparedCase prepared;
+  static Trajectory initial;
+  ASSERT_EQ(prepare_case(mission, &prepared), Status::kOk);
+  ASSERT_EQ(fly_trajectory(mission, prepared, &initial), Status::kOk);
+  ASSERT_GT(initial.heat_integral_btu_ft2, 13000.0);  // the limit will bind
+
+  const Status status = optimize_trajectory(mission, &workspace(), &result);
+  std::printf("V_I %.2f ft/s (initial %.2f), %d forward runs, heat %.1f Btu/ft^2 (initial %.1f), azimuth %.3f deg, "
+              "coast 8 %.2f s, theta4 %.3f deg\n",
+              result.payoff, initial.final_point().inertial.velocity_ft_s, result.forward_runs,
+              workspace().nominal.heat_integral_btu_ft2, initial.heat_integral_btu_ft2,
+              workspace().mission.launch.azimuth_rad * kRadToDeg,
+              workspace().mission.vehicle.stages[stage_index(8)].duration_s,
+              workspace().mission.misc.stage4_theta_rad * kRadToDeg);
+  ASSERT_EQ(status, Status::kOk);
+  expect_constraints_met(result);
+  ASSERT_EQ(result.constraint_count, 5);  // the heating constraint joined the list
+  EXPECT_EQ(result.codes[4], 14);
+  EXPECT_LE(workspace().nominal.heat_integral_btu_ft2, 13000.0 + 100.0);
+  EXPECT_GT(result.payoff, first_feasible_payoff(result) + 10.0);  // the payoff improved by optimization
+  EXPECT_NE(workspace().mission.launch.azimuth_rad, mission.launch.azimuth_rad);  // azimuth was adjusted
+  EXPECT_DOUBLE_EQ(workspace().mission.vehicle.payload_lb, mission.vehicle.payload_lb);  // payload fixed
+}
+
+// Maximum circular-orbit altitude for a fixed payload, with a dynamic-pressure inequality at
+// stage-2 ignition (code 69 = q at the end of coast 6, IP(13) = 1). The fixed payload is the reference's 283.4 lb,
+// below what this vehicle can carry to 300 n.mi., so the circular orbit must come out higher.
+TEST(Sec22Optimizer, AltitudePayoffWithDynamicPressureInequalityAtStage2Ignition) {
+  static Mission mission;
+  static OptimizerResult result;
+  test::build_reference_mission(test::ReferenceProgram::kOptimum, &mission);
+  mission.options.ip[1] = 2;   // payoff: altitude
+  mission.options.ip[13] = 1;  // q-bar constraint is an inequality
+  ConstraintList& c = mission.constraints;
+  c.count = 4;
+  c.codes[0] = 7;  c.desired[0] = 0.0;                                    // altitude (payoff)
+  c.codes[1] = 2;  c.desired[1] = 0.0;   c.deadband_optimization[0] = 0.002;   // gamma_I
+  c.codes[2] = 3;  c.desired[2] = 0.0;   c.deadband_optimization[1] = 20.0;    // V_I - V_circ
+  c.codes[3] = 69; c.desired[3] = 600.0; c.deadband_optimization[2] = 10.0;    // q at stage-2 ignition <= 600
+  mission.convergence.initial_payoff_improvement = 20000.0;
+  mission.convergence.stop_improvement = 500.0;
+  mission.convergence.max_forward_trajectories = 60;
+  MissionFault fault;
+  ASSERT_EQ(validate_mission(mission, &fault), Status::kOk) << fault.data_block << " " << fault.field;
+  const Status status = optimize_trajectory(mission, &workspace(), &result);
+  std::printf("altitude %.0f ft after %d forward runs; q at stage-2 ignition %.1f lb/ft^2\n", result.payoff,
+              result.forward_runs, result.achieved[3]);
+  ASSERT_EQ(status, Status::kOk);
+  expect_constraints_met(result);
+  EXPECT_GT(result.payoff, 1822834.647);  // higher than the reference orbit with the same payload
+  EXPECT_GT(result.payoff, first_feasible_payoff(result) + 1000.0);
+  EXPECT_LE(result.achieved[3], 600.0 + 10.0);
 }
 
 }  // namespace

@@ -3,6 +3,9 @@
 
 #include <cmath>
 
+#include "tolip/atmosphere/atmosphere.hpp"
+#include "tolip/earth/earth_model.hpp"
+#include "tolip/optimizer/constraint_parameters.hpp"
 #include "tolip/trajectory/flight_dynamics.hpp"
 #include "tolip/trajectory/liftoff.hpp"
 
@@ -118,6 +121,7 @@ class BackwardSweep {
 
  private:
   void inject(int point);
+  StateVector heat_integral_gradient(int point) const;
   void store(int point);
   void rk4_step(const StepRecord& step);
   void adams_step(const StepRecord& step);
@@ -138,11 +142,50 @@ class BackwardSweep {
 };
 
 void BackwardSweep::inject(int point) {
+  bool heating_gradient_known = false;
+  StateVector heating_gradient = StateVector::Zero();
   for (int j = 0; j < count_; ++j) {
+    if (terminals_[j].heat_integral) {
+      if (!heating_gradient_known) {
+        heating_gradient = heat_integral_gradient(point);
+        heating_gradient_known = true;
+      }
+      state_.col(j) += heating_gradient;
+      continue;
+    }
     if (terminals_[j].point != point) continue;
     state_.col(j) += terminals_[j].partials.head<6>();
     mass_(j) += terminals_[j].partials[6];
   }
+}
+
+// d/dX_k of the trapezoidal heat integral: the point's trapezoidal weight times dQdot/dX there.
+StateVector BackwardSweep::heat_integral_gradient(int k) const {
+  const TrajectoryPoint& p = trajectory_.points[k];
+  const double before = (k > 0) ? trajectory_.points[k - 1].time_s : p.time_s;
+  const double after = (k + 1 < trajectory_.point_count) ? trajectory_.points[k + 1].time_s : p.time_s;
+  const double weight = 0.5 * (after - before);
+  if (!(weight > 0.0) || !(mission_.misc.nose_radius_ft > 0.0) || p.altitude_ft > mission_.constants.haero_ft) {
+    return StateVector::Zero();
+  }
+  ConstraintPoint point;
+  point.state = p.state;
+  point.time_from_launch_s = p.time_s;
+  point.weight_lb = p.weight_lb;
+  const double radius = oblate_radius_ft(mission_.constants, p.state[kStateLambda]);
+  AtmosphereSample air;
+  if (!ok(evaluate_atmosphere(mission_.atmosphere, mission_.constants, p.altitude_ft, radius, &air))) {
+    return StateVector::Zero();
+  }
+  point.density_slug_ft3 = air.density_slug_ft3;
+  const double ratio = radius / (radius + p.altitude_ft);  // dH*/dh: Sec. 19 derivatives are per H*
+  point.ddensity_dh = air.ddensity_dh * ratio * ratio;
+  Eigen::Matrix<double, 6, 1> partials;
+  if (!ok(stagnation_heating_rate_partials(mission_.constants, mission_.misc.nose_radius_ft,
+                                           mission_.atmosphere.base_density_slug_ft3[0], point, &partials))) {
+    return StateVector::Zero();
+  }
+  return weight * partials;
 }
 
 void BackwardSweep::store(int point) {

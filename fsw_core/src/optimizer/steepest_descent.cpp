@@ -32,6 +32,13 @@ struct Problem {
   int adjustable_codes[kMaxAdjustableParameters] = {};
   double adjustable_weight[kMaxAdjustableParameters] = {};
   bool adjustable_active[kMaxAdjustableParameters] = {};
+  // Inequalities (achieved <= desired): total heating (IP(2), Sec. 13) and dynamic pressure under
+  // IP(13) = 1. The heating constraint joins the list when the heat integral first exceeds its limit.
+  bool inequality[kMaxConstraints] = {};
+  bool heating_listed = false;
+  bool heating_active = false;
+  double heating_limit_btu_ft2 = 0.0;
+  double heating_deadband_btu_ft2 = 0.0;
 };
 
 // Coast stage code of a coast-length adjustable parameter (Sec. 9 table), 0 if not a coast.
@@ -66,16 +73,43 @@ Status make_problem(const Mission& mission, Problem* problem) {
   problem->payload_is_control = payoff == 0;
   problem->payload_weight = mission.misc.payload_weighting_factor;
 
+  for (int i = 1; i < list.count; ++i) {
+    problem->inequality[i] = mission.options.qbar_constraint_type() == 1 &&
+                             problem->codes[i].kind == ConstraintQuantity::kDynamicPressure;
+  }
+  if (mission.options.heating_constraint()) {
+    if (list.codes[list.count] != 14) return Status::kUnknownConstraintCode;
+    if (list.count + 1 > kMaxConstraints) return Status::kTooManyConstraints;
+    problem->heating_listed = true;
+    problem->heating_limit_btu_ft2 = list.desired[list.count];
+    problem->heating_deadband_btu_ft2 = list.deadband_optimization[list.count - 1];
+    if (!(problem->heating_deadband_btu_ft2 > 0.0)) return Status::kValueOutOfRange;
+  }
+
   problem->adjustable_count = mission.adjustable.count;
   for (int p = 0; p < mission.adjustable.count; ++p) {
     const int code = mission.adjustable.codes[p];
-    const bool supported = code == 1 || code == 2 || code == 8 || code == 9 || coast_of_parameter(code) != 0;
+    const bool supported = code == 1 || code == 2 || code == 6 || code == 7 || code == 8 || code == 9 ||
+                           coast_of_parameter(code) != 0;
     if (!supported) return Status::kAdjustableParameterNotSupported;
     problem->adjustable_codes[p] = code;
     problem->adjustable_weight[p] = mission.adjustable.weights[p];
     problem->adjustable_active[p] = true;
   }
   return Status::kOk;
+}
+
+// Sec. 13: once the heat integral exceeds its limit the heating constraint is appended to the list
+// and kept for the rest of the case.
+void activate_heating_if_exceeded(const Trajectory& nominal, Problem* problem) {
+  if (!problem->heating_listed || problem->heating_active) return;
+  if (!(nominal.heat_integral_btu_ft2 > problem->heating_limit_btu_ft2)) return;
+  const int i = problem->constraint_count++;
+  decode_constraint_code(14, &problem->codes[i]);
+  problem->desired[i] = problem->heating_limit_btu_ft2;
+  problem->scale[i] = problem->heating_deadband_btu_ft2;
+  problem->inequality[i] = true;
+  problem->heating_active = true;
 }
 
 // ---- constraint values and their adjoint initial conditions -----------------------------------
@@ -127,6 +161,7 @@ Status constraint_terminals(const Problem& problem, const Mission& mission, cons
   for (int i = 0; i < problem.constraint_count; ++i) {
     terminals[i].point = constraint_point_index(problem.codes[i], trajectory);
     if (terminals[i].point < 0) return Status::kValueOutOfRange;
+    terminals[i].heat_integral = problem.codes[i].kind == ConstraintQuantity::kTotalHeating;
     const ConstraintPoint point = make_constraint_point(mission, trajectory, terminals[i].point);
     const Status status = constraint_partials(mission.constants, mission.launch, problem.codes[i], point,
                                               &terminals[i].partials);
@@ -136,8 +171,10 @@ Status constraint_terminals(const Problem& problem, const Mission& mission, cons
 }
 
 // desired - achieved, wrapped into [-pi, pi) for the angles that are longitudes.
+// For an inequality only an excess is an error.
 double correction(const Problem& problem, int i, const double achieved[kMaxConstraints]) {
-  return -constraint_deviation(problem.codes[i], achieved[i], problem.desired[i]);
+  const double c = -constraint_deviation(problem.codes[i], achieved[i], problem.desired[i]);
+  return (problem.inequality[i] && c > 0.0) ? 0.0 : c;
 }
 
 bool within_deadbands(const Problem& problem, const double achieved[kMaxConstraints]) {
@@ -159,11 +196,23 @@ double error_norm(const Problem& problem, const double achieved[kMaxConstraints]
 
 // ---- the steering law --------------------------------------------------------------------------
 
-// Sensitivity column of adjustable parameter p (scaled constraints), and its value accessors.
-ConstraintVector parameter_column(const Problem& problem, const BackwardRun& backward, int p) {
+// Sensitivities the backward run does not produce: launch azimuth (by central differences of two
+// forward runs, since the azimuth turns the platform for the whole flight and the lift-off heading)
+// and launch time of day (the explicit dependence of node longitude and asymptote right
+// ascension on Greenwich's right ascension, Sec. 9).
+struct LaunchColumns {
+  ConstraintVector azimuth = ConstraintVector::Zero();      // per rad
+  ConstraintVector launch_time = ConstraintVector::Zero();  // per s
+};
+
+// Sensitivity column of adjustable parameter p.
+ConstraintVector parameter_column(const Problem& problem, const BackwardRun& backward,
+                                  const LaunchColumns& launch, int p) {
   const int code = problem.adjustable_codes[p];
   if (code == 1 || code == 8) return backward.spun_theta;
   if (code == 2 || code == 9) return backward.spun_chi;
+  if (code == 6) return launch.azimuth;
+  if (code == 7) return launch.launch_time;
   return backward.coast_duration[stage_index(coast_of_parameter(code))];
 }
 
@@ -183,8 +232,8 @@ ConstraintVector scaled(const Problem& problem, const ConstraintVector& v, int f
 // dZ/d(payload mass, slug) = g0 dZ/d(payload weight, lb).
 ConstraintVector payload_mass_column(const BackwardRun& backward, double g0) { return g0 * backward.payload; }
 
-Status build_steering(const Problem& problem, const BackwardRun& backward, const bool* free_points,
-                      double g0_, int first, Steering* steering) {
+Status build_steering(const Problem& problem, const BackwardRun& backward, const LaunchColumns& launch,
+                      const bool* free_points, double g0_, int first, Steering* steering) {
   SquareMatrix m = SquareMatrix::Zero();
   for (int k = 0; k < backward.point_count; ++k) {
     const double w = backward.quadrature_weight_s[k];
@@ -194,7 +243,7 @@ Status build_steering(const Problem& problem, const BackwardRun& backward, const
   }
   for (int p = 0; p < problem.adjustable_count; ++p) {
     if (!problem.adjustable_active[p]) continue;
-    const ConstraintVector s = scaled(problem, parameter_column(problem, backward, p), first);
+    const ConstraintVector s = scaled(problem, parameter_column(problem, backward, launch, p), first);
     m += s * s.transpose() / problem.adjustable_weight[p];
   }
   if (problem.payload_is_control) {
@@ -342,6 +391,7 @@ class Iteration {
  private:
   Status fly_nominal_from_table();
   Status backward(int first, Steering* steering);
+  Status launch_sensitivities();
   Status fly_candidate(const Steering& steering, const ConstraintVector& dpsi, double step_fraction);
   void accept_candidate();
   void record(RunKind kind, bool successful, double attempted);
@@ -349,7 +399,7 @@ class Iteration {
   double corrected_payoff(const double achieved[kMaxConstraints]) const;
   double burn_time_s() const;
 
-  const Problem& problem_;
+  Problem problem_;  // a copy: the heating constraint may join during the case
   OptimizerWorkspace* ws_;
   OptimizerResult* result_;
   double nominal_achieved_[kMaxConstraints] = {};
@@ -357,6 +407,7 @@ class Iteration {
   double partials_[kMaxConstraints] = {};
   double last_payload_lb_ = 0.0;
   PointRoles roles_;
+  LaunchColumns launch_columns_;
 };
 
 ConstraintVector Iteration::corrections(const double achieved[kMaxConstraints]) const {
@@ -404,12 +455,42 @@ Status Iteration::fly_nominal_from_table() {
   ws_->program.point_count = ws_->nominal.point_count;
   for (int k = 0; k < ws_->nominal.point_count; ++k) ws_->program.theta_rad[k] = ws_->nominal.points[k].theta_rad;
   classify_points(ws_->mission, ws_->nominal, &roles_);
+  activate_heating_if_exceeded(ws_->nominal, &problem_);
   status = evaluate_constraints(problem_, ws_->mission, ws_->nominal, nominal_achieved_);
   if (!ok(status)) return status;
   for (int i = 0; i < problem_.constraint_count; ++i) candidate_achieved_[i] = nominal_achieved_[i];
   ws_->candidate_mission = ws_->mission;
   last_payload_lb_ = ws_->mission.vehicle.payload_lb;
   record(RunKind::kInitialNominal, within_deadbands(problem_, nominal_achieved_), 0.0);
+  return Status::kOk;
+}
+
+Status Iteration::launch_sensitivities() {
+  launch_columns_ = LaunchColumns();
+  bool azimuth = false;
+  for (int p = 0; p < problem_.adjustable_count; ++p) {
+    if (problem_.adjustable_codes[p] == 6) azimuth = problem_.adjustable_active[p];
+  }
+  for (int i = 0; i < problem_.constraint_count; ++i) {
+    launch_columns_.launch_time(i) = constraint_partial_wrt_launch_time(problem_.codes[i]);
+  }
+  if (!azimuth) return Status::kOk;
+  // The candidate buffers are free between a backward run and the next forward run.
+  constexpr double kAzimuthStepRad = 1e-5;
+  double achieved[2][kMaxConstraints] = {};
+  for (int side = 0; side < 2; ++side) {
+    ws_->candidate_mission = ws_->mission;
+    ws_->candidate_mission.launch.azimuth_rad += (side == 0 ? 1.0 : -1.0) * kAzimuthStepRad;
+    ws_->candidate_prepared = ws_->prepared;
+    prepare_launch_geometry(ws_->candidate_mission, &ws_->candidate_prepared);
+    Status status = fly_trajectory(ws_->candidate_mission, ws_->candidate_prepared, ws_->program, &ws_->candidate);
+    if (ok(status)) status = evaluate_constraints(problem_, ws_->candidate_mission, ws_->candidate, achieved[side]);
+    if (!ok(status)) return status;
+  }
+  for (int i = 0; i < problem_.constraint_count; ++i) {
+    launch_columns_.azimuth(i) = -constraint_deviation(problem_.codes[i], achieved[1][i], achieved[0][i]) /
+                                 (2.0 * kAzimuthStepRad);
+  }
   return Status::kOk;
 }
 
@@ -420,15 +501,17 @@ Status Iteration::backward(int first, Steering* steering) {
   status = run_backward(ws_->mission, ws_->prepared, ws_->nominal, problem_.constraint_count, terminals, &ws_->backward);
   if (!ok(status)) return status;
   ++result_->backward_runs;
+  status = launch_sensitivities();
+  if (!ok(status)) return status;
   // The payoff partials come from the optimization form of the matrix (eq. 9-22).
   Steering optimization;
-  status = build_steering(problem_, ws_->backward, roles_.free, ws_->mission.constants.g0_ft_s2, 0, &optimization);
+  status = build_steering(problem_, ws_->backward, launch_columns_, roles_.free, ws_->mission.constants.g0_ft_s2, 0, &optimization);
   if (ok(status)) payoff_partials(problem_, optimization.matrix, partials_);
   if (first == 0) {
     *steering = optimization;
     return status;
   }
-  return build_steering(problem_, ws_->backward, roles_.free, ws_->mission.constants.g0_ft_s2, first, steering);
+  return build_steering(problem_, ws_->backward, launch_columns_, roles_.free, ws_->mission.constants.g0_ft_s2, first, steering);
 }
 
 // Eqs. 9-3, 9-4 (the open-loop law, K evaluated at launch with dx = 0): the change of every control
@@ -446,9 +529,10 @@ Status Iteration::fly_candidate(const Steering& steering, const ConstraintVector
   ws_->candidate_mission = ws_->mission;
   Mission& m = ws_->candidate_mission;
   bool timeline_changed = false;
+  bool launch_changed = false;
   for (int p = 0; p < problem_.adjustable_count; ++p) {
     if (!problem_.adjustable_active[p]) continue;
-    const double change = scaled(problem_, parameter_column(problem_, b, p), steering.first).dot(nu) /
+    const double change = scaled(problem_, parameter_column(problem_, b, launch_columns_, p), steering.first).dot(nu) /
                           problem_.adjustable_weight[p];
     const int code = problem_.adjustable_codes[p];
     switch (code) {
@@ -456,6 +540,11 @@ Status Iteration::fly_candidate(const Steering& steering, const ConstraintVector
       case 2: m.misc.stage4_chi_rad += change; break;
       case 8: m.misc.stage5_theta_rad += change; break;
       case 9: m.misc.stage5_chi_rad += change; break;
+      case 6:
+        m.launch.azimuth_rad += change;
+        launch_changed = true;
+        break;
+      case 7: m.launch.launch_space_age_date_days += change / 86400.0; break;
       default: {
         // Coast lengths: at most DA2(16) per iteration, never below DA2(17) (Sec. 9).
         StageData& coast = m.vehicle.stages[stage_index(coast_of_parameter(code))];
@@ -480,6 +569,7 @@ Status Iteration::fly_candidate(const Steering& steering, const ConstraintVector
     const Status status = rebuild_timeline(m, &ws_->candidate_prepared);
     if (!ok(status)) return status;
   }
+  if (launch_changed) prepare_launch_geometry(m, &ws_->candidate_prepared);
   ++result_->forward_runs;
   Status status = fly_trajectory(m, ws_->candidate_prepared, ws_->candidate_program, &ws_->candidate);
   if (!ok(status)) return status;
@@ -494,6 +584,13 @@ void Iteration::accept_candidate() {
   ws_->nominal = ws_->candidate;
   for (int i = 0; i < problem_.constraint_count; ++i) nominal_achieved_[i] = candidate_achieved_[i];
   classify_points(ws_->mission, ws_->nominal, &roles_);
+  if (!problem_.heating_active) {
+    activate_heating_if_exceeded(ws_->nominal, &problem_);
+    if (problem_.heating_active) {
+      const int i = problem_.constraint_count - 1;
+      nominal_achieved_[i] = ws_->nominal.heat_integral_btu_ft2;
+    }
+  }
 }
 
 Status Iteration::run(const Mission& input) {
@@ -568,6 +665,7 @@ Status Iteration::run(const Mission& input) {
     result_->desired[i] = problem_.desired[i];
     result_->achieved[i] = nominal_achieved_[i];
     result_->tolerance[i] = (i == 0) ? 0.0 : problem_.scale[i];
+    result_->inequality[i] = problem_.inequality[i];
     result_->payoff_partials[i] = partials_[i];
   }
   result_->payoff = nominal_achieved_[0];

@@ -118,6 +118,22 @@ Status modify_thrust_table(const Mission& mission, const StageTimeline& line,
 
 }  // namespace
 
+void prepare_launch_geometry(const Mission& mission, PreparedCase* prepared) {
+  // Frozen at t = 0 (Sec. 4: "matrices B and B' are evaluated only at time = 0").
+  const Constants& constants = mission.constants;
+  const LaunchConditions& launch = mission.launch;
+  const double latitude = launch.geocentric_latitude_rad;
+  prepared->pad_radius_ft = oblate_radius_ft(constants, latitude) + launch.altitude_ft;
+  prepared->delta_lambda_rad = delta_lambda_rad(constants, latitude, prepared->pad_radius_ft);
+  prepared->geocentric_to_inertial =
+      geocentric_to_inertial(launch.azimuth_rad, latitude, launch.longitude_rad);
+  prepared->platform_to_geocentric =
+      platform_to_geocentric(launch.azimuth_rad, prepared->delta_lambda_rad);
+  prepared->platform_to_inertial = prepared->geocentric_to_inertial * prepared->platform_to_geocentric;
+  prepared->pad_state << launch.velocity_ft_s, launch.flight_path_angle_rad, prepared->pad_radius_ft,
+      launch.azimuth_rad, latitude, launch.longitude_rad;
+}
+
 Status rebuild_timeline(const Mission& mission, PreparedCase* prepared) {
   return build_timeline(mission, prepared);
 }
@@ -135,19 +151,7 @@ Status prepare_case(const Mission& mission, PreparedCase* prepared) {
     if (!ok(status)) return status;
   }
 
-  // Launch geometry, frozen at t = 0 (Sec. 4: "matrices B and B' are evaluated only at time = 0").
-  const Constants& constants = mission.constants;
-  const LaunchConditions& launch = mission.launch;
-  const double latitude = launch.geocentric_latitude_rad;
-  prepared->pad_radius_ft = oblate_radius_ft(constants, latitude) + launch.altitude_ft;
-  prepared->delta_lambda_rad = delta_lambda_rad(constants, latitude, prepared->pad_radius_ft);
-  prepared->geocentric_to_inertial =
-      geocentric_to_inertial(launch.azimuth_rad, latitude, launch.longitude_rad);
-  prepared->platform_to_geocentric =
-      platform_to_geocentric(launch.azimuth_rad, prepared->delta_lambda_rad);
-  prepared->platform_to_inertial = prepared->geocentric_to_inertial * prepared->platform_to_geocentric;
-  prepared->pad_state << launch.velocity_ft_s, launch.flight_path_angle_rad, prepared->pad_radius_ft,
-      launch.azimuth_rad, latitude, launch.longitude_rad;
+  prepare_launch_geometry(mission, prepared);
   prepared->prepared = true;
   return Status::kOk;
 }

@@ -31,6 +31,10 @@ using ConstraintVector = Eigen::Matrix<double, kMaxConstraints, 1>;
 struct ConstraintTerminal {
   int point = 0;                               // trajectory point index
   AdjointVector partials = AdjointVector::Zero();
+  // The total-heating constraint (code 14, Sec. 13) is the integral of the stagnation heating rate
+  // over the stored points (trapezoidal): its adjoint is driven at every point by the heating
+  // rate's partials instead of starting from `partials`.
+  bool heat_integral = false;
 };
 
 struct BackwardRun {

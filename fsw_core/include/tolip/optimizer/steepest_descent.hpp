@@ -49,6 +49,7 @@ struct OptimizerResult {
   double desired[kMaxConstraints] = {};
   double achieved[kMaxConstraints] = {};
   double tolerance[kMaxConstraints] = {};      // data block 29 optimization deadbands (0 for payoff)
+  bool inequality[kMaxConstraints] = {};       // achieved <= desired + tolerance suffices
   double payoff = 0.0;
   double corrected_payoff = 0.0;
   double payload_lb = 0.0;

@@ -52,4 +52,7 @@ Status prepare_case(const Mission& mission, PreparedCase* prepared);
 // Sec. 14 thrust tables and the launch geometry are kept, as TOLIP re-tabulates once per case.
 Status rebuild_timeline(const Mission& mission, PreparedCase* prepared);
 
+// Recomputes only the launch geometry (pad state, [B], [B']) after the launch azimuth changed.
+void prepare_launch_geometry(const Mission& mission, PreparedCase* prepared);
+
 }  // namespace tolip
