@@ -4,7 +4,9 @@
 #   1. installs the Debian packages the build needs (only those missing; apt-get via sudo when
 #      not root),
 #   2. configures a Release build in build/ and builds it with two jobs,
-#   3. runs `tolip simulate` on examples/scout/reference_optimum.toml.
+#   3. runs the main job: `tolip optimize` on examples/scout/mission.toml (the Scout-class
+#      maximum-payload case from its crude initial pitch program), which prints the iteration
+#      history, the optimized trajectory and the summary (exit 0 when it converges).
 #
 # Safe to run again: installed packages are skipped and the build is incremental.
 set -euo pipefail
@@ -19,5 +21,5 @@ BUILD_DIR=${TOLIP_BUILD_DIR:-$ROOT_DIR/build}
 tolip_ensure_packages
 tolip_configure_and_build "$ROOT_DIR" "$BUILD_DIR"
 
-echo "-- running: tolip simulate examples/scout/reference_optimum.toml"
-exec "$BUILD_DIR/ground_tools/tolip" simulate examples/scout/reference_optimum.toml
+echo "-- running: tolip optimize examples/scout/mission.toml"
+exec "$BUILD_DIR/ground_tools/tolip" optimize examples/scout/mission.toml

@@ -13,6 +13,12 @@ TOLIP_DEBIAN_PACKAGES=(
   nlohmann-json3-dev
   python3
   hyperfine
+  # The bare-metal Cortex-M7 target (CMakePresets.json preset cortex-m7, docs/target.md): the
+  # cross compiler, newlib and libstdc++ for arm-none-eabi, and QEMU to run the image.
+  gcc-arm-none-eabi
+  libnewlib-arm-none-eabi
+  libstdc++-arm-none-eabi-newlib
+  qemu-system-arm
 )
 
 # True when the package is fully installed ("install ok installed"; a removed package whose

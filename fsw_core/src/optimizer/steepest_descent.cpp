@@ -405,7 +405,6 @@ class Iteration {
   double nominal_achieved_[kMaxConstraints] = {};
   double candidate_achieved_[kMaxConstraints] = {};
   double partials_[kMaxConstraints] = {};
-  double last_payload_lb_ = 0.0;
   PointRoles roles_;
   LaunchColumns launch_columns_;
 };
@@ -441,7 +440,7 @@ void Iteration::record(RunKind kind, bool successful, double attempted) {
   r.payoff = candidate_achieved_[0];
   r.corrected_payoff = corrected_payoff(candidate_achieved_);
   r.payload_lb = ws_->candidate_mission.vehicle.payload_lb;
-  r.payload_increment_lb = ws_->candidate_mission.vehicle.payload_lb - last_payload_lb_;
+  r.payload_increment_lb = ws_->candidate_mission.vehicle.payload_lb - ws_->mission.vehicle.payload_lb;
   for (int i = 1; i < problem_.constraint_count; ++i) {
     r.constraint_corrections[i] = correction(problem_, i, candidate_achieved_);
     r.payoff_partials[i] = partials_[i];
@@ -460,7 +459,6 @@ Status Iteration::fly_nominal_from_table() {
   if (!ok(status)) return status;
   for (int i = 0; i < problem_.constraint_count; ++i) candidate_achieved_[i] = nominal_achieved_[i];
   ws_->candidate_mission = ws_->mission;
-  last_payload_lb_ = ws_->mission.vehicle.payload_lb;
   record(RunKind::kInitialNominal, within_deadbands(problem_, nominal_achieved_), 0.0);
   return Status::kOk;
 }
@@ -577,7 +575,6 @@ Status Iteration::fly_candidate(const Steering& steering, const ConstraintVector
 }
 
 void Iteration::accept_candidate() {
-  last_payload_lb_ = ws_->mission.vehicle.payload_lb;
   ws_->mission = ws_->candidate_mission;
   ws_->prepared = ws_->candidate_prepared;
   ws_->program = ws_->candidate_program;
@@ -676,9 +673,11 @@ Status Iteration::run(const Mission& input) {
     const int code = problem_.adjustable_codes[p];
     result_->adjustable_codes[p] = code;
     const MiscellaneousData& misc = ws_->mission.misc;
+    const LaunchConditions& launch = ws_->mission.launch;
     result_->adjustable_values[p] =
         code == 1 ? misc.stage4_theta_rad : code == 2 ? misc.stage4_chi_rad :
         code == 8 ? misc.stage5_theta_rad : code == 9 ? misc.stage5_chi_rad :
+        code == 6 ? launch.azimuth_rad : code == 7 ? launch.launch_space_age_date_days :
         ws_->mission.vehicle.stages[stage_index(coast_of_parameter(code))].duration_s;
   }
   return result_->converged ? Status::kOk : Status::kOptimizerDidNotConverge;

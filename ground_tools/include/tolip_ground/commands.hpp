@@ -30,6 +30,15 @@ struct SimulateCommandOptions {
 int run_simulate_command(const SimulateCommandOptions& options, std::ostream& out,
                          std::ostream& err);
 
+// `tolip optimize DECK [--csv FILE] [--json]`
+struct OptimizeCommandOptions {
+  std::string deck_path;
+  std::string csv_path;  // empty: no CSV (of the final trajectory)
+  bool json = false;
+};
+int run_optimize_command(const OptimizeCommandOptions& options, std::ostream& out,
+                         std::ostream& err);
+
 // The whole program: parses the command line (CLI11), runs the subcommand, maps parse errors to
 // kExitBadInput. `tolip --help` and `--version` print to `out` and return kExitOk.
 int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream& err);

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "tolip_ground/commands.hpp"
+#include "tolip_ground/table_commands.hpp"
 #include "tolip_ground/version.hpp"
 
 namespace tolip::ground {
@@ -15,8 +16,9 @@ constexpr const char* kDescription =
 
 constexpr const char* kFooter =
     "Exit codes: 0 success; 1 run-time or core failure (trajectory, orbit elements,\n"
-    "file write); 2 bad input (command line or deck). Errors go to stderr as\n"
-    "'tolip: <message>'. Run 'tolip <command> --help' for a command's options.\n"
+    "file write, optimization not converged); 2 bad input (command line or deck).\n"
+    "Errors go to stderr as 'tolip: <message>'. Run 'tolip <command> --help' for a\n"
+    "command's options.\n"
     "Full reference: docs/cli.md.";
 
 }  // namespace
@@ -74,6 +76,80 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
                      "point) instead of the listing; printed also when the\n"
                      "trajectory fails (then with exit code 1)");
 
+  // ---- optimize --------------------------------------------------------------------------------
+  OptimizeCommandOptions optimize_options;
+  CLI::App* optimize = app.add_subcommand(
+      "optimize",
+      "Load a TOML case deck and optimize it: closed-loop steepest\n"
+      "descent (manual Sec. 5, 9, 22) from the data block 40 pitch\n"
+      "program: guidance runs into the data block 29 deadbands,\n"
+      "optimization runs improving the payoff (IP(1): payload,\n"
+      "velocity or altitude), a final guidance run. Prints the\n"
+      "iteration history (per forward run: kind, success,\n"
+      "constraint corrections, attempted payoff increment, payoff,\n"
+      "corrected payoff, payload and its increment, partials of\n"
+      "payoff with respect to each constraint), the final\n"
+      "trajectory listed as by 'simulate', and a summary\n"
+      "(constraints desired/achieved/tolerance, adjustable\n"
+      "parameters). Exit 0 when converged; 1 when not converged\n"
+      "or on a core failure (everything is still printed, with\n"
+      "the best trajectory found); 2 on bad input.");
+  optimize->add_option("DECK", optimize_options.deck_path, "TOML case deck (docs/deck-format.md)")
+      ->required()
+      ->type_name("FILE");
+  optimize
+      ->add_option("--csv", optimize_options.csv_path,
+                   "Also write EVERY integration point of the final\n"
+                   "trajectory to FILE as CSV (the columns of simulate\n"
+                   "--csv), atomically; on a write failure an existing\n"
+                   "FILE is left untouched and the exit code is 1")
+      ->type_name("FILE");
+  optimize->add_flag("--json", optimize_options.json,
+                     "Print one JSON document instead of the listing: the\n"
+                     "simulate --json keys for the final trajectory plus\n"
+                     "converged, forward_runs, backward_runs, payoff,\n"
+                     "payload_lb, constraints, payoff_partials, adjustable,\n"
+                     "theta_history, iterations (docs/cli.md)");
+
+  // ---- export / inspect (guidance table image, docs/table-format.md) ----------------------------
+  ExportCommandOptions export_options;
+  CLI::App* export_command = app.add_subcommand(
+      "export",
+      "Build the guidance-computer table image (docs/table-format.md)\n"
+      "from a TOML case deck and write it atomically: segments\n"
+      "(interim: from the data block 40 pitch table), lift-off,\n"
+      "spun-stage attitudes, autopilot gains, limits, CRC-32.");
+  export_command->add_option("DECK", export_options.deck_path, "TOML case deck (docs/deck-format.md)")
+      ->required()
+      ->type_name("FILE");
+  export_command->add_option("--out", export_options.out_path, "The binary image (812 bytes)")
+      ->required()
+      ->type_name("FILE");
+  export_command->add_option("--c-header", export_options.c_header_path,
+                             "Also write the image as a C const array in the\n"
+                             "linker section .tolip_table")
+      ->type_name("FILE");
+  export_command->add_option("--symbol", export_options.symbol, "C array name (default tolip_pitch_table)")
+      ->type_name("NAME");
+  export_command->add_option("--mission-id", export_options.mission_id,
+                             "Mission identifier, 1-32 printable ASCII characters\n"
+                             "(default: the case title, data block 1)")
+      ->type_name("TEXT");
+  export_command->add_option("--created-unix-s", export_options.created_unix_s,
+                             "Creation stamp, s since 1970-01-01Z (default:\n"
+                             "SOURCE_DATE_EPOCH, else the current time)")
+      ->type_name("N");
+
+  InspectCommandOptions inspect_options;
+  CLI::App* inspect = app.add_subcommand(
+      "inspect",
+      "Validate a guidance table image with the flight-side loader's\n"
+      "checks and print it in engineering units; a bad image is\n"
+      "named by its fault (exit 2).");
+  inspect->add_option("IMAGE", inspect_options.image_path, "Table image written by tolip export")
+      ->required()
+      ->type_name("FILE");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -90,6 +166,9 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
 
   if (atmosphere->parsed()) return run_atmosphere_command(atmosphere_options, out, err);
   if (simulate->parsed()) return run_simulate_command(simulate_options, out, err);
+  if (optimize->parsed()) return run_optimize_command(optimize_options, out, err);
+  if (export_command->parsed()) return run_export_command(export_options, out, err);
+  if (inspect->parsed()) return run_inspect_command(inspect_options, out, err);
   err << "tolip: no command given\n";
   return kExitBadInput;
 }

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "listing_pager.hpp"
 #include "number_format.hpp"
 #include "tolip/core/constants.hpp"
 #include "tolip/core/state.hpp"
@@ -101,69 +102,66 @@ std::string format(const char* pattern, double value) {
   return buffer;
 }
 
-// Writes lines and starts a new page (title block and column headings) when one is full.
-class Pager {
- public:
-  Pager(std::ostream& out, const Mission& mission) : out_(out) {
-    const double lines = mission.constants.lines_per_page;
-    lines_per_page_ = (std::isfinite(lines) && lines >= 20.0 && lines <= 1000.0)
-                          ? static_cast<int>(lines)
-                          : kDefaultLinesPerPage;
-    title_ = card_text(mission.title, sizeof mission.title);
-    heading_ = card_text(mission.case_heading, sizeof mission.case_heading);
-    date_ = card_text(mission.date, sizeof mission.date);
-  }
+}  // namespace
 
-  // Starts a page of the given kind; `columns` adds the trajectory column headings.
-  void new_page(const std::string& section, bool columns) {
-    section_ = section;
-    columns_ = columns;
-    if (page_ > 0) out_ << '\n';
-    ++page_;
-    line_ = 0;
-    emit(title_);
-    emit(heading_);
-    std::string third = date_;
-    const std::string tag = "TOLIP " + std::string(version_string()) + "   " + section_ +
-                            "   PAGE " + std::to_string(page_);
-    const int width = kCellWidth * 12;
-    if (static_cast<int>(third.size() + tag.size()) + 1 < width) {
-      third += std::string(static_cast<std::size_t>(width) - third.size() - tag.size(), ' ');
-    } else {
-      third += ' ';
-    }
-    emit(third + tag);
+// ---- Pager (listing_pager.hpp) ---------------------------------------------------------------
+
+namespace report_detail {
+
+Pager::Pager(std::ostream& out, const Mission& mission) : out_(out) {
+  const double lines = mission.constants.lines_per_page;
+  lines_per_page_ = (std::isfinite(lines) && lines >= 20.0 && lines <= 1000.0)
+                        ? static_cast<int>(lines)
+                        : kDefaultLinesPerPage;
+  title_ = card_text(mission.title, sizeof mission.title);
+  heading_ = card_text(mission.case_heading, sizeof mission.case_heading);
+  date_ = card_text(mission.date, sizeof mission.date);
+}
+
+void Pager::new_page(const std::string& section, bool columns) {
+  section_ = section;
+  columns_ = columns;
+  if (page_ > 0) out_ << '\n';
+  ++page_;
+  line_ = 0;
+  emit(title_);
+  emit(heading_);
+  std::string third = date_;
+  const std::string tag = "TOLIP " + std::string(version_string()) + "   " + section_ +
+                          "   PAGE " + std::to_string(page_);
+  const int width = kCellWidth * 12;
+  if (static_cast<int>(third.size() + tag.size()) + 1 < width) {
+    third += std::string(static_cast<std::size_t>(width) - third.size() - tag.size(), ' ');
+  } else {
+    third += ' ';
+  }
+  emit(third + tag);
+  emit("");
+  if (columns_) {
+    emit(heading_line(kLine1, false));
+    emit(heading_line(kLine1, true));
+    emit(heading_line(kLine2, false));
+    emit(heading_line(kLine2, true));
     emit("");
-    if (columns_) {
-      emit(heading_line(kLine1, false));
-      emit(heading_line(kLine1, true));
-      emit(heading_line(kLine2, false));
-      emit(heading_line(kLine2, true));
-      emit("");
-    }
   }
+}
 
-  // Makes sure `count` lines fit on this page (starting a new page of the same kind if not).
-  void reserve(int count) {
-    if (page_ == 0 || line_ + count > lines_per_page_) new_page(section_, columns_);
-  }
+void Pager::reserve(int count) {
+  if (page_ == 0 || line_ + count > lines_per_page_) new_page(section_, columns_);
+}
 
-  void emit(const std::string& text) {
-    std::string trimmed = text;
-    while (!trimmed.empty() && trimmed.back() == ' ') trimmed.pop_back();
-    out_ << trimmed << '\n';
-    ++line_;
-  }
+void Pager::emit(const std::string& text) {
+  std::string trimmed = text;
+  while (!trimmed.empty() && trimmed.back() == ' ') trimmed.pop_back();
+  out_ << trimmed << '\n';
+  ++line_;
+}
 
- private:
-  std::ostream& out_;
-  int lines_per_page_ = kDefaultLinesPerPage;
-  int page_ = 0;
-  int line_ = 0;
-  bool columns_ = false;
-  std::string section_;
-  std::string title_, heading_, date_;
-};
+}  // namespace report_detail
+
+namespace {
+
+using report_detail::Pager;
 
 // Points past the last recorded stage event (the stage a failed run stopped in): the same rule as
 // is_output_point, every n-th point of the stage plus its first and last point, and always the
@@ -319,15 +317,19 @@ void write_terminal_conditions(Pager& pager, const SimulationReport& report) {
 
 }  // namespace
 
-void write_trajectory_listing(std::ostream& out, const SimulationReport& report) {
+void report_detail::write_trajectory_pages(Pager& pager, const SimulationReport& report) {
   const Mission& mission = *report.mission;
   const Trajectory& trajectory = *report.trajectory;
-  Pager pager(out, mission);
   pager.new_page("FINAL TRAJECTORY", true);
   write_points(pager, mission, trajectory);
   pager.new_page("TERMINAL CONDITIONS", false);
   write_stage_events(pager, trajectory);
   write_terminal_conditions(pager, report);
+}
+
+void write_trajectory_listing(std::ostream& out, const SimulationReport& report) {
+  Pager pager(out, *report.mission);
+  report_detail::write_trajectory_pages(pager, report);
 }
 
 }  // namespace tolip::ground

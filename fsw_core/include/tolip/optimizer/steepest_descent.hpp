@@ -56,7 +56,8 @@ struct OptimizerResult {
   double payoff_partials[kMaxConstraints] = {};
   int adjustable_count = 0;
   int adjustable_codes[kMaxAdjustableParameters] = {};
-  double adjustable_values[kMaxAdjustableParameters] = {};  // rad for attitudes, s for coasts
+  // rad for attitudes and azimuth, s for coasts, Space Age Date days for the launch time (code 7).
+  double adjustable_values[kMaxAdjustableParameters] = {};
   int iteration_count = 0;
   IterationRecord iterations[kMaxOptimizerIterations];
 };

@@ -1,0 +1,245 @@
+#!/usr/bin/env python3
+"""Static worst-case stack bound of the Cortex-M7 flight image (docs/stack-usage.md).
+
+Inputs:
+  * the GCC call-graph files (-fcallgraph-info=su, one .ci per object): every function compiled from
+    our sources (fsw_core, the flight demo, the start-up code) with its own frame size
+    (-fstack-usage) and its direct callees;
+  * the linked ELF, disassembled with objdump, for the functions that come precompiled from newlib
+    and libgcc (sin, atan2, pow, memcpy, ...): their frame is bounded by adding up every push,
+    vpush and "sub sp" in the function body (over-estimates when several paths push), and their
+    callees are the targets of their bl / b instructions.
+
+The bound of a function is its own frame plus the largest bound among its callees; the graph must
+be acyclic (the core has no recursion, so a cycle fails the check). An indirect call must be
+resolved from the image: the only one, the constructor loop of the start-up code, calls the
+functions listed in .init_array.
+
+Checks: the bound from --root fits in --stack-size and covers the high-water mark measured on the
+target (--measured: the "TARGET stack high-water N bytes" line of the QEMU run).
+"""
+import argparse
+import os
+import re
+import subprocess
+import sys
+from functools import lru_cache
+
+NODE = re.compile(r'^node: \{ title: "([^"]+)" label: "((?:[^"\\]|\\.)*)"')
+EDGE = re.compile(r'^edge: \{ sourcename: "([^"]+)" targetname: "([^"]+)"')
+FRAME = re.compile(r'\\n(\d+) bytes \(([a-z, ]+)\)$')
+
+
+def read_call_graph(ci_dir):
+    frames, labels, qualifiers, callees = {}, {}, {}, {}
+    for root, _, files in os.walk(ci_dir):
+        for name in files:
+            if not name.endswith(".ci"):
+                continue
+            with open(os.path.join(root, name), encoding="utf-8", errors="replace") as f:
+                for line in f:
+                    m = NODE.match(line)
+                    if m:
+                        title, label = m.group(1), m.group(2)
+                        fm = FRAME.search(label)
+                        labels.setdefault(title, label.split("\\n")[0])
+                        if fm:
+                            size = int(fm.group(1))
+                            if size >= frames.get(title, -1):
+                                frames[title] = size
+                                qualifiers[title] = fm.group(2)
+                        continue
+                    m = EDGE.match(line)
+                    if m:
+                        callees.setdefault(m.group(1), set()).add(m.group(2))
+    return frames, labels, qualifiers, callees
+
+
+def disassemble(objdump, elf):
+    out = subprocess.run([objdump, "-d", "--no-show-raw-insn", elf], check=True, capture_output=True,
+                         text=True).stdout
+    functions, current = {}, None
+    header = re.compile(r'^[0-9a-f]+ <([^>]+)>:$')
+    for line in out.splitlines():
+        m = header.match(line)
+        if m:
+            current = m.group(1)
+            functions[current] = {"frame": 0, "calls": set(), "indirect": False}
+            continue
+        if current is None or "\t" not in line:
+            continue
+        parts = line.split("\t")
+        if len(parts) < 2:
+            continue
+        mnemonic = parts[1].strip()
+        operands = parts[2].strip() if len(parts) > 2 else ""
+        f = functions[current]
+        if mnemonic in ("push", "push.w", "stmdb") and ("sp!" in operands or mnemonic.startswith("push")):
+            regs = operands[operands.find("{") + 1:operands.find("}")]
+            f["frame"] += 4 * count_registers(regs)
+        elif mnemonic in ("vpush", "vstmdb") and ("sp!" in operands or mnemonic == "vpush"):
+            regs = operands[operands.find("{") + 1:operands.find("}")]
+            f["frame"] += 8 * count_registers(regs)
+        elif mnemonic.startswith("sub") and re.match(r'^sp,\s*(sp,\s*)?#', operands):
+            f["frame"] += int(re.search(r'#(\d+)', operands).group(1))
+        elif mnemonic.startswith("str") and operands.startswith("") and "[sp, #-" in operands and "]!" in operands:
+            f["frame"] += int(re.search(r'\[sp, #-(\d+)\]!', operands).group(1))
+        m = re.search(r'<([^>+]+)>$', operands)
+        if mnemonic in ("bl", "blx") and m:
+            f["calls"].add(m.group(1))
+        elif mnemonic in ("b", "b.w", "b.n") and m and m.group(1) != current:
+            f["calls"].add(m.group(1))  # tail call (or a branch into another function)
+        elif mnemonic == "blx" and not m:
+            f["indirect"] = True
+    return functions
+
+
+def count_registers(text):
+    count = 0
+    for item in text.split(","):
+        item = item.strip()
+        r = re.match(r'^([rds])(\d+)-[rds]?(\d+)$', item)
+        if r:
+            count += int(r.group(3)) - int(r.group(2)) + 1
+        elif item:
+            count += 1
+    return count
+
+
+def init_array_functions(objdump, elf):
+    out = subprocess.run([objdump, "-s", "-j", ".init_array", elf], capture_output=True, text=True).stdout
+    words = []
+    for line in out.splitlines():
+        m = re.match(r'^ [0-9a-f]+ ((?:[0-9a-f]{8} ?)+)', line)
+        if m:
+            for w in m.group(1).split():
+                words.append(int.from_bytes(bytes.fromhex(w), "little") & ~1)
+    if not words:
+        return []
+    symbols = subprocess.run([objdump.replace("objdump", "nm"), elf], capture_output=True, text=True).stdout
+    by_address = {}
+    for line in symbols.splitlines():
+        p = line.split()
+        if len(p) == 3:
+            by_address.setdefault(int(p[0], 16) & ~1, p[2])
+    return [by_address.get(w, hex(w)) for w in words]
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--ci-dir", required=True)
+    parser.add_argument("--elf", required=True)
+    parser.add_argument("--objdump", required=True)
+    parser.add_argument("--root", required=True)
+    parser.add_argument("--also", action="append", default=[], help="other roots to report")
+    parser.add_argument("--handler", action="append", default=[],
+                        help="exception handlers that may run on top of the deepest chain")
+    parser.add_argument("--stack-size", type=int, required=True)
+    parser.add_argument("--measured")
+    parser.add_argument("--report")
+    args = parser.parse_args()
+
+    frames, labels, qualifiers, callees = read_call_graph(args.ci_dir)
+    binary = disassemble(args.objdump, args.elf)
+    constructors = init_array_functions(args.objdump, args.elf)
+    problems = []
+
+    def frame_of(name):
+        if name in frames:
+            return frames[name], "ci"
+        if name in binary:
+            return binary[name]["frame"], "elf"
+        return None, "none"
+
+    def callees_of(name):
+        if name in frames:
+            result = set(callees.get(name, set()))
+            if "__indirect_call" in result:
+                result.discard("__indirect_call")
+                result.update(constructors)
+            return result
+        if name in binary:
+            if binary[name]["indirect"]:
+                problems.append(f"{name}: indirect call in library code")
+            return binary[name]["calls"]
+        return set()
+
+    visiting = set()
+
+    @lru_cache(maxsize=None)
+    def bound(name):
+        if name in visiting:
+            problems.append(f"recursion through {name}")
+            return 0, (name,)
+        visiting.add(name)
+        own, source = frame_of(name)
+        if own is None:
+            own = 0  # a builtin expanded inline (never emitted) or a symbol absent from the image
+        if qualifiers.get(name, "static") not in ("static",):
+            if "bounded" not in qualifiers[name]:
+                problems.append(f"{name}: dynamic stack ({qualifiers[name]})")
+        best, chain = 0, ()
+        for callee in sorted(callees_of(name)):
+            if callee == name:
+                problems.append(f"recursion in {name}")
+                continue
+            b, c = bound(callee)
+            if b > best:
+                best, chain = b, c
+        visiting.discard(name)
+        return own + best, (name,) + chain
+
+    lines = []
+    total, chain = bound(args.root)
+    lines.append(f"Static worst-case stack bound from {args.root}: {total} bytes (stack region {args.stack_size} bytes)")
+    lines.append("Deepest call chain (own frame in bytes, source of the figure):")
+    for name in chain:
+        own, source = frame_of(name)
+        lines.append(f"  {own if own is not None else 0:6d}  [{source:4s}] {labels.get(name, name)}")
+    for root in args.also:
+        b, c = bound(root)
+        lines.append(f"Bound from {labels.get(root, root)}: {b} bytes ({len(c)} frames deep)")
+    # An exception taken at the deepest point stacks an extended (FPU) frame of 26 words, then runs
+    # its handler on the same (main) stack.
+    if args.handler:
+        handler_bound = max(bound(h)[0] for h in args.handler)
+        exception_frame = 104
+        lines.append(f"Plus the deepest exception handler ({handler_bound} bytes) and its FPU exception frame "
+                     f"({exception_frame} bytes): {total + handler_bound + exception_frame} bytes")
+        total += handler_bound + exception_frame
+    if constructors:
+        lines.append("Indirect calls resolved from .init_array: " + ", ".join(constructors))
+    else:
+        lines.append("Indirect calls: only the start-up constructor loop, and .init_array is empty")
+
+    measured = None
+    if args.measured:
+        with open(args.measured, encoding="utf-8", errors="replace") as f:
+            m = re.search(r'TARGET stack high-water (\d+) bytes', f.read())
+        if not m:
+            problems.append("no 'TARGET stack high-water' line in " + args.measured)
+        else:
+            measured = int(m.group(1))
+            lines.append(f"Measured high-water mark on the target (painted stack, QEMU run): {measured} bytes")
+    lines.append(f"BOUND {total} bytes")
+    if total > args.stack_size:
+        problems.append(f"the bound {total} exceeds the stack region {args.stack_size}")
+    if measured is not None and measured > total:
+        problems.append(f"the measured high-water mark {measured} exceeds the static bound {total}")
+
+    text = "\n".join(lines) + "\n"
+    if problems:
+        text += "PROBLEMS:\n" + "".join(f"  {p}\n" for p in sorted(set(problems)))
+    if args.report:
+        with open(args.report, "w", encoding="utf-8") as f:
+            f.write(text)
+    print(text, end="")
+    if problems:
+        print("FAIL")
+        return 1
+    print("OK")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,117 @@
+// The flight image's embedded inputs (host build): the generated mission source rebuilds the deck's
+// case exactly, and the host flight demo runs to its end.
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+#include <string>
+
+#include "tolip/trajectory/trajectory.hpp"
+#include "tolip/vehicle/prepared_case.hpp"
+#include "tolip_ground/deck.hpp"
+
+namespace tolip::flight {
+Status build_embedded_mission(Mission* mission);  // generated
+}
+
+namespace tolip {
+namespace {
+
+std::uint64_t bits(double value) { return std::bit_cast<std::uint64_t>(value); }
+
+template <std::size_t N>
+void expect_same(const double (&a)[N], const double (&b)[N], const char* what) {
+  for (std::size_t i = 0; i < N; ++i) EXPECT_EQ(bits(a[i]), bits(b[i])) << what << "[" << i << "]";
+}
+template <std::size_t N>
+void expect_same(const int (&a)[N], const int (&b)[N], const char* what) {
+  for (std::size_t i = 0; i < N; ++i) EXPECT_EQ(a[i], b[i]) << what << "[" << i << "]";
+}
+
+TEST(EmbeddedMission, RebuildsTheDeckCaseFieldByField) {
+  auto deck = std::make_unique<Mission>();
+  ground::DeckError error;
+  ASSERT_TRUE(ground::load_toml_deck(TOLIP_FLIGHT_DECK, deck.get(), &error)) << error.to_string();
+  auto embedded = std::make_unique<Mission>();
+  ASSERT_EQ(flight::build_embedded_mission(embedded.get()), Status::kOk);
+
+  EXPECT_STREQ(embedded->title, deck->title);
+  EXPECT_STREQ(embedded->case_heading, deck->case_heading);
+  EXPECT_STREQ(embedded->date, deck->date);
+  expect_same(embedded->options.ip, deck->options.ip, "ip");
+  EXPECT_EQ(embedded->constraints.count, deck->constraints.count);
+  expect_same(embedded->constraints.codes, deck->constraints.codes, "constraint codes");
+  expect_same(embedded->constraints.desired, deck->constraints.desired, "desired");
+  expect_same(embedded->constraints.deadband_optimization, deck->constraints.deadband_optimization, "deadband");
+  expect_same(embedded->constraints.deadband_linearization, deck->constraints.deadband_linearization, "deadband");
+  EXPECT_EQ(embedded->adjustable.count, deck->adjustable.count);
+  expect_same(embedded->adjustable.codes, deck->adjustable.codes, "adjustable codes");
+  expect_same(embedded->adjustable.weights, deck->adjustable.weights, "adjustable weights");
+  EXPECT_EQ(embedded->linearization.segment_count, deck->linearization.segment_count);
+  expect_same(embedded->linearization.coded_start_times, deck->linearization.coded_start_times, "TLIN");
+  expect_same(embedded->linearization.segment_weights, deck->linearization.segment_weights, "ETALIN");
+  EXPECT_EQ(bits(embedded->convergence.initial_payoff_improvement), bits(deck->convergence.initial_payoff_improvement));
+  EXPECT_EQ(bits(embedded->convergence.stop_improvement), bits(deck->convergence.stop_improvement));
+  EXPECT_EQ(embedded->convergence.max_forward_trajectories, deck->convergence.max_forward_trajectories);
+  EXPECT_EQ(embedded->convergence.max_linearization_iterations, deck->convergence.max_linearization_iterations);
+  expect_same(embedded->output.final_trajectory, deck->output.final_trajectory, "output");
+  EXPECT_EQ(bits(embedded->misc.stage4_theta_rad), bits(deck->misc.stage4_theta_rad));
+  EXPECT_EQ(bits(embedded->misc.nose_radius_ft), bits(deck->misc.nose_radius_ft));
+  EXPECT_EQ(bits(embedded->control.max_pitch_rate_rad_s), bits(deck->control.max_pitch_rate_rad_s));
+  EXPECT_EQ(bits(embedded->launch.geocentric_latitude_rad), bits(deck->launch.geocentric_latitude_rad));
+  EXPECT_EQ(bits(embedded->vehicle.payload_lb), bits(deck->vehicle.payload_lb));
+  ASSERT_EQ(embedded->pitch_program_rad.size(), deck->pitch_program_rad.size());
+  for (int i = 0; i < deck->pitch_program_rad.size(); ++i) {
+    EXPECT_EQ(bits(embedded->pitch_program_rad.y(i)), bits(deck->pitch_program_rad.y(i))) << i;
+  }
+}
+
+TEST(EmbeddedMission, FliesEveryTrajectoryPointBitForBitLikeTheDeck) {
+  auto deck = std::make_unique<Mission>();
+  ground::DeckError error;
+  ASSERT_TRUE(ground::load_toml_deck(TOLIP_FLIGHT_DECK, deck.get(), &error)) << error.to_string();
+  auto embedded = std::make_unique<Mission>();
+  ASSERT_EQ(flight::build_embedded_mission(embedded.get()), Status::kOk);
+  auto prepared_deck = std::make_unique<PreparedCase>();
+  auto prepared_embedded = std::make_unique<PreparedCase>();
+  ASSERT_EQ(prepare_case(*deck, prepared_deck.get()), Status::kOk);
+  ASSERT_EQ(prepare_case(*embedded, prepared_embedded.get()), Status::kOk);
+  auto a = std::make_unique<Trajectory>();
+  auto b = std::make_unique<Trajectory>();
+  ASSERT_EQ(fly_trajectory(*deck, *prepared_deck, a.get()), Status::kOk);
+  ASSERT_EQ(fly_trajectory(*embedded, *prepared_embedded, b.get()), Status::kOk);
+  ASSERT_EQ(a->point_count, b->point_count);
+  ASSERT_GT(a->point_count, 190);
+  for (int i = 0; i < a->point_count; ++i) {
+    EXPECT_EQ(bits(a->points[i].time_s), bits(b->points[i].time_s)) << i;
+    EXPECT_EQ(bits(a->points[i].theta_rad), bits(b->points[i].theta_rad)) << i;
+    EXPECT_EQ(bits(a->points[i].weight_lb), bits(b->points[i].weight_lb)) << i;
+    for (int k = 0; k < 6; ++k) ASSERT_EQ(bits(a->points[i].state[k]), bits(b->points[i].state[k])) << i << " " << k;
+  }
+}
+
+TEST(FlightDemo, HostProgramRunsTheWholeTimelineAndEndsOk) {
+  FILE* pipe = ::popen(TOLIP_FLIGHT_DEMO, "r");
+  ASSERT_NE(pipe, nullptr);
+  std::string out;
+  char buffer[65536];
+  std::size_t got = 0;
+  while ((got = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) out.append(buffer, got);
+  const int status = ::pclose(pipe);
+  EXPECT_EQ(status, 0);
+  EXPECT_NE(out.find("EXEC load embedded image: kOk"), std::string::npos) << out.substr(0, 2000);
+  EXPECT_NE(out.find("EXEC reject upload with one flipped bit: kTableImageCrcMismatch"), std::string::npos);
+  EXPECT_NE(out.find("EXEC reject truncated upload: kTableImageTruncated"), std::string::npos);
+  EXPECT_NE(out.find("unchanged, commits 1"), std::string::npos);
+  EXPECT_NE(out.find("EXEC event stage 4"), std::string::npos);
+  EXPECT_NE(out.find("failures 0"), std::string::npos);
+  EXPECT_NE(out.find("TRAJ fly_trajectory: kOk"), std::string::npos);
+  EXPECT_NE(out.find("EXEC END OK\n"), std::string::npos);
+  EXPECT_EQ(out.find("TARGET "), std::string::npos);  // target-only lines
+}
+
+}  // namespace
+}  // namespace tolip

@@ -1,0 +1,60 @@
+// Ground side of the guidance table image (docs/table-format.md): building the table contents from
+// a case, the C header for images linked into flight software, and the engineering-unit listing of
+// `tolip inspect`.
+//
+// Interim source of the segments (until the pitch-program linearization lands): the data block 40
+// pitch table of the deck. Every table interval that starts in a powered stage 1-3 or in one of
+// the coasts 6-8 after them becomes one segment (stage, start in stage time, theta at the start,
+// rate of the interval); a hold segment (rate 0) is appended at the last node when that node still
+// lies in stages 1-3 / coasts 6-8, and one is prepended at the end of the lift-off when the table
+// starts after it. Intervals that end by the end of the lift-off are dropped (the executor holds
+// 90 deg there). docs/table-format.md, "Interim contents", gives every other source.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "tolip/mission/mission.hpp"
+#include "tolip/table/table_image.hpp"
+#include "tolip/vehicle/prepared_case.hpp"
+#include "tolip_ground/deck_extras.hpp"
+
+namespace tolip::ground {
+
+// Maximum deflection when the deck gives no data block 45 word 11: 10 deg.
+inline constexpr double kDefaultMaxDeflectionRad = 10.0 * kDegToRad;
+// Section the C header places the image in (the flight image's linker script maps it).
+inline constexpr const char* kTableLinkerSection = ".tolip_table";
+inline constexpr const char* kDefaultTableSymbol = "tolip_pitch_table";
+
+struct TableBuildOptions {
+  std::string mission_id;          // empty: default_mission_id()
+  std::int64_t created_unix_s = 0;  // creation stamp
+};
+
+// The default mission identifier: the case title (data block 1) with runs of blanks collapsed,
+// cut to 32 characters, non-printable characters replaced by '?'; "TOLIP CASE" when empty.
+std::string default_mission_id(const Mission& mission);
+
+// Builds the table from a validated Mission, its DeckExtras and PreparedCase (interim source, see
+// above). Returns false and sets *error (a sentence naming the data block) on any fault; the
+// table then fails validate_guidance_table() or the case cannot be represented.
+bool build_guidance_table(const Mission& mission, const DeckExtras& extras, const PreparedCase& prepared,
+                          const TableBuildOptions& options, GuidanceTable* table, std::string* error);
+
+// The C header holding `image` as a const array named `symbol`, placed in kTableLinkerSection.
+// `origin` is a comment line naming the source (deck path).
+std::string table_image_c_header(const std::uint8_t* image, std::size_t size, const std::string& symbol,
+                                 const std::string& origin);
+
+// Engineering-unit listing of a valid image (degrees, deg/s, s, UTC stamp), as `tolip inspect`
+// prints it.
+void write_table_listing(std::ostream& out, const GuidanceTable& table, std::uint32_t crc);
+
+// Reads a whole file into bytes. Returns false and sets *error when it cannot.
+bool read_binary_file(const std::string& path, std::vector<std::uint8_t>* bytes, std::string* error);
+
+}  // namespace tolip::ground

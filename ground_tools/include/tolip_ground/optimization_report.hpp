@@ -1,0 +1,96 @@
+// Reports of an optimization (`tolip optimize`): the manual-style listing (Sec. 22 "OUTPUT FORMAT",
+// "Output at Start of Each Iteration", then the final trajectory exactly as `simulate` lists it and
+// a summary) and the JSON document (the `simulate --json` schema plus the optimizer's results).
+// docs/cli.md describes both. Non-finite values are never printed as "nan": JSON gets null, the
+// listing "-".
+#pragma once
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "tolip/core/status.hpp"
+#include "tolip/mission/mission.hpp"
+#include "tolip/optimizer/steepest_descent.hpp"
+#include "tolip_ground/report.hpp"
+
+namespace tolip::ground {
+
+// What `optimize` computed.
+struct OptimizationReport {
+  // The final trajectory: mission = the optimized case (OptimizerWorkspace::mission: optimized
+  // payload, spun attitudes, coasts), trajectory = OptimizerWorkspace::nominal. Its status is that
+  // of the trajectory and orbit elements alone (kOk when both exist), so the listing reports a
+  // trajectory failure but not a failure to converge.
+  SimulationReport final_trajectory;
+  const Mission* initial_mission = nullptr;   // the deck as loaded (initial parameter values)
+  const OptimizerResult* result = nullptr;    // required
+  // The run's status: the optimizer's (kOk when converged, kOptimizerDidNotConverge, or the core
+  // failure that stopped it), or, when that is kOk, the final trajectory's or orbit's failure.
+  Status status = Status::kNotPrepared;
+};
+
+// One constraint of data blocks 8/19/29 after the payoff, in the units of data block 19 (ft, rad,
+// ft/s, n.mi., ft^2/s^2, Btu/ft^2, lbf/ft^2).
+struct ConstraintSummary {
+  int code = 0;
+  std::string name;        // snake_case quantity: "altitude", "inertial_flight_path_angle", ...
+  int stage = 0;           // X of a stage-point code 10 X + 5..9; 0 for a terminal constraint
+  std::string unit;        // data block 19 unit: "ft", "rad", "ft/s", "nmi", ...
+  bool angle = false;      // unit "rad" (the listing adds degrees)
+  double desired = 0.0;
+  double achieved = 0.0;   // on the final trajectory; NaN when it could not be evaluated
+  double error = 0.0;      // achieved - desired (angles 12, 13, 101 wrapped into [-pi, pi))
+  double tolerance = 0.0;  // data block 29 optimization deadband
+  double payoff_partial = 0.0;  // d payoff / d constraint (eq. 9-22), payoff unit per `unit`
+  // An upper limit, not an equality: total heating (14, Sec. 13) and the dynamic pressure X9
+  // under IP(13) = 1. Only an excess (error > 0) counts.
+  bool inequality = false;
+  bool met = false;        // |error| <= tolerance (inequality: error <= tolerance)
+};
+
+// One adjustable parameter of data block 6: degrees for attitudes and the launch azimuth,
+// seconds for coast durations and for the launch time (code 7: seconds after 0h UT of the deck's
+// launch day, data block 20 word 2).
+struct AdjustableSummary {
+  int code = 0;
+  std::string name;            // "stage4_theta", "coast_after_stage_3", ...
+  std::string unit;            // "deg" or "s"
+  double initial_value = 0.0;  // from the deck
+  double value = 0.0;          // final (optimized)
+};
+
+// The payoff (data block 8 entry 1) on the final trajectory: the payload (lb) itself for code 0,
+// else the velocity or altitude at the final point.
+struct PayoffSummary {
+  int code = 0;            // data block 8 code of the payoff: 0, 1, 5 or 7
+  const char* kind = "";   // payoff_kind_name(IP(1))
+  const char* unit = "";   // payoff_unit(IP(1))
+  double value = 0.0;      // achieved; NaN when it could not be evaluated
+  double corrected = 0.0;  // corrected to zero constraint error (eq. 9-21); NaN unless the optimizer finished
+};
+
+// "payload", "velocity" or "altitude" from IP(1) (0, 1, 2); "unknown" otherwise.
+const char* payoff_kind_name(int ip1);
+// "lb", "ft/s", "ft" for IP(1) = 0, 1, 2.
+const char* payoff_unit(int ip1);
+// "initial_nominal", "guidance", "optimization", "final_guidance".
+const char* run_kind_name(RunKind kind);
+
+// The constraints after the payoff: the optimizer's list when it finished (data block 8 entries
+// 2 .. IB3(1), then the heating constraint 14 if it became active), with its achieved values and
+// partials; otherwise data block 8's list evaluated on the final trajectory (partials NaN).
+std::vector<ConstraintSummary> constraint_summaries(const OptimizationReport& report);
+std::vector<AdjustableSummary> adjustable_summaries(const OptimizationReport& report);
+PayoffSummary payoff_summary(const OptimizationReport& report);
+
+// Listing: iteration history pages, the final trajectory pages of write_trajectory_listing (page
+// numbers continue), then the optimization summary.
+void write_optimization_listing(std::ostream& out, const OptimizationReport& report);
+
+// The JSON document of `tolip optimize --json` (schema in docs/cli.md).
+nlohmann::ordered_json optimization_json(const OptimizationReport& report);
+
+}  // namespace tolip::ground

@@ -1,0 +1,148 @@
+// The JSON document of `tolip optimize --json`: the `simulate --json` document of the final
+// trajectory, with the optimizer's status and results inserted before `trajectory` (schema:
+// docs/cli.md).
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "tolip/core/constants.hpp"
+#include "tolip_ground/optimization_report.hpp"
+
+namespace tolip::ground {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// A number, or null when it is not finite (JSON has no NaN).
+json number(double value) { return std::isfinite(value) ? json(value) : json(nullptr); }
+
+json payoff_json(const PayoffSummary& payoff) {
+  return json{
+      {"kind", payoff.kind},
+      {"code", payoff.code},
+      {"unit", payoff.unit},
+      {"value", number(payoff.value)},
+      {"corrected_value", number(payoff.corrected)},
+  };
+}
+
+json constraints_json(const std::vector<ConstraintSummary>& constraints) {
+  json array = json::array();
+  for (const ConstraintSummary& c : constraints) {
+    array.push_back(json{
+        {"code", c.code},
+        {"name", c.name},
+        {"stage", c.stage > 0 ? json(c.stage) : json(nullptr)},
+        {"unit", c.unit},
+        {"desired", number(c.desired)},
+        {"achieved", number(c.achieved)},
+        {"error", number(c.error)},
+        {"tolerance", number(c.tolerance)},
+        {"inequality", c.inequality},
+        {"met", c.met},
+    });
+  }
+  return array;
+}
+
+json adjustable_json(const std::vector<AdjustableSummary>& adjustable) {
+  json array = json::array();
+  for (const AdjustableSummary& a : adjustable) {
+    array.push_back(json{
+        {"code", a.code},
+        {"name", a.name},
+        {"value", number(a.value)},
+        {"initial_value", number(a.initial_value)},
+        {"unit", a.unit},
+    });
+  }
+  return array;
+}
+
+json iterations_json(const OptimizationReport& report, int rows) {
+  const OptimizerResult& result = *report.result;
+  json array = json::array();
+  const int count = std::clamp(result.iteration_count, 0, kMaxOptimizerIterations);
+  for (int k = 0; k < count; ++k) {
+    const IterationRecord& r = result.iterations[k];
+    json corrections = json::array();
+    json partials = json::array();
+    for (int i = 1; i <= rows && i < kMaxConstraints; ++i) {
+      corrections.push_back(number(r.constraint_corrections[i]));
+      partials.push_back(number(r.payoff_partials[i]));
+    }
+    array.push_back(json{
+        {"forward_run", r.forward_run},
+        {"kind", run_kind_name(r.kind)},
+        {"successful", r.successful},
+        {"attempted_payoff_improvement", number(r.attempted_payoff_improvement)},
+        {"payoff", number(r.payoff)},
+        {"corrected_payoff", number(r.corrected_payoff)},
+        {"payload_lb", number(r.payload_lb)},
+        {"payload_increment_lb", number(r.payload_increment_lb)},
+        {"constraint_corrections", std::move(corrections)},
+        {"payoff_partials", std::move(partials)},
+    });
+  }
+  return array;
+}
+
+json theta_history_json(const Trajectory& trajectory) {
+  json array = json::array();
+  const int count = stored_point_count(trajectory);
+  for (int k = 0; k < count; ++k) {
+    const TrajectoryPoint& p = trajectory.points[k];
+    array.push_back(json::array({number(p.time_s), number(p.theta_rad * kRadToDeg)}));
+  }
+  return array;
+}
+
+}  // namespace
+
+json optimization_json(const OptimizationReport& report) {
+  const Mission& mission = *report.final_trajectory.mission;
+  const OptimizerResult& result = *report.result;
+  const std::vector<ConstraintSummary> constraints = constraint_summaries(report);
+  const std::vector<AdjustableSummary> adjustable = adjustable_summaries(report);
+
+  json partials = json::array();
+  for (const ConstraintSummary& c : constraints) partials.push_back(number(c.payoff_partial));
+
+  json additions = json::object();
+  additions["converged"] = result.converged;
+  additions["forward_runs"] = result.forward_runs;
+  additions["backward_runs"] = result.backward_runs;
+  additions["payoff"] = payoff_json(payoff_summary(report));
+  additions["payload_lb"] = number(mission.vehicle.payload_lb);
+  additions["initial_payload_lb"] =
+      number(report.initial_mission != nullptr ? report.initial_mission->vehicle.payload_lb : kNaN);
+  additions["constraints"] = constraints_json(constraints);
+  additions["payoff_partials"] = std::move(partials);
+  additions["adjustable"] = adjustable_json(adjustable);
+  additions["theta_history"] = theta_history_json(*report.final_trajectory.trajectory);
+  additions["iterations"] = iterations_json(report, static_cast<int>(constraints.size()));
+
+  // The simulate document of the final trajectory, with the run's status and the additions placed
+  // before the (long) point array.
+  const json base = trajectory_json(report.final_trajectory);
+  json document = json::object();
+  for (auto it = base.begin(); it != base.end(); ++it) {
+    if (it.key() == "trajectory") {
+      for (auto add = additions.begin(); add != additions.end(); ++add) document[add.key()] = add.value();
+    }
+    if (it.key() == "status") {
+      document["status"] = status_name(report.status);
+    } else if (it.key() == "status_message") {
+      document["status_message"] = status_message(report.status);
+    } else {
+      document[it.key()] = it.value();
+    }
+  }
+  return document;
+}
+
+}  // namespace tolip::ground

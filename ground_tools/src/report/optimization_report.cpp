@@ -1,0 +1,549 @@
+// The optimization report shared by the listing and the JSON document of `tolip optimize`: names
+// and units of the constraints (data blocks 8, 19, 29) and adjustable parameters (data block 6),
+// and the manual-style listing (Sec. 22 "OUTPUT FORMAT", "Output at Start of Each Iteration").
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "listing_pager.hpp"
+#include "number_format.hpp"
+#include "tolip/atmosphere/atmosphere.hpp"
+#include "tolip/core/constants.hpp"
+#include "tolip/earth/earth_model.hpp"
+#include "tolip/optimizer/constraint_parameters.hpp"
+#include "tolip_ground/optimization_report.hpp"
+
+namespace tolip::ground {
+namespace {
+
+using report_detail::fixed_cell;
+using report_detail::Pager;
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+struct QuantityText {
+  const char* name;     // JSON (snake_case)
+  const char* heading;  // listing
+  const char* unit;     // data block 19 unit (JSON)
+  const char* unit_heading;  // listing
+  int decimals;         // listing decimals in data block 19 units
+};
+
+QuantityText quantity_text(ConstraintQuantity kind) {
+  switch (kind) {
+    case ConstraintQuantity::kPayload: return {"payload", "PAYLOAD", "lb", "LB", 3};
+    case ConstraintQuantity::kInertialVelocity:
+      return {"inertial_velocity", "INERTIAL VELOCITY", "ft/s", "FT/SEC", 4};
+    case ConstraintQuantity::kInertialFlightPathAngle:
+      return {"inertial_flight_path_angle", "INERTIAL PATH ANGLE", "rad", "RAD", 8};
+    case ConstraintQuantity::kVelocityOverCircular:
+      return {"velocity_minus_circular", "VI MINUS CIRCULAR VEL", "ft/s", "FT/SEC", 4};
+    case ConstraintQuantity::kRadius: return {"radius", "RADIUS", "ft", "FT", 3};
+    case ConstraintQuantity::kAerodynamicVelocity: return {"velocity", "VELOCITY", "ft/s", "FT/SEC", 4};
+    case ConstraintQuantity::kAerodynamicFlightPathAngle:
+      return {"flight_path_angle", "PATH ANGLE", "rad", "RAD", 8};
+    case ConstraintQuantity::kAltitude: return {"altitude", "ALTITUDE", "ft", "FT", 3};
+    case ConstraintQuantity::kDownrange: return {"downrange", "DOWNRANGE", "nmi", "N.MI.", 4};
+    case ConstraintQuantity::kTwiceEnergy: return {"twice_energy", "2E", "ft2/s2", "FT2/SEC2", 1};
+    case ConstraintQuantity::kInclination: return {"inclination", "INCLINATION", "rad", "RAD", 8};
+    case ConstraintQuantity::kPerigeeRadius: return {"perigee_radius", "PERIGEE RADIUS", "ft", "FT", 3};
+    case ConstraintQuantity::kNodeLongitude:
+      return {"node_longitude", "NODE LONGITUDE", "rad", "RAD", 8};
+    case ConstraintQuantity::kArgumentOfPerigee:
+      return {"argument_of_perigee", "ARGUMENT OF PERIGEE", "rad", "RAD", 8};
+    case ConstraintQuantity::kTotalHeating:
+      return {"total_heating", "TOTAL HEATING", "btu/ft2", "BTU/FT2", 3};
+    case ConstraintQuantity::kDynamicPressure:
+      return {"dynamic_pressure", "DYNAMIC PRESSURE", "lbf/ft2", "LB/FT2", 4};
+    case ConstraintQuantity::kHyperbolicExcessVelocity:
+      return {"hyperbolic_excess_velocity", "HYPERBOLIC EXCESS VEL", "ft/s", "FT/SEC", 4};
+    case ConstraintQuantity::kAsymptoteRightAscension:
+      return {"asymptote_right_ascension", "ASYMPTOTE RA", "rad", "RAD", 8};
+    case ConstraintQuantity::kAsymptoteDeclination:
+      return {"asymptote_declination", "ASYMPTOTE DECL", "rad", "RAD", 8};
+  }
+  return {"unknown", "UNKNOWN", "", "", 6};
+}
+
+QuantityText code_text(int code, ConstraintCode* decoded) {
+  ConstraintCode c;
+  if (!ok(decode_constraint_code(code, &c))) {
+    if (decoded != nullptr) *decoded = c;
+    return {"unknown", "UNKNOWN", "", "", 6};
+  }
+  if (decoded != nullptr) *decoded = c;
+  return quantity_text(c.kind);
+}
+
+// Value of constraint `code` on a completed trajectory (as the optimizer evaluates it), or NaN.
+double evaluate_on_trajectory(const Mission& mission, const Trajectory& trajectory, int code) {
+  ConstraintCode c;
+  if (!ok(decode_constraint_code(code, &c))) return kNaN;
+  const int count = stored_point_count(trajectory);
+  if (!ok(trajectory.status) || count == 0) return kNaN;
+  int index = count - 1;
+  if (c.is_stage_point) {
+    index = -1;
+    for (int k = 0; k < std::clamp(trajectory.stage_count, 0, kMaxStages); ++k) {
+      if (trajectory.stages[k].code == c.stage_code) index = trajectory.stages[k].last_point;
+    }
+    if (index < 0 || index >= count) return kNaN;
+  }
+  const TrajectoryPoint& p = trajectory.points[index];
+  ConstraintPoint point;
+  point.state = p.state;
+  point.time_from_launch_s = p.time_s;
+  point.weight_lb = p.weight_lb;
+  point.total_heating_btu_ft2 = trajectory.heat_integral_btu_ft2;
+  if (p.altitude_ft <= mission.constants.haero_ft) {
+    AtmosphereSample air;
+    const double radius = oblate_radius_ft(mission.constants, p.state[kStateLambda]);
+    if (ok(evaluate_atmosphere(mission.atmosphere, mission.constants, p.altitude_ft, radius, &air))) {
+      point.density_slug_ft3 = air.density_slug_ft3;
+    }
+  }
+  double value = kNaN;
+  if (!ok(constraint_value(mission.constants, mission.launch, c, point, &value))) return kNaN;
+  return value;
+}
+
+// True when optimize_trajectory reached its summary (it fills the result only then).
+// (The heating constraint may have joined its list, so it can be one longer than data block 8's.)
+bool result_complete(const OptimizationReport& report) {
+  const OptimizerResult& result = *report.result;
+  return result.constraint_count > 0 &&
+         result.constraint_count >= report.final_trajectory.mission->constraints.count;
+}
+
+int constraint_count(const OptimizationReport& report) {
+  return std::clamp(report.final_trajectory.mission->constraints.count, 0, kMaxConstraints);
+}
+
+// `launch_day` is the space-age date (days) of 0h UT of the deck's launch day (code 7).
+double adjustable_value(const Mission& mission, int code, double launch_day) {
+  const MiscellaneousData& misc = mission.misc;
+  const auto coast = [&mission](int stage_code) {
+    return mission.vehicle.stages[stage_index(stage_code)].duration_s;
+  };
+  switch (code) {
+    case 1: return misc.stage4_theta_rad * kRadToDeg;
+    case 2: return misc.stage4_chi_rad * kRadToDeg;
+    case 3: return coast(8);
+    case 4: return coast(7);
+    case 5: return coast(6);
+    case 6: return mission.launch.azimuth_rad * kRadToDeg;
+    case 7: return (mission.launch.launch_space_age_date_days - launch_day) * 86400.0;
+    case 8: return misc.stage5_theta_rad * kRadToDeg;
+    case 9: return misc.stage5_chi_rad * kRadToDeg;
+    case 10: return coast(9);
+    case 11: return coast(10);
+    default: return kNaN;
+  }
+}
+
+struct ParameterText {
+  const char* name;
+  const char* heading;
+  const char* unit;
+};
+
+ParameterText parameter_text(int code) {
+  switch (code) {
+    case 1: return {"stage4_theta", "STAGE 4 THETA (SPUN)", "deg"};
+    case 2: return {"stage4_chi", "STAGE 4 CHI (SPUN)", "deg"};
+    case 3: return {"coast_after_stage_3", "COAST AFTER STAGE 3", "s"};
+    case 4: return {"coast_after_stage_2", "COAST AFTER STAGE 2", "s"};
+    case 5: return {"coast_after_stage_1", "COAST AFTER STAGE 1", "s"};
+    case 6: return {"launch_azimuth", "LAUNCH AZIMUTH", "deg"};
+    case 7: return {"launch_time", "LAUNCH TIME (UT)", "s"};
+    case 8: return {"stage5_theta", "STAGE 5 THETA (SPUN)", "deg"};
+    case 9: return {"stage5_chi", "STAGE 5 CHI (SPUN)", "deg"};
+    case 10: return {"coast_after_stage_4", "COAST AFTER STAGE 4", "s"};
+    case 11: return {"coast_after_stage_5", "COAST AFTER STAGE 5", "s"};
+    default: return {"unknown", "UNKNOWN", ""};
+  }
+}
+
+// ---- listing helpers -------------------------------------------------------------------------
+
+std::string right(const std::string& text, int width) {
+  if (static_cast<int>(text.size()) >= width) return text;
+  return std::string(static_cast<std::size_t>(width) - text.size(), ' ') + text;
+}
+
+std::string left(const std::string& text, int width) {
+  std::string padded = text;
+  if (static_cast<int>(padded.size()) < width) padded.resize(static_cast<std::size_t>(width), ' ');
+  return padded;
+}
+
+std::string number_cell(double value, int decimals, int width) { return fixed_cell(value, decimals, width); }
+
+// Scientific notation in a right-aligned cell ("-" when not finite).
+std::string e_cell(double value, int width) {
+  if (!std::isfinite(value)) return right("-", width);
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.6E", value);
+  return right(buffer, width);
+}
+
+std::string upper(const char* text) {
+  std::string out(text);
+  for (char& c : out) {
+    if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
+  }
+  return out;
+}
+
+const char* run_kind_heading(RunKind kind) {
+  switch (kind) {
+    case RunKind::kInitialNominal: return "INITIAL NOMINAL";
+    case RunKind::kGuidance: return "GUIDANCE";
+    case RunKind::kOptimization: return "OPTIMIZATION";
+    case RunKind::kFinalGuidance: return "FINAL GUIDANCE";
+  }
+  return "UNKNOWN";
+}
+
+std::string constraint_label(const ConstraintCode& decoded, const QuantityText& text) {
+  std::string label = text.heading;
+  if (decoded.is_stage_point) label += " END STG " + std::to_string(decoded.stage_code);
+  return label;
+}
+
+// Payoff partial unit: payoff unit per constraint unit.
+std::string partial_unit(const std::string& payoff, const std::string& constraint) {
+  return payoff + "/" + constraint;
+}
+
+void write_problem(Pager& pager, const OptimizationReport& report,
+                   const std::vector<ConstraintSummary>& constraints,
+                   const std::vector<AdjustableSummary>& adjustable) {
+  const Mission& mission = *report.final_trajectory.mission;
+  const int ip1 = mission.options.payoff();
+  pager.reserve(6 + static_cast<int>(constraints.size()));
+  pager.emit(" OPTIMIZATION PROBLEM");
+  pager.emit("   PAYOFF: " + upper(payoff_kind_name(ip1)) + " (IP(1) = " + std::to_string(ip1) +
+             ", DATA BLOCK 8 CODE " + std::to_string(mission.constraints.codes[0]) + ")");
+  pager.emit("   CONSTRAINTS (DATA BLOCKS 8, 19, 29; UNITS OF DATA BLOCK 19)");
+  pager.emit("    NO.  CODE  PARAMETER                          DESIRED        DEADBAND  UNIT"
+             "              DESIRED      DEADBAND  UNIT");
+  for (std::size_t i = 0; i < constraints.size(); ++i) {
+    const ConstraintSummary& c = constraints[i];
+    ConstraintCode decoded;
+    const QuantityText text = code_text(c.code, &decoded);
+    std::string line = right(std::to_string(i + 1), 7) + right(std::to_string(c.code), 6) + "  " +
+                       left(constraint_label(decoded, text) + (c.inequality ? " (MAX)" : ""), 27);
+    line += number_cell(c.desired, text.decimals, 16) + number_cell(c.tolerance, text.decimals, 16);
+    line += "  " + left(text.unit_heading, 9);
+    if (c.angle) {
+      line += number_cell(c.desired * kRadToDeg, 6, 16) + number_cell(c.tolerance * kRadToDeg, 6, 14) + "  DEG";
+    }
+    pager.emit(line);
+  }
+  pager.emit("");
+  if (adjustable.empty()) return;
+  pager.reserve(3 + static_cast<int>(adjustable.size()));
+  pager.emit("   ADJUSTABLE PARAMETERS (DATA BLOCKS 6, 27)");
+  pager.emit("    NO.  CODE  PARAMETER                    INITIAL VALUE  UNIT        WEIGHT");
+  for (std::size_t p = 0; p < adjustable.size(); ++p) {
+    const AdjustableSummary& a = adjustable[p];
+    const double weight = p < static_cast<std::size_t>(kMaxAdjustableParameters) ? mission.adjustable.weights[p] : kNaN;
+    pager.emit(right(std::to_string(p + 1), 7) + right(std::to_string(a.code), 6) + "  " +
+               left(parameter_text(a.code).heading, 25) + number_cell(a.initial_value, 6, 18) + "  " +
+               left(upper(a.unit.c_str()), 6) + e_cell(weight, 14));
+  }
+  pager.emit("");
+}
+
+void write_iteration_table(Pager& pager, const OptimizationReport& report) {
+  const OptimizerResult& result = *report.result;
+  const int ip1 = report.final_trajectory.mission->options.payoff();
+  const std::string unit = upper(payoff_unit(ip1));
+  const auto headings = [&pager, &unit]() {
+    pager.emit(" ITERATION HISTORY (ONE LINE PER FORWARD RUN)");
+    pager.emit("    RUN  KIND              SUCCESSFUL  NOMINAL PAYOFF INCR          PAYOFF  CORRECTED PAYOFF"
+               "         PAYLOAD  PAYLOAD INCREMENT");
+    pager.emit("                                       " + right(unit, 19) + right(unit, 16) + right(unit, 18) +
+               right("LB", 16) + right("LB", 19));
+  };
+  pager.reserve(5);
+  headings();
+  const int count = std::clamp(result.iteration_count, 0, kMaxOptimizerIterations);
+  for (int k = 0; k < count; ++k) {
+    const IterationRecord& r = result.iterations[k];
+    pager.reserve(1);
+    std::string line = right(std::to_string(r.forward_run), 7) + "  " + left(run_kind_heading(r.kind), 18) +
+                       left(r.successful ? "YES" : "NO", 10);
+    line += number_cell(r.attempted_payoff_improvement, 4, 21) + number_cell(r.payoff, 4, 16) +
+            number_cell(r.corrected_payoff, 4, 18) + number_cell(r.payload_lb, 4, 16) +
+            number_cell(r.payload_increment_lb, 4, 19);
+    pager.emit(line);
+  }
+  pager.emit("");
+}
+
+void write_iteration_details(Pager& pager, const OptimizationReport& report,
+                             const std::vector<ConstraintSummary>& constraints) {
+  const OptimizerResult& result = *report.result;
+  const int ip1 = report.final_trajectory.mission->options.payoff();
+  const std::string payoff = upper(payoff_unit(ip1));
+  const int count = std::clamp(result.iteration_count, 0, kMaxOptimizerIterations);
+  const int rows = static_cast<int>(constraints.size());
+  for (int k = 0; k < count; ++k) {
+    const IterationRecord& r = result.iterations[k];
+    pager.reserve(9 + rows);
+    pager.emit(" FORWARD RUN " + std::to_string(r.forward_run) + "   " + run_kind_heading(r.kind) + "   " +
+               (r.successful ? "SUCCESSFUL" : "NOT SUCCESSFUL"));
+    pager.emit("   NOMINAL PAYOFF INCREMENT          PAYOFF  CORRECTED PAYOFF         PAYLOAD  PAYLOAD INCREMENT");
+    pager.emit("   " + right(payoff, 24) + right(payoff, 16) + right(payoff, 18) + right("LB", 16) + right("LB", 19));
+    pager.emit("   " + number_cell(r.attempted_payoff_improvement, 4, 24) + number_cell(r.payoff, 4, 16) +
+               number_cell(r.corrected_payoff, 4, 18) + number_cell(r.payload_lb, 4, 16) +
+               number_cell(r.payload_increment_lb, 4, 19));
+    if (rows > 0) {
+      pager.emit("   CONSTRAINT CORRECTIONS (DESIRED - ACHIEVED) AND PARTIALS OF PAYOFF WITH RESPECT TO EACH CONSTRAINT"
+                 " (EQ. 9-22)");
+      pager.emit("    NO.  CODE  PARAMETER                       CORRECTION  UNIT           CORRECTION  UNIT"
+                 "     D PAYOFF/D CONSTRAINT  UNIT");
+      for (int i = 0; i < rows; ++i) {
+        const ConstraintSummary& c = constraints[static_cast<std::size_t>(i)];
+        ConstraintCode decoded;
+        const QuantityText text = code_text(c.code, &decoded);
+        const double correction = (i + 1 < kMaxConstraints) ? r.constraint_corrections[i + 1] : kNaN;
+        const double partial = (i + 1 < kMaxConstraints) ? r.payoff_partials[i + 1] : kNaN;
+        std::string line = right(std::to_string(i + 1), 7) + right(std::to_string(c.code), 6) + "  " +
+                           left(constraint_label(decoded, text) + (c.inequality ? " (MAX)" : ""), 27) +
+                           number_cell(correction, text.decimals, 16) + "  " + left(text.unit_heading, 9);
+        if (c.angle) {
+          line += number_cell(correction * kRadToDeg, 6, 16) + "  DEG  ";
+        } else {
+          line += std::string(23, ' ');
+        }
+        line += e_cell(partial, 22) + "  " + partial_unit(payoff, text.unit_heading);
+        pager.emit(line);
+      }
+    }
+    pager.emit("");
+  }
+}
+
+void write_summary(Pager& pager, const OptimizationReport& report,
+                   const std::vector<ConstraintSummary>& constraints,
+                   const std::vector<AdjustableSummary>& adjustable) {
+  const OptimizerResult& result = *report.result;
+  const Mission& mission = *report.final_trajectory.mission;
+  const int ip1 = mission.options.payoff();
+  const std::string payoff_heading = upper(payoff_unit(ip1));
+  const PayoffSummary summary = payoff_summary(report);
+  const double payoff = summary.value;
+  const double corrected = summary.corrected;
+
+  const auto labelled = [](const std::string& label, const std::string& value, const std::string& unit) {
+    std::string text = "   " + label;
+    text.resize(30, ' ');
+    text += "= " + right(value, 20);
+    if (!unit.empty()) text += " " + unit;
+    return text;
+  };
+  const auto trimmed = [](const std::string& cell) {
+    const std::size_t first = cell.find_first_not_of(' ');
+    return first == std::string::npos ? cell : cell.substr(first);
+  };
+
+  pager.reserve(12);
+  pager.emit(" OPTIMIZATION SUMMARY");
+  pager.emit(labelled("STATUS", status_name(report.status), ""));
+  pager.emit(labelled("CONVERGED", result.converged ? "YES" : "NO", ""));
+  pager.emit(labelled("FORWARD RUNS", std::to_string(result.forward_runs), ""));
+  pager.emit(labelled("BACKWARD RUNS", std::to_string(result.backward_runs), ""));
+  pager.emit(labelled("PAYOFF (" + upper(payoff_kind_name(ip1)) + ")", trimmed(number_cell(payoff, 4, 20)),
+                      payoff_heading));
+  pager.emit(labelled("CORRECTED PAYOFF", trimmed(number_cell(corrected, 4, 20)), payoff_heading));
+  pager.emit(labelled("PAYLOAD", trimmed(number_cell(mission.vehicle.payload_lb, 4, 20)), "LB"));
+  if (report.initial_mission != nullptr) {
+    pager.emit(labelled("PAYLOAD INCREMENT",
+                        trimmed(number_cell(mission.vehicle.payload_lb - report.initial_mission->vehicle.payload_lb, 4, 20)),
+                        "LB"));
+  }
+  pager.emit("");
+
+  if (!constraints.empty()) {
+    pager.reserve(4 + static_cast<int>(constraints.size()));
+    pager.emit("   CONSTRAINTS ON THE FINAL TRAJECTORY (UNITS OF DATA BLOCK 19; ANGLES ALSO IN DEG)");
+    pager.emit("    NO.  CODE  PARAMETER                          DESIRED        ACHIEVED           ERROR"
+               "       TOLERANCE  UNIT      MET");
+    for (std::size_t i = 0; i < constraints.size(); ++i) {
+      const ConstraintSummary& c = constraints[i];
+      ConstraintCode decoded;
+      const QuantityText text = code_text(c.code, &decoded);
+      std::string line = right(std::to_string(i + 1), 7) + right(std::to_string(c.code), 6) + "  " +
+                         left(constraint_label(decoded, text) + (c.inequality ? " (MAX)" : ""), 27) +
+                         number_cell(c.desired, text.decimals, 16) + number_cell(c.achieved, text.decimals, 16) +
+                         number_cell(c.error, text.decimals, 16) + number_cell(c.tolerance, text.decimals, 16) +
+                         "  " + left(text.unit_heading, 9) + (c.met ? "YES" : "NO");
+      pager.emit(line);
+      if (c.angle) {
+        pager.emit(std::string(42, ' ') + number_cell(c.desired * kRadToDeg, 6, 16) +
+                   number_cell(c.achieved * kRadToDeg, 6, 16) + number_cell(c.error * kRadToDeg, 6, 16) +
+                   number_cell(c.tolerance * kRadToDeg, 6, 16) + "  DEG");
+      }
+    }
+    pager.emit("");
+  }
+
+  if (!constraints.empty()) {
+    pager.reserve(3 + static_cast<int>(constraints.size()));
+    pager.emit("   PARTIALS OF PAYOFF WITH RESPECT TO EACH CONSTRAINT (EQ. 9-22, LAST BACKWARD RUN)");
+    pager.emit("    NO.  CODE  PARAMETER                   D PAYOFF/D CONSTRAINT  UNIT");
+    for (std::size_t i = 0; i < constraints.size(); ++i) {
+      const ConstraintSummary& c = constraints[i];
+      ConstraintCode decoded;
+      const QuantityText text = code_text(c.code, &decoded);
+      pager.emit(right(std::to_string(i + 1), 7) + right(std::to_string(c.code), 6) + "  " +
+                 left(constraint_label(decoded, text) + (c.inequality ? " (MAX)" : ""), 27) +
+                 e_cell(c.payoff_partial, 22) + "  " + partial_unit(payoff_heading, text.unit_heading));
+    }
+    pager.emit("");
+  }
+
+  if (!adjustable.empty()) {
+    pager.reserve(3 + static_cast<int>(adjustable.size()));
+    pager.emit("   ADJUSTABLE PARAMETERS (DATA BLOCK 6), FINAL VALUES");
+    pager.emit("    NO.  CODE  PARAMETER                    INITIAL VALUE       FINAL VALUE  UNIT");
+    for (std::size_t p = 0; p < adjustable.size(); ++p) {
+      const AdjustableSummary& a = adjustable[p];
+      pager.emit(right(std::to_string(p + 1), 7) + right(std::to_string(a.code), 6) + "  " +
+                 left(parameter_text(a.code).heading, 25) + number_cell(a.initial_value, 6, 18) +
+                 number_cell(a.value, 6, 18) + "  " + upper(a.unit.c_str()));
+    }
+    pager.emit("");
+  }
+  if (!ok(report.status)) {
+    pager.emit(std::string(" OPTIMIZATION ENDED: ") + status_name(report.status) + ": " +
+               status_message(report.status));
+    pager.emit("");
+  }
+}
+
+}  // namespace
+
+const char* payoff_kind_name(int ip1) {
+  switch (ip1) {
+    case 0: return "payload";
+    case 1: return "velocity";
+    case 2: return "altitude";
+    default: return "unknown";
+  }
+}
+
+const char* payoff_unit(int ip1) {
+  switch (ip1) {
+    case 0: return "lb";
+    case 1: return "ft/s";
+    case 2: return "ft";
+    default: return "";
+  }
+}
+
+const char* run_kind_name(RunKind kind) {
+  switch (kind) {
+    case RunKind::kInitialNominal: return "initial_nominal";
+    case RunKind::kGuidance: return "guidance";
+    case RunKind::kOptimization: return "optimization";
+    case RunKind::kFinalGuidance: return "final_guidance";
+  }
+  return "unknown";
+}
+
+std::vector<ConstraintSummary> constraint_summaries(const OptimizationReport& report) {
+  const Mission& mission = *report.final_trajectory.mission;
+  const OptimizerResult& result = *report.result;
+  const bool complete = result_complete(report);
+  const int count = complete ? std::clamp(result.constraint_count, 0, kMaxConstraints) : constraint_count(report);
+  std::vector<ConstraintSummary> out;
+  for (int i = 1; i < count; ++i) {
+    ConstraintSummary c;
+    c.code = complete ? result.codes[i] : mission.constraints.codes[i];
+    ConstraintCode decoded;
+    const QuantityText text = code_text(c.code, &decoded);
+    c.name = text.name;
+    c.stage = decoded.is_stage_point ? decoded.stage_code : 0;
+    c.unit = text.unit;
+    c.angle = c.unit == "rad";
+    c.inequality = decoded.kind == ConstraintQuantity::kTotalHeating ||
+                   (decoded.kind == ConstraintQuantity::kDynamicPressure && mission.options.qbar_constraint_type() == 1);
+    if (complete) {
+      c.desired = result.desired[i];
+      c.achieved = result.achieved[i];
+      c.tolerance = result.tolerance[i];
+      c.payoff_partial = result.payoff_partials[i];
+    } else {
+      c.desired = mission.constraints.desired[i];
+      c.tolerance = mission.constraints.deadband_optimization[i - 1];
+      c.achieved = evaluate_on_trajectory(mission, *report.final_trajectory.trajectory, c.code);
+      c.payoff_partial = kNaN;
+    }
+    c.error = std::isfinite(c.achieved) ? constraint_deviation(decoded, c.achieved, c.desired) : kNaN;
+    c.met = std::isfinite(c.error) && (c.inequality ? c.error <= c.tolerance : std::fabs(c.error) <= c.tolerance);
+    out.push_back(c);
+  }
+  return out;
+}
+
+PayoffSummary payoff_summary(const OptimizationReport& report) {
+  const Mission& mission = *report.final_trajectory.mission;
+  const OptimizerResult& result = *report.result;
+  const int ip1 = mission.options.payoff();
+  PayoffSummary payoff;
+  payoff.code = mission.constraints.codes[0];
+  payoff.kind = payoff_kind_name(ip1);
+  payoff.unit = payoff_unit(ip1);
+  if (result_complete(report)) {
+    payoff.value = result.payoff;
+    payoff.corrected = result.corrected_payoff;
+  } else {
+    payoff.value = payoff.code == 0
+                       ? mission.vehicle.payload_lb
+                       : evaluate_on_trajectory(mission, *report.final_trajectory.trajectory, payoff.code);
+    payoff.corrected = kNaN;
+  }
+  return payoff;
+}
+
+std::vector<AdjustableSummary> adjustable_summaries(const OptimizationReport& report) {
+  const Mission& mission = *report.final_trajectory.mission;
+  const Mission& initial = report.initial_mission != nullptr ? *report.initial_mission : mission;
+  std::vector<AdjustableSummary> out;
+  const int count = std::clamp(mission.adjustable.count, 0, kMaxAdjustableParameters);
+  for (int p = 0; p < count; ++p) {
+    AdjustableSummary a;
+    a.code = mission.adjustable.codes[p];
+    const ParameterText text = parameter_text(a.code);
+    a.name = text.name;
+    a.unit = text.unit;
+    const double launch_day = std::floor(initial.launch.launch_space_age_date_days);
+    a.initial_value = adjustable_value(initial, a.code, launch_day);
+    a.value = adjustable_value(mission, a.code, launch_day);
+    out.push_back(a);
+  }
+  return out;
+}
+
+void write_optimization_listing(std::ostream& out, const OptimizationReport& report) {
+  const std::vector<ConstraintSummary> constraints = constraint_summaries(report);
+  const std::vector<AdjustableSummary> adjustable = adjustable_summaries(report);
+  Pager pager(out, *report.final_trajectory.mission);
+  pager.new_page("OPTIMIZATION HISTORY", false);
+  write_problem(pager, report, constraints, adjustable);
+  write_iteration_table(pager, report);
+  write_iteration_details(pager, report, constraints);
+  report_detail::write_trajectory_pages(pager, report.final_trajectory);
+  pager.new_page("OPTIMIZATION SUMMARY", false);
+  write_summary(pager, report, constraints, adjustable);
+}
+
+}  // namespace tolip::ground

@@ -1,0 +1,281 @@
+// Ground side of the guidance table image: contents from a case (interim: data block 40), the C
+// header, the inspect listing (guidance_table.hpp).
+#include "tolip_ground/guidance_table.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+
+#include "tolip/core/constants.hpp"
+#include "tolip_ground/version.hpp"
+
+namespace tolip::ground {
+namespace {
+
+// The stage of the timeline that holds time `t` from launch: [start, start + duration), the later
+// stage at a boundary; nullptr past the end of the last stage.
+const StageTimeline* stage_at(const PreparedCase& prepared, double t) {
+  for (int i = prepared.stage_count - 1; i >= 0; --i) {
+    const StageTimeline& line = prepared.timeline[i];
+    if (t >= line.start_s) return (t < line.start_s + line.duration_s) ? &line : nullptr;
+  }
+  return nullptr;
+}
+
+bool in_sequence(const Mission& mission, int code) {
+  for (int i = 0; i < mission.vehicle.sequence.count; ++i) {
+    if (mission.vehicle.sequence.codes[i] == code) return true;
+  }
+  return false;
+}
+
+std::string degrees(double rad, int decimals) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, rad * kRadToDeg);
+  return buffer;
+}
+
+std::string fixed(double value, int decimals) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
+  return buffer;
+}
+
+std::string utc_stamp(std::int64_t unix_s) {
+  const std::time_t t = static_cast<std::time_t>(unix_s);
+  std::tm tm{};
+  if (gmtime_r(&t, &tm) == nullptr) return "?";
+  char buffer[32];
+  std::strftime(buffer, sizeof buffer, "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return buffer;
+}
+
+void copy_text(const std::string& text, char* out, std::size_t capacity) {
+  std::size_t i = 0;
+  for (; i < text.size() && i < capacity; ++i) out[i] = text[i];
+  for (; i <= capacity; ++i) out[i] = '\0';
+}
+
+}  // namespace
+
+std::string default_mission_id(const Mission& mission) {
+  std::string id;
+  bool blank = false;
+  for (std::size_t i = 0; i < sizeof mission.title && mission.title[i] != '\0'; ++i) {
+    char c = mission.title[i];
+    if (c == ' ' || c == '\t') {
+      blank = !id.empty();
+      continue;
+    }
+    if (c < 0x20 || c > 0x7E) c = '?';
+    if (blank) id += ' ';
+    blank = false;
+    id += c;
+  }
+  if (id.size() > kTableMissionIdBytes) id.resize(kTableMissionIdBytes);
+  while (!id.empty() && id.back() == ' ') id.pop_back();
+  return id.empty() ? std::string("TOLIP CASE") : id;
+}
+
+bool build_guidance_table(const Mission& mission, const DeckExtras& extras, const PreparedCase& prepared,
+                          const TableBuildOptions& options, GuidanceTable* table, std::string* error) {
+  auto fail = [error](const std::string& message) {
+    if (error != nullptr) *error = message;
+    return false;
+  };
+  if (!prepared.prepared) return fail("the case was not prepared (prepare_case) before building the table");
+
+  GuidanceTable t;
+  // Header.
+  const std::string id = options.mission_id.empty() ? default_mission_id(mission) : options.mission_id;
+  if (id.empty() || id.size() > kTableMissionIdBytes) {
+    return fail("the mission identifier must have 1 to 32 characters, got " + std::to_string(id.size()));
+  }
+  for (char c : id) {
+    if (c < 0x20 || c > 0x7E) return fail("the mission identifier must be printable ASCII");
+  }
+  copy_text(id, t.mission_id, kTableMissionIdBytes);
+  copy_text(version_string(), t.generator_version, kTableGeneratorVersionBytes);
+  t.created_unix_s = options.created_unix_s;
+
+  // Data block 20: the vertical lift-off.
+  t.liftoff_duration_s = mission.launch.liftoff_duration_s;
+
+  // Data block 22: pitch-rate limits.
+  if (!(mission.control.max_pitch_rate_rad_s > 0.0)) {
+    return fail("data block 22, field control_constraints.max_pitch_rate_deg_s (DA7(3)): the table image needs a "
+                "positive maximum pitch rate");
+  }
+  t.max_pitch_rate_rad_s = mission.control.max_pitch_rate_rad_s;
+  t.min_pitch_rate_rad_s = mission.control.min_pitch_rate_rad_s;
+  t.min_pitch_rate_change_rad_s = mission.control.min_pitch_rate_change_rad_s;
+
+  // Data block 45 word 11 (stage 1 fin and vane deflection), else the documented default.
+  t.max_deflection_rad = (extras.hardover.present && extras.hardover.stage1_fin_vane_deflection_rad > 0.0)
+                             ? extras.hardover.stage1_fin_vane_deflection_rad
+                             : kDefaultMaxDeflectionRad;
+
+  // Data block 17 and IP(9): spun stages 4 and 5.
+  const int spin = mission.options.spin_stages_4_5();
+  const bool stage4_flown = in_sequence(mission, 4) || in_sequence(mission, 9);
+  const bool stage5_flown = in_sequence(mission, 5) || in_sequence(mission, 10);
+  if (stage4_flown && spin != 1) {
+    return fail("data block 4, field options.spin_stages_4_5 (IP(9)) = " + std::to_string(spin) +
+                ": stage 4 flies continuous control, which the table image (segments in stages 1-3 and "
+                "coasts 6-8 only) cannot carry; IP(9) = 1 (stages 4 and 5 spun) is required");
+  }
+  if (stage5_flown && spin != 1 && spin != 2) {
+    return fail("data block 4, field options.spin_stages_4_5 (IP(9)) = " + std::to_string(spin) +
+                ": stage 5 flies continuous control, which the table image cannot carry");
+  }
+  t.stage4_theta_rad = mission.misc.stage4_theta_rad;
+  t.stage4_chi_rad = mission.misc.stage4_chi_rad;
+  t.stage5_theta_rad = spin == 1 ? mission.misc.stage4_theta_rad : mission.misc.stage5_theta_rad;
+  t.stage5_chi_rad = spin == 1 ? mission.misc.stage4_chi_rad : mission.misc.stage5_chi_rad;
+
+  // Data block 33: autopilot gains of stages 1-3; the coasts 6-8 keep the gains of the stage
+  // before them; spun stages 4, 5 and coasts 9, 10 have none.
+  if (!extras.body_dynamics.present) {
+    return fail("data block 33 ([body_dynamics], DA6D(1-6)) is required: it gives the autopilot gains K_theta "
+                "and K_q of stages 1-3 that the table image carries");
+  }
+  for (int k = 0; k < 3; ++k) {
+    const StageGains gains{extras.body_dynamics.position_gain[k], extras.body_dynamics.rate_gain_s[k]};
+    t.gains[stage_index(k + 1)] = gains;
+    t.gains[stage_index(k + 6)] = gains;
+  }
+
+  // Data block 40: the segments (interim source).
+  const PitchTable& pitch = mission.pitch_program_rad;
+  if (pitch.size() == 0) return fail("data block 40 (pitch_program) is empty: no segment can be built");
+  std::vector<GuidanceSegment> segments;
+  auto add_segment = [&](double t_from_launch, double theta, double rate) {
+    const StageTimeline* line = stage_at(prepared, t_from_launch);
+    if (line == nullptr || !is_segment_stage(line->code)) return;
+    segments.push_back(GuidanceSegment{line->code, t_from_launch - line->start_s, theta, rate});
+  };
+  const double liftoff = mission.launch.liftoff_duration_s;
+  if (pitch.x(0) > liftoff) add_segment(liftoff, pitch.y(0), 0.0);
+  for (int i = 0; i + 1 < pitch.size(); ++i) {
+    if (pitch.x(i + 1) <= liftoff) continue;  // inside the vertical lift-off
+    const double rate = (pitch.y(i + 1) - pitch.y(i)) / (pitch.x(i + 1) - pitch.x(i));
+    add_segment(pitch.x(i), pitch.y(i), rate);
+  }
+  add_segment(pitch.last_x(), pitch.last_y(), 0.0);  // the table holds its last value
+
+  if (segments.size() > static_cast<std::size_t>(kMaxLinearSegments)) {
+    return fail("data block 40 gives " + std::to_string(segments.size()) +
+                " segments in stages 1-3 and coasts 6-8; the table image holds at most " +
+                std::to_string(kMaxLinearSegments) + " (kTooManyLinearSegments)");
+  }
+  const double rate_limit = t.max_pitch_rate_rad_s * (1.0 + kTableRateLimitRelativeTolerance);
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    if (std::fabs(segments[i].rate_rad_s) > rate_limit) {
+      return fail("data block 40: segment " + std::to_string(i) + " (stage " + std::to_string(segments[i].stage_code) +
+                  ", from stage time " + fixed(segments[i].start_stage_time_s, 3) + " s) pitches at " +
+                  degrees(segments[i].rate_rad_s, 6) + " deg/s, beyond the data block 22 maximum pitch rate " +
+                  degrees(t.max_pitch_rate_rad_s, 6) + " deg/s (kSegmentRateExceedsLimit)");
+    }
+  }
+  t.segment_count = static_cast<int>(segments.size());
+  for (std::size_t i = 0; i < segments.size(); ++i) t.segments[i] = segments[i];
+
+  const Status valid = validate_guidance_table(t);
+  if (!ok(valid)) {
+    return fail(std::string("the table contents are invalid: ") + status_name(valid) + ": " + status_message(valid));
+  }
+  *table = t;
+  return true;
+}
+
+std::string table_image_c_header(const std::uint8_t* image, std::size_t size, const std::string& symbol,
+                                 const std::string& origin) {
+  std::string guard = "TOLIP_TABLE_IMAGE_";
+  for (char c : symbol) guard += static_cast<char>((c >= 'a' && c <= 'z') ? c - 'a' + 'A' : c);
+  guard += "_H";
+  char line[128];
+  std::ostringstream out;
+  out << "/* GENERATED by tolip " << version_string() << " (tolip export --c-header): do not edit.\n"
+      << " * Guidance table image, format version " << kTableFormatVersion << " (docs/table-format.md), "
+      << size << " bytes.\n"
+      << " * Source: " << origin << "\n"
+      << " * Include this header in exactly ONE translation unit: it defines the array, placed in\n"
+      << " * the linker section " << kTableLinkerSection << " (the flight image maps it at a fixed address). */\n"
+      << "#ifndef " << guard << "\n#define " << guard << "\n\n#include <stdint.h>\n\n";
+  std::snprintf(line, sizeof line, "#define %s_SIZE %zuu\n", guard.c_str(), size);
+  out << line;
+  if (size >= kTableImageSize) {
+    std::snprintf(line, sizeof line, "#define %s_CRC32 0x%08Xu\n", guard.c_str(),
+                  static_cast<unsigned>(stored_table_crc(image)));
+    out << line;
+  }
+  out << "\n#ifdef __cplusplus\nextern \"C\" {\n#endif\n\n"
+      << "extern const uint8_t " << symbol << "[" << size << "];\n"
+      << "__attribute__((section(\"" << kTableLinkerSection << "\"), aligned(8), used))\n"
+      << "const uint8_t " << symbol << "[" << size << "] = {\n";
+  for (std::size_t i = 0; i < size; ++i) {
+    if (i % 12 == 0) out << "   ";
+    std::snprintf(line, sizeof line, " 0x%02X,", static_cast<unsigned>(image[i]));
+    out << line;
+    if (i % 12 == 11 || i + 1 == size) out << '\n';
+  }
+  out << "};\n\n#ifdef __cplusplus\n}  /* extern \"C\" */\n#endif\n\n#endif  /* " << guard << " */\n";
+  return out.str();
+}
+
+void write_table_listing(std::ostream& out, const GuidanceTable& t, std::uint32_t crc) {
+  char line[256];
+  out << "guidance table image: valid\n";
+  std::snprintf(line, sizeof line, "  format version       %u\n", static_cast<unsigned>(t.format_version));
+  out << line;
+  std::snprintf(line, sizeof line, "  image size           %zu bytes\n", kTableImageSize);
+  out << line;
+  std::snprintf(line, sizeof line, "  CRC-32               0x%08X\n", static_cast<unsigned>(crc));
+  out << line;
+  out << "  mission id           " << t.mission_id << "\n";
+  out << "  created              " << utc_stamp(t.created_unix_s) << " (" << t.created_unix_s << " s)\n";
+  out << "  generator            tolip " << t.generator_version << "\n";
+  out << "  lift-off duration    " << fixed(t.liftoff_duration_s, 6) << " s (theta held at 90 deg)\n";
+  out << "  pitch-rate limits    max " << degrees(t.max_pitch_rate_rad_s, 6) << " deg/s, min "
+      << degrees(t.min_pitch_rate_rad_s, 6) << " deg/s, min change " << degrees(t.min_pitch_rate_change_rad_s, 6)
+      << " deg/s\n";
+  out << "  max deflection       " << degrees(t.max_deflection_rad, 6) << " deg\n";
+  out << "  spun stage 4         theta " << degrees(t.stage4_theta_rad, 9) << " deg, chi "
+      << degrees(t.stage4_chi_rad, 9) << " deg\n";
+  out << "  spun stage 5         theta " << degrees(t.stage5_theta_rad, 9) << " deg, chi "
+      << degrees(t.stage5_chi_rad, 9) << " deg\n";
+  out << "  autopilot gains (stage code: K_theta deg/deg, K_q s)\n";
+  for (int code = 1; code <= kMaxStages; ++code) {
+    std::snprintf(line, sizeof line, "    stage %2d  K_theta %10.6f  K_q %10.6f\n", code, t.gains[code - 1].k_theta,
+                  t.gains[code - 1].k_q_s);
+    out << line;
+  }
+  std::snprintf(line, sizeof line, "  segments             %d of %d\n", t.segment_count, kMaxLinearSegments);
+  out << line;
+  out << "     #  stage  start (stage s)   theta start (deg)   rate (deg/s)\n";
+  for (int i = 0; i < t.segment_count; ++i) {
+    const GuidanceSegment& s = t.segments[i];
+    std::snprintf(line, sizeof line, "    %2d  %5d  %15.6f  %18.9f  %13.9f\n", i, s.stage_code, s.start_stage_time_s,
+                  s.theta_start_rad * kRadToDeg, s.rate_rad_s * kRadToDeg);
+    out << line;
+  }
+}
+
+bool read_binary_file(const std::string& path, std::vector<std::uint8_t>* bytes, std::string* error) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    if (error != nullptr) *error = "cannot open '" + path + "'";
+    return false;
+  }
+  bytes->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  if (in.bad()) {
+    if (error != nullptr) *error = "cannot read '" + path + "'";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace tolip::ground

@@ -1,0 +1,232 @@
+// Guidance table image (tolip/table/table_image.hpp, docs/table-format.md): CRC-32, the byte layout
+// and the encode/decode round trip.
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <vector>
+
+#include "support/guidance_table_fixture.hpp"
+#include "tolip/table/crc32.hpp"
+#include "tolip/table/table_image.hpp"
+
+namespace tolip {
+namespace {
+
+using Image = std::vector<std::uint8_t>;
+
+Image encode(const GuidanceTable& table) {
+  Image image(kTableImageSize);
+  EXPECT_EQ(encode_table_image(table, image.data(), image.size()), Status::kOk);
+  return image;
+}
+
+std::uint64_t bits(double value) { return std::bit_cast<std::uint64_t>(value); }
+
+TEST(Crc32, MatchesTheStandardCheckValue) {
+  const char* text = "123456789";
+  EXPECT_EQ(crc32(reinterpret_cast<const std::uint8_t*>(text), 9), 0xCBF43926u);
+  EXPECT_EQ(kCrc32CheckValue, 0xCBF43926u);
+}
+
+TEST(Crc32, EmptyInputIsZeroAndIncrementalEqualsOneShot) {
+  EXPECT_EQ(crc32(nullptr, 0), 0u);
+  const std::uint8_t data[] = {'T', 'O', 'L', 'I', 'P', 0x00, 0xFF, 0x80, 0x7F, 0x01};
+  std::uint32_t crc = 0;
+  for (std::uint8_t byte : data) crc = crc32_update(crc, &byte, 1);
+  EXPECT_EQ(crc, crc32(data, sizeof data));
+  // Known value of the IEEE CRC-32 of one zero byte.
+  const std::uint8_t zero = 0;
+  EXPECT_EQ(crc32(&zero, 1), 0xD202EF8Du);
+}
+
+TEST(TableImage, HasTheDocumentedFixedSizeAndOffsets) {
+  EXPECT_EQ(kTableHeaderSize, 96u);
+  EXPECT_EQ(kOffsetStageGains, 168u);
+  EXPECT_EQ(kOffsetSegments, 328u);
+  EXPECT_EQ(kOffsetCrc, 808u);
+  EXPECT_EQ(kTableImageSize, 812u);
+}
+
+TEST(TableImage, WritesEveryHeaderFieldLittleEndianAtItsOffset) {
+  const GuidanceTable table = test::make_test_table();
+  const Image image = encode(table);
+  EXPECT_EQ(std::memcmp(image.data(), "TLGT", 4), 0);
+  EXPECT_EQ(image[4], 0x01);  // format version 1, little-endian u16
+  EXPECT_EQ(image[5], 0x00);
+  EXPECT_EQ(image[6], 96);    // header size
+  EXPECT_EQ(image[8], 0x2C);  // image size 812 = 0x032C
+  EXPECT_EQ(image[9], 0x03);
+  EXPECT_EQ(image[10], 0x00);
+  EXPECT_EQ(image[12], 15);   // segment capacity
+  EXPECT_EQ(image[14], 32);   // segment record size
+  EXPECT_EQ(image[16], table.segment_count);
+  EXPECT_EQ(image[18], 10);   // gain records
+  EXPECT_EQ(get_u64_le(image.data() + 24), static_cast<std::uint64_t>(table.created_unix_s));
+  EXPECT_EQ(std::memcmp(image.data() + 32, "TEST MISSION A", 14), 0);
+  EXPECT_EQ(image[32 + 14], 0);
+  // Lift-off duration 3.0 = 0x4008000000000000, least significant byte first.
+  const std::uint8_t three[8] = {0, 0, 0, 0, 0, 0, 0x08, 0x40};
+  EXPECT_EQ(std::memcmp(image.data() + kOffsetLiftoffDuration, three, 8), 0);
+  // The CRC covers bytes [0, 808) and is stored little-endian at 808.
+  const std::uint32_t crc = crc32(image.data(), kOffsetCrc);
+  EXPECT_EQ(image[808], crc & 0xFFu);
+  EXPECT_EQ(image[811], (crc >> 24) & 0xFFu);
+  EXPECT_EQ(stored_table_crc(image.data()), crc);
+}
+
+TEST(TableImage, UnusedSegmentRecordsAreZero) {
+  const GuidanceTable table = test::make_test_table();
+  const Image image = encode(table);
+  for (std::size_t i = kOffsetSegments + static_cast<std::size_t>(table.segment_count) * kTableSegmentRecordSize;
+       i < kOffsetCrc; ++i) {
+    ASSERT_EQ(image[i], 0) << "byte " << i;
+  }
+}
+
+TEST(TableImage, RoundTripReproducesEveryFieldBitForBit) {
+  const GuidanceTable table = test::make_test_table();
+  const Image image = encode(table);
+  GuidanceTable decoded;
+  ASSERT_EQ(decode_table_image(image.data(), image.size(), &decoded), Status::kOk);
+  EXPECT_STREQ(decoded.mission_id, table.mission_id);
+  EXPECT_STREQ(decoded.generator_version, table.generator_version);
+  EXPECT_EQ(decoded.created_unix_s, table.created_unix_s);
+  EXPECT_EQ(bits(decoded.liftoff_duration_s), bits(table.liftoff_duration_s));
+  EXPECT_EQ(bits(decoded.max_pitch_rate_rad_s), bits(table.max_pitch_rate_rad_s));
+  EXPECT_EQ(bits(decoded.min_pitch_rate_rad_s), bits(table.min_pitch_rate_rad_s));
+  EXPECT_EQ(bits(decoded.min_pitch_rate_change_rad_s), bits(table.min_pitch_rate_change_rad_s));
+  EXPECT_EQ(bits(decoded.max_deflection_rad), bits(table.max_deflection_rad));
+  EXPECT_EQ(bits(decoded.stage4_theta_rad), bits(table.stage4_theta_rad));
+  EXPECT_EQ(bits(decoded.stage4_chi_rad), bits(table.stage4_chi_rad));
+  EXPECT_EQ(bits(decoded.stage5_theta_rad), bits(table.stage5_theta_rad));
+  EXPECT_EQ(bits(decoded.stage5_chi_rad), bits(table.stage5_chi_rad));
+  for (int i = 0; i < kMaxStages; ++i) {
+    EXPECT_EQ(bits(decoded.gains[i].k_theta), bits(table.gains[i].k_theta)) << i;
+    EXPECT_EQ(bits(decoded.gains[i].k_q_s), bits(table.gains[i].k_q_s)) << i;
+  }
+  ASSERT_EQ(decoded.segment_count, table.segment_count);
+  for (int i = 0; i < table.segment_count; ++i) {
+    EXPECT_EQ(decoded.segments[i].stage_code, table.segments[i].stage_code) << i;
+    EXPECT_EQ(bits(decoded.segments[i].start_stage_time_s), bits(table.segments[i].start_stage_time_s)) << i;
+    EXPECT_EQ(bits(decoded.segments[i].theta_start_rad), bits(table.segments[i].theta_start_rad)) << i;
+    EXPECT_EQ(bits(decoded.segments[i].rate_rad_s), bits(table.segments[i].rate_rad_s)) << i;
+  }
+  // Encoding the decoded table gives the same bytes.
+  EXPECT_EQ(encode(decoded), image);
+}
+
+TEST(TableImage, RoundTripKeepsNegativeZeroAndExtremeRangeValues) {
+  GuidanceTable table = test::make_test_table();
+  table.stage4_chi_rad = -0.0;
+  table.stage5_theta_rad = -kTableMaxAttitudeRad;
+  table.segments[0].rate_rad_s = -table.max_pitch_rate_rad_s;
+  table.segments[0].start_stage_time_s = std::numeric_limits<double>::denorm_min();
+  const Image image = encode(table);
+  GuidanceTable decoded;
+  ASSERT_EQ(decode_table_image(image.data(), image.size(), &decoded), Status::kOk);
+  EXPECT_EQ(bits(decoded.stage4_chi_rad), bits(-0.0));
+  EXPECT_EQ(decoded.stage5_theta_rad, -kTableMaxAttitudeRad);
+  EXPECT_EQ(decoded.segments[0].start_stage_time_s, std::numeric_limits<double>::denorm_min());
+}
+
+TEST(TableImage, EncodeRefusesAnInvalidTableAndAWrongBufferSize) {
+  GuidanceTable table = test::make_test_table();
+  Image image(kTableImageSize, 0xAA);
+  table.segments[2].theta_start_rad = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(encode_table_image(table, image.data(), image.size()), Status::kValueNotFinite);
+  EXPECT_EQ(image, Image(kTableImageSize, 0xAA));  // nothing written
+  const GuidanceTable good = test::make_test_table();
+  EXPECT_EQ(encode_table_image(good, image.data(), kTableImageSize - 1), Status::kTableImageTruncated);
+  Image larger(kTableImageSize + 1);
+  EXPECT_EQ(encode_table_image(good, larger.data(), larger.size()), Status::kTableImageSizeMismatch);
+}
+
+TEST(TableImage, ValidationChecksEveryDocumentedRange) {
+  struct Case {
+    const char* what;
+    void (*mutate)(GuidanceTable*);
+    Status expected;
+  };
+  const Case cases[] = {
+      {"lift-off 0", [](GuidanceTable* t) { t->liftoff_duration_s = 0.0; }, Status::kValueOutOfRange},
+      {"lift-off 61 s", [](GuidanceTable* t) { t->liftoff_duration_s = 61.0; }, Status::kValueOutOfRange},
+      {"max rate 0", [](GuidanceTable* t) { t->max_pitch_rate_rad_s = 0.0; }, Status::kValueOutOfRange},
+      {"max rate 31 deg/s", [](GuidanceTable* t) { t->max_pitch_rate_rad_s = 31.0 * kDegToRad; },
+       Status::kValueOutOfRange},
+      {"min rate above max", [](GuidanceTable* t) { t->min_pitch_rate_rad_s = 6.0 * kDegToRad; },
+       Status::kValueOutOfRange},
+      {"negative min rate change", [](GuidanceTable* t) { t->min_pitch_rate_change_rad_s = -1e-3; },
+       Status::kValueOutOfRange},
+      {"deflection 0", [](GuidanceTable* t) { t->max_deflection_rad = 0.0; }, Status::kValueOutOfRange},
+      {"deflection 31 deg", [](GuidanceTable* t) { t->max_deflection_rad = 31.0 * kDegToRad; },
+       Status::kValueOutOfRange},
+      {"stage 4 theta 4 rad", [](GuidanceTable* t) { t->stage4_theta_rad = 4.0; }, Status::kValueOutOfRange},
+      {"negative gain", [](GuidanceTable* t) { t->gains[2].k_q_s = -0.1; }, Status::kValueOutOfRange},
+      {"gain 101", [](GuidanceTable* t) { t->gains[0].k_theta = 101.0; }, Status::kValueOutOfRange},
+      {"negative start", [](GuidanceTable* t) { t->segments[0].start_stage_time_s = -1.0; },
+       Status::kValueOutOfRange},
+      {"theta 3.2 rad", [](GuidanceTable* t) { t->segments[1].theta_start_rad = 3.2; }, Status::kValueOutOfRange},
+      {"stamp negative", [](GuidanceTable* t) { t->created_unix_s = -1; }, Status::kValueOutOfRange},
+      {"stage 4 segment", [](GuidanceTable* t) { t->segments[7].stage_code = 4; }, Status::kSegmentStageInvalid},
+      {"stage 0 segment", [](GuidanceTable* t) { t->segments[0].stage_code = 0; }, Status::kSegmentStageInvalid},
+      {"stage 11 segment", [](GuidanceTable* t) { t->segments[0].stage_code = 11; }, Status::kSegmentStageInvalid},
+      {"empty mission id", [](GuidanceTable* t) { t->mission_id[0] = '\0'; }, Status::kTableImageTextInvalid},
+      {"control character", [](GuidanceTable* t) { t->generator_version[1] = '\n'; },
+       Status::kTableImageTextInvalid},
+      {"16 segments", [](GuidanceTable* t) { t->segment_count = 16; }, Status::kTooManyLinearSegments},
+  };
+  for (const Case& c : cases) {
+    GuidanceTable table = test::make_test_table();
+    c.mutate(&table);
+    EXPECT_EQ(validate_guidance_table(table), c.expected) << c.what;
+  }
+  EXPECT_EQ(validate_guidance_table(test::make_test_table()), Status::kOk);
+}
+
+TEST(TableImage, ZeroSegmentsAndAFullTableOfFifteenAreValid) {
+  GuidanceTable empty = test::make_test_table();
+  empty.segment_count = 0;
+  EXPECT_EQ(validate_guidance_table(empty), Status::kOk);
+  GuidanceTable full = test::make_test_table();
+  full.segment_count = kMaxLinearSegments;
+  for (int i = 0; i < kMaxLinearSegments; ++i) {
+    full.segments[i] = GuidanceSegment{1, 3.0 + 2.0 * i, (80.0 - i) * kDegToRad, -0.5 * kDegToRad};
+  }
+  const Image image = encode(full);
+  GuidanceTable decoded;
+  EXPECT_EQ(decode_table_image(image.data(), image.size(), &decoded), Status::kOk);
+  EXPECT_EQ(decoded.segment_count, kMaxLinearSegments);
+}
+
+TEST(TableImage, RateAtTheLimitPassesAndJustBeyondTheToleranceFails) {
+  GuidanceTable table = test::make_test_table();
+  table.segments[0].rate_rad_s = -table.max_pitch_rate_rad_s * (1.0 + 0.5 * kTableRateLimitRelativeTolerance);
+  EXPECT_EQ(validate_guidance_table(table), Status::kOk);
+  table.segments[0].rate_rad_s = -table.max_pitch_rate_rad_s * (1.0 + 2.0 * kTableRateLimitRelativeTolerance);
+  EXPECT_EQ(validate_guidance_table(table), Status::kSegmentRateExceedsLimit);
+}
+
+TEST(TableImage, FlightOrderIndexFollowsTheStageSequence) {
+  const int sequence[] = {1, 6, 2, 7, 3, 8, 4, 9, 5, 10};
+  for (int i = 0; i < 10; ++i) EXPECT_EQ(flight_order_index(sequence[i]), i);
+  EXPECT_EQ(flight_order_index(0), -1);
+  EXPECT_EQ(flight_order_index(11), -1);
+  for (int code : {1, 2, 3, 6, 7, 8}) EXPECT_TRUE(is_segment_stage(code)) << code;
+  for (int code : {0, 4, 5, 9, 10, 11}) EXPECT_FALSE(is_segment_stage(code)) << code;
+}
+
+TEST(Status, EveryTableStatusHasANameAndAMessage) {
+  for (int i = static_cast<int>(Status::kTableImageTruncated); i <= static_cast<int>(Status::kStageEventOutOfOrder);
+       ++i) {
+    const auto s = static_cast<Status>(i);
+    EXPECT_STRNE(status_name(s), "kUnknownStatus") << i;
+    EXPECT_GT(std::strlen(status_message(s)), 5u) << i;
+  }
+}
+
+}  // namespace
+}  // namespace tolip
