@@ -168,18 +168,7 @@ StateVector BackwardSweep::heat_integral_gradient(int k) const {
   if (!(weight > 0.0) || !(mission_.misc.nose_radius_ft > 0.0) || p.altitude_ft > mission_.constants.haero_ft) {
     return StateVector::Zero();
   }
-  ConstraintPoint point;
-  point.state = p.state;
-  point.time_from_launch_s = p.time_s;
-  point.weight_lb = p.weight_lb;
-  const double radius = oblate_radius_ft(mission_.constants, p.state[kStateLambda]);
-  AtmosphereSample air;
-  if (!ok(evaluate_atmosphere(mission_.atmosphere, mission_.constants, p.altitude_ft, radius, &air))) {
-    return StateVector::Zero();
-  }
-  point.density_slug_ft3 = air.density_slug_ft3;
-  const double ratio = radius / (radius + p.altitude_ft);  // dH*/dh: Sec. 19 derivatives are per H*
-  point.ddensity_dh = air.ddensity_dh * ratio * ratio;
+  const ConstraintPoint point = constraint_point_at(mission_, trajectory_, k);
   Eigen::Matrix<double, 6, 1> partials;
   if (!ok(stagnation_heating_rate_partials(mission_.constants, mission_.misc.nose_radius_ft,
                                            mission_.atmosphere.base_density_slug_ft3[0], point, &partials))) {

@@ -10,6 +10,8 @@
 // tests/core/constraint_parameters_test.cpp against central differences).
 #include "tolip/optimizer/constraint_parameters.hpp"
 
+#include "tolip/atmosphere/atmosphere.hpp"
+
 #include <cmath>
 
 #include "tolip/earth/earth_model.hpp"
@@ -588,6 +590,33 @@ AdjointVector apply_stopping_condition_correction(const AdjointVector& dz_dx, do
                                                   const AdjointVector& ds_dx, double s_dot) {
   // Eq. 5-18: lambda(t_f) = dZ/dx - (Zdot / Sdot) dS/dx.
   return dz_dx - (z_dot / s_dot) * ds_dx;
+}
+
+ConstraintPoint constraint_point_at(const Mission& mission, const Trajectory& trajectory, int index) {
+  const TrajectoryPoint& p = trajectory.points[index];
+  ConstraintPoint c;
+  c.state = p.state;
+  c.time_from_launch_s = p.time_s;
+  c.weight_lb = p.weight_lb;
+  c.total_heating_btu_ft2 = trajectory.heat_integral_btu_ft2;
+  if (p.altitude_ft <= mission.constants.haero_ft) {
+    AtmosphereSample air;
+    const double radius = oblate_radius_ft(mission.constants, p.state[kStateLambda]);
+    if (ok(evaluate_atmosphere(mission.atmosphere, mission.constants, p.altitude_ft, radius, &air))) {
+      c.density_slug_ft3 = air.density_slug_ft3;
+      const double ratio = radius / (radius + p.altitude_ft);
+      c.ddensity_dh = air.ddensity_dh * ratio * ratio;
+    }
+  }
+  return c;
+}
+
+int constraint_point_index(const ConstraintCode& code, const Trajectory& trajectory) {
+  if (!code.is_stage_point) return trajectory.point_count - 1;
+  for (int k = 0; k < trajectory.stage_count; ++k) {
+    if (trajectory.stages[k].code == code.stage_code) return trajectory.stages[k].last_point;
+  }
+  return -1;
 }
 
 }  // namespace tolip

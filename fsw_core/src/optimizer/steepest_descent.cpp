@@ -114,40 +114,12 @@ void activate_heating_if_exceeded(const Trajectory& nominal, Problem* problem) {
 
 // ---- constraint values and their adjoint initial conditions -----------------------------------
 
-int constraint_point_index(const ConstraintCode& code, const Trajectory& trajectory) {
-  if (!code.is_stage_point) return trajectory.point_count - 1;
-  for (int k = 0; k < trajectory.stage_count; ++k) {
-    if (trajectory.stages[k].code == code.stage_code) return trajectory.stages[k].last_point;
-  }
-  return -1;
-}
-
-ConstraintPoint make_constraint_point(const Mission& mission, const Trajectory& trajectory, int index) {
-  const TrajectoryPoint& p = trajectory.points[index];
-  ConstraintPoint c;
-  c.state = p.state;
-  c.time_from_launch_s = p.time_s;
-  c.weight_lb = p.weight_lb;
-  c.total_heating_btu_ft2 = trajectory.heat_integral_btu_ft2;
-  if (p.altitude_ft <= mission.constants.haero_ft) {
-    AtmosphereSample air;
-    const double radius = oblate_radius_ft(mission.constants, p.state[kStateLambda]);
-    if (ok(evaluate_atmosphere(mission.atmosphere, mission.constants, p.altitude_ft, radius, &air))) {
-      c.density_slug_ft3 = air.density_slug_ft3;
-      // Sec. 19 gives d rho / dH*; the constraint needs the geometric derivative, dH*/dh = (R/(R+h))^2.
-      const double ratio = radius / (radius + p.altitude_ft);
-      c.ddensity_dh = air.ddensity_dh * ratio * ratio;
-    }
-  }
-  return c;
-}
-
 Status evaluate_constraints(const Problem& problem, const Mission& mission, const Trajectory& trajectory,
                             double achieved[kMaxConstraints]) {
   for (int i = 0; i < problem.constraint_count; ++i) {
     const int index = constraint_point_index(problem.codes[i], trajectory);
     if (index < 0) return Status::kValueOutOfRange;
-    const ConstraintPoint point = make_constraint_point(mission, trajectory, index);
+    const ConstraintPoint point = constraint_point_at(mission, trajectory, index);
     const Status status = constraint_value(mission.constants, mission.launch, problem.codes[i], point, &achieved[i]);
     if (!ok(status)) return status;
   }
@@ -162,7 +134,7 @@ Status constraint_terminals(const Problem& problem, const Mission& mission, cons
     terminals[i].point = constraint_point_index(problem.codes[i], trajectory);
     if (terminals[i].point < 0) return Status::kValueOutOfRange;
     terminals[i].heat_integral = problem.codes[i].kind == ConstraintQuantity::kTotalHeating;
-    const ConstraintPoint point = make_constraint_point(mission, trajectory, terminals[i].point);
+    const ConstraintPoint point = constraint_point_at(mission, trajectory, terminals[i].point);
     const Status status = constraint_partials(mission.constants, mission.launch, problem.codes[i], point,
                                               &terminals[i].partials);
     if (!ok(status)) return status;

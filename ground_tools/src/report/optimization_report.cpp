@@ -85,27 +85,9 @@ double evaluate_on_trajectory(const Mission& mission, const Trajectory& trajecto
   if (!ok(decode_constraint_code(code, &c))) return kNaN;
   const int count = stored_point_count(trajectory);
   if (!ok(trajectory.status) || count == 0) return kNaN;
-  int index = count - 1;
-  if (c.is_stage_point) {
-    index = -1;
-    for (int k = 0; k < std::clamp(trajectory.stage_count, 0, kMaxStages); ++k) {
-      if (trajectory.stages[k].code == c.stage_code) index = trajectory.stages[k].last_point;
-    }
-    if (index < 0 || index >= count) return kNaN;
-  }
-  const TrajectoryPoint& p = trajectory.points[index];
-  ConstraintPoint point;
-  point.state = p.state;
-  point.time_from_launch_s = p.time_s;
-  point.weight_lb = p.weight_lb;
-  point.total_heating_btu_ft2 = trajectory.heat_integral_btu_ft2;
-  if (p.altitude_ft <= mission.constants.haero_ft) {
-    AtmosphereSample air;
-    const double radius = oblate_radius_ft(mission.constants, p.state[kStateLambda]);
-    if (ok(evaluate_atmosphere(mission.atmosphere, mission.constants, p.altitude_ft, radius, &air))) {
-      point.density_slug_ft3 = air.density_slug_ft3;
-    }
-  }
+  const int index = constraint_point_index(c, trajectory);
+  if (index < 0 || index >= count) return kNaN;
+  const ConstraintPoint point = constraint_point_at(mission, trajectory, index);
   double value = kNaN;
   if (!ok(constraint_value(mission.constants, mission.launch, c, point, &value))) return kNaN;
   return value;

@@ -14,6 +14,7 @@
 #include "tolip/core/state.hpp"
 #include "tolip/core/status.hpp"
 #include "tolip/mission/mission.hpp"
+#include "tolip/trajectory/trajectory.hpp"
 
 namespace tolip {
 
@@ -69,6 +70,15 @@ struct ConstraintPoint {
 };
 
 // Index of the mass in the 7-component adjoint vector [V, gamma, r, psi, lambda, tau, m].
+// The constraint point of a trajectory's point `index`: its state, time, weight, the heat integral
+// of the whole trajectory, and the density with its GEOMETRIC altitude derivative (Sec. 19 gives
+// d rho / dH*; dH*/dh = (R / (R + h))^2). No atmosphere above HAERO.
+ConstraintPoint constraint_point_at(const Mission& mission, const Trajectory& trajectory, int index);
+
+// Index of the point where a constraint applies: the final point for terminal constraints, the end
+// point of stage X for stage-point codes; -1 when that stage was not flown.
+int constraint_point_index(const ConstraintCode& code, const Trajectory& trajectory);
+
 inline constexpr int kAdjointMass = 6;
 using AdjointVector = Eigen::Matrix<double, 7, 1>;
 
