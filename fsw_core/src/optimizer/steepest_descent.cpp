@@ -351,6 +351,71 @@ void shape_program(const Mission& mission, const Trajectory& nominal, const Poin
   }
 }
 
+// ---- closed loop (eqs. 9-1, 9-2, 9-14) -----------------------------------------------------------
+
+// At each of the first kMaxClosedLoopPoints integration points after lift-off the remaining pitch
+// program is recomputed from the deviation dx of the flight from the nominal at that point:
+// nu_k = M_k^-1 (d psi - lambda_k dx_k) with M_k the steering matrix over the controls still ahead,
+// dtheta_j = G_j . nu_k / w_j for every later point. After the last closed-loop point the program
+// stays as last computed: the open loop with K = nu at the switch (eq. 9-3). Adjustable parameters
+// and the payload are decided at launch with the open-loop law.
+class ClosedLoopSteering final : public PitchFeedback {
+ public:
+  ClosedLoopSteering(const Problem& problem, const BackwardRun& backward, const PointRoles& roles,
+                     const Mission& mission, const Trajectory& nominal, const ControlProgram& nominal_program,
+                     const Steering& steering, const ConstraintVector& dpsi, double mass_change_slug)
+      : problem_(problem), backward_(backward), roles_(roles), mission_(mission), nominal_(nominal),
+        nominal_program_(nominal_program), first_(steering.first), dpsi_(dpsi),
+        mass_change_slug_(mass_change_slug), remaining_(steering.matrix) {
+    // The closed-loop points: the first kMaxClosedLoopPoints step starts after lift-off.
+    for (int s = 0, n = 0; s < nominal.step_count && n < kMaxClosedLoopPoints; ++s, ++n) {
+      last_point_ = nominal.steps[s].point;
+    }
+  }
+
+  void at_point(int point, const StateVector& state, ControlProgram* program) override {
+    if (point > last_point_ || point < 1) return;
+    // Controls already flown leave the matrix.
+    for (int j = next_removed_; j < point; ++j) {
+      const double w = backward_.quadrature_weight_s[j];
+      if (!(w > 0.0) || !roles_.free[j]) continue;
+      const ConstraintVector g = scaled(problem_, backward_.theta_gradient[j], first_);
+      remaining_ -= g * g.transpose() / w;
+    }
+    next_removed_ = point;
+    const Eigen::LLT<SquareMatrix> cholesky(remaining_);
+    if (cholesky.info() != Eigen::Success) return;  // keep the program as planned
+
+    AdjointVector dx;
+    dx.head<6>() = state - nominal_.points[point].state;
+    dx[6] = mass_change_slug_;
+    ConstraintVector rhs = dpsi_;
+    const AdjointMatrix& lambda = backward_.lambda[point];
+    for (int i = first_; i < problem_.constraint_count; ++i) rhs(i) -= lambda.col(i).dot(dx) / problem_.scale[i];
+    const ConstraintVector nu = cholesky.solve(rhs);
+    for (int j = point; j < backward_.point_count; ++j) {
+      const double w = backward_.quadrature_weight_s[j];
+      if (!(w > 0.0) || !roles_.free[j]) continue;
+      program->theta_rad[j] = nominal_program_.theta_rad[j] + scaled(problem_, backward_.theta_gradient[j], first_).dot(nu) / w;
+    }
+    shape_program(mission_, nominal_, roles_, program);
+  }
+
+ private:
+  const Problem& problem_;
+  const BackwardRun& backward_;
+  const PointRoles& roles_;
+  const Mission& mission_;
+  const Trajectory& nominal_;
+  const ControlProgram& nominal_program_;
+  const int first_;
+  const ConstraintVector dpsi_;
+  const double mass_change_slug_;
+  SquareMatrix remaining_;  // M over the controls not yet flown
+  int next_removed_ = 0;
+  int last_point_ = 0;
+};
+
 // ---- one forward run with the steering applied -------------------------------------------------
 
 class Iteration {
@@ -541,7 +606,13 @@ Status Iteration::fly_candidate(const Steering& steering, const ConstraintVector
   }
   if (launch_changed) prepare_launch_geometry(m, &ws_->candidate_prepared);
   ++result_->forward_runs;
-  Status status = fly_trajectory(m, ws_->candidate_prepared, ws_->candidate_program, &ws_->candidate);
+  const double mass_change_slug = (m.vehicle.payload_lb - ws_->mission.vehicle.payload_lb) / m.constants.g0_ft_s2;
+  ClosedLoopSteering closed_loop(problem_, b, roles_, ws_->mission, ws_->nominal, ws_->program, steering,
+                                 step_fraction * dpsi, mass_change_slug);
+  FlightInputs inputs;
+  inputs.feedback = &closed_loop;
+  inputs.live_program = &ws_->candidate_program;
+  Status status = fly_trajectory(m, ws_->candidate_prepared, inputs, &ws_->candidate);
   if (!ok(status)) return status;
   return evaluate_constraints(problem_, m, ws_->candidate, candidate_achieved_);
 }

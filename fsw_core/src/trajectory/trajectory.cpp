@@ -30,7 +30,8 @@ class Flight {
  public:
   Flight(const Mission& mission, const PreparedCase& prepared, const FlightInputs& inputs,
          Trajectory* trajectory)
-      : mission_(mission), prepared_(prepared), program_(inputs.program), inputs_(inputs),
+      : mission_(mission), prepared_(prepared),
+        program_(inputs.feedback != nullptr ? inputs.live_program : inputs.program), inputs_(inputs),
         trajectory_(trajectory) {}
 
   Status run();
@@ -215,6 +216,7 @@ Status Flight::fly_stage(int slot, StateVector* state) {
     const double t = line.start_s + line.first_step_stage_time_s + i * line.step_s;
     const int point = trajectory_->point_count;
     if (point == inputs_.injection_point) *state += inputs_.injection;
+    if (inputs_.feedback != nullptr) inputs_.feedback->at_point(point, *state, inputs_.live_program);
     const StepCommand command = command_at(stage, point, t, line.step_s, *state);
     evaluate_flight(mission_, prepared_, stage, command, t, *state, 0.0, &eval);
     if (!eval.derivative.allFinite()) return Status::kNonFiniteState;  // nothing NaN is stored
@@ -266,6 +268,7 @@ Status Flight::run() {
   trajectory_->stage_count = 0;
   trajectory_->heat_integral_btu_ft2 = 0.0;
   if (!prepared_.prepared) return Status::kNotPrepared;
+  if (inputs_.feedback != nullptr && inputs_.live_program == nullptr) return Status::kNotPrepared;
   if (program_ != nullptr && program_->point_count != trajectory_point_count(prepared_)) {
     return Status::kControlProgramSizeMismatch;
   }

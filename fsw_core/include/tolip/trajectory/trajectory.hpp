@@ -83,10 +83,24 @@ struct Trajectory {
 // What a forward run flies besides the Mission: an optional per-point pitch program, and an
 // optional state change injected at one point (how a perturbation of the state at a given time is
 // propagated; used by the optimizer's tests of its sensitivities).
+// A pitch program that reacts to the flight: consulted at the start of every integration step with
+// the state there, it may rewrite the program's values from that point on (the optimizer's
+// closed-loop steering, Sec. 5 and 9). Implementations must not allocate.
+class PitchFeedback {
+ public:
+  virtual void at_point(int point, const StateVector& state, ControlProgram* program) = 0;
+
+ protected:
+  ~PitchFeedback() = default;
+};
+
 struct FlightInputs {
-  const ControlProgram* program = nullptr;  // null: data block 40 table
+  const ControlProgram* program = nullptr;  // null: data block 40 table (ignored with feedback)
   int injection_point = -1;                 // point whose state receives `injection` (-1: none)
   StateVector injection = StateVector::Zero();
+  // With feedback, `live_program` is flown and rewritten in flight.
+  PitchFeedback* feedback = nullptr;
+  ControlProgram* live_program = nullptr;
 };
 
 Status fly_trajectory(const Mission& mission, const PreparedCase& prepared, const FlightInputs& inputs,
