@@ -126,8 +126,7 @@ class BackwardSweep {
   void rk4_step(const StepRecord& step);
   void adams_step(const StepRecord& step);
   void coast_sensitivity(int slot, const StepCommand& last_command);
-  void attribute_theta(const StepRecord& step, double start_gradient_weight_sum,
-                       const ConstraintVector& start, const ConstraintVector& end);
+  void attribute_theta(const StepRecord& step, const ConstraintVector& start, const ConstraintVector& end);
 
   const Mission& mission_;
   const PreparedCase& prepared_;
@@ -185,7 +184,7 @@ void BackwardSweep::store(int point) {
 
 // Attitude sensitivities of a step, given the sums over its evaluations of (df/dtheta)^T a weighted
 // by how much of theta_start and theta_end each evaluation saw.
-void BackwardSweep::attribute_theta(const StepRecord& step, double, const ConstraintVector& start,
+void BackwardSweep::attribute_theta(const StepRecord& step, const ConstraintVector& start,
                                     const ConstraintVector& end) {
   const StepCommand& c = step.command;
   if (c.mode == AttitudeMode::kHeld) {
@@ -241,7 +240,7 @@ void BackwardSweep::rk4_step(const StepRecord& step) {
   // theta(t) = theta_start + fraction (theta_end - theta_start), fraction 0, 1/2, 1/2, 1.
   const ConstraintVector start = c1.theta + 0.5 * (c2.theta + c3.theta);
   const ConstraintVector end = c4.theta + 0.5 * (c2.theta + c3.theta);
-  attribute_theta(step, 0.0, start, end);
+  attribute_theta(step, start, end);
 }
 
 void BackwardSweep::adams_step(const StepRecord& step) {
@@ -265,7 +264,7 @@ void BackwardSweep::adams_step(const StepRecord& step) {
   state_.leftCols(n) += c.state.leftCols(n);
   mass_.leftCols(n) += c.mass.leftCols(n);
   if (step.command.mode == AttitudeMode::kHeld) out_->spun_chi.head(n) += c.chi.head(n);
-  attribute_theta(step, 0.0, c.theta, ConstraintVector::Zero());
+  attribute_theta(step, c.theta, ConstraintVector::Zero());
 }
 
 // Extending a coast by dT adds its derivative at the end: S = lambda . P (Sec. 9), evaluated
