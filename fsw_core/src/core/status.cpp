@@ -44,6 +44,7 @@ const char* status_name(Status status) {
     case Status::kControlProgramSizeMismatch: return "kControlProgramSizeMismatch";
     case Status::kSteeringMatrixSingular: return "kSteeringMatrixSingular";
     case Status::kOptimizerDidNotConverge: return "kOptimizerDidNotConverge";
+    case Status::kLinearizationDidNotConverge: return "kLinearizationDidNotConverge";
     case Status::kAdjustableParameterNotSupported: return "kAdjustableParameterNotSupported";
     case Status::kPayoffNotSupported: return "kPayoffNotSupported";
     case Status::kNotPrepared: return "kNotPrepared";
@@ -106,6 +107,7 @@ const char* status_message(Status status) {
     case Status::kTrajectoryStorageFull: return "the trajectory has more integration points than its fixed storage";
     case Status::kControlProgramSizeMismatch: return "the pitch program has a different number of points than the case's trajectory";
     case Status::kSteeringMatrixSingular: return "the steering matrix (integral of Lambda Lambda^T plus S Y^-1 S^T) could not be inverted: the constraints cannot be controlled independently";
+    case Status::kLinearizationDidNotConverge: return "the linearized pitch program did not meet the constraints within the linearization deadbands and the rate limits in DA13(4) forward runs";
     case Status::kOptimizerDidNotConverge: return "the optimization ended (forward-run budget or minimum improvement) with constraints outside their deadbands";
     case Status::kAdjustableParameterNotSupported: return "an adjustable parameter code of data block 6 is not supported by this optimizer yet";
     case Status::kPayoffNotSupported: return "the payoff of data block 8 does not match option IP(1) or is not supported";

@@ -51,6 +51,7 @@ enum class Status : int {
   kControlProgramSizeMismatch,
   kSteeringMatrixSingular,
   kOptimizerDidNotConverge,
+  kLinearizationDidNotConverge,
   kAdjustableParameterNotSupported,
   kPayoffNotSupported,
   kNotPrepared,

@@ -1,0 +1,76 @@
+// Linearization of the optimum pitch program (manual Sec. 6 and 10).
+//
+// The optimum theta history is replaced by at most 15 straight segments between the break times of
+// data block 18 (coded 100 n + t, moved to integration times), minimizing the eta-weighted integral
+// of (theta_linear - theta_optimum)^2 (eqs. 6-6..6-10) subject to the linearized constraint changes
+// (eq. 6-2) with some break values fixed (eqs. 6-16..6-22): theta = 90 deg at the end of lift-off,
+// the end of a maximum-pitch-rate period, and alpha = 0 at stage-2 ignition under IP(12). Payoff,
+// inclination and node constraints are not imposed; adjustable parameters and payload are held.
+// The rate limits of data block 22 are repaired by fixing break values (Sec. 10), at most five
+// programs per backward run, and forward linearization runs (at most DA13(4)) fly the segments
+// until the constraints are within the linearization deadbands (data block 29 words 14-25) with
+// no rate violation. The zero-alpha window (IP(11)) applies only during optimization.
+#pragma once
+
+#include "tolip/core/capacity.hpp"
+#include "tolip/core/status.hpp"
+#include "tolip/optimizer/steepest_descent.hpp"
+
+namespace tolip {
+
+inline constexpr int kMaxBreakPoints = kMaxLinearSegments + 1;
+
+struct LinearProgram {
+  int segment_count = 0;
+  double break_time_s[kMaxBreakPoints] = {};   // from launch
+  double theta_rad[kMaxBreakPoints] = {};
+  bool fixed[kMaxBreakPoints] = {};
+  double eta[kMaxLinearSegments] = {};         // segment weights (data block 26)
+  // Rate repairs of Sec. 10, imposed in the fit as linear equalities that keep the segment's level
+  // free: segment `rate_segment[r]` flies `rate_value_rad_s[r]`, or, for a merge, the break between
+  // it and the next segment lies on the straight line through their outer breaks.
+  int rate_repair_count = 0;
+  int rate_segment[8] = {};
+  bool rate_merge[8] = {};
+  double rate_value_rad_s[8] = {};
+  // Per segment, for the guidance table: the stage flown at its start, the start in stage time,
+  // and the pitch rate.
+  int stage_code[kMaxLinearSegments] = {};
+  double start_stage_time_s[kMaxLinearSegments] = {};
+  double rate_rad_s[kMaxLinearSegments] = {};
+};
+
+struct LinearizationResult {
+  Status status = Status::kNotPrepared;
+  bool constraints_met = false;
+  bool rate_limits_met = false;
+  int forward_runs = 0;
+  int backward_runs = 0;
+  int programs_computed = 0;
+  LinearProgram program;
+  int constraint_count = 0;
+  int codes[kMaxConstraints] = {};
+  double desired[kMaxConstraints] = {};
+  double achieved[kMaxConstraints] = {};
+  double tolerance[kMaxConstraints] = {};  // linearization deadbands
+  double payoff = 0.0;                      // achieved by the linearized trajectory
+};
+
+struct LinearizationWorkspace {
+  Mission mission;                 // the optimized case, flown without the zero-alpha window
+  PreparedCase prepared;
+  ControlProgram optimum;          // theta_OPT at every point
+  ControlProgram program;          // the current linear program sampled at every point
+  Trajectory nominal;
+  Trajectory candidate;
+  BackwardRun backward;
+};
+
+// Linearizes the optimum in `optimized` (the workspace optimize_trajectory left). The final
+// linearized trajectory is workspace->nominal. Returns kOk when every constraint is within its
+// linearization deadband and every rate limit is met; otherwise a named status with the best
+// program found.
+Status linearize_pitch_program(const OptimizerWorkspace& optimized, LinearizationWorkspace* workspace,
+                               LinearizationResult* result);
+
+}  // namespace tolip

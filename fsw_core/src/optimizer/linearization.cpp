@@ -1,0 +1,433 @@
+// Pitch-program linearization (manual Sec. 6, 10; docs/theory/linearization.md).
+#include "tolip/optimizer/linearization.hpp"
+
+#include <Eigen/LU>
+#include <cmath>
+
+#include "tolip/optimizer/constraint_parameters.hpp"
+
+namespace tolip {
+namespace {
+
+constexpr int kMaxProgramsPerBackwardRun = 5;  // Sec. 10
+constexpr double kRepairEta = 0.01;            // eta next to a fixed break (Sec. 10)
+constexpr int kMaxRateRepairs = 8;
+constexpr int kKktSize = kMaxBreakPoints + kMaxConstraints + kMaxRateRepairs;
+using KktMatrix = Eigen::Matrix<double, kKktSize, kKktSize>;
+using KktVector = Eigen::Matrix<double, kKktSize, 1>;
+
+// ---- the constraints imposed during linearization --------------------------------------------
+
+struct LinearConstraints {
+  int count = 0;                           // constraints imposed (payoff, inclination, node left out)
+  ConstraintCode codes[kMaxConstraints];
+  double desired[kMaxConstraints] = {};
+  double deadband[kMaxConstraints] = {};
+  bool inequality[kMaxConstraints] = {};
+};
+
+Status select_constraints(const Mission& mission, LinearConstraints* out) {
+  const ConstraintList& list = mission.constraints;
+  out->count = 0;
+  for (int i = 1; i < list.count; ++i) {
+    ConstraintCode code;
+    const Status status = decode_constraint_code(list.codes[i], &code);
+    if (!ok(status)) return status;
+    if (code.kind == ConstraintQuantity::kInclination || code.kind == ConstraintQuantity::kNodeLongitude) continue;
+    const int j = out->count++;
+    out->codes[j] = code;
+    out->desired[j] = list.desired[i];
+    out->deadband[j] = list.deadband_linearization[i - 1];
+    out->inequality[j] = code.kind == ConstraintQuantity::kDynamicPressure && mission.options.qbar_constraint_type() == 1;
+    if (!(out->deadband[j] > 0.0)) return Status::kValueOutOfRange;
+  }
+  return Status::kOk;
+}
+
+double correction(const LinearConstraints& c, int j, double achieved) {
+  const double d = -constraint_deviation(c.codes[j], achieved, c.desired[j]);
+  return (c.inequality[j] && d > 0.0) ? 0.0 : d;
+}
+
+Status evaluate(const LinearConstraints& c, const Mission& mission, const Trajectory& t, double achieved[]) {
+  for (int j = 0; j < c.count; ++j) {
+    const int index = constraint_point_index(c.codes[j], t);
+    if (index < 0) return Status::kValueOutOfRange;
+    const Status status =
+        constraint_value(mission.constants, mission.launch, c.codes[j], constraint_point_at(mission, t, index), &achieved[j]);
+    if (!ok(status)) return status;
+  }
+  return Status::kOk;
+}
+
+bool within_deadbands(const LinearConstraints& c, const double achieved[]) {
+  for (int j = 0; j < c.count; ++j) {
+    if (std::fabs(correction(c, j, achieved[j])) > c.deadband[j]) return false;
+  }
+  return true;
+}
+
+// ---- break times and the program at the points -------------------------------------------------
+
+double stage_start_s(const PreparedCase& prepared, int code) {
+  for (int k = 0; k < prepared.stage_count; ++k) {
+    if (prepared.timeline[k].code == code) return prepared.timeline[k].start_s;
+  }
+  return -1.0;
+}
+
+// Data block 18's coded times (100 n + t) moved to the nearest integration point of stage n.
+Status break_times(const Mission& mission, const PreparedCase& prepared, const Trajectory& t, LinearProgram* p) {
+  const LinearizationData& data = mission.linearization;
+  if (data.segment_count < 1 || data.segment_count > kMaxLinearSegments) return Status::kTooManyLinearSegments;
+  p->segment_count = data.segment_count;
+  for (int b = 0; b <= data.segment_count; ++b) {
+    const double coded = data.coded_start_times[b];
+    const int code = static_cast<int>(std::floor(coded / 100.0));
+    const double start = stage_start_s(prepared, code);
+    if (start < 0.0) return Status::kValueOutOfRange;
+    const double wanted = start + (coded - 100.0 * code);
+    double best = wanted;
+    double best_error = 1e300;
+    for (int k = 1; k < t.point_count; ++k) {
+      if (t.points[k].stage_code != code) continue;
+      const double error = std::fabs(t.points[k].time_s - wanted);
+      if (error < best_error) {
+        best_error = error;
+        best = t.points[k].time_s;
+      }
+    }
+    p->break_time_s[b] = best;
+    if (b > 0 && !(p->break_time_s[b] > p->break_time_s[b - 1])) return Status::kTableNotMonotonic;
+  }
+  for (int s = 0; s < p->segment_count; ++s) p->eta[s] = data.segment_weights[s] > 0.0 ? data.segment_weights[s] : 1.0;
+  return Status::kOk;
+}
+
+// Segment holding time t and the weight of its end break (hat functions); -1 outside the program.
+int segment_of(const LinearProgram& p, double t, double* fraction) {
+  if (t < p.break_time_s[0] - 1e-9 || t > p.break_time_s[p.segment_count] + 1e-9) return -1;
+  int s = 0;
+  while (s + 1 < p.segment_count && t >= p.break_time_s[s + 1]) ++s;
+  *fraction = (t - p.break_time_s[s]) / (p.break_time_s[s + 1] - p.break_time_s[s]);
+  return s;
+}
+
+// Samples the linear program at every point (before the first break the lift-off's 90 deg, after
+// the last break the last value, which only coasts without aerodynamics and spun stages see).
+void sample(const LinearProgram& p, const Trajectory& t, const ControlProgram& optimum, ControlProgram* out) {
+  out->point_count = t.point_count;
+  for (int k = 0; k < t.point_count; ++k) {
+    double f = 0.0;
+    const int s = segment_of(p, t.points[k].time_s, &f);
+    if (s >= 0) {
+      out->theta_rad[k] = p.theta_rad[s] + f * (p.theta_rad[s + 1] - p.theta_rad[s]);
+    } else {
+      out->theta_rad[k] = (t.points[k].time_s < p.break_time_s[0]) ? optimum.theta_rad[k] : p.theta_rad[p.segment_count];
+    }
+  }
+}
+
+void update_rates_and_stages(const Trajectory& t, LinearProgram* p) {
+  for (int s = 0; s < p->segment_count; ++s) {
+    p->rate_rad_s[s] = (p->theta_rad[s + 1] - p->theta_rad[s]) / (p->break_time_s[s + 1] - p->break_time_s[s]);
+    // The stage flown at the segment's start (at a staging instant, the stage that starts).
+    for (int k = t.point_count - 1; k >= 0; --k) {
+      if (t.points[k].time_s <= p->break_time_s[s] + 1e-9) {
+        p->stage_code[s] = t.points[k].stage_code;
+        p->start_stage_time_s[s] = t.points[k].stage_time_s + (p->break_time_s[s] - t.points[k].time_s);
+        break;
+      }
+    }
+  }
+}
+
+// ---- eq. 6-22: the constrained least-squares fit ------------------------------------------------
+
+Status solve_program(const LinearConstraints& c, const BackwardRun& backward, const Trajectory& nominal,
+                     const ControlProgram& nominal_program, const ControlProgram& optimum,
+                     const double achieved[], LinearProgram* p) {
+  const int n = p->segment_count + 1;
+  KktMatrix kkt = KktMatrix::Zero();
+  KktVector rhs = KktVector::Zero();
+  for (int k = 0; k < nominal.point_count; ++k) {
+    double f = 0.0;
+    const int s = segment_of(*p, nominal.points[k].time_s, &f);
+    const double w = backward.quadrature_weight_s[k];
+    if (s < 0 || !(w > 0.0)) continue;
+    // Hat-function row: theta_k = (1 - f) theta_s + f theta_(s+1).
+    const double h0 = 1.0 - f;
+    const double h1 = f;
+    const double weight = w * p->eta[s];
+    kkt(s, s) += weight * h0 * h0;
+    kkt(s, s + 1) += weight * h0 * h1;
+    kkt(s + 1, s) += weight * h0 * h1;
+    kkt(s + 1, s + 1) += weight * h1 * h1;
+    rhs(s) += weight * h0 * optimum.theta_rad[k];
+    rhs(s + 1) += weight * h1 * optimum.theta_rad[k];
+    for (int j = 0; j < c.count; ++j) {
+      const double g = backward.theta_gradient[k](j) / c.deadband[j];
+      kkt(n + j, s) += g * h0;
+      kkt(n + j, s + 1) += g * h1;
+      rhs(n + j) += g * nominal_program.theta_rad[k];
+    }
+  }
+  for (int j = 0; j < c.count; ++j) {
+    rhs(n + j) += correction(c, j, achieved[j]) / c.deadband[j];
+    for (int b = 0; b < n; ++b) kkt(b, n + j) = kkt(n + j, b);
+  }
+  // Rate repairs: one more multiplier row each.
+  for (int r = 0; r < p->rate_repair_count; ++r) {
+    const int row = n + c.count + r;
+    const int seg = p->rate_segment[r];
+    if (p->rate_merge[r]) {
+      const double d0 = p->break_time_s[seg + 1] - p->break_time_s[seg];
+      const double d1 = p->break_time_s[seg + 2] - p->break_time_s[seg + 1];
+      const double f = d0 / (d0 + d1);
+      kkt(row, seg) = -(1.0 - f);
+      kkt(row, seg + 1) = 1.0;
+      kkt(row, seg + 2) = -f;
+      rhs(row) = 0.0;
+    } else {
+      kkt(row, seg) = -1.0;
+      kkt(row, seg + 1) = 1.0;
+      rhs(row) = p->rate_value_rad_s[r] * (p->break_time_s[seg + 1] - p->break_time_s[seg]);
+    }
+    for (int b = 0; b < n; ++b) kkt(b, row) = kkt(row, b);
+  }
+  // Fixed break values (eq. 6-16): their rows become theta_b = value.
+  for (int b = 0; b < n; ++b) {
+    if (!p->fixed[b]) continue;
+    kkt.row(b).setZero();
+    kkt(b, b) = 1.0;
+    rhs(b) = p->theta_rad[b];
+  }
+  for (int i = n + c.count + p->rate_repair_count; i < kKktSize; ++i) kkt(i, i) = 1.0;
+  const Eigen::FullPivLU<KktMatrix> lu(kkt);
+  if (!lu.isInvertible()) return Status::kSteeringMatrixSingular;
+  const KktVector x = lu.solve(rhs);
+  if (!x.allFinite()) return Status::kNonFiniteState;
+  for (int b = 0; b < n; ++b) p->theta_rad[b] = x(b);
+  return Status::kOk;
+}
+
+// ---- rate limits and their repair (Sec. 10) ---------------------------------------------------
+
+// Adds the first repair the program needs; returns false when it meets every limit (or no repair
+// is left). A repair fixes a segment's rate (or merges two segments) and sets eta next to it to
+// 0.01, as Sec. 10 does when it fixes a break value; the fit then re-levels the whole program.
+bool repair_rate_limits(const Mission& mission, double coast_rate_rad_s_after_last, LinearProgram* p) {
+  if (p->rate_repair_count >= kMaxRateRepairs) return false;
+  const ControlConstraints& limits = mission.control;
+  const int k = p->segment_count;
+  const auto dt = [&](int s) { return p->break_time_s[s + 1] - p->break_time_s[s]; };
+  const auto rate = [&](int s) { return (p->theta_rad[s + 1] - p->theta_rad[s]) / dt(s); };
+  const auto repaired = [&](int s) {
+    for (int r = 0; r < p->rate_repair_count; ++r) {
+      if (p->rate_segment[r] == s || (p->rate_merge[r] && p->rate_segment[r] + 1 == s)) return true;
+    }
+    return false;
+  };
+  const auto impose = [&](int s, bool merge, double value) {
+    const int r = p->rate_repair_count++;
+    p->rate_segment[r] = s;
+    p->rate_merge[r] = merge;
+    p->rate_value_rad_s[r] = value;
+    if (s > 0) p->eta[s - 1] = kRepairEta;
+    if (s + 1 < k) p->eta[s + 1] = kRepairEta;
+    return true;
+  };
+  for (int s = 0; s < k; ++s) {
+    if (limits.max_pitch_rate_rad_s > 0.0 && std::fabs(rate(s)) > limits.max_pitch_rate_rad_s * (1.0 + 1e-9) &&
+        !repaired(s)) {
+      return impose(s, false, (rate(s) < 0.0 ? -1.0 : 1.0) * limits.max_pitch_rate_rad_s);
+    }
+  }
+  int positives = coast_rate_rad_s_after_last > 0.0 ? 1 : 0;
+  for (int s = 0; s < k; ++s) {
+    if (rate(s) > 0.0) ++positives;
+    if (positives > 1 && rate(s) > 0.0 && !repaired(s)) return impose(s, false, -limits.min_pitch_rate_rad_s);
+  }
+  for (int s = 0; s < k; ++s) {
+    if (limits.min_pitch_rate_rad_s > 0.0 && std::fabs(rate(s)) < limits.min_pitch_rate_rad_s * (1.0 - 1e-9) &&
+        !repaired(s)) {
+      return impose(s, false, (rate(s) > 0.0 ? 1.0 : -1.0) * limits.min_pitch_rate_rad_s);
+    }
+  }
+  for (int s = 0; s + 1 < k; ++s) {
+    if (limits.min_pitch_rate_change_rad_s > 0.0 &&
+        std::fabs(rate(s + 1) - rate(s)) < limits.min_pitch_rate_change_rad_s * (1.0 - 1e-9) && !repaired(s) &&
+        !repaired(s + 1)) {
+      return impose(s, true, 0.0);
+    }
+  }
+  return false;
+}
+
+bool meets_rate_limits(const Mission& mission, double coast_rate_after_last, const LinearProgram& p) {
+  const ControlConstraints& limits = mission.control;
+  int positives = coast_rate_after_last > 0.0 ? 1 : 0;
+  for (int s = 0; s < p.segment_count; ++s) {
+    const double r = (p.theta_rad[s + 1] - p.theta_rad[s]) / (p.break_time_s[s + 1] - p.break_time_s[s]);
+    if (limits.max_pitch_rate_rad_s > 0.0 && std::fabs(r) > limits.max_pitch_rate_rad_s * (1.0 + 1e-6)) return false;
+    if (limits.min_pitch_rate_rad_s > 0.0 && std::fabs(r) < limits.min_pitch_rate_rad_s * (1.0 - 1e-6)) return false;
+    if (r > 0.0) ++positives;
+    if (s + 1 < p.segment_count && limits.min_pitch_rate_change_rad_s > 0.0) {
+      const double r2 = (p.theta_rad[s + 2] - p.theta_rad[s + 1]) / (p.break_time_s[s + 2] - p.break_time_s[s + 1]);
+      if (std::fabs(r2 - r) < limits.min_pitch_rate_change_rad_s * (1.0 - 1e-6)) return false;
+    }
+  }
+  return positives <= 1;
+}
+
+// Rate over the coast between stages 3 and 4: from the program's last value to the spun attitude.
+double coast_rate_after_program(const Mission& mission, const PreparedCase& prepared, const LinearProgram& p) {
+  for (int k = 0; k < prepared.stage_count; ++k) {
+    const StageTimeline& line = prepared.timeline[k];
+    if (line.code == 8 && mission.options.spin_stages_4_5() == 1 && line.duration_s > 0.0) {
+      return (mission.misc.stage4_theta_rad - p.theta_rad[p.segment_count]) / line.duration_s;
+    }
+  }
+  return -1.0;
+}
+
+}  // namespace
+
+Status linearize_pitch_program(const OptimizerWorkspace& optimized, LinearizationWorkspace* ws, LinearizationResult* out) {
+  out->forward_runs = 0;
+  out->backward_runs = 0;
+  out->programs_computed = 0;
+  out->constraints_met = false;
+  out->rate_limits_met = false;
+  // The optimized case, flown without the zero-alpha window and without the in-flight alpha = 0
+  // attitude at stage-2 ignition: both become fixed values of the linear program.
+  ws->mission = optimized.mission;
+  ws->mission.options.ip[11] = 0;
+  ws->mission.options.ip[12] = 0;
+  ws->prepared = optimized.prepared;
+  const Trajectory& optimum_trajectory = optimized.nominal;
+  ws->optimum.point_count = optimum_trajectory.point_count;
+  for (int k = 0; k < optimum_trajectory.point_count; ++k) ws->optimum.theta_rad[k] = optimum_trajectory.points[k].theta_rad;
+
+  LinearConstraints c;
+  Status status = select_constraints(ws->mission, &c);
+  if (!ok(status)) return out->status = status;
+  LinearProgram base;
+  status = break_times(ws->mission, ws->prepared, optimum_trajectory, &base);
+  if (!ok(status)) return out->status = status;
+
+  // Fixed break values: 90 deg at the end of lift-off; the end of a maximum-rate period after it
+  // (the optimum's attitude there); alpha = 0 at stage-2 ignition (the optimum's attitude there).
+  const auto optimum_theta_at = [&](double t) {
+    for (int k = 1; k < optimum_trajectory.point_count; ++k) {
+      if (std::fabs(optimum_trajectory.points[k].time_s - t) < 1e-6) return optimum_trajectory.points[k].theta_rad;
+    }
+    return optimum_trajectory.points[1].theta_rad;
+  };
+  for (int b = 0; b <= base.segment_count; ++b) base.theta_rad[b] = optimum_theta_at(base.break_time_s[b]);
+  if (std::fabs(base.break_time_s[0] - ws->mission.launch.liftoff_duration_s) < 1e-6) {
+    base.theta_rad[0] = 0.5 * kPi;
+    base.fixed[0] = true;
+  }
+  if (optimized.mission.options.alpha_zero_at_stage2_ignition()) {
+    const double ignition = stage_start_s(ws->prepared, 2);
+    for (int b = 0; b <= base.segment_count; ++b) {
+      if (std::fabs(base.break_time_s[b] - ignition) < 1e-6) {
+        base.fixed[b] = true;
+        for (int k = 0; k < optimum_trajectory.point_count; ++k) {
+          if (optimum_trajectory.points[k].stage_code == 2 && std::fabs(optimum_trajectory.points[k].time_s - ignition) < 1e-6) {
+            base.theta_rad[b] = optimum_trajectory.points[k].theta_rad;
+          }
+        }
+      }
+    }
+  }
+  // The maximum-rate period after lift-off: if the optimum pitches at the limit from lift-off, the
+  // second break moves to where that period ends and keeps the optimum's attitude there (Sec. 10).
+  const double max_rate = ws->mission.control.max_pitch_rate_rad_s;
+  if (max_rate > 0.0 && base.segment_count > 1) {
+    double end_of_max_rate = -1.0;
+    for (int k = 2; k < optimum_trajectory.point_count && optimum_trajectory.points[k].time_s < base.break_time_s[2]; ++k) {
+      const TrajectoryPoint& a = optimum_trajectory.points[k - 1];
+      const TrajectoryPoint& b = optimum_trajectory.points[k];
+      const double dt = b.time_s - a.time_s;
+      if (!(dt > 0.0) || std::fabs(b.theta_rad - a.theta_rad) < max_rate * dt * 0.99) break;
+      end_of_max_rate = b.time_s;
+    }
+    if (end_of_max_rate > base.break_time_s[0]) {
+      base.break_time_s[1] = end_of_max_rate;
+      base.theta_rad[1] = optimum_theta_at(end_of_max_rate);
+      base.fixed[1] = true;
+    }
+  }
+
+  // The first nominal: the optimum program flown under the linearization rules.
+  const int budget = ws->mission.convergence.max_linearization_iterations;
+  ws->program = ws->optimum;
+  status = fly_trajectory(ws->mission, ws->prepared, ws->program, &ws->nominal);
+  if (!ok(status)) return out->status = status;
+  double achieved[kMaxConstraints] = {};
+  status = evaluate(c, ws->mission, ws->nominal, achieved);
+  if (!ok(status)) return out->status = status;
+
+  LinearProgram program = base;
+  bool success = false;
+  while (out->forward_runs < budget && !success) {
+    ConstraintTerminal terminals[kMaxConstraints];
+    for (int j = 0; j < c.count; ++j) {
+      terminals[j].point = constraint_point_index(c.codes[j], ws->nominal);
+      terminals[j].heat_integral = c.codes[j].kind == ConstraintQuantity::kTotalHeating;
+      status = constraint_partials(ws->mission.constants, ws->mission.launch, c.codes[j],
+                                   constraint_point_at(ws->mission, ws->nominal, terminals[j].point), &terminals[j].partials);
+      if (!ok(status)) return out->status = status;
+    }
+    status = run_backward(ws->mission, ws->prepared, ws->nominal, c.count, terminals, &ws->backward);
+    if (!ok(status)) return out->status = status;
+    ++out->backward_runs;
+
+    // Up to five programs from this backward run, each repairing one rate violation.
+    program = base;
+    for (int attempt = 0; attempt < kMaxProgramsPerBackwardRun; ++attempt) {
+      status = solve_program(c, ws->backward, ws->nominal, ws->program, ws->optimum, achieved, &program);
+      if (!ok(status)) return out->status = status;
+      ++out->programs_computed;
+      if (!repair_rate_limits(ws->mission, coast_rate_after_program(ws->mission, ws->prepared, program), &program)) break;
+    }
+    update_rates_and_stages(ws->nominal, &program);
+
+    // Forward linearization run.
+    sample(program, ws->nominal, ws->optimum, &ws->program);
+    status = fly_trajectory(ws->mission, ws->prepared, ws->program, &ws->candidate);
+    ++out->forward_runs;
+    if (!ok(status)) return out->status = status;
+    status = evaluate(c, ws->mission, ws->candidate, achieved);
+    if (!ok(status)) return out->status = status;
+    ws->nominal = ws->candidate;
+    out->rate_limits_met = meets_rate_limits(ws->mission, coast_rate_after_program(ws->mission, ws->prepared, program), program);
+    out->constraints_met = within_deadbands(c, achieved);
+    success = out->rate_limits_met && out->constraints_met;
+  }
+
+  out->program = program;
+  out->constraint_count = c.count;
+  for (int j = 0; j < c.count; ++j) {
+    out->codes[j] = c.codes[j].code;
+    out->desired[j] = c.desired[j];
+    out->achieved[j] = achieved[j];
+    out->tolerance[j] = c.deadband[j];
+  }
+  // The payoff of the linearized trajectory (payload payoff: the payload is held).
+  ConstraintCode payoff;
+  status = decode_constraint_code(ws->mission.constraints.codes[0], &payoff);
+  if (ok(status) && payoff.kind != ConstraintQuantity::kPayload) {
+    const int index = constraint_point_index(payoff, ws->nominal);
+    status = constraint_value(ws->mission.constants, ws->mission.launch, payoff,
+                              constraint_point_at(ws->mission, ws->nominal, index), &out->payoff);
+  } else {
+    out->payoff = ws->mission.vehicle.payload_lb;
+  }
+  out->status = success ? Status::kOk : Status::kLinearizationDidNotConverge;
+  return out->status;
+}
+
+}  // namespace tolip
