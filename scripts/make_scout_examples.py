@@ -13,10 +13,15 @@ README.md) and writes, in the TOML deck format of docs/deck-format.md:
   hardover 44-45, dispersions 46-55);
 * examples/scout/reference_optimum.toml -- the same mission flying the oracle's optimum: the
   pitch table through the optimized nodes, the optimized stage-4 theta, coast-8 duration (steps
-  stay 40) and payload.
+  stay 40) and payload;
+* examples/scout/mission.dat -- mission.toml as a heritage card deck (80-column card images, the
+  card format of docs/deck-format.md "The card deck"), punched from the TOML deck with the same
+  rules as `tolip convert mission.toml --to mission.dat` (a test checks both agree and that the
+  card deck loads to the same case as mission.toml).
 
-Every number is written with repr(), i.e. the shortest text that reads back to the same double.
-Only the Python standard library is used. The output is deterministic; re-running the script on
+Every TOML number is written with repr(), i.e. the shortest text that reads back to the same
+double; a card field holds the shortest text of at most 12 columns that reads back to the same
+double, else the most digits that fit. Only the Python standard library is used (tomllib: 3.11). The output is deterministic; re-running the script on
 an unchanged reference leaves the files byte-identical.
 """
 
@@ -672,6 +677,413 @@ def build(ref, variant):
     return deck.render()
 
 
+# ---- card deck emission (docs/deck-format.md "The card deck"; ground_tools/src/deck/card_*.cpp) --
+#
+# The card deck is punched from the TOML deck exactly as `tolip convert` does it
+# (card_writer.cpp): the words each TOML key stands for, then header cards (4I3 and the block's
+# title as a comment from column 13) and data cards, the optional groups the options select after
+# the blank card ending the case, each ended by a blank card, and the 999 card.
+
+CARD_TITLES = {  # card_blocks.cpp make_blocks()
+    1: "MAIN HEADING", 2: "CASE HEADING", 3: "DATE", 4: "OPTIONS IP", 5: "STAGE SEQUENCE ISTGE",
+    6: "ADJUSTABLE PARAMETERS IB1", 8: "TRAJECTORY CONSTRAINT PARAMETERS IB3", 9: "OUTPUT FREQUENCY IB4",
+    10: "NOMINAL CONSTANTS CT1", 11: "ATMOSPHERE CT2 BASE GEOPOTENTIAL ALTITUDE",
+    12: "ATMOSPHERE CT3 BASE MOLECULAR TEMPERATURE", 13: "ATMOSPHERE CT4 LAPSE RATE",
+    14: "ATMOSPHERE CT5 BASE DENSITY", 15: "EXTENSIONS: PAYLOAD, HEADING HOLD, LIFT STAGES",
+    16: "STAGE DURATIONS AND INTEGRATION STEPS DA1", 17: "INPUT DATA DA2",
+    18: "PITCH PROGRAM LINEARIZATION TIMES TLIN", 19: "TRAJECTORY CONSTRAINT MAGNITUDES DA4",
+    20: "INITIAL TIMES DA5", 21: "INITIAL CONDITIONS DA6", 22: "CONTROL VARIABLE CONSTRAINTS DA7",
+    23: "IMPACT EXTENSIONS: REFERENCE AREAS, CASING WEIGHT", 26: "LINEARIZATION SEGMENT WEIGHTS ETALIN",
+    27: "OPTIMIZATION PARAMETER WEIGHTS DA12", 28: "CONVERGENCE DATA DA13", 29: "CONSTRAINT DEVIATIONS DA14",
+    30: "VACUUM THRUST TABLE", 31: "DRAG COEFFICIENT TABLE (ALPHA = 0)", 32: "LIFT COEFFICIENT PER ALPHA TABLE TL1",
+    33: "DATA FOR 6D SIMULATION DA6D", 34: "FIN NORMAL FORCE COEFFICIENT PER DELTA",
+    35: "PITCHING MOMENT COEFFICIENT PER ALPHA", 36: "FIN PITCHING MOMENT COEFFICIENT PER DELTA",
+    37: "STAGE CENTER OF GRAVITY HISTORY", 38: "CONSUMABLE WEIGHT REMAINING TABLE", 39: "STAGE DATA SG",
+    40: "THETA HISTORY FOR NOMINAL TRAJECTORY TTH", 41: "RADAR STATION LOCATIONS",
+    42: "IMPACT FAILURE MODE DRAG TABLE", 43: "IMPACT EXPENDED CASING DRAG TABLE",
+    44: "HARDOVER IYY (STAGES 1-3) OR CMQ (CODE 4) TABLE", 45: "HARDOVER DATA",
+    46: "DISPERSION TRAJECTORY CODE AND TITLE", 47: "STAGE WEIGHT INCREMENT", 48: "PERCENTAGE DRAG VARIATION",
+    49: "STAGE 1 THRUST MISALIGNMENT", 50: "CONTROL SYSTEM DEADBAND ANGLE", 51: "FOURTH OR FIFTH STAGE TIPOFF",
+    52: "LAUNCH DISPERSIONS", 53: "WIND VELOCITY WINDVL", 54: "WIND AZIMUTH WINDAZ", 55: "STAGE 4 AND 5 DURATIONS",
+}
+CARD_STAGE_CODED = {23, 30, 31, 37, 38, 39, 42, 43, 44, 47, 49, 50, 51}
+CARD_TABLES = {31, 32, 34, 35, 36, 37, 40, 42, 43, 44, 53, 54}  # blank, x, y, ..., 1.0E10
+CARD_PAIRS = {30, 38}                                            # x, y, ... (complete per stage)
+CARD_TEXT = {1, 2, 3, 46}
+CARD_INTEGER = {5, 6, 8, 9}
+TABLE_END = 1.0e10
+DISPERSION_NAMES = [  # deck_common.cpp dispersion_name()
+    (range(1, 9), "vacuum thrust variation"), (range(9, 17), "weight increment"), (range(17, 19), "drag variation"),
+    (range(19, 21), "C_M_alpha variation"), (range(21, 24), "stage 1 thrust misalignment"),
+    (range(24, 30), "control system deadband"), (range(30, 33), "stage 4/5 tip-off"), (range(33, 34), "launch azimuth"),
+    (range(34, 36), "launch attitude"), (range(36, 39), "winds"), (range(40, 41), "three-sigma summary"),
+]
+OPTION_IP = {  # deck key -> IP(n)
+    key: n for n, (key, _) in OPTION_KEYS.items()
+}
+SCALAR_WORDS = [  # (block, word, TOML section, key): card_blocks.cpp scalar_keys()
+    (10, 1, "constants", "earth_rotation_rate_rad_s"), (10, 2, "constants", "gravitational_parameter_ft3_s2"),
+    (10, 3, "constants", "earth_equatorial_radius_ft"), (10, 4, "constants", "gas_constant_ft2_s2_R"),
+    (10, 5, "constants", "g0_ft_s2"), (10, 6, "constants", "sea_level_pressure_lbf_ft2"), (10, 7, "constants", "haero_ft"),
+    (10, 8, "constants", "lines_per_page"), (10, 9, "constants", "deg_to_rad_as_printed"),
+    (10, 10, "constants", "time_epsilon_s"), (10, 11, "constants", "j2"), (10, 12, "constants", "inverse_flattening"),
+    (10, 13, "constants", "ct1_13"),
+    (20, 1, "launch", "liftoff_duration_s"), (20, 2, "launch", "space_age_date_days"), (21, 1, "launch", "altitude_ft"),
+    (21, 2, "launch", "longitude_deg"), (21, 3, "launch", "geocentric_latitude_deg"), (21, 4, "launch", "velocity_ft_s"),
+    (21, 5, "launch", "azimuth_deg"), (21, 6, "launch", "flight_path_angle_deg"), (15, 2, "launch", "heading_hold_until_s"),
+    (22, 1, "control_constraints", "zero_alpha_start_s"), (22, 2, "control_constraints", "zero_alpha_end_s"),
+    (22, 3, "control_constraints", "max_pitch_rate_deg_s"), (22, 4, "control_constraints", "min_pitch_rate_deg_s"),
+    (22, 5, "control_constraints", "min_pitch_rate_change_deg_s"),
+    (17, 5, "misc", "stage4_theta_deg"), (17, 6, "misc", "stage4_chi_deg"), (17, 7, "misc", "nose_radius_ft"),
+    (17, 8, "misc", "gyro_uncage_s_before_launch"), (17, 9, "misc", "stage5_theta_deg"), (17, 10, "misc", "stage5_chi_deg"),
+    (17, 15, "misc", "payload_weighting_factor"), (17, 16, "misc", "coast_change_limit_s"),
+    (17, 17, "misc", "minimum_coast_s"),
+    (28, 1, "convergence", "initial_payoff_improvement"), (28, 2, "convergence", "stop_improvement"),
+    (28, 3, "convergence", "max_forward_trajectories"), (28, 4, "convergence", "max_linearization_iterations"),
+]
+BODY_SCALARS = [(10, "jet_vane_effectiveness_per_deg_per_vane"), (11, "moment_reference_station_in"),
+                (16, "reference_length_ft")]
+BODY_ARRAYS = [(1, "position_gain_deg_per_deg"), (4, "rate_gain_s"), (7, "control_station_in"),
+               (12, "integration_frequency_multiplier"), (17, "impact_every_nth_step")]
+
+
+def dispersion_name(code):
+    for codes, name in DISPERSION_NAMES:
+        if code in codes:
+            return name
+    raise ValueError("unknown dispersion code %d" % code)
+
+
+def card_render(value, precision):
+    """value rounded to `precision` significant digits, with a decimal point (card_blocks.cpp render)."""
+    text = "%.*e" % (precision - 1, value)
+    negative = text.startswith("-")
+    if negative:
+        text = text[1:]
+    mantissa, exponent = text.split("e")
+    exponent = int(exponent)
+    digits = mantissa.replace(".", "").rstrip("0") or "0"
+    if digits == "0":
+        return "0."
+    sign = "-" if negative else ""
+    exp_form = sign + digits[0] + "." + digits[1:] + "E" + str(exponent)
+    if exponent >= 0:
+        if exponent + 1 >= len(digits):
+            fixed = digits + "0" * (exponent + 1 - len(digits)) + "."
+        else:
+            fixed = digits[:exponent + 1] + "." + digits[exponent + 1:]
+    else:
+        fixed = "." + "0" * (-exponent - 1) + digits
+    fixed = sign + fixed
+    return fixed if len(fixed) <= 12 or len(fixed) <= len(exp_form) else exp_form
+
+
+def card_real(value, width=12):
+    """The text of an E12.8 field: exact when it fits, else the most digits that fit."""
+    value = float(value)
+    if not math.isfinite(value):
+        raise ValueError("non-finite number %r" % value)
+    if value == 0.0:
+        return "0."
+    if value == TABLE_END:
+        return "1.0E10"
+    best = ""
+    for precision in range(1, 18):
+        text = card_render(value, precision)
+        if len(text) > width:
+            continue
+        best = text
+        if float(text) == value:
+            return text
+    return best or card_render(value, 1)
+
+
+class CardWords:
+    """Words of data blocks: {(block, stage): {word: number or text}} (card_model.hpp BlockSet)."""
+
+    def __init__(self):
+        self.blocks = {}
+
+    def set(self, block, stage, word, value):
+        self.blocks.setdefault((block, stage), {})[word] = value
+
+    def text(self, block, stage, first, words, text):
+        for w in range(words):
+            self.set(block, stage, first + w, text[6 * w:6 * w + 6].ljust(6))
+
+    def table(self, block, stage, xs, ys):
+        word = 1
+        if block not in CARD_PAIRS:
+            self.set(block, stage, word, 0.0)
+            word += 1
+        for x, y in zip(xs, ys):
+            self.set(block, stage, word, x)
+            self.set(block, stage, word + 1, y)
+            word += 2
+        if block not in CARD_PAIRS:
+            self.set(block, stage, word, TABLE_END)
+
+
+def card_words(deck):
+    """The words of a TOML deck (card_writer.cpp FromToml)."""
+    opt, impact, hardover = CardWords(), CardWords(), CardWords()
+    case = deck["case"]
+    opt.text(1, 0, 1, 12, case["title"])
+    if "heading" in case:
+        opt.text(2, 0, 1, 12, case["heading"])
+    if "date" in case:
+        opt.text(3, 0, 1, 2, case["date"])
+    if "options" in deck:
+        for ip in range(1, 25):
+            key = OPTION_KEYS.get(ip, (None, None))[0]
+            opt.set(4, 0, ip, int(deck["options"].get(key, 0)) if key else 0)
+    for block, word, section, key in SCALAR_WORDS:
+        if key in deck.get(section, {}):
+            opt.set(block, 0, word, deck[section][key])
+    if "atmosphere" in deck:
+        for block, key in ((11, "base_geopotential_altitude_ft"), (12, "base_molecular_temperature_R"),
+                           (13, "lapse_rate_R_per_ft"), (14, "base_density_slug_ft3")):
+            for i, value in enumerate(deck["atmosphere"].get(key, [])):
+                opt.set(block, 0, i + 1, value)
+    vehicle = deck["vehicle"]
+    sequence = list(vehicle["sequence"])
+    if sequence and sequence[-1] == 0:
+        sequence.pop()
+    for i, code in enumerate(sequence):
+        opt.set(5, 0, i + 1, code)
+    if len(sequence) < 11:
+        opt.set(5, 0, len(sequence) + 1, 0)
+    if vehicle["payload_lb"] != 0:
+        opt.set(15, 0, 1, vehicle["payload_lb"])
+    if "lift_curve_slope" in vehicle:
+        lift = vehicle["lift_curve_slope"]
+        opt.table(32, 0, lift["mach"], lift["cl_alpha_per_rad"])
+        if "used_in_stages" in lift:
+            used = set(lift["used_in_stages"])
+            opt.set(15, 0, 3, 16 if used >= {1, 6} else 1 if 1 in used else 6 if 6 in used else 0)
+    for code in range(1, 11):
+        stage = deck["stage"].get(str(code))
+        if stage is None:
+            continue
+        if "duration_s" in stage:
+            opt.set(16, 0, 2 * code - 1, stage["duration_s"])
+        if "integration_steps" in stage:
+            opt.set(16, 0, 2 * code, stage["integration_steps"])
+        for word, key in enumerate(("jettison_weight_lb", "reference_area_ft2", "nozzle_exit_area_ft2"), 1):
+            if key in stage:
+                opt.set(39, code, word, stage[key])
+        for block, key, x_key, y_key in ((30, "thrust", "time_s", "vacuum_thrust_lbf"),
+                                         (38, "consumable_weight", "time_s", "remaining_lb"),
+                                         (31, "drag", "mach", "cd")):
+            if key in stage:
+                opt.table(block, code, stage[key][x_key], stage[key][y_key])
+    entries = deck.get("constraint", [])
+    if entries:
+        heating = len(entries) > 1 and entries[-1]["code"] == 14
+        opt.set(8, 0, 1, len(entries) - (1 if heating else 0))
+        for e, entry in enumerate(entries):
+            opt.set(8, 0, e + 2, entry["code"])
+            unit = constraint_unit(entry["code"])[0]
+            for block, word, key in ((19, e + 1, "desired"), (29, e, "deadband_optimization"),
+                                     (29, e + 13, "deadband_linearization")):
+                if block == 29 and e == 0:
+                    continue
+                name = key + "_" + unit
+                if name in entry:
+                    value = entry[name]
+                    opt.set(block, 0, word, value * (math.pi / 180.0) if unit == "deg" else value)
+    if "adjustable_parameter" in deck:
+        parameters = deck["adjustable_parameter"]
+        opt.set(6, 0, 1, len(parameters))
+        for i, entry in enumerate(parameters):
+            opt.set(6, 0, i + 2, entry["code"])
+            if "weight" in entry:
+                opt.set(27, 0, i + 1, entry["weight"])
+    if "linearization" in deck:
+        times = deck["linearization"]["coded_times"]
+        opt.set(18, 0, 1, len(times) - 1)
+        for i, value in enumerate(times):
+            opt.set(18, 0, i + 2, value)
+        for i, value in enumerate(deck["linearization"].get("segment_weights", [])):
+            opt.set(26, 0, i + 1, value)
+    if "output_frequency" in deck:
+        for k, key in enumerate(("initial", "intermediate", "final")):
+            values = deck["output_frequency"].get(key, 1)
+            for stage in range(1, 11):
+                value = values if isinstance(values, int) else values[stage - 1]
+                opt.set(9, 0, 4 * (stage - 1) + 1 + k, value)
+                opt.set(9, 0, 4 * stage, stage)
+    opt.table(40, 0, deck["pitch_program"]["time_s"], deck["pitch_program"]["theta_deg"])
+    body = deck.get("body_dynamics")
+    if body is not None:
+        for first, key in BODY_ARRAYS:
+            for i, value in enumerate(body.get(key, [])):
+                opt.set(33, 0, first + i, value)
+        for word, key in BODY_SCALARS:
+            if key in body:
+                opt.set(33, 0, word, body[key])
+        for block, key, y_key in ((34, "fin_normal_force", "cn_delta_per_rad_per_fin"),
+                                  (35, "pitching_moment", "cm_alpha_per_rad"),
+                                  (36, "fin_pitching_moment", "cm_delta_per_rad_per_fin")):
+            if key in body:
+                opt.table(block, 0, body[key]["mach"], body[key][y_key])
+        for stage in range(1, 5):
+            cg = body.get("cg", {}).get(str(stage))
+            if cg is not None:
+                opt.table(37, stage, cg["stage_time_s"], cg["station_in"])
+    for group, block, area_word in (("failure_drag", 42, 1), ("casing_drag", 43, 2)):
+        for stage in range(1, 4):
+            entry = deck.get("impact", {}).get(group, {}).get(str(stage))
+            if entry is None:
+                continue
+            impact.table(block, stage, entry["mach"], entry["cd"])
+            if "reference_area_ft2" in entry:
+                impact.set(23, stage, area_word, entry["reference_area_ft2"])
+            if "casing_weight_lb" in entry:
+                impact.set(23, stage, 3, entry["casing_weight_lb"])
+    if "hardover" in deck:
+        for stage in range(1, 4):
+            table = deck["hardover"].get("pitch_inertia", {}).get(str(stage))
+            if table is not None:
+                hardover.table(44, stage, table["stage_time_s"], table["iyy_slug_ft2"])
+        if "pitch_damping" in deck["hardover"]:
+            damping = deck["hardover"]["pitch_damping"]
+            hardover.table(44, 4, damping["mach"], damping["cmq_per_rad"])
+        for word, key in enumerate(HARDOVER_WORDS, 1):
+            if key in deck["hardover"].get("parameters", {}):
+                hardover.set(45, 0, word, deck["hardover"]["parameters"][key])
+    dispersions = []
+    for entry in deck.get("dispersion", []):
+        code = entry["code"]
+        title, words = CardWords(), CardWords()
+        title.text(46, 0, 1, 2, entry.get("title", ""))
+        if 1 <= code <= 8:
+            stage = (code + 1) // 2
+            words.table(30, stage, entry["thrust"]["time_s"], entry["thrust"]["vacuum_thrust_lbf"])
+            words.table(38, stage, entry["consumable_weight"]["time_s"], entry["consumable_weight"]["remaining_lb"])
+            for i, value in enumerate(entry.get("stage_durations_s", [])[:2]):
+                words.set(55, 0, i + 1, value)
+        elif 9 <= code <= 16:
+            words.set(47, (code - 7) // 2, 1, entry["weight_increment_lb"])
+        elif code in (17, 18):
+            words.set(48, 0, 1, entry["drag_variation_fraction"])
+        elif code in (19, 20):
+            words.table(35, 0, entry["pitching_moment"]["mach"], entry["pitching_moment"]["cm_alpha_per_rad"])
+        elif 21 <= code <= 23:
+            words.set(49, 1, 1, entry["misalignment_deg"])
+            words.set(49, 1, 2, entry["thrust_station_in"])
+        elif 24 <= code <= 29:
+            words.set(50, 2 if code <= 26 else 3, 1, entry["deadband_deg"])
+        elif 30 <= code <= 32:
+            words.set(51, entry.get("stage", 4), 1, entry["tipoff_deg"])
+        elif code == 33:
+            words.set(52, 0, 1, entry["launch_azimuth_change_deg"])
+        elif code in (34, 35):
+            words.set(52, 0, 1, entry["launch_attitude_change_deg"])
+        elif 36 <= code <= 38:
+            words.table(53, 0, entry["wind_speed"]["altitude_ft"], entry["wind_speed"]["speed_ft_s"])
+            words.table(54, 0, entry["wind_azimuth"]["altitude_ft"], entry["wind_azimuth"]["azimuth_deg"])
+        dispersions.append((code, title.blocks[(46, 0)], words))
+    return opt, impact, hardover, dispersions, deck.get("radar_station", [])
+
+
+class CardPunch:
+    """Card images (card_writer.cpp Punch)."""
+
+    def __init__(self):
+        self.cards = []
+
+    def card(self, text):
+        self.cards.append(text[:80].rstrip())
+
+    def header(self, block, first, last, stage, note):
+        self.card("%3d%3d%3d%s  %s" % (block, first, last, "%3d" % stage if stage else "   ", note))
+
+    @staticmethod
+    def field(block, word, value):
+        if block in CARD_TEXT:
+            return value.ljust(6)[:6]
+        if block == 4:
+            return "%1d" % value
+        if block in CARD_INTEGER:
+            return "%3d" % value
+        if block in CARD_TABLES and word == 1 and value == 0:
+            return " " * 12
+        return card_real(value).rjust(12)
+
+    def words(self, block, stage, words, first, last, header_stage, note):
+        self.header(block, first, last, header_stage, note)
+        per_card = 12 if block in CARD_TEXT else 24 if (block == 4 or block in CARD_INTEGER) else 6
+        line = ""
+        for n, w in enumerate(range(first, last + 1)):
+            line += self.field(block, w, words[w])
+            if (n + 1) % per_card == 0:
+                self.card(line)
+                line = ""
+        if line:
+            self.card(line)
+
+    def block(self, block, stage, words):
+        note = CARD_TITLES[block] + (" STAGE %d" % stage if block in CARD_STAGE_CODED else "")
+        present = sorted(words)
+        w = 0
+        while w < len(present):
+            end = w
+            while end + 1 < len(present) and present[end + 1] == present[end] + 1:
+                end += 1
+            self.words(block, stage, words, present[w], present[end], stage, note)
+            w = end + 1
+
+    def blocks(self, card_words, skip=()):
+        for (block, stage) in sorted(card_words.blocks):
+            if block not in skip:
+                self.block(block, stage, card_words.blocks[(block, stage)])
+
+
+def build_cards(toml_text):
+    """The card deck of a TOML deck (one case)."""
+    try:
+        import tomllib
+    except ImportError as error:  # Python < 3.11
+        raise SystemExit("the card deck needs Python 3.11 or later (tomllib): %s" % error)
+    deck = tomllib.loads(toml_text)
+    opt, impact, hardover, dispersions, radar = card_words(deck)
+    ip = lambda n: opt.blocks.get((4, 0), {}).get(n, 0) == 1  # noqa: E731
+    punch = CardPunch()
+    punch.blocks(opt)
+    punch.card("")
+    if ip(21):
+        for code, title, words in dispersions:
+            punch.words(46, 0, title, 1, 2, code, "DISPERSION " + dispersion_name(code))
+            punch.blocks(words)
+        punch.card("")
+    body = opt.blocks.get((33, 0), {})
+    if ip(22):
+        punch.blocks(hardover)
+        part = {w: v for w, v in body.items() if 7 <= w <= 16}
+        punch.block(33, 0, part)
+        for stage in range(1, 5):
+            if (37, stage) in opt.blocks:
+                punch.block(37, stage, opt.blocks[(37, stage)])
+        punch.card("")
+    if ip(23):
+        punch.blocks(impact)
+        punch.block(33, 0, {w: v for w, v in body.items() if 17 <= w <= 19})
+        punch.card("")
+    if ip(24):
+        for start in range(0, len(radar), 20):
+            part = radar[start:start + 20]
+            punch.header(41, 1, 5, len(part), "RADAR STATION LOCATIONS")
+            for station in part:
+                punch.card(station["id"].ljust(12)[:12] +
+                           "".join(card_real(station[key]).rjust(12)
+                                   for key in ("geodetic_latitude_deg", "longitude_deg", "altitude_ft")) +
+                           " " + station.get("name", "")[:31])
+        punch.card("")
+    punch.card("999")
+    return "\n".join(punch.cards) + "\n"
+
+
 def main(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--reference", default=DEFAULT_REFERENCE, help="scout_reference.json")
@@ -684,9 +1096,15 @@ def main(argv):
     os.makedirs(args.out, exist_ok=True)
     for name, variant in (("mission.toml", "initial"), ("reference_optimum.toml", "optimum")):
         path = os.path.join(args.out, name)
+        text = build(ref, variant)
         with open(path, "w", encoding="utf-8", newline="\n") as handle:
-            handle.write(build(ref, variant))
+            handle.write(text)
         print("wrote " + os.path.relpath(path, ROOT))
+        if variant == "initial":
+            path = os.path.join(args.out, "mission.dat")
+            with open(path, "w", encoding="ascii", newline="\n") as handle:
+                handle.write(build_cards(text))
+            print("wrote " + os.path.relpath(path, ROOT))
     return 0
 
 

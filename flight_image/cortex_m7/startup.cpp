@@ -1,6 +1,6 @@
 // Start-up code of the bare-metal Cortex-M7 flight image (MPS2 AN500 under QEMU):
-// the vector table, the reset handler (FPU on, .data copied, .bss zeroed, stack painted,
-// constructors run), the fault handlers, and the C++ run-time hooks a program without exit needs.
+// the vector table, the reset handler (FPU on, .data copied, .bss and .psram_bss zeroed, stack
+// painted, constructors run), the fault handlers, and the C++ run-time hooks a program without exit needs.
 // Memory map and sections: linker/cortex_m7_mps2_an500.ld. There is no heap.
 #include <cstdint>
 
@@ -14,6 +14,8 @@ extern std::uint32_t __data_start[];
 extern std::uint32_t __data_end[];
 extern std::uint32_t __bss_start[];
 extern std::uint32_t __bss_end[];
+extern std::uint32_t __psram_bss_start[];
+extern std::uint32_t __psram_bss_end[];
 extern std::uint32_t __stack_limit[];
 extern std::uint32_t __stack_top[];
 extern void (*__init_array_start[])();
@@ -93,6 +95,7 @@ extern "C" __attribute__((noreturn, used)) void tolip_reset_continue() {
   const std::uint32_t* from = __data_load;
   for (std::uint32_t* to = __data_start; to < __data_end;) *to++ = *from++;
   for (std::uint32_t* p = __bss_start; p < __bss_end; ++p) *p = 0u;
+  for (std::uint32_t* p = __psram_bss_start; p < __psram_bss_end; ++p) *p = 0u;
   paint_stack();
   for (void (**constructor)() = __init_array_start; constructor < __init_array_end; ++constructor) (*constructor)();
   const int code = tolip_target_main();

@@ -11,16 +11,23 @@
 //   3. Flies the embedded case's forward trajectory (fsw_core) and prints the end of every stage
 //      and the orbit as "TRAJ" lines (exact bit patterns), which the test compares with a
 //      tolerance because the C libraries' transcendental functions may differ in the last bit.
+//   4. Runs the full optimization of the embedded optimization case (optimize_trajectory, the
+//      reference maximum-payload case from its crude initial program) and prints its result as
+//      "OPT" lines: status, run counts, every forward run, payload and payoff, adjustable
+//      parameters, constraints, and the final trajectory's burnout state (exact bit patterns).
 //
-// Everything lives in static storage; nothing allocates.
+// Everything lives in static storage (the optimizer's workspace in the platform's, see
+// workspace.hpp); nothing allocates.
 #include "demo/flight_demo.hpp"
 
 #include <bit>
 #include <cstdint>
 
 #include "demo/text_line.hpp"
+#include "demo/workspace.hpp"
 #include "pitch_table.h"  // generated: const uint8_t tolip_pitch_table[] in section .tolip_table
 #include "tolip/core/constants.hpp"
+#include "tolip/optimizer/steepest_descent.hpp"
 #include "tolip/orbit/orbit_elements.hpp"
 #include "tolip/table/control_law.hpp"
 #include "tolip/table/crc32.hpp"
@@ -32,7 +39,8 @@
 
 namespace tolip::flight {
 
-Status build_embedded_mission(Mission* mission);  // generated (tolip_embed_mission)
+Status build_embedded_mission(Mission* mission);            // generated (tolip_embed_mission)
+Status build_embedded_optimization_case(Mission* mission);  // generated (tolip_embed_mission)
 
 namespace {
 
@@ -45,6 +53,9 @@ PreparedCase g_prepared;
 Trajectory g_trajectory;
 GuidanceTableService g_tables;
 std::uint8_t g_upload[kTableImageSize + 8];
+// The optimization case and the optimizer's result (its workspace: optimizer_workspace()).
+Mission g_optimization_case;
+OptimizerResult g_optimizer_result;
 
 const char* mode_name(GuidanceMode mode) {
   switch (mode) {
@@ -218,11 +229,95 @@ bool run_trajectory() {
   return true;
 }
 
+// "OPT name value bits": the test compares these within a tolerance; names starting "final_" are
+// the final trajectory's burnout state (the tight tolerance), the others payoff-like results.
+void opt_value(const char* name, double value) {
+  TextLine line;
+  line.text("OPT ").text(name).text(" ").fixed(value, 9).text(" ").bits(value);
+  line.emit();
+}
+
+void opt_indexed_value(const char* prefix, int index, const char* name, double value) {
+  TextLine line;
+  line.text("OPT ").text(prefix).integer(index).text(name).text(" ").fixed(value, 9).text(" ").bits(value);
+  line.emit();
+}
+
+const char* run_kind_name(RunKind kind) {
+  switch (kind) {
+    case RunKind::kInitialNominal: return "initial-nominal";
+    case RunKind::kGuidance: return "guidance";
+    case RunKind::kOptimization: return "optimization";
+    case RunKind::kFinalGuidance: return "final-guidance";
+  }
+  return "?";
+}
+
+bool run_optimization() {
+  TextLine line;
+  const Status built = build_embedded_optimization_case(&g_optimization_case);
+  status_line("OPT ", "embedded optimization case", built);
+  if (!ok(built)) return false;
+  line.text("OPT case '").text(g_optimization_case.case_heading).text("' payload ");
+  line.fixed(g_optimization_case.vehicle.payload_lb, 3).text(" lb, forward-run budget ");
+  line.integer(g_optimization_case.convergence.max_forward_trajectories);
+  line.emit();
+
+  OptimizerWorkspace& ws = *optimizer_workspace();
+  OptimizerResult& r = g_optimizer_result;
+  const Status optimized = optimize_trajectory(g_optimization_case, &ws, &r);
+  status_line("OPT ", "optimize_trajectory", optimized);
+  line.text("OPT converged ").text(r.converged ? "yes" : "no").text(" forward_runs ").integer(r.forward_runs);
+  line.text(" backward_runs ").integer(r.backward_runs).text(" iterations ").integer(r.iteration_count);
+  line.emit();
+  for (int i = 0; i < r.iteration_count && i < kMaxOptimizerIterations; ++i) {
+    const IterationRecord& it = r.iterations[i];
+    line.text("OPT run ").integer(it.forward_run, 2).text(" ").text(run_kind_name(it.kind));
+    line.text(it.successful ? " successful" : " unsuccessful");
+    line.emit();
+    opt_indexed_value("run", it.forward_run, "_payload_lb", it.payload_lb);
+    opt_indexed_value("run", it.forward_run, "_corrected_payoff", it.corrected_payoff);
+  }
+  opt_value("payload_lb", r.payload_lb);
+  opt_value("payoff", r.payoff);
+  opt_value("corrected_payoff", r.corrected_payoff);
+  for (int p = 0; p < r.adjustable_count; ++p) {
+    line.text("OPT adjustable ").integer(p + 1).text(" code ").integer(r.adjustable_codes[p]);
+    line.emit();
+    opt_indexed_value("adjustable", p + 1, "_value", r.adjustable_values[p]);
+  }
+  for (int i = 0; i < r.constraint_count; ++i) {
+    line.text("OPT constraint ").integer(i).text(" code ").integer(r.codes[i]);
+    line.emit();
+    opt_indexed_value("constraint", i, "_achieved", r.achieved[i]);
+  }
+
+  // The final trajectory (the workspace's nominal, flown with the optimized case): its burnout
+  // state, the end of its last stage.
+  const Trajectory& t = ws.nominal;
+  status_line("OPT ", "final trajectory", t.status);
+  if (!ok(t.status) || t.point_count <= 0 || t.stage_count <= 0) return false;
+  const StageEvent& last = t.stages[t.stage_count - 1];
+  line.text("OPT final points ").integer(t.point_count).text(" stages ").integer(t.stage_count);
+  line.text(", burnout: end of stage ").integer(last.code).text(" (point ").integer(last.last_point).text(")");
+  line.emit();
+  const TrajectoryPoint& p = t.points[last.last_point];
+  opt_value("final_time_s", p.time_s);
+  opt_value("final_velocity_ft_s", p.state[kStateV]);
+  opt_value("final_flight_path_angle_rad", p.state[kStateGamma]);
+  opt_value("final_radius_ft", p.state[kStateR]);
+  opt_value("final_azimuth_rad", p.state[kStatePsi]);
+  opt_value("final_latitude_rad", p.state[kStateLambda]);
+  opt_value("final_longitude_rad", p.state[kStateTau]);
+  opt_value("final_weight_lb", p.weight_lb);
+  return ok(optimized) && r.converged;
+}
+
 }  // namespace
 
 int run_flight_demo() {
   TextLine line;
-  line.text("EXEC TOLIP flight demo: guidance table loader, executor, control law; forward trajectory");
+  line.text("EXEC TOLIP flight demo: guidance table loader, executor, control law; forward trajectory; optimization");
   line.emit();
   const Status built = build_embedded_mission(&g_mission);
   status_line("EXEC ", "embedded mission", built);
@@ -233,6 +328,7 @@ int run_flight_demo() {
   bool good = load_tables();
   good = run_executor() && good;
   good = run_trajectory() && good;
+  good = run_optimization() && good;
   line.text(good ? "EXEC END OK" : "EXEC END FAILED");
   line.emit();
   return good ? 0 : 1;

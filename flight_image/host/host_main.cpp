@@ -4,10 +4,16 @@
 
 #include "demo/console.hpp"
 #include "demo/flight_demo.hpp"
+#include "demo/workspace.hpp"
 
 namespace tolip::flight {
 
 void console_write(const char* text, std::size_t length) { std::fwrite(text, 1, length, stdout); }
+
+OptimizerWorkspace* optimizer_workspace() {
+  static OptimizerWorkspace workspace;
+  return &workspace;
+}
 
 }  // namespace tolip::flight
 

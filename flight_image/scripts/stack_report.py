@@ -13,7 +13,13 @@ Inputs:
 The bound of a function is its own frame plus the largest bound among its callees; the graph must
 be acyclic (the core has no recursion, so a cycle fails the check). An indirect call must be
 resolved from the image: the only one, the constructor loop of the start-up code, calls the
-functions listed in .init_array.
+functions listed between __init_array_start and __init_array_end (the linker script keeps the
+.init_array input sections inside .text).
+
+A function GCC reports with a dynamic frame (alloca: Eigen's blocked triangular solves, built with
+EIGEN_ALLOCA) is accepted only when its code in the linked image moves the stack pointer down by
+constants alone (push, vpush, "sub sp, #N"; no "sub sp, rN"): its frame is then bounded by all of
+them added up, as if every allocation were taken at once.
 
 Checks: the bound from --root fits in --stack-size and covers the high-water mark measured on the
 target (--measured: the "TARGET stack high-water N bytes" line of the QEMU run).
@@ -64,7 +70,8 @@ def disassemble(objdump, elf):
         m = header.match(line)
         if m:
             current = m.group(1)
-            functions[current] = {"frame": 0, "calls": set(), "indirect": False}
+            # Two local functions of the same name (different objects) add up: an over-estimate.
+            functions.setdefault(current, {"frame": 0, "calls": set(), "indirect": False, "sp_by_register": False})
             continue
         if current is None or "\t" not in line:
             continue
@@ -82,6 +89,8 @@ def disassemble(objdump, elf):
             f["frame"] += 8 * count_registers(regs)
         elif mnemonic.startswith("sub") and re.match(r'^sp,\s*(sp,\s*)?#', operands):
             f["frame"] += int(re.search(r'#(\d+)', operands).group(1))
+        elif mnemonic.startswith("sub") and re.match(r'^sp,\s*(sp,\s*)?[a-z]', operands):
+            f["sp_by_register"] = True  # a stack allocation of run-time size
         elif mnemonic.startswith("str") and operands.startswith("") and "[sp, #-" in operands and "]!" in operands:
             f["frame"] += int(re.search(r'\[sp, #-(\d+)\]!', operands).group(1))
         m = re.search(r'<([^>+]+)>$', operands)
@@ -107,21 +116,28 @@ def count_registers(text):
 
 
 def init_array_functions(objdump, elf):
-    out = subprocess.run([objdump, "-s", "-j", ".init_array", elf], capture_output=True, text=True).stdout
-    words = []
-    for line in out.splitlines():
-        m = re.match(r'^ [0-9a-f]+ ((?:[0-9a-f]{8} ?)+)', line)
-        if m:
-            for w in m.group(1).split():
-                words.append(int.from_bytes(bytes.fromhex(w), "little") & ~1)
-    if not words:
-        return []
-    symbols = subprocess.run([objdump.replace("objdump", "nm"), elf], capture_output=True, text=True).stdout
-    by_address = {}
+    symbols = subprocess.run([objdump.replace("objdump", "nm"), elf], check=True, capture_output=True,
+                             text=True).stdout
+    by_address, by_name = {}, {}
     for line in symbols.splitlines():
         p = line.split()
         if len(p) == 3:
             by_address.setdefault(int(p[0], 16) & ~1, p[2])
+            by_name[p[2]] = int(p[0], 16)
+    start, end = by_name.get("__init_array_start"), by_name.get("__init_array_end")
+    if start is None or end is None:
+        raise SystemExit("no __init_array_start/__init_array_end in " + elf)
+    if end <= start:
+        return []
+    out = subprocess.run([objdump, "-s", f"--start-address={start:#x}", f"--stop-address={end:#x}", elf],
+                         check=True, capture_output=True, text=True).stdout
+    data = b""
+    for line in out.splitlines():
+        m = re.match(r'^ ([0-9a-f]+) ((?:[0-9a-f]{2,8} ?)+)', line)
+        if m:
+            data += bytes.fromhex("".join(m.group(2).split()))
+    data = data[:end - start]
+    words = [int.from_bytes(data[i:i + 4], "little") & ~1 for i in range(0, len(data), 4)]
     return [by_address.get(w, hex(w)) for w in words]
 
 
@@ -144,8 +160,13 @@ def main():
     constructors = init_array_functions(args.objdump, args.elf)
     problems = []
 
+    def symbol(name):
+        return name.rsplit(":", 1)[-1]  # .ci titles of file-local functions are "path:symbol"
+
     def frame_of(name):
         if name in frames:
+            if "dynamic" in qualifiers.get(name, "static") and symbol(name) in binary:
+                return max(frames[name], binary[symbol(name)]["frame"]), "ci+"
             return frames[name], "ci"
         if name in binary:
             return binary[name]["frame"], "elf"
@@ -165,6 +186,7 @@ def main():
         return set()
 
     visiting = set()
+    dynamic_frames = set()
 
     @lru_cache(maxsize=None)
     def bound(name):
@@ -176,8 +198,12 @@ def main():
         if own is None:
             own = 0  # a builtin expanded inline (never emitted) or a symbol absent from the image
         if qualifiers.get(name, "static") not in ("static",):
-            if "bounded" not in qualifiers[name]:
-                problems.append(f"{name}: dynamic stack ({qualifiers[name]})")
+            linked = binary.get(symbol(name))
+            if linked is None or linked["sp_by_register"]:
+                if "bounded" not in qualifiers[name]:
+                    problems.append(f"{name}: dynamic stack ({qualifiers[name]})")
+            else:
+                dynamic_frames.add(name)
         best, chain = 0, ()
         for callee in sorted(callees_of(name)):
             if callee == name:
@@ -208,9 +234,13 @@ def main():
                      f"({exception_frame} bytes): {total + handler_bound + exception_frame} bytes")
         total += handler_bound + exception_frame
     if constructors:
-        lines.append("Indirect calls resolved from .init_array: " + ", ".join(constructors))
+        lines.append("Indirect calls: only the start-up constructor loop, resolved from .init_array: "
+                     + ", ".join(f"{c} ({bound(c)[0]} bytes)" for c in constructors))
     else:
         lines.append("Indirect calls: only the start-up constructor loop, and .init_array is empty")
+    for name in sorted(dynamic_frames):
+        lines.append(f"Dynamic frame bounded from the image (constant-size allocations only): "
+                     f"{frame_of(name)[0]} bytes [ci+] {labels.get(name, name)}")
 
     measured = None
     if args.measured:

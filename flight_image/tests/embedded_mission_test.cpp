@@ -1,5 +1,6 @@
-// The flight image's embedded inputs (host build): the generated mission source rebuilds the deck's
-// case exactly, and the host flight demo runs to its end.
+// The flight image's embedded inputs (host build): the generated mission sources rebuild the decks'
+// cases exactly (the flown case, and the optimization case whose full optimization the demo runs),
+// and the host flight demo runs to its end.
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -9,12 +10,14 @@
 #include <memory>
 #include <string>
 
+#include "tolip/optimizer/steepest_descent.hpp"
 #include "tolip/trajectory/trajectory.hpp"
 #include "tolip/vehicle/prepared_case.hpp"
 #include "tolip_ground/deck.hpp"
 
 namespace tolip::flight {
-Status build_embedded_mission(Mission* mission);  // generated
+Status build_embedded_mission(Mission* mission);            // generated
+Status build_embedded_optimization_case(Mission* mission);  // generated
 }
 
 namespace tolip {
@@ -93,6 +96,32 @@ TEST(EmbeddedMission, FliesEveryTrajectoryPointBitForBitLikeTheDeck) {
   }
 }
 
+TEST(EmbeddedOptimizationCase, OptimizesBitForBitLikeTheDeck) {
+  auto deck = std::make_unique<Mission>();
+  ground::DeckError error;
+  ASSERT_TRUE(ground::load_toml_deck(TOLIP_FLIGHT_OPTIMIZATION_DECK, deck.get(), &error)) << error.to_string();
+  auto embedded = std::make_unique<Mission>();
+  ASSERT_EQ(flight::build_embedded_optimization_case(embedded.get()), Status::kOk);
+  EXPECT_STREQ(embedded->case_heading, deck->case_heading);
+  EXPECT_EQ(bits(embedded->vehicle.payload_lb), bits(deck->vehicle.payload_lb));
+
+  auto workspace = std::make_unique<OptimizerWorkspace>();
+  auto from_deck = std::make_unique<OptimizerResult>();
+  auto from_embedded = std::make_unique<OptimizerResult>();
+  ASSERT_EQ(optimize_trajectory(*deck, workspace.get(), from_deck.get()), Status::kOk);
+  const TrajectoryPoint deck_final = workspace->nominal.final_point();
+  ASSERT_EQ(optimize_trajectory(*embedded, workspace.get(), from_embedded.get()), Status::kOk);
+  const TrajectoryPoint& embedded_final = workspace->nominal.final_point();
+  EXPECT_TRUE(from_embedded->converged);
+  EXPECT_EQ(from_embedded->forward_runs, from_deck->forward_runs);
+  EXPECT_EQ(from_embedded->backward_runs, from_deck->backward_runs);
+  EXPECT_EQ(bits(from_embedded->payload_lb), bits(from_deck->payload_lb));
+  EXPECT_EQ(bits(from_embedded->corrected_payoff), bits(from_deck->corrected_payoff));
+  EXPECT_GT(from_embedded->payload_lb, 300.0);  // from 250 lb (docs/target.md: 307.68 lb)
+  for (int k = 0; k < 6; ++k) EXPECT_EQ(bits(embedded_final.state[k]), bits(deck_final.state[k])) << k;
+  EXPECT_EQ(bits(embedded_final.time_s), bits(deck_final.time_s));
+}
+
 TEST(FlightDemo, HostProgramRunsTheWholeTimelineAndEndsOk) {
   FILE* pipe = ::popen(TOLIP_FLIGHT_DEMO, "r");
   ASSERT_NE(pipe, nullptr);
@@ -109,6 +138,9 @@ TEST(FlightDemo, HostProgramRunsTheWholeTimelineAndEndsOk) {
   EXPECT_NE(out.find("EXEC event stage 4"), std::string::npos);
   EXPECT_NE(out.find("failures 0"), std::string::npos);
   EXPECT_NE(out.find("TRAJ fly_trajectory: kOk"), std::string::npos);
+  EXPECT_NE(out.find("OPT optimize_trajectory: kOk"), std::string::npos);
+  EXPECT_NE(out.find("OPT converged yes forward_runs "), std::string::npos);
+  EXPECT_NE(out.find("OPT final_velocity_ft_s "), std::string::npos);
   EXPECT_NE(out.find("EXEC END OK\n"), std::string::npos);
   EXPECT_EQ(out.find("TARGET "), std::string::npos);  // target-only lines
 }

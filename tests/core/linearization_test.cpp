@@ -24,7 +24,7 @@ TEST(Sec6Linearization, NineSegmentsMeetTheConstraintsAndTheMaximumRateWithTheOp
   mission.control.min_pitch_rate_rad_s = 0.0;
   mission.control.min_pitch_rate_change_rad_s = 0.0;
   ASSERT_EQ(optimize_trajectory(mission, &optimized, &optimum), Status::kOk);
-  ASSERT_EQ(linearize_pitch_program(optimized, &workspace, &result), Status::kOk);
+  ASSERT_EQ(linearize_pitch_program(optimized, &workspace, &result), Status::kOk) << status_name(result.status);
   std::printf("linearized in %d forward runs (%d programs); payoff %.3f lb vs optimum %.3f lb\n", result.forward_runs,
               result.programs_computed, result.payoff, optimum.payload_lb);
   EXPECT_TRUE(result.constraints_met);
@@ -39,7 +39,7 @@ TEST(Sec6Linearization, NineSegmentsMeetTheConstraintsAndTheMaximumRateWithTheOp
   int positives = 0;
   for (int s = 0; s < p.segment_count; ++s) {
     EXPECT_LE(std::fabs(p.rate_rad_s[s]), mission.control.max_pitch_rate_rad_s * (1.0 + 1e-6)) << "segment " << s;
-    positives += p.rate_rad_s[s] > 0.0 ? 1 : 0;
+    positives += p.rate_rad_s[s] > 1e-7 ? 1 : 0;
   }
   EXPECT_LE(positives, 1);
   // The linearized trajectory really flies the segments: theta is linear between the breaks.

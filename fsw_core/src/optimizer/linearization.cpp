@@ -1,8 +1,8 @@
 // Pitch-program linearization (manual Sec. 6, 10; docs/theory/linearization.md).
 #include "tolip/optimizer/linearization.hpp"
 
-#include <Eigen/LU>
 #include <cmath>
+#include <utility>
 
 #include "tolip/optimizer/constraint_parameters.hpp"
 
@@ -11,6 +11,8 @@ namespace {
 
 constexpr int kMaxProgramsPerBackwardRun = 5;  // Sec. 10
 constexpr double kRepairEta = 0.01;            // eta next to a fixed break (Sec. 10)
+// A rate counts as positive above this (rad/s): a level segment is not a second positive rate.
+constexpr double kPositiveRateRadS = 1e-7;
 constexpr int kMaxRateRepairs = 8;
 constexpr int kKktSize = kMaxBreakPoints + kMaxConstraints + kMaxRateRepairs;
 using KktMatrix = Eigen::Matrix<double, kKktSize, kKktSize>;
@@ -142,6 +144,36 @@ void update_rates_and_stages(const Trajectory& t, LinearProgram* p) {
   }
 }
 
+// Gaussian elimination with partial pivoting on the fixed-size KKT system. (Eigen's LU solvers
+// reach dynamic-size triangular blocks, which reference the heap; this loop does not.)
+bool solve_in_place(KktMatrix* a, KktVector* b, KktVector* x) {
+  KktMatrix& m = *a;
+  KktVector& r = *b;
+  for (int col = 0; col < kKktSize; ++col) {
+    int pivot = col;
+    for (int row = col + 1; row < kKktSize; ++row) {
+      if (std::fabs(m(row, col)) > std::fabs(m(pivot, col))) pivot = row;
+    }
+    if (!(std::fabs(m(pivot, col)) > 1e-300)) return false;
+    if (pivot != col) {
+      m.row(pivot).swap(m.row(col));
+      std::swap(r(pivot), r(col));
+    }
+    for (int row = col + 1; row < kKktSize; ++row) {
+      const double factor = m(row, col) / m(col, col);
+      if (factor == 0.0) continue;
+      for (int c = col; c < kKktSize; ++c) m(row, c) -= factor * m(col, c);
+      r(row) -= factor * r(col);
+    }
+  }
+  for (int row = kKktSize - 1; row >= 0; --row) {
+    double sum = r(row);
+    for (int c = row + 1; c < kKktSize; ++c) sum -= m(row, c) * (*x)(c);
+    (*x)(row) = sum / m(row, row);
+  }
+  return true;
+}
+
 // ---- eq. 6-22: the constrained least-squares fit ------------------------------------------------
 
 Status solve_program(const LinearConstraints& c, const BackwardRun& backward, const Trajectory& nominal,
@@ -203,9 +235,8 @@ Status solve_program(const LinearConstraints& c, const BackwardRun& backward, co
     rhs(b) = p->theta_rad[b];
   }
   for (int i = n + c.count + p->rate_repair_count; i < kKktSize; ++i) kkt(i, i) = 1.0;
-  const Eigen::FullPivLU<KktMatrix> lu(kkt);
-  if (!lu.isInvertible()) return Status::kSteeringMatrixSingular;
-  const KktVector x = lu.solve(rhs);
+  KktVector x;
+  if (!solve_in_place(&kkt, &rhs, &x)) return Status::kSteeringMatrixSingular;
   if (!x.allFinite()) return Status::kNonFiniteState;
   for (int b = 0; b < n; ++b) p->theta_rad[b] = x(b);
   return Status::kOk;
@@ -243,10 +274,10 @@ bool repair_rate_limits(const Mission& mission, double coast_rate_rad_s_after_la
       return impose(s, false, (rate(s) < 0.0 ? -1.0 : 1.0) * limits.max_pitch_rate_rad_s);
     }
   }
-  int positives = coast_rate_rad_s_after_last > 0.0 ? 1 : 0;
+  int positives = coast_rate_rad_s_after_last > kPositiveRateRadS ? 1 : 0;
   for (int s = 0; s < k; ++s) {
-    if (rate(s) > 0.0) ++positives;
-    if (positives > 1 && rate(s) > 0.0 && !repaired(s)) return impose(s, false, -limits.min_pitch_rate_rad_s);
+    if (rate(s) > kPositiveRateRadS) ++positives;
+    if (positives > 1 && rate(s) > kPositiveRateRadS && !repaired(s)) return impose(s, false, -limits.min_pitch_rate_rad_s);
   }
   for (int s = 0; s < k; ++s) {
     if (limits.min_pitch_rate_rad_s > 0.0 && std::fabs(rate(s)) < limits.min_pitch_rate_rad_s * (1.0 - 1e-9) &&
@@ -266,12 +297,12 @@ bool repair_rate_limits(const Mission& mission, double coast_rate_rad_s_after_la
 
 bool meets_rate_limits(const Mission& mission, double coast_rate_after_last, const LinearProgram& p) {
   const ControlConstraints& limits = mission.control;
-  int positives = coast_rate_after_last > 0.0 ? 1 : 0;
+  int positives = coast_rate_after_last > kPositiveRateRadS ? 1 : 0;
   for (int s = 0; s < p.segment_count; ++s) {
     const double r = (p.theta_rad[s + 1] - p.theta_rad[s]) / (p.break_time_s[s + 1] - p.break_time_s[s]);
     if (limits.max_pitch_rate_rad_s > 0.0 && std::fabs(r) > limits.max_pitch_rate_rad_s * (1.0 + 1e-6)) return false;
     if (limits.min_pitch_rate_rad_s > 0.0 && std::fabs(r) < limits.min_pitch_rate_rad_s * (1.0 - 1e-6)) return false;
-    if (r > 0.0) ++positives;
+    if (r > kPositiveRateRadS) ++positives;
     if (s + 1 < p.segment_count && limits.min_pitch_rate_change_rad_s > 0.0) {
       const double r2 = (p.theta_rad[s + 2] - p.theta_rad[s + 1]) / (p.break_time_s[s + 2] - p.break_time_s[s + 1]);
       if (std::fabs(r2 - r) < limits.min_pitch_rate_change_rad_s * (1.0 - 1e-6)) return false;

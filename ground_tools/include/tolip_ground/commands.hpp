@@ -39,6 +39,15 @@ struct OptimizeCommandOptions {
 int run_optimize_command(const OptimizeCommandOptions& options, std::ostream& out,
                          std::ostream& err);
 
+// `tolip convert DECK --to OUT [--format toml|cards] [--case N]`: a card deck to TOML and back.
+struct ConvertCommandOptions {
+  std::string deck_path;
+  std::string out_path;
+  std::string format;    // "toml", "cards" or empty (from the extension of out_path)
+  int case_number = 0;   // card deck -> TOML: the case (0: the deck must hold one)
+};
+int run_convert_command(const ConvertCommandOptions& options, std::ostream& out, std::ostream& err);
+
 // The whole program: parses the command line (CLI11), runs the subcommand, maps parse errors to
 // kExitBadInput. `tolip --help` and `--version` print to `out` and return kExitOk.
 int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream& err);

@@ -13,6 +13,7 @@
 
 #include "tolip/core/status.hpp"
 #include "tolip/mission/mission.hpp"
+#include "tolip/optimizer/exchange_ratios.hpp"
 #include "tolip/optimizer/steepest_descent.hpp"
 #include "tolip_ground/report.hpp"
 
@@ -30,6 +31,13 @@ struct OptimizationReport {
   // The run's status: the optimizer's (kOk when converged, kOptimizerDidNotConverge, or the core
   // failure that stopped it), or, when that is kOk, the final trajectory's or orbit's failure.
   Status status = Status::kNotPrepared;
+  // Performance exchange ratios (IP(3) = 1; manual Sec. 8, 12; compute_exchange_ratios), computed
+  // after a converged optimization. `exchange_ratios` is null unless they were computed; when the
+  // deck asks for them and they were not, `exchange_ratio_status` says why (the optimizer's status
+  // when it did not converge, else the failure of the computation).
+  bool exchange_ratios_requested = false;
+  const ExchangeRatios* exchange_ratios = nullptr;
+  Status exchange_ratio_status = Status::kNotPrepared;
 };
 
 // One constraint of data blocks 8/19/29 after the payoff, in the units of data block 19 (ft, rad,

@@ -55,12 +55,15 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
   SimulateCommandOptions simulate_options;
   CLI::App* simulate = app.add_subcommand(
       "simulate",
-      "Load a TOML case deck, fly the forward trajectory (no\n"
+      "Load a case deck (TOML, or a heritage card deck recognised by\n"
+      "its content), fly the forward trajectory of each case (no\n"
       "optimization) and report it: a manual-style listing (page\n"
       "titles of data blocks 1-3, the points data block 9 selects,\n"
-      "stage events, terminal conditions and orbit elements), or\n"
-      "one JSON document (--json); --csv FILE adds every point.");
-  simulate->add_option("DECK", simulate_options.deck_path, "TOML case deck (docs/deck-format.md)")
+      "stage events, terminal conditions and orbit elements; with\n"
+      "IP(17) the input data first), or one JSON document (--json;\n"
+      "an array of one per case for a deck of several cases);\n"
+      "--csv FILE adds every point (FILE.caseN.csv per case).");
+  simulate->add_option("DECK", simulate_options.deck_path, "TOML deck or card deck (docs/deck-format.md)")
       ->required()
       ->type_name("FILE");
   simulate
@@ -80,7 +83,8 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
   OptimizeCommandOptions optimize_options;
   CLI::App* optimize = app.add_subcommand(
       "optimize",
-      "Load a TOML case deck and optimize it: closed-loop steepest\n"
+      "Load a case deck (TOML, or a card deck of one case) and\n"
+      "optimize it: closed-loop steepest\n"
       "descent (manual Sec. 5, 9, 22) from the data block 40 pitch\n"
       "program: guidance runs into the data block 29 deadbands,\n"
       "optimization runs improving the payoff (IP(1): payload,\n"
@@ -94,7 +98,7 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
       "parameters). Exit 0 when converged; 1 when not converged\n"
       "or on a core failure (everything is still printed, with\n"
       "the best trajectory found); 2 on bad input.");
-  optimize->add_option("DECK", optimize_options.deck_path, "TOML case deck (docs/deck-format.md)")
+  optimize->add_option("DECK", optimize_options.deck_path, "TOML deck or card deck (docs/deck-format.md)")
       ->required()
       ->type_name("FILE");
   optimize
@@ -116,10 +120,11 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
   CLI::App* export_command = app.add_subcommand(
       "export",
       "Build the guidance-computer table image (docs/table-format.md)\n"
-      "from a TOML case deck and write it atomically: segments\n"
-      "(interim: from the data block 40 pitch table), lift-off,\n"
-      "spun-stage attitudes, autopilot gains, limits, CRC-32.");
-  export_command->add_option("DECK", export_options.deck_path, "TOML case deck (docs/deck-format.md)")
+      "from a case deck (TOML or cards) and write it atomically:\n"
+      "segments (interim: from the data block 40 pitch table),\n"
+      "lift-off, spun-stage attitudes, autopilot gains, limits,\n"
+      "CRC-32.");
+  export_command->add_option("DECK", export_options.deck_path, "TOML deck or card deck (docs/deck-format.md)")
       ->required()
       ->type_name("FILE");
   export_command->add_option("--out", export_options.out_path, "The binary image (812 bytes)")
@@ -150,6 +155,30 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
       ->required()
       ->type_name("FILE");
 
+  // ---- convert ---------------------------------------------------------------------------------
+  ConvertCommandOptions convert_options;
+  CLI::App* convert = app.add_subcommand(
+      "convert",
+      "Convert a deck between the heritage card format (80-column\n"
+      "card images, manual Sec. 22) and the TOML deck: DECK (either\n"
+      "format, recognised by content) is read and checked like any\n"
+      "deck, converted, read back, and written atomically to the\n"
+      "--to FILE.\n"
+      "A card deck of several cases needs --case N for TOML; cards\n"
+      "write every case (later cases as their changes).");
+  convert->add_option("DECK", convert_options.deck_path, "Card deck or TOML deck")->required()->type_name("FILE");
+  convert->add_option("--to", convert_options.out_path,
+                      "The converted deck; its format follows the name\n"
+                      "(*.toml: TOML; *.dat, *.cards, *.crd: card deck)")
+      ->required()
+      ->type_name("FILE");
+  convert->add_option("--format", convert_options.format, "Output format regardless of the name: toml or cards")
+      ->type_name("FORMAT");
+  convert->add_option("--case", convert_options.case_number,
+                      "Case of a several-case card deck to write as TOML\n"
+                      "(1-based; a TOML deck holds one case)")
+      ->type_name("N");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -169,6 +198,7 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
   if (optimize->parsed()) return run_optimize_command(optimize_options, out, err);
   if (export_command->parsed()) return run_export_command(export_options, out, err);
   if (inspect->parsed()) return run_inspect_command(inspect_options, out, err);
+  if (convert->parsed()) return run_convert_command(convert_options, out, err);
   err << "tolip: no command given\n";
   return kExitBadInput;
 }

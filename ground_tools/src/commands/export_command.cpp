@@ -11,6 +11,7 @@
 #include "tolip/table/table_image.hpp"
 #include "tolip/vehicle/prepared_case.hpp"
 #include "tolip_ground/atomic_file.hpp"
+#include "tolip_ground/card_deck.hpp"
 #include "tolip_ground/commands.hpp"
 #include "tolip_ground/deck_extras.hpp"
 #include "tolip_ground/guidance_table.hpp"
@@ -70,7 +71,7 @@ int run_export_command(const ExportCommandOptions& options, std::ostream& out, s
   std::unique_ptr<Mission> mission = make_mission();
   auto extras = std::make_unique<DeckExtras>();
   DeckError deck_error;
-  if (!load_toml_deck(options.deck_path, mission.get(), extras.get(), &deck_error)) {
+  if (!load_single_case_deck(options.deck_path, mission.get(), extras.get(), &deck_error)) {  // TOML or card deck
     err << "tolip: " << deck_error.to_string() << '\n';
     return kExitBadInput;
   }

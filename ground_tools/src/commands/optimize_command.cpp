@@ -5,12 +5,15 @@
 #include <string>
 
 #include "tolip/core/status.hpp"
+#include "tolip/optimizer/exchange_ratios.hpp"
 #include "tolip/optimizer/steepest_descent.hpp"
 #include "tolip/orbit/orbit_elements.hpp"
 #include "tolip/trajectory/trajectory.hpp"
 #include "tolip_ground/atomic_file.hpp"
+#include "tolip_ground/card_deck.hpp"
 #include "tolip_ground/commands.hpp"
 #include "tolip_ground/deck.hpp"
+#include "tolip_ground/input_echo.hpp"
 #include "tolip_ground/optimization_report.hpp"
 #include "tolip_ground/report.hpp"
 
@@ -34,7 +37,7 @@ int run_optimize_command(const OptimizeCommandOptions& options, std::ostream& ou
                          std::ostream& err) {
   std::unique_ptr<Mission> mission = make_mission();
   DeckError deck_error;
-  if (!load_toml_deck(options.deck_path, mission.get(), &deck_error)) {
+  if (!load_single_case_deck(options.deck_path, mission.get(), nullptr, &deck_error)) {  // TOML or card deck
     err << "tolip: " << deck_error.to_string() << '\n';
     return kExitBadInput;
   }
@@ -77,6 +80,27 @@ int run_optimize_command(const OptimizeCommandOptions& options, std::ostream& ou
   report.final_trajectory.status = trajectory_status;
   report.status = ok(optimizer_status) ? trajectory_status : optimizer_status;
 
+  // Performance exchange ratios (IP(3) = 1, manual Sec. 8): after a converged optimization, from
+  // the final optimized case (docs/theory/exchange-ratios.md).
+  std::unique_ptr<ExchangeRatioScratch> exchange_scratch;  // large: a Mission, a case, a trajectory
+  auto exchange_ratios = std::make_unique<ExchangeRatios>();
+  report.exchange_ratios_requested = mission->options.exchange_ratios();
+  if (report.exchange_ratios_requested) {
+    if (!ok(report.status) || !result->converged) {
+      report.exchange_ratio_status = ok(report.status) ? Status::kOptimizerDidNotConverge : report.status;
+    } else {
+      exchange_scratch = std::make_unique<ExchangeRatioScratch>();
+      report.exchange_ratio_status =
+          compute_exchange_ratios(*workspace, *result, exchange_scratch.get(), exchange_ratios.get());
+      if (ok(report.exchange_ratio_status)) {
+        report.exchange_ratios = exchange_ratios.get();
+      } else {
+        err << "tolip: exchange ratios not computed: " << status_name(report.exchange_ratio_status) << ": "
+            << status_message(report.exchange_ratio_status) << '\n';
+      }
+    }
+  }
+
   if (!options.csv_path.empty()) {
     std::string write_error;
     const bool written = write_file_atomically(
@@ -95,6 +119,7 @@ int run_optimize_command(const OptimizeCommandOptions& options, std::ostream& ou
   if (options.json) {
     out << dump_json(optimization_json(report));
   } else {
+    if (mission->options.print_input()) write_input_echo(out, options.deck_path);  // IP(17)
     write_optimization_listing(out, report);
   }
   out.flush();

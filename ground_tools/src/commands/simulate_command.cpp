@@ -1,47 +1,60 @@
-// `tolip simulate`: load a deck, fly the forward trajectory, report it (listing, CSV, JSON).
+// `tolip simulate`: load a deck (TOML or card deck), fly the forward trajectory of each case,
+// report it (listing, CSV, JSON).
 #include <memory>
 #include <ostream>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "tolip/core/status.hpp"
 #include "tolip/orbit/orbit_elements.hpp"
 #include "tolip/trajectory/trajectory.hpp"
 #include "tolip/vehicle/prepared_case.hpp"
 #include "tolip_ground/atomic_file.hpp"
+#include "tolip_ground/card_deck.hpp"
 #include "tolip_ground/commands.hpp"
 #include "tolip_ground/deck.hpp"
+#include "tolip_ground/input_echo.hpp"
 #include "tolip_ground/report.hpp"
 
 namespace tolip::ground {
 namespace {
 
-void print_status(std::ostream& err, Status status) {
-  err << "tolip: " << status_name(status) << ": " << status_message(status) << '\n';
+void print_status(std::ostream& err, Status status, const std::string& prefix) {
+  err << "tolip: " << prefix << status_name(status) << ": " << status_message(status) << '\n';
 }
 
-}  // namespace
-
-int run_simulate_command(const SimulateCommandOptions& options, std::ostream& out,
-                         std::ostream& err) {
-  std::unique_ptr<Mission> mission = make_mission();
-  DeckError deck_error;
-  if (!load_toml_deck(options.deck_path, mission.get(), &deck_error)) {
-    err << "tolip: " << deck_error.to_string() << '\n';
-    return kExitBadInput;
+// FILE for one case, FILE with ".caseN" before the extension when the deck has several.
+std::string case_csv_path(const std::string& path, int case_number, std::size_t cases) {
+  if (cases <= 1) return path;
+  const std::size_t slash = path.find_last_of('/');
+  const std::size_t dot = path.find_last_of('.');
+  const std::string tag = ".case" + std::to_string(case_number);
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash) || dot == 0 ||
+      (slash != std::string::npos && dot == slash + 1)) {
+    return path + tag;
   }
+  return path.substr(0, dot) + tag + path.substr(dot);
+}
 
-  // PreparedCase and Trajectory are large fixed-capacity structures: keep them on the heap.
-  auto prepared = std::make_unique<PreparedCase>();
-  auto trajectory = std::make_unique<Trajectory>();
-
+// One case flown: the report and the structures it points to.
+struct SimulatedCase {
+  std::unique_ptr<PreparedCase> prepared = std::make_unique<PreparedCase>();
+  std::unique_ptr<Trajectory> trajectory = std::make_unique<Trajectory>();
   SimulationReport report;
-  report.mission = mission.get();
-  report.trajectory = trajectory.get();
-  report.deck_path = options.deck_path;
+};
 
-  Status status = prepare_case(*mission, prepared.get());
+void simulate_case(const Mission& mission, const std::string& deck_path, SimulatedCase* run) {
+  // PreparedCase and Trajectory are large fixed-capacity structures: kept on the heap.
+  SimulationReport& report = run->report;
+  Trajectory* trajectory = run->trajectory.get();
+  report.mission = &mission;
+  report.trajectory = trajectory;
+  report.deck_path = deck_path;
+
+  Status status = prepare_case(mission, run->prepared.get());
   if (ok(status)) {
-    status = fly_trajectory(*mission, *prepared, trajectory.get());
+    status = fly_trajectory(mission, *run->prepared, trajectory);
     if (ok(status) && !ok(trajectory->status)) status = trajectory->status;
     if (ok(status) && stored_point_count(*trajectory) == 0) status = Status::kNotPrepared;
   } else {
@@ -51,40 +64,72 @@ int run_simulate_command(const SimulateCommandOptions& options, std::ostream& ou
   }
   if (ok(status)) {
     const TrajectoryPoint& final_point = trajectory->final_point();
-    status = compute_orbit_elements(mission->constants, final_point.state,
-                                    mission->launch.launch_space_age_date_days, &report.orbit);
+    status = compute_orbit_elements(mission.constants, final_point.state, mission.launch.launch_space_age_date_days,
+                                    &report.orbit);
     report.has_orbit = ok(status);
   }
   report.status = status;
+}
 
-  // Every point flown goes to the CSV, also after a failure (it shows where the run stopped).
-  if (!options.csv_path.empty()) {
-    std::string write_error;
-    const bool written = write_file_atomically(
-        options.csv_path,
-        [&report](std::ostream& csv) {
-          write_trajectory_csv(csv, report);
-          return static_cast<bool>(csv);
-        },
-        &write_error);
-    if (!written) {
-      err << "tolip: " << write_error << '\n';
-      return kExitFailure;
+}  // namespace
+
+int run_simulate_command(const SimulateCommandOptions& options, std::ostream& out,
+                         std::ostream& err) {
+  Deck deck;
+  DeckError deck_error;
+  if (!load_deck(options.deck_path, &deck, &deck_error)) {
+    err << "tolip: " << deck_error.to_string() << '\n';
+    return kExitBadInput;
+  }
+  const std::size_t cases = deck.cases.size();
+
+  // Everything goes to stdout at the end, so a CSV failure leaves stdout empty.
+  std::ostringstream listing;
+  nlohmann::ordered_json documents = nlohmann::ordered_json::array();
+  std::vector<std::string> failures;
+  for (const DeckCase& deck_case : deck.cases) {
+    SimulatedCase run;
+    simulate_case(*deck_case.mission, options.deck_path, &run);
+
+    // Every point flown goes to the CSV, also after a failure (it shows where the run stopped).
+    if (!options.csv_path.empty()) {
+      std::string write_error;
+      const SimulationReport& report = run.report;
+      const bool written = write_file_atomically(
+          case_csv_path(options.csv_path, deck_case.number, cases),
+          [&report](std::ostream& csv) {
+            write_trajectory_csv(csv, report);
+            return static_cast<bool>(csv);
+          },
+          &write_error);
+      if (!written) {
+        err << "tolip: " << write_error << '\n';
+        return kExitFailure;
+      }
+    }
+
+    if (options.json) {
+      documents.push_back(trajectory_json(run.report));
+    } else {
+      if (deck_case.mission->options.print_input()) write_input_echo(listing, deck, deck_case);
+      write_trajectory_listing(listing, run.report);
+    }
+    if (!ok(run.report.status)) {
+      std::ostringstream line;
+      print_status(line, run.report.status, cases > 1 ? "case " + std::to_string(deck_case.number) + ": " : "");
+      failures.push_back(line.str());
     }
   }
 
   if (options.json) {
-    out << dump_json(trajectory_json(report));
+    out << dump_json(cases == 1 ? documents[0] : documents);
   } else {
-    write_trajectory_listing(out, report);
+    out << listing.str();
   }
   out.flush();
 
-  if (!ok(status)) {
-    print_status(err, status);
-    return kExitFailure;
-  }
-  return kExitOk;
+  for (const std::string& failure : failures) err << failure;
+  return failures.empty() ? kExitOk : kExitFailure;
 }
 
 }  // namespace tolip::ground

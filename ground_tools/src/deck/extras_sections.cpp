@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "deck_common.hpp"
 #include "toml_reader.hpp"
 
 namespace tolip::ground::deck_detail {
@@ -334,21 +335,6 @@ void read_hardover(Section& root, const Mission& mission, HardoverData* hardover
 }
 
 // ---- data blocks 46-55 --------------------------------------------------------------------------
-const char* dispersion_name(int code) {
-  if (code >= 1 && code <= 8) return "vacuum thrust variation";
-  if (code >= 9 && code <= 16) return "weight increment";
-  if (code == 17 || code == 18) return "drag variation";
-  if (code == 19 || code == 20) return "C_M_alpha variation";
-  if (code >= 21 && code <= 23) return "stage 1 thrust misalignment";
-  if (code >= 24 && code <= 29) return "control system deadband";
-  if (code >= 30 && code <= 32) return "stage 4/5 tip-off";
-  if (code == 33) return "launch azimuth";
-  if (code == 34 || code == 35) return "launch attitude";
-  if (code >= 36 && code <= 38) return "winds";
-  if (code == 40) return "three-sigma summary";
-  return nullptr;
-}
-
 void read_dispersion(Section& entry, int code, DispersionCase* out) {
   const std::string label = "code " + str(code) + " (" + dispersion_name(code) + ")";
   if (code >= 1 && code <= 8) {

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "deck_common.hpp"
 #include "toml_reader.hpp"
 
 namespace tolip::ground::deck_detail {
@@ -392,57 +393,6 @@ void read_misc(Section& root, MiscellaneousData* misc) {
 }
 
 // ---- data blocks 8, 19, 29 ----------------------------------------------------------------------
-struct ConstraintUnit {
-  const char* suffix;  // key suffix in the deck
-  double to_core;      // deck value * to_core = DA4 pure units
-  const char* name;
-};
-
-bool constraint_unit(int code, ConstraintUnit* unit) {
-  static const ConstraintUnit kTerminal[] = {
-      {"lb", 1.0, "payload"},
-      {"ft_s", 1.0, "inertial velocity"},
-      {"deg", kDegToRad, "inertial flight-path angle"},
-      {"ft_s", 1.0, "V_I minus local circular velocity"},
-      {"ft", 1.0, "radius"},
-      {"ft_s", 1.0, "aerodynamic velocity"},
-      {"deg", kDegToRad, "aerodynamic flight-path angle"},
-      {"ft", 1.0, "altitude"},
-      {"nmi", 1.0, "downrange distance"},
-      {"ft2_s2", 1.0, "2E = V_I^2 - 2 mu / r"},
-      {"deg", kDegToRad, "orbit inclination"},
-      {"ft", 1.0, "perigee radius"},
-      {"deg", kDegToRad, "longitude of the ascending node"},
-      {"deg", kDegToRad, "argument of perigee"},
-      {"btu_ft2", 1.0, "total heating"},
-  };
-  static const ConstraintUnit kStagePoint[] = {
-      {"ft_s", 1.0, "aerodynamic velocity"},
-      {"deg", kDegToRad, "aerodynamic flight-path angle"},
-      {"ft", 1.0, "altitude"},
-      {"nmi", 1.0, "downrange distance"},
-      {"lb_ft2", 1.0, "dynamic pressure"},
-  };
-  static const ConstraintUnit kAsymptote[] = {
-      {"ft_s", 1.0, "hyperbolic excess velocity"},
-      {"deg", kDegToRad, "right ascension of the outward radial"},
-      {"deg", kDegToRad, "declination of the outward radial"},
-  };
-  if (code >= 0 && code <= 14) {
-    *unit = kTerminal[code];
-    return true;
-  }
-  if (code >= 15 && code <= 99 && code % 10 >= 5) {
-    *unit = kStagePoint[code % 10 - 5];
-    return true;
-  }
-  if (code >= 100 && code <= 102) {
-    *unit = kAsymptote[code - 100];
-    return true;
-  }
-  return false;
-}
-
 // Returns true when a constraint needs the launch date (inertial longitude reference).
 bool read_constraints(Section& root, const Options& options, ConstraintList* list) {
   std::vector<Section> entries = root.array_of_tables("constraint", 8);

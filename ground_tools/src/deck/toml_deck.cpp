@@ -12,6 +12,7 @@
 #include <sstream>
 #include <string>
 
+#include "deck_common.hpp"
 #include "toml_reader.hpp"
 #include "tolip_ground/deck.hpp"
 #include "tolip_ground/deck_extras.hpp"
@@ -20,6 +21,30 @@ namespace tolip::ground {
 
 std::string DeckError::to_string() const {
   std::string out = file.empty() ? std::string("<deck>") : file;
+  if (card_deck) {
+    std::string where;
+    if (line > 0) {
+      where += "card " + std::to_string(line);
+      if (first_column > 0) {
+        where += first_column == last_column || last_column <= 0
+                     ? ", column " + std::to_string(first_column)
+                     : ", columns " + std::to_string(first_column) + "-" + std::to_string(last_column);
+      }
+    }
+    std::string what;
+    auto add = [&what](const std::string& part) { what += (what.empty() ? "" : ", ") + part; };
+    if (case_number > 0) add("case " + std::to_string(case_number));
+    if (data_block > 0) add("data block " + std::to_string(data_block));
+    if (data_block > 0 && stage_code > 0) {
+      add((data_block == 46 ? "dispersion code " : data_block == 41 ? "station count " : "stage code ") +
+          std::to_string(stage_code));
+    }
+    if (word > 0) add("word " + std::to_string(word));
+    out += ": ";
+    if (!where.empty()) out += where + ": ";
+    if (!what.empty()) out += what + ": ";
+    return out + message;
+  }
   if (line > 0) {
     out += ':';
     out += std::to_string(line);
@@ -244,30 +269,6 @@ bool parse_deck(const std::string& text, const std::string& path, Mission* missi
   return false;
 }
 
-bool read_file(const std::string& path, std::string* text, DeckError* error) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    if (error != nullptr) {
-      *error = DeckError{};
-      error->file = path;
-      error->message = std::string("cannot open the deck file: ") + std::strerror(errno);
-    }
-    return false;
-  }
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  if (in.bad()) {
-    if (error != nullptr) {
-      *error = DeckError{};
-      error->file = path;
-      error->message = "cannot read the deck file";
-    }
-    return false;
-  }
-  *text = buffer.str();
-  return true;
-}
-
 }  // namespace
 
 bool parse_toml_deck(const std::string& text, const std::string& path, Mission* mission, DeckExtras* extras,
@@ -286,7 +287,7 @@ bool parse_toml_deck(const std::string& text, const std::string& path, Mission* 
 bool load_toml_deck(const std::string& path, Mission* mission, DeckExtras* extras, DeckError* error) {
   try {
     std::string text;
-    if (!read_file(path, &text, error)) return false;
+    if (!deck_detail::read_deck_file(path, &text, error)) return false;
     return parse_deck(text, path, mission, extras, error);
   } catch (...) {
     try {

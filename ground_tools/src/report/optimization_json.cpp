@@ -101,6 +101,25 @@ json theta_history_json(const Trajectory& trajectory) {
   return array;
 }
 
+// One object per powered stage (units in docs/cli.md); null when asked for but not computed.
+json exchange_ratios_json(const OptimizationReport& report) {
+  if (report.exchange_ratios == nullptr) return json(nullptr);
+  const ExchangeRatios& r = *report.exchange_ratios;
+  json array = json::array();
+  const int count = std::clamp(r.stage_count, 0, kMaxPoweredStages);
+  for (int s = 0; s < count; ++s) {
+    array.push_back(json{
+        {"stage", r.stage_codes[s]},
+        {"burn_rate", number(r.burn_rate[s])},
+        {"propellant_weight", number(r.propellant_weight[s])},
+        {"specific_impulse", number(r.specific_impulse[s])},
+        {"drag", number(r.drag[s])},
+        {"jettison_weight", number(r.jettison_weight[s])},
+    });
+  }
+  return array;
+}
+
 }  // namespace
 
 json optimization_json(const OptimizationReport& report) {
@@ -125,6 +144,7 @@ json optimization_json(const OptimizationReport& report) {
   additions["adjustable"] = adjustable_json(adjustable);
   additions["theta_history"] = theta_history_json(*report.final_trajectory.trajectory);
   additions["iterations"] = iterations_json(report, static_cast<int>(constraints.size()));
+  if (report.exchange_ratios_requested) additions["exchange_ratios"] = exchange_ratios_json(report);
 
   // The simulate document of the final trajectory, with the run's status and the additions placed
   // before the (long) point array.

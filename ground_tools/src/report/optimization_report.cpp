@@ -411,6 +411,42 @@ void write_summary(Pager& pager, const OptimizationReport& report,
   }
 }
 
+// Sec. 8 and 22 "Performance Exchange Ratios": payoff change per unit change of each stage
+// characteristic, assuming a new optimum trajectory (IP(3) = 1).
+void write_exchange_ratios(Pager& pager, const OptimizationReport& report) {
+  if (!report.exchange_ratios_requested) return;
+  const int ip1 = report.final_trajectory.mission->options.payoff();
+  const std::string unit = upper(payoff_unit(ip1));
+  const ExchangeRatios* r = report.exchange_ratios;
+  if (r == nullptr) {
+    pager.reserve(3);
+    pager.emit(" PERFORMANCE EXCHANGE RATIOS");
+    pager.emit(std::string("   NOT COMPUTED: ") + status_name(report.exchange_ratio_status) + ": " +
+               status_message(report.exchange_ratio_status));
+    pager.emit("");
+    return;
+  }
+  const int count = std::clamp(r->stage_count, 0, kMaxPoweredStages);
+  pager.reserve(7 + count);
+  pager.emit(" PERFORMANCE EXCHANGE RATIOS (SEC. 8: FIRST-ORDER PAYOFF CHANGE OF THE RE-OPTIMIZED TRAJECTORY"
+             " PER UNIT CHANGE)");
+  pager.emit("    STAGE         BURN RATE   PROPELLANT WEIGHT    SPECIFIC IMPULSE           DRAG AREA"
+             "     JETTISON WEIGHT");
+  pager.emit("          " + right(unit + "/PCT", 18) + right(unit + "/LB", 20) + right(unit + "/PCT", 20) +
+             right(unit + "/FT2", 20) + right(unit + "/LB", 20));
+  for (int s = 0; s < count; ++s) {
+    pager.emit(right(std::to_string(r->stage_codes[s]), 9) + " " + e_cell(r->burn_rate[s], 18) +
+               e_cell(r->propellant_weight[s], 20) + e_cell(r->specific_impulse[s], 20) + e_cell(r->drag[s], 20) +
+               e_cell(r->jettison_weight[s], 20));
+  }
+  pager.emit("   BURN RATE AND SPECIFIC IMPULSE PER 1 PCT, WEIGHTS PER LB, DRAG PER FT2 OF C_D S (0: NO DRAG TABLE)");
+  if (ip1 == 0) {
+    pager.emit("   PAYOFF PARTIALS' PRICE OF 1 LB OF PAYLOAD (1 AT A TRUE OPTIMUM) = " +
+               fixed_cell(r->payload_stationarity, 5, 10));
+  }
+  pager.emit("");
+}
+
 }  // namespace
 
 const char* payoff_kind_name(int ip1) {
@@ -526,6 +562,7 @@ void write_optimization_listing(std::ostream& out, const OptimizationReport& rep
   report_detail::write_trajectory_pages(pager, report.final_trajectory);
   pager.new_page("OPTIMIZATION SUMMARY", false);
   write_summary(pager, report, constraints, adjustable);
+  write_exchange_ratios(pager, report);
 }
 
 }  // namespace tolip::ground

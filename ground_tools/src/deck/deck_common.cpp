@@ -1,0 +1,97 @@
+// Deck vocabulary shared by both deck formats (deck_common.hpp).
+#include "deck_common.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "tolip/core/constants.hpp"
+
+namespace tolip::ground::deck_detail {
+
+bool constraint_unit(int code, ConstraintUnit* unit) {
+  static const ConstraintUnit kTerminal[] = {
+      {"lb", 1.0, "payload"},
+      {"ft_s", 1.0, "inertial velocity"},
+      {"deg", kDegToRad, "inertial flight-path angle"},
+      {"ft_s", 1.0, "V_I minus local circular velocity"},
+      {"ft", 1.0, "radius"},
+      {"ft_s", 1.0, "aerodynamic velocity"},
+      {"deg", kDegToRad, "aerodynamic flight-path angle"},
+      {"ft", 1.0, "altitude"},
+      {"nmi", 1.0, "downrange distance"},
+      {"ft2_s2", 1.0, "2E = V_I^2 - 2 mu / r"},
+      {"deg", kDegToRad, "orbit inclination"},
+      {"ft", 1.0, "perigee radius"},
+      {"deg", kDegToRad, "longitude of the ascending node"},
+      {"deg", kDegToRad, "argument of perigee"},
+      {"btu_ft2", 1.0, "total heating"},
+  };
+  static const ConstraintUnit kStagePoint[] = {
+      {"ft_s", 1.0, "aerodynamic velocity"},
+      {"deg", kDegToRad, "aerodynamic flight-path angle"},
+      {"ft", 1.0, "altitude"},
+      {"nmi", 1.0, "downrange distance"},
+      {"lb_ft2", 1.0, "dynamic pressure"},
+  };
+  static const ConstraintUnit kAsymptote[] = {
+      {"ft_s", 1.0, "hyperbolic excess velocity"},
+      {"deg", kDegToRad, "right ascension of the outward radial"},
+      {"deg", kDegToRad, "declination of the outward radial"},
+  };
+  if (code >= 0 && code <= 14) {
+    *unit = kTerminal[code];
+    return true;
+  }
+  if (code >= 15 && code <= 99 && code % 10 >= 5) {
+    *unit = kStagePoint[code % 10 - 5];
+    return true;
+  }
+  if (code >= 100 && code <= 102) {
+    *unit = kAsymptote[code - 100];
+    return true;
+  }
+  return false;
+}
+
+const char* dispersion_name(int code) {
+  if (code >= 1 && code <= 8) return "vacuum thrust variation";
+  if (code >= 9 && code <= 16) return "weight increment";
+  if (code == 17 || code == 18) return "drag variation";
+  if (code == 19 || code == 20) return "C_M_alpha variation";
+  if (code >= 21 && code <= 23) return "stage 1 thrust misalignment";
+  if (code >= 24 && code <= 29) return "control system deadband";
+  if (code >= 30 && code <= 32) return "stage 4/5 tip-off";
+  if (code == 33) return "launch azimuth";
+  if (code == 34 || code == 35) return "launch attitude";
+  if (code >= 36 && code <= 38) return "winds";
+  if (code == 40) return "three-sigma summary";
+  return nullptr;
+}
+
+bool read_deck_file(const std::string& path, std::string* text, DeckError* error) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    if (error != nullptr) {
+      *error = DeckError{};
+      error->file = path;
+      error->message = std::string("cannot open the deck file: ") + std::strerror(errno);
+    }
+    return false;
+  }
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  if (in.bad()) {
+    if (error != nullptr) {
+      *error = DeckError{};
+      error->file = path;
+      error->message = "cannot read the deck file";
+    }
+    return false;
+  }
+  *text = buffer.str();
+  return true;
+}
+
+}  // namespace tolip::ground::deck_detail

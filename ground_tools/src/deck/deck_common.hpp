@@ -1,0 +1,29 @@
+// Deck vocabulary shared by the TOML reader and the card-deck reader/writer (ground_tools/src/deck/):
+// the units of the constraint codes (data blocks 8, 19, 29) and the names of the dispersion codes
+// (data block 46). One table each, so both deck formats agree.
+#pragma once
+
+#include <string>
+
+#include "tolip_ground/deck.hpp"
+
+namespace tolip::ground::deck_detail {
+
+// Unit of a constraint code's desired value and deadbands: the TOML key suffix and the factor from
+// the deck's human unit to the core's pure unit (block 19/29 hold radians for angles).
+struct ConstraintUnit {
+  const char* suffix;  // key suffix in the deck
+  double to_core;      // deck value * to_core = DA4 pure units
+  const char* name;
+};
+
+// The unit of a constraint code (0-14, X5-X9 for stage points, 100-102); false for an unknown code.
+bool constraint_unit(int code, ConstraintUnit* unit);
+
+// The kind of dispersed trajectory of a data block 46 code (1-38, 40); nullptr for an unknown code.
+const char* dispersion_name(int code);
+
+// Reads a whole deck file; false with *error ("cannot open the deck file: ...") on failure.
+bool read_deck_file(const std::string& path, std::string* text, DeckError* error);
+
+}  // namespace tolip::ground::deck_detail
