@@ -641,7 +641,7 @@ Status Iteration::run(const Mission& input) {
   if (!ok(status)) return status;
   const int budget = ws_->mission.convergence.max_forward_trajectories;
 
-  // Guidance: every forward guidance run becomes the new nominal (Sec. 22); a step that makes the
+  // Guidance: every forward guidance run becomes the nominal (Sec. 22); a step that makes the
   // errors worse is retried at half size first (our safeguard, docs/theory/optimizer.md).
   Steering steering;
   while (!within_deadbands(problem_, nominal_achieved_) && result_->forward_runs < budget - 1) {

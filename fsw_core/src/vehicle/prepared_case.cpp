@@ -57,7 +57,7 @@ Status build_timeline(const Mission& mission, PreparedCase* prepared) {
 }
 
 // Sec. 14: re-tabulate the vacuum thrust at the integration times, remove the initial pulse by a
-// new T(0) that keeps the impulse of the first integration interval, and scale every entry so the
+// replacement T(0) that keeps the impulse of the first integration interval, and scale every entry so the
 // stage's ideal velocity equals that of the input table.
 Status modify_thrust_table(const Mission& mission, const StageTimeline& line,
                            ModifiedThrustTable* table, ThrustModification* modification) {

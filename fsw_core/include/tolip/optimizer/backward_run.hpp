@@ -43,7 +43,7 @@ struct BackwardRun {
   // dZ_j / dX at every point (column j = constraint j).
   AdjointMatrix lambda[kMaxTrajectoryPoints];
   // dZ_j / d theta_k: the effect of the per-point pitch-program value theta_k (rad) on constraint j.
-  // Zero at points whose attitude is not free (lift-off, zero-alpha window, alpha = 0 at stage-2
+  // Zero at points whose attitude is not a control (lift-off, zero-alpha window, alpha = 0 at stage-2
   // ignition, spun stages).
   ConstraintVector theta_gradient[kMaxTrajectoryPoints];
   // Weight of point k in the control measure: the integral of dtheta^2 dt is sum w_k dtheta_k^2.

@@ -15,7 +15,7 @@
 // step with the pitch program (DA2(15)); kappa -> 1 at a true optimum. The manual integrates the
 // same first-order effects with the adjoint (the L and R arrays of eqs. 8-19..8-21); differences of
 // forward runs of the model that was optimized are an equivalent first-order computation that needs
-// no new adjoint forcing terms. docs/theory/exchange-ratios.md gives the definitions, the
+// no added adjoint forcing terms. docs/theory/exchange-ratios.md gives the definitions, the
 // derivation of kappa, the signs and the measured agreement with re-optimization.
 #pragma once
 

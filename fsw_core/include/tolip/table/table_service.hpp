@@ -1,5 +1,5 @@
 // Flight-side table service for the guidance table image, in the style of flight table services:
-// two buffers, one active and one inactive. A new image is copied into the inactive buffer
+// two buffers, one active and one inactive. An uploaded image is copied into the inactive buffer
 // (stage), checked and decoded there (validate), and only then made active by one atomic store of
 // the active index (commit). A rejected image leaves the active table untouched, and the status
 // names the cause (docs/table-format.md, "Loading").
