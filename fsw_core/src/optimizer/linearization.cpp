@@ -13,10 +13,11 @@ constexpr int kMaxProgramsPerBackwardRun = 5;  // Sec. 10
 constexpr double kRepairEta = 0.01;            // eta next to a fixed break (Sec. 10)
 // A rate counts as positive above this (rad/s): a level segment is not a second positive rate.
 constexpr double kPositiveRateRadS = 1e-7;
-constexpr int kMaxRateRepairs = 8;
-constexpr int kKktSize = kMaxBreakPoints + kMaxConstraints + kMaxRateRepairs;
-using KktMatrix = Eigen::Matrix<double, kKktSize, kKktSize>;
-using KktVector = Eigen::Matrix<double, kKktSize, 1>;
+// Adjacent rates closer than this (rad/s) are one merged segment: the break is not a rate change.
+constexpr double kMergedRateRadS = 1e-9;
+using KktMatrix = Eigen::Matrix<double, kLinearizationKktSize, kLinearizationKktSize>;
+using KktVector = Eigen::Matrix<double, kLinearizationKktSize, 1>;
+constexpr int kKktSize = kLinearizationKktSize;
 
 // ---- the constraints imposed during linearization --------------------------------------------
 
@@ -26,11 +27,18 @@ struct LinearConstraints {
   double desired[kMaxConstraints] = {};
   double deadband[kMaxConstraints] = {};
   bool inequality[kMaxConstraints] = {};
+  // Payload payoff: the payload is the payoff, which linearization does not impose, so it is free
+  // to absorb what the straight segments lose (docs/theory/linearization.md).
+  bool payload_free = false;
 };
 
 Status select_constraints(const Mission& mission, LinearConstraints* out) {
   const ConstraintList& list = mission.constraints;
   out->count = 0;
+  ConstraintCode payoff;
+  const Status payoff_status = decode_constraint_code(list.codes[0], &payoff);
+  if (!ok(payoff_status)) return payoff_status;
+  out->payload_free = payoff.kind == ConstraintQuantity::kPayload;
   for (int i = 1; i < list.count; ++i) {
     ConstraintCode code;
     const Status status = decode_constraint_code(list.codes[i], &code);
@@ -178,10 +186,15 @@ bool solve_in_place(KktMatrix* a, KktVector* b, KktVector* x) {
 
 Status solve_program(const LinearConstraints& c, const BackwardRun& backward, const Trajectory& nominal,
                      const ControlProgram& nominal_program, const ControlProgram& optimum,
-                     const double achieved[], LinearProgram* p) {
-  const int n = p->segment_count + 1;
-  KktMatrix kkt = KktMatrix::Zero();
-  KktVector rhs = KktVector::Zero();
+                     const double achieved[], KktMatrix* kkt_storage, KktVector* rhs_storage, LinearProgram* p,
+                     double* payload_change_lb) {
+  // Unknowns: the break values, then the payload change when it is free.
+  const int breaks = p->segment_count + 1;
+  const int n = breaks + (c.payload_free ? 1 : 0);
+  KktMatrix& kkt = *kkt_storage;
+  KktVector& rhs = *rhs_storage;
+  kkt.setZero();
+  rhs.setZero();
   for (int k = 0; k < nominal.point_count; ++k) {
     double f = 0.0;
     const int s = segment_of(*p, nominal.points[k].time_s, &f);
@@ -206,6 +219,7 @@ Status solve_program(const LinearConstraints& c, const BackwardRun& backward, co
   }
   for (int j = 0; j < c.count; ++j) {
     rhs(n + j) += correction(c, j, achieved[j]) / c.deadband[j];
+    if (c.payload_free) kkt(n + j, breaks) = backward.payload(j) / c.deadband[j];
     for (int b = 0; b < n; ++b) kkt(b, n + j) = kkt(n + j, b);
   }
   // Rate repairs: one more multiplier row each.
@@ -228,69 +242,105 @@ Status solve_program(const LinearConstraints& c, const BackwardRun& backward, co
     for (int b = 0; b < n; ++b) kkt(b, row) = kkt(row, b);
   }
   // Fixed break values (eq. 6-16): their rows become theta_b = value.
-  for (int b = 0; b < n; ++b) {
+  for (int b = 0; b < breaks; ++b) {
     if (!p->fixed[b]) continue;
     kkt.row(b).setZero();
     kkt(b, b) = 1.0;
     rhs(b) = p->theta_rad[b];
   }
   for (int i = n + c.count + p->rate_repair_count; i < kKktSize; ++i) kkt(i, i) = 1.0;
-  KktVector x;
+  KktVector x = KktVector::Zero();
   if (!solve_in_place(&kkt, &rhs, &x)) return Status::kSteeringMatrixSingular;
   if (!x.allFinite()) return Status::kNonFiniteState;
-  for (int b = 0; b < n; ++b) p->theta_rad[b] = x(b);
+  for (int b = 0; b < breaks; ++b) p->theta_rad[b] = x(b);
+  *payload_change_lb = c.payload_free ? x(breaks) : 0.0;
   return Status::kOk;
 }
 
 // ---- rate limits and their repair (Sec. 10) ---------------------------------------------------
 
-// Adds the first repair the program needs; returns false when it meets every limit (or no repair
-// is left). A repair fixes a segment's rate (or merges two segments) and sets eta next to it to
-// 0.01, as Sec. 10 does when it fixes a break value; the fit then re-levels the whole program.
+// Segments [first, last] joined to segment s by merges, and whether one of them has its rate fixed
+// (then the whole group flies that rate).
+struct MergeGroup {
+  int first = 0;
+  int last = 0;
+  bool rate_fixed = false;
+};
+
+bool merged_right(const LinearProgram& p, int s) {
+  for (int r = 0; r < p.rate_repair_count; ++r) {
+    if (p.rate_merge[r] && p.rate_segment[r] == s) return true;
+  }
+  return false;
+}
+
+MergeGroup merge_group(const LinearProgram& p, int s) {
+  MergeGroup g;
+  g.first = s;
+  g.last = s;
+  while (g.first > 0 && merged_right(p, g.first - 1)) --g.first;
+  while (g.last + 1 < p.segment_count && merged_right(p, g.last)) ++g.last;
+  for (int r = 0; r < p.rate_repair_count; ++r) {
+    if (!p.rate_merge[r] && p.rate_segment[r] >= g.first && p.rate_segment[r] <= g.last) g.rate_fixed = true;
+  }
+  return g;
+}
+
+double segment_rate(const LinearProgram& p, int s) {
+  return (p.theta_rad[s + 1] - p.theta_rad[s]) / (p.break_time_s[s + 1] - p.break_time_s[s]);
+}
+
+// A break where the rate does not change (a merge, or a rate fixed equal to its neighbour's) joins
+// two segments into one: it is neither a change of rate nor a second positive rate.
+bool continues_previous(const LinearProgram& p, int s) {
+  return s > 0 && std::fabs(segment_rate(p, s) - segment_rate(p, s - 1)) < kMergedRateRadS;
+}
+
+// Adds the first repair the program needs, in the order of Sec. 10 (maximum rate, a single positive
+// rate, minimum rate, minimum change of rate); returns false when it meets every limit or no repair
+// is possible. A repair fixes the rate of a segment's merge group, or merges two adjacent segments
+// (eliminating a break, as Sec. 10 does), and sets eta next to it to 0.01. A group whose rate is
+// already fixed is not repaired again; merging into such a group makes the other side fly its rate.
 bool repair_rate_limits(const Mission& mission, double coast_rate_rad_s_after_last, LinearProgram* p) {
   if (p->rate_repair_count >= kMaxRateRepairs) return false;
   const ControlConstraints& limits = mission.control;
   const int k = p->segment_count;
-  const auto dt = [&](int s) { return p->break_time_s[s + 1] - p->break_time_s[s]; };
-  const auto rate = [&](int s) { return (p->theta_rad[s + 1] - p->theta_rad[s]) / dt(s); };
-  const auto repaired = [&](int s) {
-    for (int r = 0; r < p->rate_repair_count; ++r) {
-      if (p->rate_segment[r] == s || (p->rate_merge[r] && p->rate_segment[r] + 1 == s)) return true;
-    }
-    return false;
-  };
+  const auto rate = [&](int s) { return segment_rate(*p, s); };
   const auto impose = [&](int s, bool merge, double value) {
     const int r = p->rate_repair_count++;
     p->rate_segment[r] = s;
     p->rate_merge[r] = merge;
     p->rate_value_rad_s[r] = value;
-    if (s > 0) p->eta[s - 1] = kRepairEta;
-    if (s + 1 < k) p->eta[s + 1] = kRepairEta;
+    const MergeGroup g = merge_group(*p, s);
+    if (g.first > 0) p->eta[g.first - 1] = kRepairEta;
+    if (g.last + 1 < k) p->eta[g.last + 1] = kRepairEta;
     return true;
   };
   for (int s = 0; s < k; ++s) {
     if (limits.max_pitch_rate_rad_s > 0.0 && std::fabs(rate(s)) > limits.max_pitch_rate_rad_s * (1.0 + 1e-9) &&
-        !repaired(s)) {
+        !merge_group(*p, s).rate_fixed) {
       return impose(s, false, (rate(s) < 0.0 ? -1.0 : 1.0) * limits.max_pitch_rate_rad_s);
     }
   }
   int positives = coast_rate_rad_s_after_last > kPositiveRateRadS ? 1 : 0;
   for (int s = 0; s < k; ++s) {
-    if (rate(s) > kPositiveRateRadS) ++positives;
-    if (positives > 1 && rate(s) > kPositiveRateRadS && !repaired(s)) return impose(s, false, -limits.min_pitch_rate_rad_s);
+    if (!(rate(s) > kPositiveRateRadS) || continues_previous(*p, s)) continue;
+    ++positives;
+    if (positives > 1 && !merge_group(*p, s).rate_fixed) return impose(s, false, -limits.min_pitch_rate_rad_s);
   }
   for (int s = 0; s < k; ++s) {
     if (limits.min_pitch_rate_rad_s > 0.0 && std::fabs(rate(s)) < limits.min_pitch_rate_rad_s * (1.0 - 1e-9) &&
-        !repaired(s)) {
+        !merge_group(*p, s).rate_fixed) {
       return impose(s, false, (rate(s) > 0.0 ? 1.0 : -1.0) * limits.min_pitch_rate_rad_s);
     }
   }
   for (int s = 0; s + 1 < k; ++s) {
-    if (limits.min_pitch_rate_change_rad_s > 0.0 &&
-        std::fabs(rate(s + 1) - rate(s)) < limits.min_pitch_rate_change_rad_s * (1.0 - 1e-9) && !repaired(s) &&
-        !repaired(s + 1)) {
-      return impose(s, true, 0.0);
+    if (!(limits.min_pitch_rate_change_rad_s > 0.0) || continues_previous(*p, s + 1) ||
+        std::fabs(rate(s + 1) - rate(s)) >= limits.min_pitch_rate_change_rad_s * (1.0 - 1e-9)) {
+      continue;
     }
+    if (merge_group(*p, s).rate_fixed && merge_group(*p, s + 1).rate_fixed) continue;
+    return impose(s, true, 0.0);
   }
   return false;
 }
@@ -299,13 +349,13 @@ bool meets_rate_limits(const Mission& mission, double coast_rate_after_last, con
   const ControlConstraints& limits = mission.control;
   int positives = coast_rate_after_last > kPositiveRateRadS ? 1 : 0;
   for (int s = 0; s < p.segment_count; ++s) {
-    const double r = (p.theta_rad[s + 1] - p.theta_rad[s]) / (p.break_time_s[s + 1] - p.break_time_s[s]);
+    const double r = segment_rate(p, s);
     if (limits.max_pitch_rate_rad_s > 0.0 && std::fabs(r) > limits.max_pitch_rate_rad_s * (1.0 + 1e-6)) return false;
     if (limits.min_pitch_rate_rad_s > 0.0 && std::fabs(r) < limits.min_pitch_rate_rad_s * (1.0 - 1e-6)) return false;
-    if (r > kPositiveRateRadS) ++positives;
-    if (s + 1 < p.segment_count && limits.min_pitch_rate_change_rad_s > 0.0) {
-      const double r2 = (p.theta_rad[s + 2] - p.theta_rad[s + 1]) / (p.break_time_s[s + 2] - p.break_time_s[s + 1]);
-      if (std::fabs(r2 - r) < limits.min_pitch_rate_change_rad_s * (1.0 - 1e-6)) return false;
+    if (r > kPositiveRateRadS && !continues_previous(p, s)) ++positives;
+    if (s + 1 < p.segment_count && limits.min_pitch_rate_change_rad_s > 0.0 && !continues_previous(p, s + 1) &&
+        std::fabs(segment_rate(p, s + 1) - r) < limits.min_pitch_rate_change_rad_s * (1.0 - 1e-6)) {
+      return false;
     }
   }
   return positives <= 1;
@@ -416,10 +466,22 @@ Status linearize_pitch_program(const OptimizerWorkspace& optimized, Linearizatio
     if (!ok(status)) return out->status = status;
     ++out->backward_runs;
 
-    // Up to five programs from this backward run, each repairing one rate violation.
+    // Up to five programs from this backward run, each repairing one rate violation. The repairs
+    // and their eta of earlier backward runs are kept (docs/theory/linearization.md): restarting
+    // from none lets the program's structure flip between runs, and with it the trajectory.
+    const LinearProgram previous = program;
+    double payload_change_lb = 0.0;
     program = base;
+    program.rate_repair_count = previous.rate_repair_count;
+    for (int r = 0; r < previous.rate_repair_count; ++r) {
+      program.rate_segment[r] = previous.rate_segment[r];
+      program.rate_merge[r] = previous.rate_merge[r];
+      program.rate_value_rad_s[r] = previous.rate_value_rad_s[r];
+    }
+    for (int sg = 0; sg < program.segment_count; ++sg) program.eta[sg] = previous.eta[sg];
     for (int attempt = 0; attempt < kMaxProgramsPerBackwardRun; ++attempt) {
-      status = solve_program(c, ws->backward, ws->nominal, ws->program, ws->optimum, achieved, &program);
+      status = solve_program(c, ws->backward, ws->nominal, ws->program, ws->optimum, achieved, &ws->kkt, &ws->kkt_rhs,
+                             &program, &payload_change_lb);
       if (!ok(status)) return out->status = status;
       ++out->programs_computed;
       if (!repair_rate_limits(ws->mission, coast_rate_after_program(ws->mission, ws->prepared, program), &program)) break;
@@ -428,6 +490,8 @@ Status linearize_pitch_program(const OptimizerWorkspace& optimized, Linearizatio
 
     // Forward linearization run.
     sample(program, ws->nominal, ws->optimum, &ws->program);
+    ws->mission.vehicle.payload_lb += payload_change_lb;
+    if (!(ws->mission.vehicle.payload_lb >= 0.0)) return out->status = Status::kValueOutOfRange;
     status = fly_trajectory(ws->mission, ws->prepared, ws->program, &ws->candidate);
     ++out->forward_runs;
     if (!ok(status)) return out->status = status;

@@ -482,6 +482,7 @@ void Iteration::record(RunKind kind, bool successful, double attempted) {
     r.constraint_corrections[i] = correction(problem_, i, candidate_achieved_);
     r.payoff_partials[i] = partials_[i];
   }
+  if (ws_->observer != nullptr) ws_->observer->on_forward_run(r, *result_);
 }
 
 Status Iteration::fly_nominal_from_table() {

@@ -19,6 +19,11 @@
 namespace tolip {
 
 inline constexpr int kMaxBreakPoints = kMaxLinearSegments + 1;
+// Rate repairs a program can carry: at most one per segment.
+inline constexpr int kMaxRateRepairs = kMaxLinearSegments;
+// Unknowns of the eq. 6-22 system: break values, the payload (payload payoff), constraint
+// multipliers, rate-repair multipliers.
+inline constexpr int kLinearizationKktSize = kMaxBreakPoints + 1 + kMaxConstraints + kMaxRateRepairs;
 
 struct LinearProgram {
   int segment_count = 0;
@@ -30,9 +35,9 @@ struct LinearProgram {
   // free: segment `rate_segment[r]` flies `rate_value_rad_s[r]`, or, for a merge, the break between
   // it and the next segment lies on the straight line through their outer breaks.
   int rate_repair_count = 0;
-  int rate_segment[8] = {};
-  bool rate_merge[8] = {};
-  double rate_value_rad_s[8] = {};
+  int rate_segment[kMaxRateRepairs] = {};
+  bool rate_merge[kMaxRateRepairs] = {};
+  double rate_value_rad_s[kMaxRateRepairs] = {};
   // Per segment, for the guidance table: the stage flown at its start, the start in stage time,
   // and the pitch rate.
   int stage_code[kMaxLinearSegments] = {};
@@ -64,6 +69,9 @@ struct LinearizationWorkspace {
   Trajectory nominal;
   Trajectory candidate;
   BackwardRun backward;
+  // The eq. 6-22 system (about 17 kB: kept off the stack).
+  Eigen::Matrix<double, kLinearizationKktSize, kLinearizationKktSize> kkt;
+  Eigen::Matrix<double, kLinearizationKktSize, 1> kkt_rhs;
 };
 
 // Linearizes the optimum in `optimized` (the workspace optimize_trajectory left). The final

@@ -62,6 +62,17 @@ struct OptimizerResult {
   IterationRecord iterations[kMaxOptimizerIterations];
 };
 
+// Told of every forward run as it is recorded (a terminal progress display, a log). Called on the
+// optimizer's own thread, between runs; it must not touch the workspace. A plain interface rather
+// than a std::function: the core has no heap.
+class OptimizerObserver {
+ public:
+  virtual void on_forward_run(const IterationRecord& record, const OptimizerResult& result) = 0;
+
+ protected:
+  ~OptimizerObserver() = default;
+};
+
 // Everything the optimizer works on, in the caller's storage (large: keep it static or on the heap).
 // After optimize_trajectory, `mission` holds the optimized payload, spun attitudes and coasts,
 // `program` the optimized pitch program and `nominal` the final trajectory.
@@ -75,6 +86,7 @@ struct OptimizerWorkspace {
   Trajectory nominal;
   Trajectory candidate;
   BackwardRun backward;
+  OptimizerObserver* observer = nullptr;  // optional; not owned
 };
 
 // Runs the whole optimization of `mission` (which must have passed validate_mission). A failure to
