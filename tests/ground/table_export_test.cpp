@@ -3,6 +3,7 @@
 // reference trajectory (docs/table-format.md).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -13,6 +14,7 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli_runner.hpp"
@@ -23,6 +25,7 @@
 #include "tolip_ground/atomic_file.hpp"
 #include "tolip_ground/deck_extras.hpp"
 #include "tolip_ground/guidance_table.hpp"
+#include "tolip_ground/optimization_run.hpp"
 #include "tolip_ground/table_commands.hpp"
 
 namespace tolip::test {
@@ -45,13 +48,19 @@ void write_image(const std::filesystem::path& path, const Image& image) {
 }
 
 // The reference case loaded in-process: mission, extras, prepared case, flown trajectory, and the
-// segment list build_guidance_table() makes of it (same stamp as the exports below).
+// segment lists build_guidance_table() makes of it (same stamp as the exports below): from data
+// block 40 (`table`), and from the linearized program of the optimization the deck asks for
+// (IP(7) = 1; `linearized_table`, what `tolip export` writes for this deck).
 struct ReferenceCase {
   std::unique_ptr<Mission> mission = std::make_unique<Mission>();
   std::unique_ptr<ground::DeckExtras> extras = std::make_unique<ground::DeckExtras>();
   std::unique_ptr<PreparedCase> prepared = std::make_unique<PreparedCase>();
   std::unique_ptr<Trajectory> trajectory = std::make_unique<Trajectory>();
   GuidanceTable table;
+  ground::OptimizationRun run;
+  GuidanceTable linearized_table;
+  const Trajectory& linearized_trajectory() const { return run.linearization.workspace->nominal; }
+  const PreparedCase& linearized_case() const { return run.linearization.workspace->prepared; }
 };
 
 const ReferenceCase& reference_case() {
@@ -65,8 +74,16 @@ const ReferenceCase& reference_case() {
     ground::TableBuildOptions options;
     options.created_unix_s = 0;
     std::string build_error;
-    EXPECT_TRUE(ground::build_guidance_table(*c->mission, *c->extras, *c->prepared, options, &c->table, &build_error))
+    EXPECT_TRUE(ground::build_guidance_table(*c->mission, *c->extras, *c->prepared, nullptr, options, &c->table, &build_error))
         << build_error;
+    ground::run_optimization(*c->mission, nullptr, &c->run);
+    EXPECT_EQ(c->run.linearization.status, Status::kOk);
+    if (c->run.linearization.outcome == ground::StepOutcome::kRun) {
+      EXPECT_TRUE(ground::build_guidance_table(c->run.linearization.workspace->mission, *c->extras, c->linearized_case(),
+                                               &c->run.linearization.result->program, options, &c->linearized_table,
+                                               &build_error))
+          << build_error;
+    }
     return c;
   }();
   return *loaded;
@@ -79,6 +96,18 @@ Image export_reference(const ScratchDirectory& scratch, const std::string& name)
       run_tolip_executable({"export", reference_deck(), "--out", path.string(), "--created-unix-s", "0"});
   EXPECT_EQ(result.exit_code, 0) << result.err;
   return read_image(path);
+}
+
+// The reference deck without the linearization option (IP(7) = 0, and so IP(6) = 0): export
+// takes data block 40.
+std::string without_linearization(std::string deck) {
+  for (const auto& [from, to] : {std::pair<std::string, std::string>{"linearization = true", "linearization = false"},
+                                 {"body_dynamics_6d = 1", "body_dynamics_6d = 0"}}) {
+    const std::size_t at = deck.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at != std::string::npos) deck.replace(at, from.size(), to);
+  }
+  return deck;
 }
 
 // The segment list's theta at (t, stage), evaluated independently of the executor: stage starts
@@ -129,31 +158,60 @@ TEST(TableExport, RoundTripReproducesTheSegmentListThetaAtEveryIntegrationPoint)
   const Image image = export_reference(scratch, "table.bin");
   ASSERT_EQ(image.size(), kTableImageSize);
 
-  // The file holds exactly the segment list built in-process.
+  // The file holds exactly the linearized segment list built in-process.
   GuidanceTable decoded;
   ASSERT_EQ(decode_table_image(image.data(), image.size(), &decoded), Status::kOk);
-  ASSERT_EQ(decoded.segment_count, c.table.segment_count);
+  ASSERT_EQ(decoded.segment_count, c.linearized_table.segment_count);
   for (int i = 0; i < decoded.segment_count; ++i) {
-    EXPECT_EQ(decoded.segments[i].stage_code, c.table.segments[i].stage_code);
-    EXPECT_EQ(decoded.segments[i].start_stage_time_s, c.table.segments[i].start_stage_time_s);
-    EXPECT_EQ(decoded.segments[i].theta_start_rad, c.table.segments[i].theta_start_rad);
-    EXPECT_EQ(decoded.segments[i].rate_rad_s, c.table.segments[i].rate_rad_s);
+    EXPECT_EQ(decoded.segments[i].stage_code, c.linearized_table.segments[i].stage_code);
+    EXPECT_EQ(decoded.segments[i].start_stage_time_s, c.linearized_table.segments[i].start_stage_time_s);
+    EXPECT_EQ(decoded.segments[i].theta_start_rad, c.linearized_table.segments[i].theta_start_rad);
+    EXPECT_EQ(decoded.segments[i].rate_rad_s, c.linearized_table.segments[i].rate_rad_s);
   }
+  EXPECT_EQ(decoded.stage4_theta_rad, c.run.workspace->mission.misc.stage4_theta_rad);  // the optimized attitude
 
   static GuidanceTableService service;
   ASSERT_EQ(service.load(image.data(), image.size()), Status::kOk);
-  const Trajectory& trajectory = *c.trajectory;
+  const Trajectory& trajectory = c.linearized_trajectory();
   const std::vector<double> theta = executed_theta(service, trajectory);
   ASSERT_EQ(static_cast<int>(theta.size()), trajectory.point_count);
   ASSERT_GT(trajectory.point_count, 190);
   double worst_deg = 0.0;
   for (int i = 0; i < trajectory.point_count; ++i) {
     const TrajectoryPoint& p = trajectory.points[i];
-    const double expected = segment_list_theta_rad(decoded, *c.prepared, p.stage_code, p.time_s);
+    const double expected = segment_list_theta_rad(decoded, c.linearized_case(), p.stage_code, p.time_s);
     const double error_deg = std::fabs(theta[i] - expected) * kRadToDeg;
     worst_deg = std::max(worst_deg, error_deg);
     EXPECT_LE(error_deg, 1e-12) << "point " << i << " t " << p.time_s << " stage " << p.stage_code;
   }
+  char worst[32];
+  std::snprintf(worst, sizeof worst, "%.3e", worst_deg);
+  RecordProperty("worst_theta_error_deg", worst);
+}
+
+// Sec. 6, 10 to the flight side: the exported image, loaded and executed by the flight code along
+// the linearized trajectory, commands exactly the attitude that trajectory flew at every point
+// after lift-off (segments, the hold through coast 8, the optimized spun stage-4 attitude).
+TEST(TableExport, Sec10_ExecutedTableFliesTheLinearizedTrajectoryAttitude) {
+  const ReferenceCase& c = reference_case();
+  ScratchDirectory scratch("table_linearized");
+  const Image image = export_reference(scratch, "table.bin");
+  static GuidanceTableService service;
+  ASSERT_EQ(service.load(image.data(), image.size()), Status::kOk);
+  const Trajectory& trajectory = c.linearized_trajectory();
+  const std::vector<double> theta = executed_theta(service, trajectory);
+  ASSERT_EQ(static_cast<int>(theta.size()), trajectory.point_count);
+  int compared = 0;
+  double worst_deg = 0.0;
+  for (int i = 0; i < trajectory.point_count; ++i) {
+    const TrajectoryPoint& p = trajectory.points[i];
+    if (p.time_s < c.mission->launch.liftoff_duration_s) continue;
+    const double error_deg = std::fabs(theta[i] - p.theta_rad) * kRadToDeg;
+    worst_deg = std::max(worst_deg, error_deg);
+    EXPECT_LE(error_deg, 1e-9) << "point " << i << " t " << p.time_s << " stage " << p.stage_code;
+    ++compared;
+  }
+  EXPECT_GT(compared, 180);
   char worst[32];
   std::snprintf(worst, sizeof worst, "%.3e", worst_deg);
   RecordProperty("worst_theta_error_deg", worst);
@@ -341,6 +399,7 @@ TEST(ExportCli, RateBeyondTheDeckLimitIsRejectedAndWritesNothing) {
   const std::size_t at = deck.find(from);
   ASSERT_NE(at, std::string::npos);
   deck.replace(at, from.size(), "max_pitch_rate_deg_s = 1.0");
+  deck = without_linearization(deck);
   const std::filesystem::path deck_path = scratch / "slow.toml";
   std::ofstream(deck_path) << deck;
   const std::filesystem::path bin = scratch / "t.bin";
@@ -366,7 +425,14 @@ TEST(ExportCli, MissingDeckExitsTwoAndWritesNothing) {
 
 TEST(InspectCli, PrintsAValidImageInEngineeringUnits) {
   ScratchDirectory scratch("table_inspect");
-  const Image image = export_reference(scratch, "t.bin");
+  // From data block 40 (IP(7) = 0), so that the printed stage-4 attitude is the deck's.
+  const std::filesystem::path deck_path = scratch / "block40.toml";
+  std::ofstream(deck_path) << without_linearization(read_text_file(reference_deck()));
+  const CommandResult exported = run_tolip_executable(
+      {"export", deck_path.string(), "--out", (scratch / "t.bin").string(), "--created-unix-s", "0"});
+  ASSERT_EQ(exported.exit_code, 0) << exported.err;
+  EXPECT_TRUE(contains(exported.out, "from data block 40")) << exported.out;
+  const Image image = read_image(scratch / "t.bin");
   const CommandResult result = run_tolip_executable({"inspect", (scratch / "t.bin").string()});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   EXPECT_TRUE(result.err.empty()) << result.err;

@@ -2,8 +2,11 @@
 // a case, the C header for images linked into flight software, and the engineering-unit listing of
 // `tolip inspect`.
 //
-// Interim source of the segments (until the pitch-program linearization lands): the data block 40
-// pitch table of the deck. Every table interval that starts in a powered stage 1-3 or in one of
+// The segments come from the linearized pitch program (Sec. 6, 10) when one is given: each segment
+// as linearize_pitch_program left it (stage, start in stage time, theta at the start, rate), then a
+// hold segment (rate 0) at the program's end, which the linearization flies after it (coast 8
+// before the spun stages). Without one (a deck without IP(7)), the interim source is the data
+// block 40 pitch table of the deck. Every table interval that starts in a powered stage 1-3 or in one of
 // the coasts 6-8 after them becomes one segment (stage, start in stage time, theta at the start,
 // rate of the interval); a hold segment (rate 0) is appended at the last node when that node still
 // lies in stages 1-3 / coasts 6-8, and one is prepended at the end of the lift-off when the table
@@ -18,6 +21,7 @@
 #include <vector>
 
 #include "tolip/mission/mission.hpp"
+#include "tolip/optimizer/linearization.hpp"
 #include "tolip/table/table_image.hpp"
 #include "tolip/vehicle/prepared_case.hpp"
 #include "tolip_ground/deck_extras.hpp"
@@ -39,11 +43,14 @@ struct TableBuildOptions {
 // cut to 32 characters, non-printable characters replaced by '?'; "TOLIP CASE" when empty.
 std::string default_mission_id(const Mission& mission);
 
-// Builds the table from a validated Mission, its DeckExtras and PreparedCase (interim source, see
-// above). Returns false and sets *error (a sentence naming the data block) on any fault; the
-// table then fails validate_guidance_table() or the case cannot be represented.
+// Builds the table from a validated Mission, its DeckExtras and PreparedCase, with the segments of
+// `linearized` (null: data block 40, see above). With a linearized program, `mission` and
+// `prepared` must be the case it was linearized for (optimized spun attitudes and coasts). Returns
+// false and sets *error (a sentence naming the data block) on any fault; the table then fails
+// validate_guidance_table() or the case cannot be represented.
 bool build_guidance_table(const Mission& mission, const DeckExtras& extras, const PreparedCase& prepared,
-                          const TableBuildOptions& options, GuidanceTable* table, std::string* error);
+                          const LinearProgram* linearized, const TableBuildOptions& options, GuidanceTable* table,
+                          std::string* error);
 
 // The C header holding `image` as a const array named `symbol`, placed in kTableLinkerSection.
 // `origin` is a comment line naming the source (deck path).

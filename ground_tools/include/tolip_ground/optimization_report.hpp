@@ -14,6 +14,7 @@
 #include "tolip/core/status.hpp"
 #include "tolip/mission/mission.hpp"
 #include "tolip/optimizer/exchange_ratios.hpp"
+#include "tolip/optimizer/linearization.hpp"
 #include "tolip/optimizer/steepest_descent.hpp"
 #include "tolip_ground/report.hpp"
 
@@ -38,6 +39,15 @@ struct OptimizationReport {
   bool exchange_ratios_requested = false;
   const ExchangeRatios* exchange_ratios = nullptr;
   Status exchange_ratio_status = Status::kNotPrepared;
+  // The linearized pitch program (IP(7) = 1; manual Sec. 6, 10; linearize_pitch_program), after a
+  // converged optimization. `linearization` is null unless it ran (then it holds the best program
+  // found even when `linearization_status` says it did not converge); when the deck asks for it
+  // and it did not run, `linearization_status` says why.
+  bool linearization_requested = false;
+  const LinearizationResult* linearization = nullptr;
+  Status linearization_status = Status::kNotPrepared;
+  // The optimum's payoff the linearized payoff is compared with (payoff units).
+  double optimum_payoff = 0.0;
 };
 
 // One constraint of data blocks 8/19/29 after the payoff, in the units of data block 19 (ft, rad,

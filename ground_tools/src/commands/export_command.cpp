@@ -15,6 +15,7 @@
 #include "tolip_ground/commands.hpp"
 #include "tolip_ground/deck_extras.hpp"
 #include "tolip_ground/guidance_table.hpp"
+#include "tolip_ground/optimization_run.hpp"
 #include "tolip_ground/table_commands.hpp"
 
 namespace tolip::ground {
@@ -82,12 +83,35 @@ int run_export_command(const ExportCommandOptions& options, std::ostream& out, s
     return kExitFailure;
   }
 
+  // The pitch program: the linearized optimum when the deck asks for linearization (IP(7) = 1),
+  // which needs the optimization first; else data block 40 (docs/table-format.md). A program that
+  // misses a constraint or a rate limit is not exported.
+  OptimizationRun run;
+  const Mission* table_mission = mission.get();
+  const PreparedCase* table_case = prepared.get();
+  const LinearProgram* linearized = nullptr;
+  if (mission->options.linearization()) {
+    run_optimization(*mission, nullptr, &run);
+    const Status status = run.linearization.status;
+    if (!ok(status)) {
+      err << "tolip: " << options.deck_path << ": no table exported: the deck asks for the linearized pitch program "
+          << "(IP(7) = 1) and "
+          << (run.linearization.outcome == StepOutcome::kRun ? "the linearization did not succeed: "
+                                                              : "the optimization did not converge: ")
+          << status_name(status) << ": " << status_message(status) << '\n';
+      return kExitFailure;
+    }
+    table_mission = &run.linearization.workspace->mission;
+    table_case = &run.linearization.workspace->prepared;
+    linearized = &run.linearization.result->program;
+  }
+
   TableBuildOptions build;
   build.mission_id = options.mission_id;
   build.created_unix_s = stamp;
   auto table = std::make_unique<GuidanceTable>();
   std::string build_error;
-  if (!build_guidance_table(*mission, *extras, *prepared, build, table.get(), &build_error)) {
+  if (!build_guidance_table(*table_mission, *extras, *table_case, linearized, build, table.get(), &build_error)) {
     err << "tolip: " << options.deck_path << ": " << build_error << '\n';
     return kExitBadInput;
   }
@@ -125,7 +149,8 @@ int run_export_command(const ExportCommandOptions& options, std::ostream& out, s
   char crc[16];
   std::snprintf(crc, sizeof crc, "0x%08X", static_cast<unsigned>(stored_table_crc(image)));
   out << "wrote " << options.out_path << " (" << sizeof image << " bytes, CRC-32 " << crc << ", "
-      << table->segment_count << " segments, mission id '" << table->mission_id << "')\n";
+      << table->segment_count << " segments from " << (linearized != nullptr ? "the linearized program" : "data block 40")
+      << ", mission id '" << table->mission_id << "')\n";
   if (!options.c_header_path.empty()) {
     out << "wrote " << options.c_header_path << " (C array " << options.symbol << " in section "
         << kTableLinkerSection << ")\n";

@@ -120,6 +120,56 @@ json exchange_ratios_json(const OptimizationReport& report) {
   return array;
 }
 
+// The linearized program (docs/cli.md): null when asked for but not run; otherwise the best program
+// found, with the status that says whether it meets the constraints and the rate limits.
+json linearized_json(const OptimizationReport& report) {
+  if (report.linearization == nullptr) {
+    return json{{"status", status_name(report.linearization_status)},
+                {"status_message", status_message(report.linearization_status)},
+                {"segments", json::array()}};
+  }
+  const LinearizationResult& r = *report.linearization;
+  const LinearProgram& p = r.program;
+  json segments = json::array();
+  const int count = std::clamp(p.segment_count, 0, kMaxLinearSegments);
+  for (int s = 0; s < count; ++s) {
+    const bool merged = s > 0 && std::fabs(p.rate_rad_s[s] - p.rate_rad_s[s - 1]) < 1e-9;
+    segments.push_back(json{
+        {"stage", p.stage_code[s]},
+        {"start_stage_time_s", number(p.start_stage_time_s[s])},
+        {"start_time_s", number(p.break_time_s[s])},
+        {"theta_deg", number(p.theta_rad[s] * kRadToDeg)},
+        {"rate_deg_s", number(p.rate_rad_s[s] * kRadToDeg)},
+        {"rate_continues_previous", merged},
+    });
+  }
+  json constraints = json::array();
+  for (int j = 0; j < std::clamp(r.constraint_count, 0, kMaxConstraints); ++j) {
+    constraints.push_back(json{
+        {"code", r.codes[j]},
+        {"desired", number(r.desired[j])},
+        {"achieved", number(r.achieved[j])},
+        {"tolerance", number(r.tolerance[j])},
+    });
+  }
+  return json{
+      {"status", status_name(report.linearization_status)},
+      {"status_message", status_message(report.linearization_status)},
+      {"segments", std::move(segments)},
+      {"end_time_s", number(count > 0 ? p.break_time_s[count] : kNaN)},
+      {"end_theta_deg", number(count > 0 ? p.theta_rad[count] * kRadToDeg : kNaN)},
+      {"constraints_met", r.constraints_met},
+      {"rate_limits_met", r.rate_limits_met},
+      {"payoff", number(r.payoff)},
+      {"optimum_payoff", number(report.optimum_payoff)},
+      {"forward_runs", r.forward_runs},
+      {"backward_runs", r.backward_runs},
+      {"programs_computed", r.programs_computed},
+      {"rate_repairs", p.rate_repair_count},
+      {"constraints", std::move(constraints)},
+  };
+}
+
 }  // namespace
 
 json optimization_json(const OptimizationReport& report) {
@@ -145,6 +195,7 @@ json optimization_json(const OptimizationReport& report) {
   additions["theta_history"] = theta_history_json(*report.final_trajectory.trajectory);
   additions["iterations"] = iterations_json(report, static_cast<int>(constraints.size()));
   if (report.exchange_ratios_requested) additions["exchange_ratios"] = exchange_ratios_json(report);
+  if (report.linearization_requested) additions["linearized"] = linearized_json(report);
 
   // The simulate document of the final trajectory, with the run's status and the additions placed
   // before the (long) point array.

@@ -191,6 +191,12 @@ const char* run_kind_heading(RunKind kind) {
   return "UNKNOWN";
 }
 
+// A right-aligned cell without its leading blanks, for numbers inside sentences.
+std::string trimmed(const std::string& cell) {
+  const std::size_t first = cell.find_first_not_of(' ');
+  return first == std::string::npos ? cell : cell.substr(first);
+}
+
 std::string constraint_label(const ConstraintCode& decoded, const QuantityText& text) {
   std::string label = text.heading;
   if (decoded.is_stage_point) label += " END STG " + std::to_string(decoded.stage_code);
@@ -331,10 +337,6 @@ void write_summary(Pager& pager, const OptimizationReport& report,
     if (!unit.empty()) text += " " + unit;
     return text;
   };
-  const auto trimmed = [](const std::string& cell) {
-    const std::size_t first = cell.find_first_not_of(' ');
-    return first == std::string::npos ? cell : cell.substr(first);
-  };
 
   pager.reserve(12);
   pager.emit(" OPTIMIZATION SUMMARY");
@@ -443,6 +445,68 @@ void write_exchange_ratios(Pager& pager, const OptimizationReport& report) {
   if (ip1 == 0) {
     pager.emit("   PAYOFF PARTIALS' PRICE OF 1 LB OF PAYLOAD (1 AT A TRUE OPTIMUM) = " +
                fixed_cell(r->payload_stationarity, 5, 10));
+  }
+  pager.emit("");
+}
+
+// Sec. 6, 10, 22 "Linearized Pitch Program": theta at each segment start (stage time and time from
+// launch) and the segment's rate, then the constraints the linearized trajectory achieved against
+// the linearization deadbands (data block 29 words 14-25), and its payoff against the optimum's.
+void write_linearized_program(Pager& pager, const OptimizationReport& report) {
+  if (!report.linearization_requested) return;
+  const LinearizationResult* r = report.linearization;
+  if (r == nullptr) {
+    pager.reserve(3);
+    pager.emit(" LINEARIZED PITCH PROGRAM");
+    pager.emit(std::string("   NOT COMPUTED: ") + status_name(report.linearization_status) + ": " +
+               status_message(report.linearization_status));
+    pager.emit("");
+    return;
+  }
+  const LinearProgram& p = r->program;
+  const int count = std::clamp(p.segment_count, 0, kMaxLinearSegments);
+  pager.reserve(6 + count);
+  pager.emit(" LINEARIZED PITCH PROGRAM (SEC. 6, 10): THETA LINEAR IN TIME FROM EACH SEGMENT START");
+  pager.emit("    SEGMENT  STAGE   STAGE TIME  TIME FROM LAUNCH           THETA      PITCH RATE");
+  pager.emit("                            SEC               SEC             DEG         DEG/SEC");
+  for (int s = 0; s < count; ++s) {
+    const bool merged = s > 0 && std::fabs(p.rate_rad_s[s] - p.rate_rad_s[s - 1]) < 1e-9;
+    pager.emit(right(std::to_string(s + 1), 11) + right(std::to_string(p.stage_code[s]), 7) +
+               number_cell(p.start_stage_time_s[s], 3, 13) + number_cell(p.break_time_s[s], 3, 18) +
+               number_cell(p.theta_rad[s] * kRadToDeg, 5, 16) + number_cell(p.rate_rad_s[s] * kRadToDeg, 5, 16) +
+               (merged ? "  (SAME RATE: MERGED)" : ""));
+  }
+  if (count > 0) {
+    pager.emit(std::string(11 + 7 + 13, ' ') + number_cell(p.break_time_s[count], 3, 18) +
+               number_cell(p.theta_rad[count] * kRadToDeg, 5, 16) + "  (END OF PROGRAM; HELD AFTER)");
+  }
+  pager.emit("");
+  const int constraints = std::clamp(r->constraint_count, 0, kMaxConstraints);
+  pager.reserve(4 + constraints);
+  pager.emit("   CONSTRAINTS ON THE LINEARIZED TRAJECTORY (LINEARIZATION DEADBANDS, DATA BLOCK 29 WORDS 14-25)");
+  pager.emit("          CODE  PARAMETER                          DESIRED        ACHIEVED       TOLERANCE  UNIT      MET");
+  for (int j = 0; j < constraints; ++j) {
+    ConstraintCode decoded;
+    const QuantityText text = code_text(r->codes[j], &decoded);
+    const bool met = std::fabs(r->achieved[j] - r->desired[j]) <= r->tolerance[j];
+    pager.emit(right(std::to_string(r->codes[j]), 14) + "  " + left(constraint_label(decoded, text), 27) +
+               number_cell(r->desired[j], text.decimals, 16) + number_cell(r->achieved[j], text.decimals, 16) +
+               number_cell(r->tolerance[j], text.decimals, 16) + "  " + left(text.unit_heading, 9) +
+               (met ? "YES" : "NO"));
+  }
+  const int ip1 = report.final_trajectory.mission->options.payoff();
+  const double loss_percent = 100.0 * (report.optimum_payoff - r->payoff) / report.optimum_payoff;
+  pager.emit("   PAYOFF (" + upper(payoff_kind_name(ip1)) + ") " + trimmed(number_cell(r->payoff, 4, 20)) + " " +
+             upper(payoff_unit(ip1)) + " AGAINST THE OPTIMUM'S " + trimmed(number_cell(report.optimum_payoff, 4, 20)) +
+             " (LOSS " + trimmed(number_cell(loss_percent, 3, 12)) + " PCT)");
+  pager.emit("   RATE LIMITS (DATA BLOCK 22) " + std::string(r->rate_limits_met ? "MET" : "NOT MET") +
+             "; CONSTRAINTS " + (r->constraints_met ? "MET" : "NOT MET") + "; " + std::to_string(r->forward_runs) +
+             " FORWARD AND " + std::to_string(r->backward_runs) + " BACKWARD LINEARIZATION RUNS, " +
+             std::to_string(r->programs_computed) + " PROGRAMS, " + std::to_string(p.rate_repair_count) +
+             " RATE REPAIRS");
+  if (!ok(report.linearization_status)) {
+    pager.emit(std::string("   LINEARIZATION ENDED: ") + status_name(report.linearization_status) + ": " +
+               status_message(report.linearization_status));
   }
   pager.emit("");
 }
@@ -563,6 +627,7 @@ void write_optimization_listing(std::ostream& out, const OptimizationReport& rep
   pager.new_page("OPTIMIZATION SUMMARY", false);
   write_summary(pager, report, constraints, adjustable);
   write_exchange_ratios(pager, report);
+  write_linearized_program(pager, report);
 }
 
 }  // namespace tolip::ground

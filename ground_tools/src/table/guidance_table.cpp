@@ -81,7 +81,7 @@ std::string default_mission_id(const Mission& mission) {
 }
 
 bool build_guidance_table(const Mission& mission, const DeckExtras& extras, const PreparedCase& prepared,
-                          const TableBuildOptions& options, GuidanceTable* table, std::string* error) {
+                          const LinearProgram* linearized, const TableBuildOptions& options, GuidanceTable* table, std::string* error) {
   auto fail = [error](const std::string& message) {
     if (error != nullptr) *error = message;
     return false;
@@ -148,33 +148,45 @@ bool build_guidance_table(const Mission& mission, const DeckExtras& extras, cons
     t.gains[stage_index(k + 6)] = gains;
   }
 
-  // Data block 40: the segments (interim source).
-  const PitchTable& pitch = mission.pitch_program_rad;
-  if (pitch.size() == 0) return fail("data block 40 (pitch_program) is empty: no segment can be built");
   std::vector<GuidanceSegment> segments;
   auto add_segment = [&](double t_from_launch, double theta, double rate) {
     const StageTimeline* line = stage_at(prepared, t_from_launch);
     if (line == nullptr || !is_segment_stage(line->code)) return;
     segments.push_back(GuidanceSegment{line->code, t_from_launch - line->start_s, theta, rate});
   };
-  const double liftoff = mission.launch.liftoff_duration_s;
-  if (pitch.x(0) > liftoff) add_segment(liftoff, pitch.y(0), 0.0);
-  for (int i = 0; i + 1 < pitch.size(); ++i) {
-    if (pitch.x(i + 1) <= liftoff) continue;  // inside the vertical lift-off
-    const double rate = (pitch.y(i + 1) - pitch.y(i)) / (pitch.x(i + 1) - pitch.x(i));
-    add_segment(pitch.x(i), pitch.y(i), rate);
+  const std::string source = linearized != nullptr ? "the linearized pitch program" : "data block 40";
+  if (linearized != nullptr) {
+    // The linearized program (Sec. 6, 10): its segments, then its last value held.
+    const LinearProgram& p = *linearized;
+    if (p.segment_count < 1 || p.segment_count > kMaxLinearSegments) {
+      return fail("the linearized pitch program has " + std::to_string(p.segment_count) + " segments (1 to " +
+                  std::to_string(kMaxLinearSegments) + " expected)");
+    }
+    for (int s = 0; s < p.segment_count; ++s) add_segment(p.break_time_s[s], p.theta_rad[s], p.rate_rad_s[s]);
+    add_segment(p.break_time_s[p.segment_count], p.theta_rad[p.segment_count], 0.0);
+  } else {
+    // Data block 40: the segments (interim source).
+    const PitchTable& pitch = mission.pitch_program_rad;
+    if (pitch.size() == 0) return fail("data block 40 (pitch_program) is empty: no segment can be built");
+    const double liftoff = mission.launch.liftoff_duration_s;
+    if (pitch.x(0) > liftoff) add_segment(liftoff, pitch.y(0), 0.0);
+    for (int i = 0; i + 1 < pitch.size(); ++i) {
+      if (pitch.x(i + 1) <= liftoff) continue;  // inside the vertical lift-off
+      const double rate = (pitch.y(i + 1) - pitch.y(i)) / (pitch.x(i + 1) - pitch.x(i));
+      add_segment(pitch.x(i), pitch.y(i), rate);
+    }
+    add_segment(pitch.last_x(), pitch.last_y(), 0.0);  // the table holds its last value
   }
-  add_segment(pitch.last_x(), pitch.last_y(), 0.0);  // the table holds its last value
 
   if (segments.size() > static_cast<std::size_t>(kMaxLinearSegments)) {
-    return fail("data block 40 gives " + std::to_string(segments.size()) +
+    return fail(source + " gives " + std::to_string(segments.size()) +
                 " segments in stages 1-3 and coasts 6-8; the table image holds at most " +
                 std::to_string(kMaxLinearSegments) + " (kTooManyLinearSegments)");
   }
   const double rate_limit = t.max_pitch_rate_rad_s * (1.0 + kTableRateLimitRelativeTolerance);
   for (std::size_t i = 0; i < segments.size(); ++i) {
     if (std::fabs(segments[i].rate_rad_s) > rate_limit) {
-      return fail("data block 40: segment " + std::to_string(i) + " (stage " + std::to_string(segments[i].stage_code) +
+      return fail(source + ": segment " + std::to_string(i) + " (stage " + std::to_string(segments[i].stage_code) +
                   ", from stage time " + fixed(segments[i].start_stage_time_s, 3) + " s) pitches at " +
                   degrees(segments[i].rate_rad_s, 6) + " deg/s, beyond the data block 22 maximum pitch rate " +
                   degrees(t.max_pitch_rate_rad_s, 6) + " deg/s (kSegmentRateExceedsLimit)");
