@@ -86,7 +86,9 @@ TEST(Sec8ExchangeRatios, ReferenceRatiosHaveTheSignsIntuitionAsks) {
   // The payload is part of the last stage's jettison weight (Sec. 14): 1 lb more inert weight there
   // is 1 lb less payload for the same trajectory. Only the Sec. 14 re-derivation differs.
   EXPECT_NEAR(r.jettison_weight[3], -1.0, 1e-3);
-  EXPECT_EQ(r.forward_runs, 2 + 2 * (4 * 4 + 2));  // kappa, then 4 parameters x 4 stages + 2 drag
+  // kappa (base and +1 lb with the optimizer's prepared case), the re-prepared base, then one run
+  // per parameter: 4 parameters x 4 stages + 2 drag (one-sided differences).
+  EXPECT_EQ(r.forward_runs, 2 + 1 + (4 * 4 + 2));
 }
 
 // The proof: change a stage characteristic in the mission, re-optimize with tight convergence, and

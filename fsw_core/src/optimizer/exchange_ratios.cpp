@@ -6,7 +6,7 @@
 namespace tolip {
 namespace {
 
-// Each ratio is a central difference over -+1 unit of its parameter (1% or 1 lb or 1 ft^2): small
+// Each ratio is a one-sided difference over +1 unit of its parameter (1% or 1 lb or 1 ft^2): small
 // against every stage's values (the smallest is stage 4's 560 lb of propellant), and large enough
 // that the constraint changes stand far above the forward runs' rounding.
 constexpr double kStepUnits = 1.0;
@@ -87,13 +87,13 @@ Status fly_and_evaluate(const OptimizerWorkspace& ws, const ConstraintSet& set, 
 }
 
 // The partial-weighted constraint change per unit step, sum_i partials_i d c_i, from the values of
-// the runs at +step and -step.
+// the run at +step and of the base run.
 double priced_constraint_change(const ConstraintSet& set, const OptimizerResult& result,
-                                const double plus[kMaxConstraints], const double minus[kMaxConstraints],
+                                const double plus[kMaxConstraints], const double base[kMaxConstraints],
                                 double step) {
   double priced = 0.0;
   for (int i = 1; i < set.count; ++i) {
-    const double dc = constraint_deviation(set.codes[i], plus[i], minus[i]) / (2.0 * step);
+    const double dc = constraint_deviation(set.codes[i], plus[i], base[i]) / step;
     priced += result.payoff_partials[i] * dc;
   }
   return priced;
@@ -108,21 +108,23 @@ struct Context {
   double price = 1.0;
   ExchangeRatioScratch* scratch = nullptr;
   ExchangeRatios* out = nullptr;
+  // The final case re-prepared and flown unperturbed: every one-sided difference starts here.
+  double base[kMaxConstraints] = {};
 };
 
 // Eq. 8-17 to first order: the change of the re-optimized payoff per unit change of the parameter,
-// d payoff - price * sum_i partials_i d c_i, both from the final trajectory flown at -+1 unit.
+// d payoff - price * sum_i partials_i d c_i, both from the final trajectory flown at +1 unit against
+// the base run. One-sided: the unit steps are small against every characteristic (1 lb, 1%, 1 ft^2),
+// so the curvature term is far inside the 5% the ratios are checked to, at half the runs of central
+// differences (docs/theory/exchange-ratios.md gives both).
 Status stage_ratio(Context* c, int code, ExchangeParameter parameter, double* ratio) {
-  double values[2][kMaxConstraints] = {};
-  for (int side = 0; side < 2; ++side) {
-    const double units = side == 0 ? kStepUnits : -kStepUnits;
-    Status status = perturb_stage_parameter(c->ws->mission, code, parameter, units, &c->scratch->mission);
-    if (ok(status)) status = fly_and_evaluate(*c->ws, c->set, nullptr, c->scratch, values[side]);
-    ++c->out->forward_runs;
-    if (!ok(status)) return status;
-  }
-  const double direct = (values[0][0] - values[1][0]) / (2.0 * kStepUnits);  // 0 for the payload payoff
-  *ratio = direct - c->price * priced_constraint_change(c->set, *c->result, values[0], values[1], kStepUnits);
+  double plus[kMaxConstraints] = {};
+  Status status = perturb_stage_parameter(c->ws->mission, code, parameter, kStepUnits, &c->scratch->mission);
+  if (ok(status)) status = fly_and_evaluate(*c->ws, c->set, nullptr, c->scratch, plus);
+  ++c->out->forward_runs;
+  if (!ok(status)) return status;
+  const double direct = (plus[0] - c->base[0]) / kStepUnits;  // 0 for the payload payoff
+  *ratio = direct - c->price * priced_constraint_change(c->set, *c->result, plus, c->base, kStepUnits);
   return Status::kOk;
 }
 
@@ -197,20 +199,28 @@ Status compute_exchange_ratios(const OptimizerWorkspace& final_ws, const Optimiz
   c.out = out;
   Status status = make_constraint_set(mission, result, &c.set);
   if (!ok(status)) return status;
+  scratch->mission = mission;
+  status = fly_and_evaluate(final_ws, c.set, nullptr, scratch, c.base);
+  ++out->forward_runs;
+  if (!ok(status)) return status;
 
   // Payload payoff: kappa = sum_i partials_i d c_i / d payload, the payload's own price in the
   // partials (1 at a true optimum). The payload changes as the optimizer changes it, without
   // re-deriving the Sec. 14 tables, exactly like the column of lambda_m the partials were built from.
+  // Its base is the final case flown with the optimizer's own prepared case (the Sec. 14 tables of
+  // the initial payload), not the re-prepared one of the stage parameters: the two differ by about
+  // 0.07 ft/s at burnout on the reference, as much as a 1 lb payload change does.
   if (c.set.payload_payoff) {
-    double values[2][kMaxConstraints] = {};
+    double base[kMaxConstraints] = {};
+    double plus[kMaxConstraints] = {};
     for (int side = 0; side < 2; ++side) {
       scratch->mission = mission;
-      scratch->mission.vehicle.payload_lb += side == 0 ? kStepUnits : -kStepUnits;
-      status = fly_and_evaluate(final_ws, c.set, &final_ws.prepared, scratch, values[side]);
+      if (side == 1) scratch->mission.vehicle.payload_lb += kStepUnits;
+      status = fly_and_evaluate(final_ws, c.set, &final_ws.prepared, scratch, side == 0 ? base : plus);
       ++out->forward_runs;
       if (!ok(status)) return status;
     }
-    out->payload_stationarity = priced_constraint_change(c.set, result, values[0], values[1], kStepUnits);
+    out->payload_stationarity = priced_constraint_change(c.set, result, plus, base, kStepUnits);
     if (!(out->payload_stationarity > 0.0)) return Status::kSteeringMatrixSingular;
     c.price = 1.0 / out->payload_stationarity;
   }

@@ -6,8 +6,8 @@
 //   ratio = d payoff - price * sum_i payoff_partials_i * d c_i        (eq. 8-17 to first order)
 //
 // d payoff and d c_i are the linear effect of the parameter on the final optimized trajectory
-// (same per-point pitch program, same adjustable parameters, same payload): central differences
-// of two forward runs of the final optimized case with the parameter at -+1 unit, each re-prepared
+// (same per-point pitch program, same adjustable parameters, same payload): one-sided differences
+// of a forward run of the final optimized case with the parameter at +1 unit, re-prepared
 // (Sec. 14 thrust tables). payoff_partials are eq. 9-22's (OptimizerResult::payoff_partials; eq.
 // 8-18's U). price is 1 for velocity and altitude payoffs; for the payload payoff (where d payoff
 // is 0: the payload is a control) it is 1 / kappa, kappa = sum_i partials_i d c_i / d payload:
