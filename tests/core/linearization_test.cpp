@@ -64,7 +64,9 @@ TEST(Sec6Linearization, NineSegmentsMeetEveryRateLimitAndConstraintWithinHalfAPe
     EXPECT_LE(std::fabs(result.desired[j] - result.achieved[j]), result.tolerance[j]) << "code " << result.codes[j];
   }
   EXPECT_GE(result.payoff, 0.995 * optimum.payload_lb);
-  EXPECT_LE(result.payoff, optimum.payload_lb * (1.0 + 1e-4));  // straight segments cannot beat the optimum
+  EXPECT_LE(result.payoff, optimum.payload_lb * (1.0 + 1e-4));
+  EXPECT_FALSE(result.coast7_below_min_rate);  // coast 7 is a segment: the limits hold there too
+  EXPECT_FALSE(result.coast7_below_min_rate_change);  // straight segments cannot beat the optimum
   EXPECT_LE(result.forward_runs, mission.convergence.max_linearization_iterations);
   const LinearProgram& p = result.program;
   EXPECT_EQ(p.segment_count, 9);
@@ -107,6 +109,41 @@ TEST(Sec6Linearization, RelaxingTheMinimumRateLimitsLosesLessPayoff) {
   EXPECT_TRUE(relaxed.result.constraints_met);
   EXPECT_LT(relaxed.result.program.rate_repair_count, strict.result.program.rate_repair_count);
   EXPECT_GE(relaxed.result.payoff, strict.result.payoff - 1e-6);
+}
+
+// Sec. 10's coast-7 messages on hand-made programs: stage 2 (-0.5 deg/s), coast 7, stage 3
+// (-0.2 deg/s), limits 0.05 deg/s for both the rate and its change.
+TEST(Sec10Linearization, Coast7ChecksFlagARateBelowTheMinimumAndATooSmallChange) {
+  static Mission mission;
+  mission.control.min_pitch_rate_rad_s = 0.05 * kDegToRad;
+  mission.control.min_pitch_rate_change_rad_s = 0.05 * kDegToRad;
+  const auto program_with_coast_rate = [](double coast_rate_deg_s) {
+    LinearProgram p;
+    p.segment_count = 3;
+    const double times[4] = {50.0, 88.0, 94.0, 130.0};
+    const double rates[3] = {-0.5, coast_rate_deg_s, -0.2};
+    const int stages[3] = {2, 7, 3};
+    p.theta_rad[0] = 30.0 * kDegToRad;
+    for (int s = 0; s < 3; ++s) {
+      p.break_time_s[s] = times[s];
+      p.stage_code[s] = stages[s];
+      p.theta_rad[s + 1] = p.theta_rad[s] + rates[s] * kDegToRad * (times[s + 1] - times[s]);
+    }
+    p.break_time_s[3] = times[3];
+    return p;
+  };
+  LinearizationResult r;
+  check_coast7_rates(mission, program_with_coast_rate(-0.3), &r);
+  EXPECT_FALSE(r.coast7_below_min_rate);
+  EXPECT_FALSE(r.coast7_below_min_rate_change);
+  check_coast7_rates(mission, program_with_coast_rate(-0.03), &r);
+  EXPECT_TRUE(r.coast7_below_min_rate);
+  EXPECT_FALSE(r.coast7_below_min_rate_change);
+  check_coast7_rates(mission, program_with_coast_rate(-0.22), &r);  // 0.02 deg/s from stage 3's rate
+  EXPECT_FALSE(r.coast7_below_min_rate);
+  EXPECT_TRUE(r.coast7_below_min_rate_change);
+  check_coast7_rates(mission, program_with_coast_rate(-0.2), &r);  // the same rate: a merged break
+  EXPECT_FALSE(r.coast7_below_min_rate_change);
 }
 
 }  // namespace

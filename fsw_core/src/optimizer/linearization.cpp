@@ -374,6 +374,28 @@ double coast_rate_after_program(const Mission& mission, const PreparedCase& prep
 
 }  // namespace
 
+// Sec. 10: "Before leaving the LINEAR routine, the coast stage 7 pitch rate is tested for minimum
+// rate violation and minimum change in rate violation."
+void check_coast7_rates(const Mission& mission, const LinearProgram& p, LinearizationResult* out) {
+  const ControlConstraints& limits = mission.control;
+  out->coast7_below_min_rate = false;
+  out->coast7_below_min_rate_change = false;
+  for (int s = 0; s < p.segment_count; ++s) {
+    if (p.stage_code[s] != 7) continue;
+    const double rate = segment_rate(p, s);
+    if (limits.min_pitch_rate_rad_s > 0.0 && std::fabs(rate) < limits.min_pitch_rate_rad_s * (1.0 - 1e-6)) {
+      out->coast7_below_min_rate = true;
+    }
+    for (int n = s - 1; n <= s + 1; n += 2) {
+      if (n < 0 || n >= p.segment_count || !(limits.min_pitch_rate_change_rad_s > 0.0)) continue;
+      const double change = std::fabs(segment_rate(p, n) - rate);
+      if (change >= kMergedRateRadS && change < limits.min_pitch_rate_change_rad_s * (1.0 - 1e-6)) {
+        out->coast7_below_min_rate_change = true;
+      }
+    }
+  }
+}
+
 Status linearize_pitch_program(const OptimizerWorkspace& optimized, LinearizationWorkspace* ws, LinearizationResult* out) {
   out->forward_runs = 0;
   out->backward_runs = 0;
@@ -504,6 +526,7 @@ Status linearize_pitch_program(const OptimizerWorkspace& optimized, Linearizatio
   }
 
   out->program = program;
+  check_coast7_rates(ws->mission, program, out);
   out->constraint_count = c.count;
   for (int j = 0; j < c.count; ++j) {
     out->codes[j] = c.codes[j].code;

@@ -166,6 +166,8 @@ json linearized_json(const OptimizationReport& report) {
       {"backward_runs", r.backward_runs},
       {"programs_computed", r.programs_computed},
       {"rate_repairs", p.rate_repair_count},
+      {"coast7_below_min_rate", r.coast7_below_min_rate},
+      {"coast7_below_min_rate_change", r.coast7_below_min_rate_change},
       {"constraints", std::move(constraints)},
   };
 }

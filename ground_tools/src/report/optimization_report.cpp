@@ -504,6 +504,11 @@ void write_linearized_program(Pager& pager, const OptimizationReport& report) {
              " FORWARD AND " + std::to_string(r->backward_runs) + " BACKWARD LINEARIZATION RUNS, " +
              std::to_string(r->programs_computed) + " PROGRAMS, " + std::to_string(p.rate_repair_count) +
              " RATE REPAIRS");
+  // Sec. 10's messages for the coast between stages 2 and 3.
+  if (r->coast7_below_min_rate) pager.emit("   COAST 7 PITCH RATE IS BELOW THE MINIMUM PITCH RATE (DATA BLOCK 22 WORD 4)");
+  if (r->coast7_below_min_rate_change) {
+    pager.emit("   COAST 7 PITCH RATE CHANGES BY LESS THAN THE MINIMUM CHANGE OF RATE (DATA BLOCK 22 WORD 5)");
+  }
   if (!ok(report.linearization_status)) {
     pager.emit(std::string("   LINEARIZATION ENDED: ") + status_name(report.linearization_status) + ": " +
                status_message(report.linearization_status));

@@ -59,6 +59,11 @@ struct LinearizationResult {
   double achieved[kMaxConstraints] = {};
   double tolerance[kMaxConstraints] = {};  // linearization deadbands
   double payoff = 0.0;                      // achieved by the linearized trajectory
+  // Sec. 10's closing checks of the coast between stages 2 and 3 (coast 7), which the manual reports
+  // by message: its rate below the minimum rate, its rate within the minimum change of a neighbour's
+  // (a merged break does not count). False when the program has no coast-7 segment.
+  bool coast7_below_min_rate = false;
+  bool coast7_below_min_rate_change = false;
 };
 
 struct LinearizationWorkspace {
@@ -73,6 +78,10 @@ struct LinearizationWorkspace {
   Eigen::Matrix<double, kLinearizationKktSize, kLinearizationKktSize> kkt;
   Eigen::Matrix<double, kLinearizationKktSize, 1> kkt_rhs;
 };
+
+// Sec. 10's closing checks of coast 7 on `program` (its stage_code per segment filled) with the
+// mission's data block 22 limits; sets result->coast7_below_min_rate(_change).
+void check_coast7_rates(const Mission& mission, const LinearProgram& program, LinearizationResult* result);
 
 // Linearizes the optimum in `optimized` (the workspace optimize_trajectory left). The final
 // linearized trajectory is workspace->nominal. Returns kOk when every constraint is within its
