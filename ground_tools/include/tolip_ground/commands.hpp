@@ -7,6 +7,8 @@
 #include <ostream>
 #include <string>
 
+#include "tolip_ground/progress.hpp"
+
 namespace tolip::ground {
 
 inline constexpr int kExitOk = 0;
@@ -30,11 +32,13 @@ struct SimulateCommandOptions {
 int run_simulate_command(const SimulateCommandOptions& options, std::ostream& out,
                          std::ostream& err);
 
-// `tolip optimize DECK [--csv FILE] [--json]`
+// `tolip optimize DECK [--csv FILE] [--json] [--progress|--no-progress]`: every case of the deck in
+// order. A deck of one case prints one JSON document, a deck of several a JSON array of one per case.
 struct OptimizeCommandOptions {
   std::string deck_path;
-  std::string csv_path;  // empty: no CSV (of the final trajectory)
+  std::string csv_path;  // empty: no CSV (of the final trajectory; FILE.caseN per case of several)
   bool json = false;
+  ProgressMode progress = ProgressMode::kAuto;  // the forward-run status line on stderr
 };
 int run_optimize_command(const OptimizeCommandOptions& options, std::ostream& out,
                          std::ostream& err);
@@ -47,6 +51,15 @@ struct ConvertCommandOptions {
   int case_number = 0;   // card deck -> TOML: the case (0: the deck must hold one)
 };
 int run_convert_command(const ConvertCommandOptions& options, std::ostream& out, std::ostream& err);
+
+// `tolip plot RESULT.json --out DIR`: PNG and SVG figures of a simulate/optimize JSON result,
+// drawn by gnuplot (plot.hpp, docs/cli.md).
+struct PlotCommandOptions {
+  std::string result_path;
+  std::string out_dir;
+  std::string gnuplot;  // the gnuplot program; empty: $TOLIP_GNUPLOT, else "gnuplot" on PATH
+};
+int run_plot_command(const PlotCommandOptions& options, std::ostream& out, std::ostream& err);
 
 // The whole program: parses the command line (CLI11), runs the subcommand, maps parse errors to
 // kExitBadInput. `tolip --help` and `--version` print to `out` and return kExitOk.

@@ -1,5 +1,6 @@
 // The `tolip` command line (CLI11): subcommands, help text, exit codes (docs/cli.md).
 #include <CLI/CLI.hpp>
+#include <cstdint>
 #include <ostream>
 #include <string>
 
@@ -15,10 +16,19 @@ constexpr const char* kDescription =
     "a modern re-implementation for Scout-class launch vehicles.";
 
 constexpr const char* kFooter =
+    "A DECK is a TOML deck or a heritage card deck (80-column cards, manual\n"
+    "Sec. 22), recognised by its content; docs/deck-format.md.\n"
+    "Getting started (docs/user-guide.md walks through it):\n"
+    "  tolip simulate examples/scout/mission.toml\n"
+    "  tolip optimize examples/scout/mission.toml --json > result.json\n"
+    "  tolip plot result.json --out plots\n"
+    "  tolip convert examples/scout/mission.toml --to mission.dat\n"
+    "  tolip export examples/scout/mission.toml --out table.bin\n"
+    "  tolip inspect table.bin\n"
     "Exit codes: 0 success; 1 run-time or core failure (trajectory, orbit elements,\n"
-    "file write, optimization not converged); 2 bad input (command line or deck).\n"
-    "Errors go to stderr as 'tolip: <message>'. Run 'tolip <command> --help' for a\n"
-    "command's options.\n"
+    "file write, optimization not converged, gnuplot); 2 bad input (command line,\n"
+    "deck or result file). Errors go to stderr as 'tolip: <message>'.\n"
+    "Run 'tolip <command> --help' for a command's options and examples.\n"
     "Full reference: docs/cli.md.";
 
 }  // namespace
@@ -40,6 +50,13 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
       "pressure (lbf/ft^2), speed of sound (ft/s) and molecular-\n"
       "scale temperature (deg R). The geopotential altitude uses\n"
       "the equatorial radius CT1(3) = 20,925,696 ft.");
+  atmosphere->footer(
+      "Examples:\n"
+      "  tolip atmosphere --altitude-ft 0\n"
+      "  tolip atmosphere --altitude-ft=-500 --json\n"
+      "Exit codes: 0 printed; 2 bad command line (missing, unparsable or\n"
+      "non-finite altitude, or below the Earth's centre).\n"
+      "Full reference: docs/cli.md, 'tolip atmosphere'.");
   atmosphere
       ->add_option("--altitude-ft", atmosphere_options.altitude_ft,
                    "Geometric altitude, ft (finite, negative allowed, above -CT1(3))")
@@ -63,28 +80,42 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
       "IP(17) the input data first), or one JSON document (--json;\n"
       "an array of one per case for a deck of several cases);\n"
       "--csv FILE adds every point (FILE.caseN.csv per case).");
-  simulate->add_option("DECK", simulate_options.deck_path, "TOML deck or card deck (docs/deck-format.md)")
+  simulate->footer(
+      "Examples:\n"
+      "  tolip simulate examples/scout/mission.toml\n"
+      "  tolip simulate examples/scout/mission.dat --csv points.csv\n"
+      "  tolip simulate examples/scout/mission.toml --json > result.json\n"
+      "  tolip plot result.json --out plots\n"
+      "Exit codes: 0 every case flown; 1 a trajectory or orbit failure in\n"
+      "any case (everything is still printed) or the CSV not written\n"
+      "(nothing printed); 2 bad command line or deck.\n"
+      "Full reference: docs/cli.md, 'tolip simulate'.");
+  simulate->add_option("DECK", simulate_options.deck_path,
+                       "TOML deck or card deck of one or more cases, recognised\n"
+                       "by content (docs/deck-format.md)")
       ->required()
       ->type_name("FILE");
   simulate
       ->add_option("--csv", simulate_options.csv_path,
                    "Also write EVERY integration point (not thinned) to\n"
-                   "FILE as CSV with a header row. Written atomically\n"
-                   "(FILE.tmp.<pid>, then rename): on failure an existing\n"
-                   "FILE is left untouched and the exit code is 1")
+                   "FILE as CSV with a header row; for a deck of several\n"
+                   "cases one file per case, FILE.caseN.csv. Written\n"
+                   "atomically (FILE.tmp.<pid>, then rename): on failure an\n"
+                   "existing FILE is left untouched and the exit code is 1")
       ->type_name("FILE");
   simulate->add_flag("--json", simulate_options.json,
                      "Print one JSON document (status, burnout state,\n"
                      "inertial velocity, orbit elements, stage events, every\n"
-                     "point) instead of the listing; printed also when the\n"
+                     "point) instead of the listing; a JSON array of one per\n"
+                     "case for a deck of several cases. Printed also when the\n"
                      "trajectory fails (then with exit code 1)");
 
   // ---- optimize --------------------------------------------------------------------------------
   OptimizeCommandOptions optimize_options;
   CLI::App* optimize = app.add_subcommand(
       "optimize",
-      "Load a case deck (TOML, or a card deck of one case) and\n"
-      "optimize it: closed-loop steepest\n"
+      "Load a case deck (TOML, or a card deck of one or more\n"
+      "cases) and optimize each case in order: closed-loop steepest\n"
       "descent (manual Sec. 5, 9, 22) from the data block 40 pitch\n"
       "program: guidance runs into the data block 29 deadbands,\n"
       "optimization runs improving the payoff (IP(1): payload,\n"
@@ -95,25 +126,85 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
       "payoff with respect to each constraint), the final\n"
       "trajectory listed as by 'simulate', and a summary\n"
       "(constraints desired/achieved/tolerance, adjustable\n"
-      "parameters). Exit 0 when converged; 1 when not converged\n"
-      "or on a core failure (everything is still printed, with\n"
-      "the best trajectory found); 2 on bad input.");
-  optimize->add_option("DECK", optimize_options.deck_path, "TOML deck or card deck (docs/deck-format.md)")
+      "parameters; exchange ratios with IP(3)).");
+  optimize->footer(
+      "Examples:\n"
+      "  tolip optimize examples/scout/mission.toml\n"
+      "  tolip optimize examples/scout/mission.dat --csv final.csv\n"
+      "  tolip optimize examples/scout/mission.toml --json > result.json\n"
+      "  tolip plot result.json --out plots\n"
+      "Exit codes: 0 every case converged; 1 a case did not converge or\n"
+      "failed in the core (everything is still printed, with the best\n"
+      "trajectory found), or the CSV not written (nothing printed);\n"
+      "2 bad command line, deck, or a case the optimizer rejects\n"
+      "(unsupported payoff, adjustable parameter or constraint code).\n"
+      "Full reference: docs/cli.md, 'tolip optimize'.");
+  optimize->add_option("DECK", optimize_options.deck_path,
+                       "TOML deck or card deck of one or more cases, recognised\n"
+                       "by content (docs/deck-format.md)")
       ->required()
       ->type_name("FILE");
   optimize
       ->add_option("--csv", optimize_options.csv_path,
                    "Also write EVERY integration point of the final\n"
                    "trajectory to FILE as CSV (the columns of simulate\n"
-                   "--csv), atomically; on a write failure an existing\n"
-                   "FILE is left untouched and the exit code is 1")
+                   "--csv; FILE.caseN.csv per case of a several-case deck),\n"
+                   "atomically; on a write failure an existing FILE is left\n"
+                   "untouched, nothing is printed and the exit code is 1")
       ->type_name("FILE");
   optimize->add_flag("--json", optimize_options.json,
                      "Print one JSON document instead of the listing: the\n"
                      "simulate --json keys for the final trajectory plus\n"
                      "converged, forward_runs, backward_runs, payoff,\n"
                      "payload_lb, constraints, payoff_partials, adjustable,\n"
-                     "theta_history, iterations (docs/cli.md)");
+                     "theta_history, iterations (docs/cli.md); a JSON array\n"
+                     "of one document per case for a deck of several cases");
+  CLI::Option* progress_on = optimize->add_flag_callback(
+      "--progress", [&optimize_options] { optimize_options.progress = ProgressMode::kOn; },
+      "Show the one-line status of the forward runs on\n"
+      "stderr ('forward run 7  payoff 301.2 lb  successful')\n"
+      "even when stderr is not a terminal. Default: shown only\n"
+      "on a terminal; it never reaches stdout");
+  CLI::Option* progress_off = optimize->add_flag_callback(
+      "--no-progress", [&optimize_options] { optimize_options.progress = ProgressMode::kOff; },
+      "Never show the status line, not even on a terminal");
+  progress_on->excludes(progress_off);
+
+  // ---- plot ------------------------------------------------------------------------------------
+  PlotCommandOptions plot_options;
+  CLI::App* plot = app.add_subcommand(
+      "plot",
+      "Draw the figures of a result - the JSON printed by\n"
+      "'simulate --json' or 'optimize --json' - as PNG and SVG with\n"
+      "gnuplot: altitude vs downrange, velocity vs time, q-bar vs\n"
+      "time, pitch attitude theta vs time (with optimize: the\n"
+      "optimum, and the linearized program over it when the result\n"
+      "has one). A plot whose data the result lacks is skipped.");
+  plot->footer(
+      "Files: DIR/NAME.png and DIR/NAME.svg, NAME = altitude_downrange,\n"
+      "velocity_time, dynamic_pressure_time, theta_time; for a JSON array\n"
+      "(a deck of several cases) NAME.caseN.png/.svg per case. Everything\n"
+      "is drawn and checked in a temporary directory first, then each\n"
+      "file is written atomically: a failure leaves DIR as it was.\n"
+      "Examples:\n"
+      "  tolip optimize examples/scout/mission.toml --json > result.json\n"
+      "  tolip plot result.json --out plots\n"
+      "Exit codes: 0 written; 1 gnuplot missing or failing, or DIR not\n"
+      "writable; 2 bad command line, unreadable file, or a result that is\n"
+      "not valid JSON or lacks the fields (the message names the field).\n"
+      "Full reference: docs/cli.md, 'tolip plot'.");
+  plot->add_option("RESULT", plot_options.result_path,
+                   "JSON result of simulate --json or optimize --json: one\n"
+                   "document, or an array of one per case")
+      ->required()
+      ->type_name("FILE");
+  plot->add_option("--out", plot_options.out_dir, "Directory for the figures; made when missing")
+      ->required()
+      ->type_name("DIR");
+  plot->add_option("--gnuplot", plot_options.gnuplot,
+                   "The gnuplot program to run (default: $TOLIP_GNUPLOT,\n"
+                   "else gnuplot on PATH; Debian package gnuplot-nox)")
+      ->type_name("PROGRAM");
 
   // ---- export / inspect (guidance table image, docs/table-format.md) ----------------------------
   ExportCommandOptions export_options;
@@ -121,10 +212,26 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
       "export",
       "Build the guidance-computer table image (docs/table-format.md)\n"
       "from a case deck (TOML or cards) and write it atomically:\n"
-      "segments (interim: from the data block 40 pitch table),\n"
-      "lift-off, spun-stage attitudes, autopilot gains, limits,\n"
-      "CRC-32.");
-  export_command->add_option("DECK", export_options.deck_path, "TOML deck or card deck (docs/deck-format.md)")
+      "the pitch segments (the linearized optimum when the deck\n"
+      "asks for linearization, IP(7) = 1, the case being optimized\n"
+      "first; else the data block 40 pitch table), lift-off,\n"
+      "spun-stage attitudes, autopilot gains, limits, CRC-32.");
+  export_command->footer(
+      "Examples:\n"
+      "  tolip export examples/scout/mission.toml --out table.bin\n"
+      "  tolip export examples/scout/mission.toml --out table.bin \\\n"
+      "      --c-header table.h --created-unix-s 0\n"
+      "  tolip inspect table.bin\n"
+      "The image is decoded again with the flight-side loader's checks\n"
+      "before anything is written; each file goes to FILE.tmp.<pid> and is\n"
+      "renamed over FILE.\n"
+      "Exit codes: 0 written; 1 prepare_case failed or a file could not\n"
+      "be written; 2 bad command line, deck, or a case the image cannot\n"
+      "carry (the message names the data block).\n"
+      "Full reference: docs/cli.md, 'tolip export'; docs/table-format.md.");
+  export_command->add_option("DECK", export_options.deck_path,
+                             "TOML deck or card deck of one case\n"
+                             "(docs/deck-format.md)")
       ->required()
       ->type_name("FILE");
   export_command->add_option("--out", export_options.out_path, "The binary image (812 bytes)")
@@ -132,17 +239,21 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
       ->type_name("FILE");
   export_command->add_option("--c-header", export_options.c_header_path,
                              "Also write the image as a C const array in the\n"
-                             "linker section .tolip_table")
+                             "linker section .tolip_table, with NAME_SIZE and\n"
+                             "NAME_CRC32 macros")
       ->type_name("FILE");
-  export_command->add_option("--symbol", export_options.symbol, "C array name (default tolip_pitch_table)")
+  export_command->add_option("--symbol", export_options.symbol,
+                             "C array name in the header, a C identifier\n"
+                             "(default tolip_pitch_table)")
       ->type_name("NAME");
   export_command->add_option("--mission-id", export_options.mission_id,
                              "Mission identifier, 1-32 printable ASCII characters\n"
                              "(default: the case title, data block 1)")
       ->type_name("TEXT");
   export_command->add_option("--created-unix-s", export_options.created_unix_s,
-                             "Creation stamp, s since 1970-01-01Z (default:\n"
-                             "SOURCE_DATE_EPOCH, else the current time)")
+                             "Creation stamp, s since 1970-01-01Z, 0-253402300799\n"
+                             "(default: SOURCE_DATE_EPOCH, else the current time);\n"
+                             "fix it for byte-identical repeated exports")
       ->type_name("N");
 
   InspectCommandOptions inspect_options;
@@ -151,6 +262,15 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
       "Validate a guidance table image with the flight-side loader's\n"
       "checks and print it in engineering units; a bad image is\n"
       "named by its fault (exit 2).");
+  inspect->footer(
+      "Prints the format version, size, CRC-32, mission id, creation stamp,\n"
+      "lift-off duration, rate limits, maximum deflection, spun attitudes,\n"
+      "gains of stage codes 1-10 and one row per segment.\n"
+      "Example:\n"
+      "  tolip inspect table.bin\n"
+      "Exit codes: 0 valid; 2 bad command line, unreadable file or\n"
+      "invalid image (stderr names the status, e.g. kTableImageCrcMismatch).\n"
+      "Full reference: docs/cli.md, 'tolip inspect'.");
   inspect->add_option("IMAGE", inspect_options.image_path, "Table image written by tolip export")
       ->required()
       ->type_name("FILE");
@@ -166,13 +286,24 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
       "--to FILE.\n"
       "A card deck of several cases needs --case N for TOML; cards\n"
       "write every case (later cases as their changes).");
+  convert->footer(
+      "Examples:\n"
+      "  tolip convert examples/scout/mission.toml --to mission.dat\n"
+      "  tolip convert mission.dat --to mission.toml\n"
+      "  tolip convert cases.dat --to case2.toml --case 2\n"
+      "Exit codes: 0 written; 1 the file could not be written (an existing\n"
+      "FILE is left untouched); 2 bad command line, deck, unknown output\n"
+      "format, a several-case deck to TOML without --case, or a value the\n"
+      "cards cannot hold.\n"
+      "Full reference: docs/cli.md, 'tolip convert'; docs/deck-format.md.");
   convert->add_option("DECK", convert_options.deck_path, "Card deck or TOML deck")->required()->type_name("FILE");
   convert->add_option("--to", convert_options.out_path,
                       "The converted deck; its format follows the name\n"
                       "(*.toml: TOML; *.dat, *.cards, *.crd: card deck)")
       ->required()
       ->type_name("FILE");
-  convert->add_option("--format", convert_options.format, "Output format regardless of the name: toml or cards")
+  convert->add_option("--format", convert_options.format,
+                      "Output format regardless of the name: toml or cards")
       ->type_name("FORMAT");
   convert->add_option("--case", convert_options.case_number,
                       "Case of a several-case card deck to write as TOML\n"
@@ -196,6 +327,7 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
   if (atmosphere->parsed()) return run_atmosphere_command(atmosphere_options, out, err);
   if (simulate->parsed()) return run_simulate_command(simulate_options, out, err);
   if (optimize->parsed()) return run_optimize_command(optimize_options, out, err);
+  if (plot->parsed()) return run_plot_command(plot_options, out, err);
   if (export_command->parsed()) return run_export_command(export_options, out, err);
   if (inspect->parsed()) return run_inspect_command(inspect_options, out, err);
   if (convert->parsed()) return run_convert_command(convert_options, out, err);

@@ -1,9 +1,14 @@
 // `tolip optimize`: load a deck, run the closed-loop steepest-descent optimization
-// (optimize_trajectory), report the iteration history and the final trajectory (listing, CSV, JSON).
+// (optimize_trajectory) of each case in order, report the iteration history and the final
+// trajectory (listing, CSV, JSON).
+#include <algorithm>
 #include <memory>
 #include <ostream>
+#include <sstream>
 #include <string>
+#include <vector>
 
+#include "case_output.hpp"
 #include "tolip/core/status.hpp"
 #include "tolip/optimizer/exchange_ratios.hpp"
 #include "tolip/optimizer/steepest_descent.hpp"
@@ -15,13 +20,15 @@
 #include "tolip_ground/deck.hpp"
 #include "tolip_ground/input_echo.hpp"
 #include "tolip_ground/optimization_report.hpp"
+#include "tolip_ground/optimization_run.hpp"
+#include "tolip_ground/progress.hpp"
 #include "tolip_ground/report.hpp"
 
 namespace tolip::ground {
 namespace {
 
-void print_status(std::ostream& err, Status status) {
-  err << "tolip: " << status_name(status) << ": " << status_message(status) << '\n';
+void print_status(std::ostream& err, Status status, const std::string& prefix = "") {
+  err << "tolip: " << prefix << status_name(status) << ": " << status_message(status) << '\n';
 }
 
 // Statuses with which optimize_trajectory rejects the case before flying anything: the deck asks
@@ -31,23 +38,34 @@ bool rejects_problem(Status status) {
          status == Status::kUnknownConstraintCode;
 }
 
-}  // namespace
+// Where one case's work goes. The listing or JSON document is collected, not printed, so that
+// stdout stays empty when a later case stops the command (a CSV failure, a rejected case).
+struct CaseOutput {
+  std::string csv_path;       // empty: no CSV
+  bool json = false;
+  std::string prefix;         // before the case's diagnostics ("case N: " in a several-case deck)
+  std::ostream* listing = nullptr;
+  nlohmann::ordered_json document;
+  Status failure = Status::kOk;  // the status to report once stdout is written (kOk: none)
+  bool stop = false;             // the command stops here, with nothing on stdout
+};
 
-int run_optimize_command(const OptimizeCommandOptions& options, std::ostream& out,
-                         std::ostream& err) {
-  std::unique_ptr<Mission> mission = make_mission();
-  DeckError deck_error;
-  if (!load_single_case_deck(options.deck_path, mission.get(), nullptr, &deck_error)) {  // TOML or card deck
-    err << "tolip: " << deck_error.to_string() << '\n';
-    return kExitBadInput;
-  }
+// One case: the optimization and its report. Returns the case's exit code.
+int optimize_case(const Deck& deck, const DeckCase& deck_case, OptimizerObserver* observer,
+                  ProgressLine& progress, CaseOutput* output, std::ostream& err) {
+  const Mission* const mission = deck_case.mission.get();
 
-  // The workspace (several trajectories and a backward run) and the result are large.
-  auto workspace = std::make_unique<OptimizerWorkspace>();
-  auto result = std::make_unique<OptimizerResult>();
-  const Status optimizer_status = optimize_trajectory(*mission, workspace.get(), result.get());
+  // The optimization, then the linearization and exchange ratios the deck asks for
+  // (tolip_ground/optimization_run.hpp); the workspaces are large and live on the heap.
+  OptimizationRun run;
+  run_optimization(*mission, observer, &run);
+  progress.clear();  // before anything else goes to stderr
+  OptimizerWorkspace* const workspace = run.workspace.get();
+  const OptimizerResult* const result = run.result.get();
+  const Status optimizer_status = run.optimizer_status;
   if (!ok(optimizer_status) && result->forward_runs == 0 && rejects_problem(optimizer_status)) {
-    print_status(err, optimizer_status);
+    print_status(err, optimizer_status, output->prefix);
+    output->stop = true;
     return kExitBadInput;
   }
 
@@ -55,11 +73,11 @@ int run_optimize_command(const OptimizeCommandOptions& options, std::ostream& ou
   // was made (prepare_case failed) there is none.
   Trajectory& trajectory = workspace->nominal;
   OptimizationReport report;
-  report.initial_mission = mission.get();
-  report.result = result.get();
+  report.initial_mission = mission;
+  report.result = result;
   report.final_trajectory.mission = &workspace->mission;
   report.final_trajectory.trajectory = &trajectory;
-  report.final_trajectory.deck_path = options.deck_path;
+  report.final_trajectory.deck_path = deck.path;
 
   Status trajectory_status = Status::kOk;
   if (result->forward_runs == 0) {
@@ -80,31 +98,33 @@ int run_optimize_command(const OptimizeCommandOptions& options, std::ostream& ou
   report.final_trajectory.status = trajectory_status;
   report.status = ok(optimizer_status) ? trajectory_status : optimizer_status;
 
-  // Performance exchange ratios (IP(3) = 1, manual Sec. 8): after a converged optimization, from
-  // the final optimized case (docs/theory/exchange-ratios.md).
-  std::unique_ptr<ExchangeRatioScratch> exchange_scratch;  // large: a Mission, a case, a trajectory
-  auto exchange_ratios = std::make_unique<ExchangeRatios>();
-  report.exchange_ratios_requested = mission->options.exchange_ratios();
-  if (report.exchange_ratios_requested) {
-    if (!ok(report.status) || !result->converged) {
-      report.exchange_ratio_status = ok(report.status) ? Status::kOptimizerDidNotConverge : report.status;
+  // Performance exchange ratios (IP(3) = 1, manual Sec. 8; docs/theory/exchange-ratios.md).
+  report.exchange_ratios_requested = run.exchange_ratios.outcome != StepOutcome::kNotRequested;
+  report.exchange_ratio_status = run.exchange_ratios.status;
+  if (run.exchange_ratios.outcome == StepOutcome::kRun) {
+    if (ok(run.exchange_ratios.status)) {
+      report.exchange_ratios = run.exchange_ratios.ratios.get();
     } else {
-      exchange_scratch = std::make_unique<ExchangeRatioScratch>();
-      report.exchange_ratio_status =
-          compute_exchange_ratios(*workspace, *result, exchange_scratch.get(), exchange_ratios.get());
-      if (ok(report.exchange_ratio_status)) {
-        report.exchange_ratios = exchange_ratios.get();
-      } else {
-        err << "tolip: exchange ratios not computed: " << status_name(report.exchange_ratio_status) << ": "
-            << status_message(report.exchange_ratio_status) << '\n';
-      }
+      err << "tolip: " << output->prefix << "exchange ratios not computed: " << status_name(run.exchange_ratios.status)
+          << ": " << status_message(run.exchange_ratios.status) << '\n';
+    }
+  }
+  // The linearized pitch program (IP(7) = 1, manual Sec. 6, 10; docs/theory/linearization.md).
+  report.linearization_requested = run.linearization.outcome != StepOutcome::kNotRequested;
+  report.linearization_status = run.linearization.status;
+  report.optimum_payoff = result->payoff;
+  if (run.linearization.outcome == StepOutcome::kRun) {
+    report.linearization = run.linearization.result.get();
+    if (!ok(run.linearization.status)) {
+      err << "tolip: " << output->prefix << "linearization did not succeed: " << status_name(run.linearization.status)
+          << ": " << status_message(run.linearization.status) << '\n';
     }
   }
 
-  if (!options.csv_path.empty()) {
+  if (!output->csv_path.empty()) {
     std::string write_error;
     const bool written = write_file_atomically(
-        options.csv_path,
+        output->csv_path,
         [&report](std::ostream& csv) {
           write_trajectory_csv(csv, report.final_trajectory);
           return static_cast<bool>(csv);
@@ -112,23 +132,74 @@ int run_optimize_command(const OptimizeCommandOptions& options, std::ostream& ou
         &write_error);
     if (!written) {
       err << "tolip: " << write_error << '\n';
+      output->stop = true;
       return kExitFailure;
     }
   }
 
-  if (options.json) {
-    out << dump_json(optimization_json(report));
+  if (output->json) {
+    output->document = optimization_json(report);
   } else {
-    if (mission->options.print_input()) write_input_echo(out, options.deck_path);  // IP(17)
-    write_optimization_listing(out, report);
+    if (mission->options.print_input()) write_input_echo(*output->listing, deck, deck_case);  // IP(17)
+    write_optimization_listing(*output->listing, report);
   }
-  out.flush();
 
   if (!ok(report.status) || !result->converged) {
-    print_status(err, ok(report.status) ? Status::kOptimizerDidNotConverge : report.status);
+    output->failure = ok(report.status) ? Status::kOptimizerDidNotConverge : report.status;
     return kExitFailure;
   }
   return kExitOk;
+}
+
+}  // namespace
+
+int run_optimize_command(const OptimizeCommandOptions& options, std::ostream& out,
+                         std::ostream& err) {
+  Deck deck;
+  DeckError deck_error;
+  if (!load_deck(options.deck_path, &deck, &deck_error)) {  // TOML or card deck, every case checked
+    err << "tolip: " << deck_error.to_string() << '\n';
+    return kExitBadInput;
+  }
+  const std::size_t cases = deck.cases.size();
+
+  ProgressLine progress(err, progress_enabled(options.progress));
+  std::ostringstream listing;
+  nlohmann::ordered_json documents = nlohmann::ordered_json::array();
+  std::vector<std::string> failures;
+  int exit_code = kExitOk;
+  for (const DeckCase& deck_case : deck.cases) {
+    if (cases > 1) progress.set_prefix("case " + std::to_string(deck_case.number) + "/" + std::to_string(cases));
+    OptimizerProgress observer(progress, *deck_case.mission);
+    CaseOutput output;
+    output.csv_path = options.csv_path.empty() ? "" : case_file_path(options.csv_path, deck_case.number, cases);
+    output.json = options.json;
+    output.prefix = case_message_prefix(deck_case.number, cases);
+    output.listing = &listing;
+    const int case_exit = optimize_case(deck, deck_case, progress.enabled() ? &observer : nullptr, progress,
+                                        &output, err);
+    // A case the optimizer rejects is bad input and a CSV that cannot be written a reason to stop:
+    // like a deck error, nothing goes to stdout.
+    if (output.stop) return case_exit;
+    if (options.json) documents.push_back(std::move(output.document));
+    if (!ok(output.failure)) {
+      std::ostringstream line;
+      print_status(line, output.failure, output.prefix);
+      failures.push_back(line.str());
+    }
+    exit_code = std::max(exit_code, case_exit);
+  }
+
+  // A deck of one case prints one document, as it always has; several cases an array.
+  if (options.json) {
+    out << dump_json(cases == 1 ? documents[0] : documents);
+  } else {
+    out << listing.str();
+  }
+  out.flush();
+
+  for (const std::string& failure : failures) err << failure;
+  return exit_code;
 }
 
 }  // namespace tolip::ground

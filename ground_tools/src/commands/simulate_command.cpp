@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "case_output.hpp"
 #include "tolip/core/status.hpp"
 #include "tolip/orbit/orbit_elements.hpp"
 #include "tolip/trajectory/trajectory.hpp"
@@ -22,19 +23,6 @@ namespace {
 
 void print_status(std::ostream& err, Status status, const std::string& prefix) {
   err << "tolip: " << prefix << status_name(status) << ": " << status_message(status) << '\n';
-}
-
-// FILE for one case, FILE with ".caseN" before the extension when the deck has several.
-std::string case_csv_path(const std::string& path, int case_number, std::size_t cases) {
-  if (cases <= 1) return path;
-  const std::size_t slash = path.find_last_of('/');
-  const std::size_t dot = path.find_last_of('.');
-  const std::string tag = ".case" + std::to_string(case_number);
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash) || dot == 0 ||
-      (slash != std::string::npos && dot == slash + 1)) {
-    return path + tag;
-  }
-  return path.substr(0, dot) + tag + path.substr(dot);
 }
 
 // One case flown: the report and the structures it points to.
@@ -96,7 +84,7 @@ int run_simulate_command(const SimulateCommandOptions& options, std::ostream& ou
       std::string write_error;
       const SimulationReport& report = run.report;
       const bool written = write_file_atomically(
-          case_csv_path(options.csv_path, deck_case.number, cases),
+          case_file_path(options.csv_path, deck_case.number, cases),
           [&report](std::ostream& csv) {
             write_trajectory_csv(csv, report);
             return static_cast<bool>(csv);
@@ -116,7 +104,7 @@ int run_simulate_command(const SimulateCommandOptions& options, std::ostream& ou
     }
     if (!ok(run.report.status)) {
       std::ostringstream line;
-      print_status(line, run.report.status, cases > 1 ? "case " + std::to_string(deck_case.number) + ": " : "");
+      print_status(line, run.report.status, case_message_prefix(deck_case.number, cases));
       failures.push_back(line.str());
     }
   }

@@ -1,0 +1,23 @@
+// Per-case output names and message prefixes (case_output.hpp).
+#include "case_output.hpp"
+
+namespace tolip::ground {
+
+std::string case_file_path(const std::string& path, int case_number, std::size_t cases) {
+  if (cases <= 1) return path;
+  const std::size_t slash = path.find_last_of('/');
+  const std::size_t dot = path.find_last_of('.');
+  const std::string tag = ".case" + std::to_string(case_number);
+  // No extension: no dot, a dot in a directory name, or a leading dot of a hidden file's name.
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash) || dot == 0 ||
+      (slash != std::string::npos && dot == slash + 1)) {
+    return path + tag;
+  }
+  return path.substr(0, dot) + tag + path.substr(dot);
+}
+
+std::string case_message_prefix(int case_number, std::size_t cases) {
+  return cases > 1 ? "case " + std::to_string(case_number) + ": " : "";
+}
+
+}  // namespace tolip::ground
