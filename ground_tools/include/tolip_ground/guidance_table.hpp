@@ -11,7 +11,7 @@
 // rate of the interval); a hold segment (rate 0) is appended at the last node when that node still
 // lies in stages 1-3 / coasts 6-8, and one is prepended at the end of the lift-off when the table
 // starts after it. Intervals that end by the end of the lift-off are dropped (the executor holds
-// 90 deg there). docs/table-format.md, "Interim contents", gives every other source.
+// 90 deg there). docs/table-format.md, "Contents", gives every other source.
 #pragma once
 
 #include <cstddef>

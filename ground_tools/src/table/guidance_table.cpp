@@ -1,5 +1,5 @@
-// Ground side of the guidance table image: contents from a case (interim: data block 40), the C
-// header, the inspect listing (guidance_table.hpp).
+// Ground side of the guidance table image: contents from a case (linearized program or data
+// block 40), the C header, the inspect listing (guidance_table.hpp).
 #include "tolip_ground/guidance_table.hpp"
 
 #include <cmath>
@@ -165,7 +165,7 @@ bool build_guidance_table(const Mission& mission, const DeckExtras& extras, cons
     for (int s = 0; s < p.segment_count; ++s) add_segment(p.break_time_s[s], p.theta_rad[s], p.rate_rad_s[s]);
     add_segment(p.break_time_s[p.segment_count], p.theta_rad[p.segment_count], 0.0);
   } else {
-    // Data block 40: the segments (interim source).
+    // Data block 40: the segments (without linearization).
     const PitchTable& pitch = mission.pitch_program_rad;
     if (pitch.size() == 0) return fail("data block 40 (pitch_program) is empty: no segment can be built");
     const double liftoff = mission.launch.liftoff_duration_s;
