@@ -86,17 +86,61 @@ TEST(Sec6Linearization, NineSegmentsMeetEveryRateLimitAndConstraintWithinHalfAPe
     EXPECT_TRUE(change < 1e-9 || change >= mission.control.min_pitch_rate_change_rad_s * (1.0 - 1e-6))
         << "segments " << s - 1 << ", " << s << ": change " << change;
   }
-  // The linearized trajectory really flies the segments: theta is linear between the breaks.
+  // The linearized trajectory really flies the segments: its command theta is linear between the
+  // breaks (with the reference's IP(6) = 1 the flown attitude in stage 1 and coast 6 is the
+  // autopilot's steady state about it, Sec. 7; elsewhere the command itself).
   const Trajectory& t = workspace.nominal;
   for (int k = 1; k < t.point_count; ++k) {
     const double time = t.points[k].time_s;
     for (int s = 0; s < p.segment_count; ++s) {
       if (time < p.break_time_s[s] || time > p.break_time_s[s + 1]) continue;
       const double expected = p.theta_rad[s] + p.rate_rad_s[s] * (time - p.break_time_s[s]);
-      EXPECT_NEAR(t.points[k].theta_rad, expected, 1e-9) << "t = " << time;
+      EXPECT_NEAR(workspace.program.theta_rad[k], expected, 1e-9) << "t = " << time;
+      if (!t.points[k].body_dynamics) EXPECT_EQ(t.points[k].theta_rad, workspace.program.theta_rad[k]) << "t = " << time;
       break;
     }
   }
+}
+
+// IP(6) = 1 (Sec. 10, 11): the accepted point-mass program, flown with body dynamics in stage 1 and
+// coast 6, misses the constraints far outside the deadbands (the autopilot lags the 5 deg/s
+// pitch-over by K_q/K_theta times the rate); the 6D re-linearization brings every constraint and
+// rate limit back within the same DA13(4) budget, and the payoff stays within 0.5% of the optimum.
+TEST(Sec10Linearization, SixDRelinearizationMeetsEveryLimitAndConstraintAgain) {
+  const LinearizedReference& r = linearized_reference(true);
+  ASSERT_EQ(r.mission.options.body_dynamics_6d(), 1);
+  ASSERT_EQ(r.status, Status::kOk) << status_name(r.result.status);
+  const LinearizationResult& result = r.result;
+  EXPECT_TRUE(result.point_mass_met);
+  EXPECT_TRUE(result.body_dynamics);
+  EXPECT_EQ(result.reference_flights, 1);
+  EXPECT_LE(result.forward_runs, r.mission.convergence.max_linearization_iterations);
+  bool missed = false;
+  for (int j = 0; j < result.constraint_count; ++j) {
+    const double pm_error = std::fabs(result.point_mass_achieved[j] - result.desired[j]);
+    const double six_d_error = std::fabs(result.point_mass_program_6d_achieved[j] - result.desired[j]);
+    EXPECT_LE(pm_error, result.tolerance[j]) << "code " << result.codes[j];
+    missed = missed || six_d_error > 5.0 * result.tolerance[j];
+    EXPECT_LE(std::fabs(result.achieved[j] - result.desired[j]), result.tolerance[j]) << "code " << result.codes[j];
+    std::printf("code %3d: point-mass program, point mass %.6g, 6D %.6g; 6D program %.6g (desired %.6g)\n",
+                result.codes[j], result.point_mass_achieved[j], result.point_mass_program_6d_achieved[j],
+                result.achieved[j], result.desired[j]);
+  }
+  EXPECT_TRUE(missed) << "body dynamics must matter on this case";
+  std::printf("payoff: point mass %.4f lb, 6D %.4f lb (difference %.4f lb); optimum %.4f lb\n",
+              result.point_mass_payoff, result.payoff, result.payoff - result.point_mass_payoff, r.optimum.payload_lb);
+  EXPECT_GE(result.payoff, 0.995 * r.optimum.payload_lb);
+  EXPECT_GE(result.point_mass_payoff, 0.995 * r.optimum.payload_lb);
+  // The flown 6D trajectory really has body dynamics in stage 1 (and only in stage 1 / coast 6).
+  int six_d_points = 0;
+  for (int k = 0; k < r.workspace.nominal.point_count; ++k) {
+    const TrajectoryPoint& point = r.workspace.nominal.points[k];
+    if (point.body_dynamics) {
+      ++six_d_points;
+      EXPECT_TRUE(point.stage_code == 1 || point.stage_code == 6) << "t = " << point.time_s;
+    }
+  }
+  EXPECT_GT(six_d_points, 20);
 }
 
 // Without the minimum-rate limits the fit stays closer to the optimum: fewer repairs, a smaller

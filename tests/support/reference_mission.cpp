@@ -143,6 +143,34 @@ void build_reference_mission(ReferenceProgram program, Mission* m) {
     m->options.ip[std::stoi(key.substr(0, key.find('_')))] = value.get<int>();
   }
 
+  // Data blocks 33-37 (body dynamics): stations inches -> ft, K_TV per degree -> per radian, S the
+  // block 34 reference area (the deck mapping takes stage 1's block 39 area, the same 8.7266 ft^2).
+  const nlohmann::json& bd = ref["body_dynamics_6D"];
+  const nlohmann::json& da6d = bd["block33_DA6D"];
+  BodyDynamicsBlocks& body = m->body_dynamics;
+  body.present = true;
+  for (int k = 0; k < kBodyDynamicsStages; ++k) {
+    const std::string stage = "stage_" + std::to_string(k + 1);
+    body.position_gain[k] = da6d["position_gain_K_theta_deg_per_deg"][stage];
+    body.rate_gain_s[k] = da6d["rate_gain_K_q_s"][stage];
+    body.control_station_ft[k] = da6d["jet_vane_and_fin_station_in"][stage].get<double>() / 12.0;
+  }
+  body.jet_vane_effectiveness_per_rad =
+      da6d["jet_vane_effectiveness_lb_per_lb_vacuum_thrust_per_deg_per_vane"].get<double>() / kDegToRad;
+  body.moment_reference_station_ft = da6d["moment_reference_station_X_FS_in"].get<double>() / 12.0;
+  body.reference_length_ft = da6d["reference_length_ft"];
+  body.reference_area_ft2 = bd["block34_fin_normal_force_per_delta"]["reference_area_ft2"];
+  fill(&body.fin_normal_force_per_rad, bd["block34_fin_normal_force_per_delta"]["mach"],
+       bd["block34_fin_normal_force_per_delta"]["cn_delta_per_rad_per_fin"]);
+  fill(&body.pitching_moment_per_rad, bd["block35_pitching_moment_per_alpha_about_X_FS"]["mach"],
+       bd["block35_pitching_moment_per_alpha_about_X_FS"]["cm_alpha_per_rad"]);
+  fill(&body.fin_pitching_moment_per_rad, bd["block36_fin_pitching_moment_per_delta_about_X_FS"]["mach"],
+       bd["block36_fin_pitching_moment_per_delta_about_X_FS"]["cm_delta_per_rad_per_fin"]);
+  for (int k = 0; k < kCgTableStages; ++k) {
+    const nlohmann::json& cg = bd["block37_center_of_gravity_station_in"]["stage_" + std::to_string(k + 1)];
+    fill(&body.cg_station_ft[k], cg["stage_time_s"], cg["cg_station_in"], 1.0 / 12.0);
+  }
+
   m->pitch_program_rad.clear();
   if (optimum) {
     const nlohmann::json& pp = oracle["pitch_program"];

@@ -33,6 +33,8 @@ const char* status_name(Status status) {
     case Status::kLiftoffLongerThanStage1: return "kLiftoffLongerThanStage1";
     case Status::kInitialConditionsInvalid: return "kInitialConditionsInvalid";
     case Status::kAtmosphereTableInvalid: return "kAtmosphereTableInvalid";
+    case Status::kBodyDynamicsDataMissing: return "kBodyDynamicsDataMissing";
+    case Status::kControlStationAtCenterOfGravity: return "kControlStationAtCenterOfGravity";
     case Status::kUnknownConstraintCode: return "kUnknownConstraintCode";
     case Status::kConstraintNotHyperbolic: return "kConstraintNotHyperbolic";
     case Status::kConstraintSingular: return "kConstraintSingular";
@@ -47,6 +49,7 @@ const char* status_name(Status status) {
     case Status::kLinearizationDidNotConverge: return "kLinearizationDidNotConverge";
     case Status::kAdjustableParameterNotSupported: return "kAdjustableParameterNotSupported";
     case Status::kPayoffNotSupported: return "kPayoffNotSupported";
+    case Status::kBodyDynamicsNotTrimmable: return "kBodyDynamicsNotTrimmable";
     case Status::kNotPrepared: return "kNotPrepared";
     case Status::kTableImageTruncated: return "kTableImageTruncated";
     case Status::kTableImageSizeMismatch: return "kTableImageSizeMismatch";
@@ -97,6 +100,8 @@ const char* status_message(Status status) {
     case Status::kLiftoffLongerThanStage1: return "the lift-off interval is not shorter than stage 1";
     case Status::kInitialConditionsInvalid: return "initial conditions must have zero velocity and a 90 degree flight-path angle";
     case Status::kAtmosphereTableInvalid: return "the atmosphere table is inconsistent";
+    case Status::kBodyDynamicsDataMissing: return "a 6D (body dynamics) trajectory needs data blocks 33-37 (gains, stations, reference length and area, the block 34-36 tables and the stage-1 c.g. history), which the case does not give completely";
+    case Status::kControlStationAtCenterOfGravity: return "the stage-1 control station DA6D(7) lies within the range of the stage-1 c.g. stations of data block 37, so X_delta - X_CG would vanish";
     case Status::kUnknownConstraintCode: return "a data block 8 constraint code is not 0-14, 10X+5 to 10X+9 (X = 1-9) or 100-102";
     case Status::kConstraintNotHyperbolic: return "a hyperbolic-asymptote constraint (100-102) needs a hyperbolic orbit (2E > 0)";
     case Status::kConstraintSingular: return "the constraint has no derivative at this state (equatorial or circular orbit, vertical inertial velocity, zero range)";
@@ -110,6 +115,7 @@ const char* status_message(Status status) {
     case Status::kLinearizationDidNotConverge: return "the linearized pitch program did not meet the constraints within the linearization deadbands and the rate limits in DA13(4) forward runs";
     case Status::kOptimizerDidNotConverge: return "the optimization ended (forward-run budget or minimum improvement) with constraints outside their deadbands";
     case Status::kAdjustableParameterNotSupported: return "an adjustable parameter code of data block 6 is not supported by this optimizer yet";
+    case Status::kBodyDynamicsNotTrimmable: return "the autopilot has no steady state (Sec. 7): K_theta M_delta - M_alpha is not positive, a statically unstable vehicle with too little control moment";
     case Status::kPayoffNotSupported: return "the payoff of data block 8 does not match option IP(1) or is not supported";
     case Status::kNotPrepared: return "the case was not prepared (prepare_case) before use";
     case Status::kTableImageTruncated: return "the table image is shorter than the format's fixed size";

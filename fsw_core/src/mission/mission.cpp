@@ -566,6 +566,72 @@ Status check_output(const OutputFrequency& o, const Check& check) {
   return Status::kOk;
 }
 
+// ---- data blocks 33-37 (6D) --------------------------------------------------------------------
+// A table a 6D run needs: given, well formed and finalized.
+template <int N>
+Status required_table(const Table<N>& table) {
+  if (table.empty()) return Status::kBodyDynamicsDataMissing;
+  const Status shape = table_shape(table);
+  if (!ok(shape)) return shape;
+  return table.finalized() ? Status::kOk : Status::kTableNotMonotonic;
+}
+
+Status check_body_dynamics(const Mission& mission, const Check& check) {
+  const BodyDynamicsBlocks& b = mission.body_dynamics;
+  if (!b.present) return check.fail(Status::kBodyDynamicsDataMissing, 33, 0, "body_dynamics");
+  // Every word given must be finite (stages 2-3 are kept for the dispersion and hardover work).
+  if (!all_finite(b.position_gain, kBodyDynamicsStages)) return check.fail(Status::kValueNotFinite, 33, 0, "position_gain");
+  if (!all_finite(b.rate_gain_s, kBodyDynamicsStages)) return check.fail(Status::kValueNotFinite, 33, 0, "rate_gain_s");
+  if (!all_finite(b.control_station_ft, kBodyDynamicsStages)) {
+    return check.fail(Status::kValueNotFinite, 33, 0, "control_station_ft");
+  }
+  const double words[] = {b.jet_vane_effectiveness_per_rad, b.moment_reference_station_ft, b.reference_length_ft,
+                          b.reference_area_ft2, b.control_surfaces_per_plane};
+  const char* names[] = {"jet_vane_effectiveness_per_rad", "moment_reference_station_ft", "reference_length_ft",
+                         "reference_area_ft2", "control_surfaces_per_plane"};
+  for (int i = 0; i < 5; ++i) {
+    if (!finite(words[i])) return check.fail(Status::kValueNotFinite, 33, 0, names[i]);
+  }
+  // Stage 1 (and the coast after it) is what a 6D run flies: a positive position gain (eq. 7-6
+  // divides by K_theta M_delta - M_alpha, and K_theta = 0 means no autopilot), a rate gain >= 0.
+  if (!(b.position_gain[0] > 0.0)) return check.fail(Status::kValueOutOfRange, 33, 1, "position_gain");
+  if (!(b.rate_gain_s[0] >= 0.0)) return check.fail(Status::kValueOutOfRange, 33, 1, "rate_gain_s");
+  if (!(b.jet_vane_effectiveness_per_rad >= 0.0)) {
+    return check.fail(Status::kValueOutOfRange, 33, 0, "jet_vane_effectiveness_per_rad");
+  }
+  if (!(b.reference_length_ft > 0.0)) return check.fail(Status::kValueOutOfRange, 33, 0, "reference_length_ft");
+  if (!(b.reference_area_ft2 > 0.0)) return check.fail(Status::kValueOutOfRange, 33, 0, "reference_area_ft2");
+  if (!(b.control_surfaces_per_plane > 0.0)) {
+    return check.fail(Status::kValueOutOfRange, 33, 0, "control_surfaces_per_plane");
+  }
+  Status status = required_table(b.fin_normal_force_per_rad);
+  if (!ok(status)) return check.fail(status, 34, 0, "fin_normal_force_per_rad");
+  status = required_table(b.pitching_moment_per_rad);
+  if (!ok(status)) return check.fail(status, 35, 0, "pitching_moment_per_rad");
+  status = required_table(b.fin_pitching_moment_per_rad);
+  if (!ok(status)) return check.fail(status, 36, 0, "fin_pitching_moment_per_rad");
+  status = required_table(b.cg_station_ft[0]);
+  if (!ok(status)) return check.fail(status, 37, 1, "cg_station_ft");
+  for (int k = 1; k < kCgTableStages; ++k) {
+    status = optional_table(b.cg_station_ft[k]);
+    if (!ok(status)) return check.fail(status, 37, k + 1, "cg_station_ft");
+  }
+  // F_CNL = M_alpha alpha / (X_delta - X_CG) (Sec. 11): the stage-1 c.g. (piecewise linear, its
+  // values held past the ends) stays within its tabulated range, so X_delta must lie outside it.
+  const CgTable& cg = b.cg_station_ft[0];
+  double lowest = cg.y(0);
+  double highest = cg.y(0);
+  for (int i = 1; i < cg.size(); ++i) {
+    lowest = cg.y(i) < lowest ? cg.y(i) : lowest;
+    highest = cg.y(i) > highest ? cg.y(i) : highest;
+  }
+  const double station = b.control_station_ft[0];
+  if (station >= lowest && station <= highest) {
+    return check.fail(Status::kControlStationAtCenterOfGravity, 33, 1, "control_station_ft");
+  }
+  return Status::kOk;
+}
+
 }  // namespace
 
 Status validate_mission(const Mission& mission, MissionFault* fault) {
@@ -604,7 +670,16 @@ Status validate_mission(const Mission& mission, MissionFault* fault) {
   if (mission.pitch_program_rad.empty()) return check.fail(Status::kTableEmpty, 40, 0, "pitch_program_rad");
   status = optional_table(mission.pitch_program_rad);
   if (!ok(status)) return check.fail(status, 40, 0, "pitch_program_rad");
+
+  // Data blocks 33-37 when a 6D trajectory is asked for (IP(6) = 1 or 2).
+  if (mission.options.body_dynamics_6d() >= 1) return check_body_dynamics(mission, check);
   return Status::kOk;
+}
+
+Status validate_body_dynamics(const Mission& mission, MissionFault* fault) {
+  const Check check{fault};
+  if (fault != nullptr) *fault = MissionFault{};
+  return check_body_dynamics(mission, check);
 }
 
 // Consumable weight of the current powered stage (0 in a coast), plus the jettison weights of this

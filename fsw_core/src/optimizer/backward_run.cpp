@@ -32,6 +32,9 @@ struct Linearization {
   StateVector df_dm = StateVector::Zero();
   StateVector df_dtheta = StateVector::Zero();
   StateVector df_dchi = StateVector::Zero();
+  // Body dynamics (6D, Sec. 7): the flown attitude also depends on the commanded rate theta_c-dot
+  // = (theta_end - theta_start) / step_s (per rad/s, at a fixed commanded theta). Zero otherwise.
+  StateVector df_drate = StateVector::Zero();
 };
 
 class Linearizer {
@@ -63,6 +66,16 @@ class Linearizer {
     plus.theta_start_rad += kAngleStepRad;
     plus.theta_end_rad += kAngleStepRad;
     out->df_dtheta = (f(stage, plus, t, x, 0.0) - out->f) / kAngleStepRad;
+    out->df_drate.setZero();
+    if (command.body_dynamics && command.mode == AttitudeMode::kLinear) {
+      // Turn the step's line about its value at t: theta_c(t) stays, the rate grows by
+      // kAngleStepRad / step_s.
+      const double fraction = (t - command.step_start_s) / command.step_s;
+      StepCommand turned = command;
+      turned.theta_start_rad -= fraction * kAngleStepRad;
+      turned.theta_end_rad += (1.0 - fraction) * kAngleStepRad;
+      out->df_drate = (f(stage, turned, t, x, 0.0) - out->f) / (kAngleStepRad / command.step_s);
+    }
     if (command.mode == AttitudeMode::kHeld) {
       plus = command;
       plus.chi_rad += kAngleStepRad;
@@ -101,6 +114,7 @@ struct Contribution {
   MassRow mass = MassRow::Zero();
   ConstraintVector theta = ConstraintVector::Zero();
   ConstraintVector chi = ConstraintVector::Zero();
+  ConstraintVector rate = ConstraintVector::Zero();  // body dynamics: per rad/s of theta_c-dot
 };
 
 void accumulate(const Linearization& lin, const StateRows& a, int count, Contribution* c) {
@@ -108,6 +122,7 @@ void accumulate(const Linearization& lin, const StateRows& a, int count, Contrib
   c->mass.leftCols(count) += lin.df_dm.transpose() * a.leftCols(count);
   c->theta.head(count) += (lin.df_dtheta.transpose() * a.leftCols(count)).transpose();
   c->chi.head(count) += (lin.df_dchi.transpose() * a.leftCols(count)).transpose();
+  c->rate.head(count) += (lin.df_drate.transpose() * a.leftCols(count)).transpose();
 }
 
 class BackwardSweep {
@@ -238,8 +253,14 @@ void BackwardSweep::rk4_step(const StepRecord& step) {
   mass_.leftCols(n) += c1.mass.leftCols(n) + c2.mass.leftCols(n) + c3.mass.leftCols(n) + c4.mass.leftCols(n);
   if (command.mode == AttitudeMode::kHeld) out_->spun_chi.head(n) += c1.chi.head(n) + c2.chi.head(n) + c3.chi.head(n) + c4.chi.head(n);
   // theta(t) = theta_start + fraction (theta_end - theta_start), fraction 0, 1/2, 1/2, 1.
-  const ConstraintVector start = c1.theta + 0.5 * (c2.theta + c3.theta);
-  const ConstraintVector end = c4.theta + 0.5 * (c2.theta + c3.theta);
+  ConstraintVector start = c1.theta + 0.5 * (c2.theta + c3.theta);
+  ConstraintVector end = c4.theta + 0.5 * (c2.theta + c3.theta);
+  if (command.body_dynamics) {
+    // theta_c-dot = (theta_end - theta_start) / h in every evaluation of the step (Sec. 7).
+    const ConstraintVector rate = (c1.rate + c2.rate + c3.rate + c4.rate) / h;
+    start -= rate;
+    end += rate;
+  }
   attribute_theta(step, start, end);
 }
 
@@ -264,7 +285,12 @@ void BackwardSweep::adams_step(const StepRecord& step) {
   state_.leftCols(n) += c.state.leftCols(n);
   mass_.leftCols(n) += c.mass.leftCols(n);
   if (step.command.mode == AttitudeMode::kHeld) out_->spun_chi.head(n) += c.chi.head(n);
-  attribute_theta(step, c.theta, ConstraintVector::Zero());
+  if (step.command.body_dynamics) {
+    const ConstraintVector rate = c.rate / h;
+    attribute_theta(step, c.theta - rate, rate);
+  } else {
+    attribute_theta(step, c.theta, ConstraintVector::Zero());
+  }
 }
 
 // Extending a coast by dT adds its derivative at the end: S = lambda . P (Sec. 9), evaluated

@@ -249,9 +249,21 @@ Status solve_program(const LinearConstraints& c, const BackwardRun& backward, co
     rhs(b) = p->theta_rad[b];
   }
   for (int i = n + c.count + p->rate_repair_count; i < kKktSize; ++i) kkt(i, i) = 1.0;
+  // The equality rows (fixed values, rate repairs) are checked on the solution: a nearly singular
+  // system (more equalities than the program can meet) returns garbage rather than failing.
+  const KktMatrix system = kkt;
+  const KktVector wanted = rhs;
   KktVector x = KktVector::Zero();
   if (!solve_in_place(&kkt, &rhs, &x)) return Status::kSteeringMatrixSingular;
   if (!x.allFinite()) return Status::kNonFiniteState;
+  const int rows = n + c.count + p->rate_repair_count;
+  for (int i = 0; i < rows; ++i) {
+    const bool equality = i >= n || (i < breaks && p->fixed[i]);
+    if (!equality) continue;
+    double residual = wanted(i);
+    for (int col = 0; col < rows; ++col) residual -= system(i, col) * x(col);
+    if (std::fabs(residual) > 1e-8 * (1.0 + std::fabs(wanted(i)))) return Status::kSteeringMatrixSingular;
+  }
   for (int b = 0; b < breaks; ++b) p->theta_rad[b] = x(b);
   *payload_change_lb = c.payload_free ? x(breaks) : 0.0;
   return Status::kOk;
@@ -301,11 +313,20 @@ bool continues_previous(const LinearProgram& p, int s) {
 // is possible. A repair fixes the rate of a segment's merge group, or merges two adjacent segments
 // (eliminating a break, as Sec. 10 does), and sets eta next to it to 0.01. A group whose rate is
 // already fixed is not repaired again; merging into such a group makes the other side fly its rate.
-bool repair_rate_limits(const Mission& mission, double coast_rate_rad_s_after_last, LinearProgram* p) {
+bool repair_rate_limits(const Mission& mission, const LinearConstraints& c, double coast_rate_rad_s_after_last,
+                        LinearProgram* p) {
   if (p->rate_repair_count >= kMaxRateRepairs) return false;
+  // Every repair takes one degree of freedom of the fit; the constraints need one each. A repair
+  // that would leave fewer than that makes the system singular: the violation stays instead, and
+  // the next backward run starts from a different trajectory.
+  int free = p->segment_count + 1 + (c.payload_free ? 1 : 0) - p->rate_repair_count;
+  for (int b = 0; b <= p->segment_count; ++b) free -= p->fixed[b] ? 1 : 0;
+  if (free - 1 < c.count) return false;
   const ControlConstraints& limits = mission.control;
   const int k = p->segment_count;
   const auto rate = [&](int s) { return segment_rate(*p, s); };
+  // A segment between two fixed break values has no rate to repair.
+  const auto determined = [&](int s) { return p->fixed[s] && p->fixed[s + 1]; };
   const auto impose = [&](int s, bool merge, double value) {
     const int r = p->rate_repair_count++;
     p->rate_segment[r] = s;
@@ -318,7 +339,7 @@ bool repair_rate_limits(const Mission& mission, double coast_rate_rad_s_after_la
   };
   for (int s = 0; s < k; ++s) {
     if (limits.max_pitch_rate_rad_s > 0.0 && std::fabs(rate(s)) > limits.max_pitch_rate_rad_s * (1.0 + 1e-9) &&
-        !merge_group(*p, s).rate_fixed) {
+        !merge_group(*p, s).rate_fixed && !determined(s)) {
       return impose(s, false, (rate(s) < 0.0 ? -1.0 : 1.0) * limits.max_pitch_rate_rad_s);
     }
   }
@@ -326,11 +347,13 @@ bool repair_rate_limits(const Mission& mission, double coast_rate_rad_s_after_la
   for (int s = 0; s < k; ++s) {
     if (!(rate(s) > kPositiveRateRadS) || continues_previous(*p, s)) continue;
     ++positives;
-    if (positives > 1 && !merge_group(*p, s).rate_fixed) return impose(s, false, -limits.min_pitch_rate_rad_s);
+    if (positives > 1 && !merge_group(*p, s).rate_fixed && !determined(s)) {
+      return impose(s, false, -limits.min_pitch_rate_rad_s);
+    }
   }
   for (int s = 0; s < k; ++s) {
     if (limits.min_pitch_rate_rad_s > 0.0 && std::fabs(rate(s)) < limits.min_pitch_rate_rad_s * (1.0 - 1e-9) &&
-        !merge_group(*p, s).rate_fixed) {
+        !merge_group(*p, s).rate_fixed && !determined(s)) {
       return impose(s, false, (rate(s) > 0.0 ? 1.0 : -1.0) * limits.min_pitch_rate_rad_s);
     }
   }
@@ -370,6 +393,30 @@ double coast_rate_after_program(const Mission& mission, const PreparedCase& prep
     }
   }
   return -1.0;
+}
+
+// The payoff of a linearized trajectory: the payload itself for the payload payoff (free during
+// linearization), else the payoff quantity at its point.
+Status linearized_payoff(const Mission& mission, const Trajectory& trajectory, double* payoff) {
+  ConstraintCode code;
+  Status status = decode_constraint_code(mission.constraints.codes[0], &code);
+  if (!ok(status)) return status;
+  if (code.kind == ConstraintQuantity::kPayload) {
+    *payoff = mission.vehicle.payload_lb;
+    return Status::kOk;
+  }
+  const int index = constraint_point_index(code, trajectory);
+  if (index < 0) return Status::kValueOutOfRange;
+  return constraint_value(mission.constants, mission.launch, code, constraint_point_at(mission, trajectory, index), payoff);
+}
+
+// A forward linearization run: the sampled program, with body dynamics in stage 1 and the coast
+// after it on 6D runs (Sec. 10, 11).
+Status fly_linearized(const LinearizationWorkspace& ws, bool body_dynamics, Trajectory* out) {
+  FlightInputs inputs;
+  inputs.program = &ws.program;
+  inputs.body_dynamics = body_dynamics;
+  return fly_trajectory(ws.mission, ws.prepared, inputs, out);
 }
 
 }  // namespace
@@ -475,6 +522,10 @@ Status linearize_pitch_program(const OptimizerWorkspace& optimized, Linearizatio
 
   LinearProgram program = base;
   bool success = false;
+  const bool six_d_after_success = optimized.mission.options.body_dynamics_6d() == 1;
+  out->body_dynamics = false;
+  out->point_mass_met = false;
+  out->reference_flights = 0;
   while (out->forward_runs < budget && !success) {
     ConstraintTerminal terminals[kMaxConstraints];
     for (int j = 0; j < c.count; ++j) {
@@ -506,7 +557,9 @@ Status linearize_pitch_program(const OptimizerWorkspace& optimized, Linearizatio
                              &program, &payload_change_lb);
       if (!ok(status)) return out->status = status;
       ++out->programs_computed;
-      if (!repair_rate_limits(ws->mission, coast_rate_after_program(ws->mission, ws->prepared, program), &program)) break;
+      if (!repair_rate_limits(ws->mission, c, coast_rate_after_program(ws->mission, ws->prepared, program), &program)) {
+        break;
+      }
     }
     update_rates_and_stages(ws->nominal, &program);
 
@@ -514,7 +567,7 @@ Status linearize_pitch_program(const OptimizerWorkspace& optimized, Linearizatio
     sample(program, ws->nominal, ws->optimum, &ws->program);
     ws->mission.vehicle.payload_lb += payload_change_lb;
     if (!(ws->mission.vehicle.payload_lb >= 0.0)) return out->status = Status::kValueOutOfRange;
-    status = fly_trajectory(ws->mission, ws->prepared, ws->program, &ws->candidate);
+    status = fly_linearized(*ws, out->body_dynamics, &ws->candidate);
     ++out->forward_runs;
     if (!ok(status)) return out->status = status;
     status = evaluate(c, ws->mission, ws->candidate, achieved);
@@ -523,6 +576,30 @@ Status linearize_pitch_program(const OptimizerWorkspace& optimized, Linearizatio
     out->rate_limits_met = meets_rate_limits(ws->mission, coast_rate_after_program(ws->mission, ws->prepared, program), program);
     out->constraints_met = within_deadbands(c, achieved);
     success = out->rate_limits_met && out->constraints_met;
+
+    // IP(6) = 1 (Sec. 10): after a successful point-mass linearization, the program becomes the
+    // command of 6D runs; the linearization goes on with them, within the same DA13(4) budget,
+    // until the constraints and the rate limits are met again. The first 6D flight, of the
+    // accepted program itself, is the trajectory the next backward run linearizes about: the
+    // counterpart of the manual's backward run, which integrates the 6D trajectory itself, and
+    // not a linearization attempt (docs/theory/linearization.md).
+    if (success && six_d_after_success && !out->body_dynamics) {
+      out->point_mass_met = true;
+      out->point_mass_program = program;
+      status = linearized_payoff(ws->mission, ws->nominal, &out->point_mass_payoff);
+      if (!ok(status)) return out->status = status;
+      for (int j = 0; j < c.count; ++j) out->point_mass_achieved[j] = achieved[j];
+      out->body_dynamics = true;
+      status = fly_linearized(*ws, true, &ws->candidate);
+      ++out->reference_flights;
+      if (!ok(status)) return out->status = status;
+      status = evaluate(c, ws->mission, ws->candidate, achieved);
+      if (!ok(status)) return out->status = status;
+      for (int j = 0; j < c.count; ++j) out->point_mass_program_6d_achieved[j] = achieved[j];
+      ws->nominal = ws->candidate;
+      out->constraints_met = within_deadbands(c, achieved);
+      success = out->rate_limits_met && out->constraints_met;
+    }
   }
 
   out->program = program;
@@ -534,16 +611,8 @@ Status linearize_pitch_program(const OptimizerWorkspace& optimized, Linearizatio
     out->achieved[j] = achieved[j];
     out->tolerance[j] = c.deadband[j];
   }
-  // The payoff of the linearized trajectory (payload payoff: the payload is held).
-  ConstraintCode payoff;
-  status = decode_constraint_code(ws->mission.constraints.codes[0], &payoff);
-  if (ok(status) && payoff.kind != ConstraintQuantity::kPayload) {
-    const int index = constraint_point_index(payoff, ws->nominal);
-    status = constraint_value(ws->mission.constants, ws->mission.launch, payoff,
-                              constraint_point_at(ws->mission, ws->nominal, index), &out->payoff);
-  } else {
-    out->payoff = ws->mission.vehicle.payload_lb;
-  }
+  status = linearized_payoff(ws->mission, ws->nominal, &out->payoff);
+  if (!ok(status)) return out->status = status;
   out->status = success ? Status::kOk : Status::kLinearizationDidNotConverge;
   return out->status;
 }

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "tolip/atmosphere/atmosphere.hpp"
+#include "tolip/body/body_dynamics.hpp"
 #include "tolip/dynamics/equations_of_motion.hpp"
 #include "tolip/earth/earth_model.hpp"
 #include "tolip/frames/frames.hpp"
@@ -81,17 +82,52 @@ void evaluate_flight(const Mission& mission, const PreparedCase& prepared, const
       break;
     }
   }
-  out->thrust_axis_local = platform_to_local * thrust_axis_platform(out->theta_rad, out->chi_rad);
+  out->theta_command_rad = out->theta_rad;
 
   out->density_slug_ft3 = density;
   out->dynamic_pressure_lbf_ft2 = 0.5 * density * v * v;
   out->mach = (speed_of_sound > 0.0) ? v / speed_of_sound : 0.0;
+  out->control_deflection_rad = 0.0;
+  out->body_status = Status::kOk;
+  Vector3 body_force_local = Vector3::Zero();
+  if (command.body_dynamics) {
+    // Sec. 7, 11 (docs/theory/body-dynamics.md): the flown attitude is the autopilot's steady state
+    // about the command, with stage 1's data in stage 1 and in the coast after it.
+    const AeroTable& normal_slope = mission.vehicle.lift_curve_slope_per_rad;
+    const bool aero = density > 0.0 && !normal_slope.empty();
+    const double c_n_alpha = aero ? normal_slope(out->mach) : 0.0;
+    BodyDynamicsInputs body;
+    body.conditions.stage = 1;
+    body.conditions.cg_stage_time_s = (stage.code == 1) ? stage_time : mission.vehicle.stages[0].duration_s;
+    body.conditions.mach = out->mach;
+    body.conditions.dynamic_pressure_lbf_ft2 = out->dynamic_pressure_lbf_ft2;
+    body.conditions.vacuum_thrust_lbf = out->vacuum_thrust_lbf;
+    body.conditions.normal_force_slope_per_rad = c_n_alpha;
+    body.command.theta_rad = out->theta_rad;
+    body.command.theta_rate_rad_s = (command.mode == AttitudeMode::kLinear)
+                                        ? (command.theta_end_rad - command.theta_start_rad) / command.step_s
+                                        : 0.0;
+    body.command.chi_rad = command.chi_rad;
+    body.command.chi_rate_rad_s = 0.0;
+    // F_alpha: the point-mass model's own normal-force slope (block 32 table, the stage's area).
+    body.normal_force_lbf_per_rad =
+        (aero && data.uses_lift_table) ? out->dynamic_pressure_lbf_ft2 * data.reference_area_ft2 * c_n_alpha : 0.0;
+    body.platform_to_local = platform_to_local;
+    BodyDynamicsResult result;
+    out->body_status = evaluate_body_dynamics(mission.body_dynamics, body, &result);
+    out->theta_rad = result.attitude.theta_rad;
+    out->chi_rad = result.attitude.chi_rad;
+    out->control_deflection_rad = result.attitude.pitch_deflection_rad;
+    body_force_local = result.forces.local_lbf;
+  }
+  out->thrust_axis_local = platform_to_local * thrust_axis_platform(out->theta_rad, out->chi_rad);
+
   out->drag_lbf = 0.0;
   out->lift_lbf = 0.0;
   if (density > 0.0) {
     const double q_s = out->dynamic_pressure_lbf_ft2 * data.reference_area_ft2;
     if (!data.drag_coefficient.empty()) out->drag_lbf = q_s * data.drag_coefficient(out->mach);
-    if (data.uses_lift_table && !mission.vehicle.lift_curve_slope_per_rad.empty()) {
+    if (!command.body_dynamics && data.uses_lift_table && !mission.vehicle.lift_curve_slope_per_rad.empty()) {
       // Alpha (an atan2) is needed on the integration path only where there is lift.
       out->lift_lbf = q_s * mission.vehicle.lift_curve_slope_per_rad(out->mach) *
                       angle_of_attack_rad(out->thrust_axis_local);
@@ -103,6 +139,14 @@ void evaluate_flight(const Mission& mission, const PreparedCase& prepared, const
   forces.thrust_local_lbf = out->net_thrust_lbf * out->thrust_axis_local;
   forces.drag_lbf = out->drag_lbf;
   forces.lift_lbf = out->lift_lbf;
+  if (command.body_dynamics) {
+    // The Sec. 11 forces are added to V-dot, gamma-dot and psi-dot through F_iy / m, F_iz / (m V)
+    // and F_ix / (m V cos gamma): exactly where the equations take the local thrust components.
+    // They replace the point-mass lift (never counted twice); the reported lift is their i_z part.
+    forces.thrust_local_lbf += body_force_local;
+    forces.lift_lbf = 0.0;
+    out->lift_lbf = body_force_local.z();
+  }
   forces.heading_hold = command.heading_hold;
   out->derivative = state_derivative(constants, state, trig, forces);
 }

@@ -144,6 +144,7 @@ Status Flight::record(const StageContext& stage, double t, const StateVector& st
   TrajectoryPoint& p = trajectory_->points[trajectory_->point_count];
   p.time_s = t;
   p.stage_code = stage.code;
+  p.theta_command_rad = static_cast<float>(eval.theta_command_rad);
   p.stage_time_s = t - stage.start_s;
   p.state = state;
   p.altitude_ft = eval.altitude_ft;
@@ -171,6 +172,8 @@ Status Flight::record(const StageContext& stage, double t, const StateVector& st
   p.inertial = inertial_velocity(constants, state);
   p.heading_hold = command.heading_hold;
   p.alpha_zero = command.mode == AttitudeMode::kZeroAlpha;
+  p.body_dynamics = command.body_dynamics;
+  p.control_deflection_rad = static_cast<float>(eval.control_deflection_rad);
   // The heating integral by the trapezoidal rule over the stored points.
   if (trajectory_->point_count > 0) {
     const TrajectoryPoint& previous = trajectory_->points[trajectory_->point_count - 1];
@@ -194,6 +197,7 @@ Status Flight::record_pad_point() {
   eval.vacuum_thrust_lbf = (*stage1.thrust)(0.0);
   eval.net_thrust_lbf = eval.vacuum_thrust_lbf - liftoff.pad_pressure_lbf_ft2 * stage1.data->nozzle_exit_area_ft2;
   eval.theta_rad = kHalfPi;
+  eval.theta_command_rad = kHalfPi;
   StepCommand command;
   command.mode = AttitudeMode::kHeld;
   command.theta_start_rad = command.theta_end_rad = kHalfPi;
@@ -210,6 +214,10 @@ Status Flight::fly_stage(int slot, StateVector* state) {
   event.code = line.code;
   event.first_point = trajectory_->point_count;
 
+  // Body dynamics act in stage 1 and the coast after it only (Sec. 11).
+  const bool body_dynamics = inputs_.body_dynamics && (line.code == 1 || line.code == 6);
+  double last_theta_step_rad = 0.0;  // theta_end - theta_start of the last step flown
+
   DerivativeHistory<StateVector> history;
   Evaluation eval;
   for (int i = 0; i < line.steps; ++i) {
@@ -217,12 +225,15 @@ Status Flight::fly_stage(int slot, StateVector* state) {
     const int point = trajectory_->point_count;
     if (point == inputs_.injection_point) *state += inputs_.injection;
     if (inputs_.feedback != nullptr) inputs_.feedback->at_point(point, *state, inputs_.live_program);
-    const StepCommand command = command_at(stage, point, t, line.step_s, *state);
+    StepCommand command = command_at(stage, point, t, line.step_s, *state);
+    command.body_dynamics = body_dynamics;
     evaluate_flight(mission_, prepared_, stage, command, t, *state, 0.0, &eval);
     if (!eval.derivative.allFinite()) return Status::kNonFiniteState;  // nothing NaN is stored
     Status status = record(stage, t, *state, command, eval);
     if (!ok(status)) return status;
     if (eval.altitude_ft < kImpactAltitudeFt) return Status::kAltitudeBelowSurface;
+    if (!ok(eval.body_status)) return eval.body_status;
+    last_theta_step_rad = (command.mode == AttitudeMode::kLinear) ? command.theta_end_rad - command.theta_start_rad : 0.0;
 
     StepRecord& step = trajectory_->steps[trajectory_->step_count++];
     step.point = point;
@@ -249,13 +260,19 @@ Status Flight::fly_stage(int slot, StateVector* state) {
   // The stage's end point, with its burnout values (the next stage records the same state again
   // with its own weight and thrust). Its attitude is the one a step starting there would fly.
   const double t_end = line.start_s + line.duration_s;
+  // With body dynamics the end point keeps the rate of the last step flown, so its steady-state
+  // attitude is the one the last step ended with.
   StepCommand command = command_at(stage, trajectory_->point_count, t_end, line.step_s, *state);
-  if (command.mode == AttitudeMode::kLinear) command.theta_end_rad = command.theta_start_rad;
+  if (command.mode == AttitudeMode::kLinear) {
+    command.theta_end_rad = body_dynamics ? command.theta_start_rad + last_theta_step_rad : command.theta_start_rad;
+  }
+  command.body_dynamics = body_dynamics;
   evaluate_flight(mission_, prepared_, stage, command, t_end, *state, 0.0, &eval);
   if (!eval.derivative.allFinite()) return Status::kNonFiniteState;
   const Status status = record(stage, t_end, *state, command, eval);
   if (!ok(status)) return status;
   if (eval.altitude_ft < kImpactAltitudeFt) return Status::kAltitudeBelowSurface;
+  if (!ok(eval.body_status)) return eval.body_status;
   event.last_point = trajectory_->point_count - 1;
   event.burnout_weight_lb = eval.weight_lb;
   ++trajectory_->stage_count;
@@ -271,6 +288,11 @@ Status Flight::run() {
   if (inputs_.feedback != nullptr && inputs_.live_program == nullptr) return Status::kNotPrepared;
   if (program_ != nullptr && program_->point_count != trajectory_point_count(prepared_)) {
     return Status::kControlProgramSizeMismatch;
+  }
+  if (inputs_.body_dynamics) {
+    MissionFault fault;
+    const Status body = validate_body_dynamics(mission_, &fault);
+    if (!ok(body)) return body;
   }
 
   Status status = record_pad_point();

@@ -5,7 +5,8 @@
 // shape (finite numbers, strictly increasing table abscissae, counts, option requirements) and
 // kept here, ground side, until the modules that use them land in the core. Units are the core's:
 // angles in rad (the deck gives degrees); body stations stay in inches as in the manual (the
-// field names say so); "per degree" coefficients are converted to "per radian".
+// field names say so); "per degree" coefficients are converted to "per radian". Blocks 33-37 also
+// fill the core's Mission::body_dynamics (fill_mission_body_dynamics below, stations in ft).
 #pragma once
 
 #include <array>
@@ -123,6 +124,21 @@ struct DeckExtras {
   HardoverData hardover;
   std::vector<DispersionCase> dispersions;  // in increasing code order
 };
+
+// Where fill_mission_body_dynamics() found data the core cannot hold.
+struct BodyDynamicsMappingFault {
+  int data_block = 0;
+  int stage_code = 0;   // block 37: the c.g. table's stage
+  std::string field;    // deck key path, e.g. "body_dynamics.cg.1"
+  std::string message;
+};
+
+// Fills mission->body_dynamics (the core's data blocks 33-37, manual Sec. 7 and 11) from the deck's
+// data: body stations inches -> ft, K_TV already per radian, the 6D reference area S from stage 1's
+// block 39 area SG1(2) (DA6D has no word for it), tables finalized. Nothing is filled when the deck
+// gave no [body_dynamics]. Returns false with *fault when a table is longer than the core's
+// capacity (blocks 34-36: 20 points; block 37: 10 points per stage).
+bool fill_mission_body_dynamics(const BodyDynamicsData& deck, Mission* mission, BodyDynamicsMappingFault* fault);
 
 // load_toml_deck()/parse_toml_deck() that also return the optional-computation data. On failure
 // neither *mission nor *extras is changed.

@@ -48,6 +48,13 @@ struct OptimizationReport {
   Status linearization_status = Status::kNotPrepared;
   // The optimum's payoff the linearized payoff is compared with (payoff units).
   double optimum_payoff = 0.0;
+  // Body dynamics (IP(6), Sec. 7, 10, 11). With 1, the 6D re-linearization's figures are in
+  // `linearization`; with 2, the deck's own program flown point mass and 6D (null unless flown;
+  // `initial_nominal_6d_status` says why not).
+  int body_dynamics_option = 0;
+  const Trajectory* initial_nominal_point_mass = nullptr;
+  const Trajectory* initial_nominal_6d = nullptr;
+  Status initial_nominal_6d_status = Status::kNotPrepared;
 };
 
 // One constraint of data blocks 8/19/29 after the payoff, in the units of data block 19 (ft, rad,

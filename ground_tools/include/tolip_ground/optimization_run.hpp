@@ -34,12 +34,23 @@ struct ExchangeRatioStep {
   std::unique_ptr<ExchangeRatios> ratios;
 };
 
+// IP(6) = 2, "6D on initial nominal": the deck's own program flown point mass and with body
+// dynamics (stage 1 and the coast after it), for the comparison the report prints. (With IP(6) = 1
+// the 6D re-linearization is part of the linearization step.)
+struct InitialNominalBodyDynamicsStep {
+  StepOutcome outcome = StepOutcome::kNotRequested;
+  Status status = Status::kNotPrepared;
+  std::unique_ptr<Trajectory> point_mass;
+  std::unique_ptr<Trajectory> body_dynamics;
+};
+
 struct OptimizationRun {
   std::unique_ptr<OptimizerWorkspace> workspace;  // workspace->nominal: the optimized trajectory
   std::unique_ptr<OptimizerResult> result;
   Status optimizer_status = Status::kNotPrepared;
   LinearizationStep linearization;
   ExchangeRatioStep exchange_ratios;
+  InitialNominalBodyDynamicsStep initial_nominal_6d;
 };
 
 // Runs the job for a validated mission. `observer` (may be null) sees every optimizer forward run.

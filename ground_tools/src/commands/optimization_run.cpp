@@ -4,7 +4,30 @@
 
 namespace tolip::ground {
 
+namespace {
+
+Status fly_initial_nominal(const Mission& mission, bool body_dynamics, Trajectory* trajectory) {
+  auto prepared = std::make_unique<PreparedCase>();
+  const Status status = prepare_case(mission, prepared.get());
+  if (!ok(status)) return status;
+  FlightInputs inputs;
+  inputs.body_dynamics = body_dynamics;
+  return fly_trajectory(mission, *prepared, inputs, trajectory);
+}
+
+}  // namespace
+
 void run_optimization(const Mission& mission, OptimizerObserver* observer, OptimizationRun* run) {
+  // IP(6) = 2: the initial nominal with and without body dynamics (Sec. 7, 11, 22).
+  if (mission.options.body_dynamics_6d() == 2) {
+    InitialNominalBodyDynamicsStep& step = run->initial_nominal_6d;
+    step.outcome = StepOutcome::kRun;
+    step.point_mass = std::make_unique<Trajectory>();
+    step.body_dynamics = std::make_unique<Trajectory>();
+    step.status = fly_initial_nominal(mission, false, step.point_mass.get());
+    if (ok(step.status)) step.status = fly_initial_nominal(mission, true, step.body_dynamics.get());
+  }
+
   run->workspace = std::make_unique<OptimizerWorkspace>();
   run->result = std::make_unique<OptimizerResult>();
   run->workspace->observer = observer;

@@ -113,6 +113,13 @@ int optimize_case(const Deck& deck, const DeckCase& deck_case, OptimizerObserver
   report.linearization_requested = run.linearization.outcome != StepOutcome::kNotRequested;
   report.linearization_status = run.linearization.status;
   report.optimum_payoff = result->payoff;
+  // Body dynamics (IP(6) = 1: inside the linearization; 2: the initial nominal flown both ways).
+  report.body_dynamics_option = mission->options.body_dynamics_6d();
+  report.initial_nominal_6d_status = run.initial_nominal_6d.status;
+  if (run.initial_nominal_6d.outcome == StepOutcome::kRun && ok(run.initial_nominal_6d.status)) {
+    report.initial_nominal_point_mass = run.initial_nominal_6d.point_mass.get();
+    report.initial_nominal_6d = run.initial_nominal_6d.body_dynamics.get();
+  }
   if (run.linearization.outcome == StepOutcome::kRun) {
     report.linearization = run.linearization.result.get();
     if (!ok(run.linearization.status)) {

@@ -42,7 +42,11 @@ void simulate_case(const Mission& mission, const std::string& deck_path, Simulat
 
   Status status = prepare_case(mission, run->prepared.get());
   if (ok(status)) {
-    status = fly_trajectory(mission, *run->prepared, trajectory);
+    // IP(6) = 2, "6D on initial nominal" (Sec. 22): the case's own program flown with body
+    // dynamics in stage 1 and the coast after it (Sec. 7, 11).
+    FlightInputs inputs;
+    inputs.body_dynamics = mission.options.body_dynamics_6d() == 2;
+    status = fly_trajectory(mission, *run->prepared, inputs, trajectory);
     if (ok(status) && !ok(trajectory->status)) status = trajectory->status;
     if (ok(status) && stored_point_count(*trajectory) == 0) status = Status::kNotPrepared;
   } else {

@@ -3,7 +3,9 @@
 // The deck is parsed into a temporary Mission (and DeckExtras), checked section by section with
 // located messages, then validated by the core (validate_mission); only a deck that passes every
 // check is copied to the caller's objects. Nothing throws out of these functions.
+#include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <exception>
 #include <fstream>
@@ -132,6 +134,19 @@ std::string fault_path(const MissionFault& fault) {
       if (field == "stage_data" || !staged) return staged ? stage : "stage";
       return stage + "." + field;
     case 40: return "pitch_program";
+    case 33:
+      // Core field names (mission.hpp BodyDynamicsBlocks) -> deck keys (docs/deck-format.md).
+      if (field == "body_dynamics") return "body_dynamics";
+      if (field == "position_gain") return "body_dynamics.position_gain_deg_per_deg";
+      if (field == "control_station_ft") return "body_dynamics.control_station_in";
+      if (field == "moment_reference_station_ft") return "body_dynamics.moment_reference_station_in";
+      if (field == "jet_vane_effectiveness_per_rad") return "body_dynamics.jet_vane_effectiveness_per_deg_per_vane";
+      if (field == "reference_area_ft2") return "stage.1.reference_area_ft2";
+      return "body_dynamics." + field;
+    case 34: return "body_dynamics.fin_normal_force";
+    case 35: return "body_dynamics.pitching_moment";
+    case 36: return "body_dynamics.fin_pitching_moment";
+    case 37: return "body_dynamics.cg." + std::to_string(fault.stage_code);
     default: return field;
   }
 }
@@ -199,6 +214,20 @@ std::string fault_detail(Status status, const MissionFault& fault, const Mission
       return std::to_string(steps) + " integration steps; at most " +
              std::to_string(status == Status::kTooManyPoweredSteps ? kMaxPoweredSteps : kMaxPoweredStepsWithFollowingCoast);
     }
+    case Status::kControlStationAtCenterOfGravity: {
+      const CgTable& cg = mission.body_dynamics.cg_station_ft[0];
+      double lowest = cg.empty() ? 0.0 : cg.y(0);
+      double highest = lowest;
+      for (int i = 1; i < cg.size(); ++i) {
+        lowest = std::min(lowest, cg.y(i));
+        highest = std::max(highest, cg.y(i));
+      }
+      // The core holds ft; back to the deck's inches, rounded to 1e-6 in so 478/12*12 reads 478.
+      const auto inches = [](double ft) { return format_number(std::round(ft * 12.0 * 1e6) / 1e6); };
+      return "control_station_in[0] = " + inches(mission.body_dynamics.control_station_ft[0]) +
+             " in lies within the stage 1 c.g. stations " + inches(lowest) + "-" + inches(highest) +
+             " in (data block 37); expected it outside";
+    }
     case Status::kNonPositiveDuration:
       if (stage == nullptr) break;
       return "duration_s = " + format_number(stage->duration_s) + "; expected > 0";
@@ -246,6 +275,11 @@ bool parse_deck(const std::string& text, const std::string& path, Mission* missi
     deck_detail::read_mission_sections(top, parsed.get());
     deck_detail::read_extras_sections(top, *parsed, parsed_extras.get());
     top.finish();
+    // Data blocks 33-37 into the core's Mission (stations in -> ft), so 6D runs can use them.
+    BodyDynamicsMappingFault body_fault;
+    if (!fill_mission_body_dynamics(parsed_extras->body_dynamics, parsed.get(), &body_fault)) {
+      top.fail(body_fault.data_block, body_fault.field, body_fault.message);
+    }
 
     MissionFault fault;
     const Status status = validate_mission(*parsed, &fault);

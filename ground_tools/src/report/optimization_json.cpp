@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "tolip/core/constants.hpp"
+#include "tolip/core/state.hpp"
 #include "tolip_ground/optimization_report.hpp"
 
 namespace tolip::ground {
@@ -172,6 +173,66 @@ json linearized_json(const OptimizationReport& report) {
   };
 }
 
+// The end of a trajectory in the quantities a 6D comparison needs.
+json terminal_json(const Trajectory& t) {
+  const TrajectoryPoint& p = t.final_point();
+  return json{
+      {"time_s", number(p.time_s)},
+      {"altitude_ft", number(p.altitude_ft)},
+      {"velocity_ft_s", number(p.state(kStateV))},
+      {"flight_path_angle_deg", number(p.state(kStateGamma) * kRadToDeg)},
+      {"inertial_velocity_ft_s", number(p.inertial.velocity_ft_s)},
+      {"inertial_flight_path_angle_deg", number(p.inertial.flight_path_angle_rad * kRadToDeg)},
+  };
+}
+
+// Body dynamics (IP(6); docs/cli.md): the 6D re-linearization (1) or the initial nominal flown
+// point mass and 6D (2).
+json body_dynamics_json(const OptimizationReport& report) {
+  json out{{"option", report.body_dynamics_option}};
+  if (report.body_dynamics_option == 2) {
+    out["mode"] = "initial_nominal";
+    out["status"] = status_name(report.initial_nominal_6d_status);
+    if (report.initial_nominal_point_mass != nullptr && report.initial_nominal_6d != nullptr &&
+        ok(report.initial_nominal_6d_status)) {
+      const json pm = terminal_json(*report.initial_nominal_point_mass);
+      const json six = terminal_json(*report.initial_nominal_6d);
+      json difference = json::object();
+      for (auto it = six.begin(); it != six.end(); ++it) {
+        difference[it.key()] = (it.value().is_number() && pm[it.key()].is_number())
+                                   ? json(it.value().get<double>() - pm[it.key()].get<double>())
+                                   : json(nullptr);
+      }
+      out["point_mass"] = pm;
+      out["body_dynamics"] = six;
+      out["difference"] = difference;
+    }
+    return out;
+  }
+  out["mode"] = "relinearization";
+  const LinearizationResult* r = report.linearization;
+  if (r == nullptr) {
+    out["status"] = status_name(report.linearization_status);
+    return out;
+  }
+  out["status"] = status_name(report.linearization_status);
+  out["point_mass_met"] = r->point_mass_met;
+  out["relinearized"] = r->body_dynamics;
+  if (!r->point_mass_met) return out;
+  out["point_mass_payoff"] = number(r->point_mass_payoff);
+  out["body_dynamics_payoff"] = number(r->payoff);
+  out["payoff_difference"] = number(r->payoff - r->point_mass_payoff);
+  json flown = json::array();
+  for (int j = 0; j < std::clamp(r->constraint_count, 0, kMaxConstraints); ++j) {
+    flown.push_back(json{{"code", r->codes[j]},
+                         {"desired", number(r->desired[j])},
+                         {"point_mass", number(r->point_mass_achieved[j])},
+                         {"body_dynamics", number(r->point_mass_program_6d_achieved[j])}});
+  }
+  out["point_mass_program_flown_6d"] = std::move(flown);
+  return out;
+}
+
 }  // namespace
 
 json optimization_json(const OptimizationReport& report) {
@@ -198,6 +259,9 @@ json optimization_json(const OptimizationReport& report) {
   additions["iterations"] = iterations_json(report, static_cast<int>(constraints.size()));
   if (report.exchange_ratios_requested) additions["exchange_ratios"] = exchange_ratios_json(report);
   if (report.linearization_requested) additions["linearized"] = linearized_json(report);
+  if (report.body_dynamics_option == 1 || report.body_dynamics_option == 2) {
+    additions["body_dynamics"] = body_dynamics_json(report);
+  }
 
   // The simulate document of the final trajectory, with the run's status and the additions placed
   // before the (long) point array.

@@ -501,13 +501,33 @@ void write_linearized_program(Pager& pager, const OptimizationReport& report) {
              " (LOSS " + trimmed(number_cell(loss_percent, 3, 12)) + " PCT)");
   pager.emit("   RATE LIMITS (DATA BLOCK 22) " + std::string(r->rate_limits_met ? "MET" : "NOT MET") +
              "; CONSTRAINTS " + (r->constraints_met ? "MET" : "NOT MET") + "; " + std::to_string(r->forward_runs) +
-             " FORWARD AND " + std::to_string(r->backward_runs) + " BACKWARD LINEARIZATION RUNS, " +
+             " FORWARD" + (r->reference_flights > 0 ? " (+" + std::to_string(r->reference_flights) + " 6D REF.)" : std::string()) +
+             " AND " + std::to_string(r->backward_runs) + " BACKWARD RUNS, " +
              std::to_string(r->programs_computed) + " PROGRAMS, " + std::to_string(p.rate_repair_count) +
              " RATE REPAIRS");
   // Sec. 10's messages for the coast between stages 2 and 3.
   if (r->coast7_below_min_rate) pager.emit("   COAST 7 PITCH RATE IS BELOW THE MINIMUM PITCH RATE (DATA BLOCK 22 WORD 4)");
   if (r->coast7_below_min_rate_change) {
     pager.emit("   COAST 7 PITCH RATE CHANGES BY LESS THAN THE MINIMUM CHANGE OF RATE (DATA BLOCK 22 WORD 5)");
+  }
+  if (r->point_mass_met && r->body_dynamics) {
+    // IP(6) = 1 (Sec. 10, 11): what body dynamics did to the accepted point-mass program, and the
+    // payoff after the 6D re-linearization.
+    pager.reserve(4 + constraints);
+    pager.emit("   6D RE-LINEARIZATION (IP(6) = 1, SEC. 10, 11): THE PROGRAM ABOVE WAS LINEARIZED WITH BODY DYNAMICS IN"
+               " STAGE 1 AND COAST 6,");
+    pager.emit("   STARTING FROM THE ACCEPTED POINT-MASS PROGRAM, WHOSE CONSTRAINT VALUES WERE:");
+    pager.emit("          CODE  PARAMETER                          DESIRED    POINT-MASS PROGRAM: POINT MASS       6D");
+    for (int j = 0; j < constraints; ++j) {
+      ConstraintCode decoded;
+      const QuantityText text = code_text(r->codes[j], &decoded);
+      pager.emit(right(std::to_string(r->codes[j]), 14) + "  " + left(constraint_label(decoded, text), 27) +
+                 number_cell(r->desired[j], text.decimals, 16) + number_cell(r->point_mass_achieved[j], text.decimals, 26) +
+                 number_cell(r->point_mass_program_6d_achieved[j], text.decimals, 16));
+    }
+    pager.emit("   PAYOFF: POINT MASS " + trimmed(number_cell(r->point_mass_payoff, 4, 20)) + ", 6D " +
+               trimmed(number_cell(r->payoff, 4, 20)) + " (DIFFERENCE " +
+               trimmed(number_cell(r->payoff - r->point_mass_payoff, 4, 20)) + " " + upper(payoff_unit(ip1)) + ")");
   }
   if (!ok(report.linearization_status)) {
     pager.emit(std::string("   LINEARIZATION ENDED: ") + status_name(report.linearization_status) + ": " +

@@ -224,6 +224,24 @@ std::string mission_cpp_source(const Mission& mission, const std::string& functi
   out << "  // Data block 40.\n";
   w.table("pitch_program_rad", s.pitch_program_rad);
 
+  out << "  // Data blocks 33-37 (body dynamics; stations in ft).\n";
+  const BodyDynamicsBlocks& b = s.body_dynamics;
+  w.flag("body_dynamics.present", b.present);
+  w.numbers("body_dynamics.position_gain", b.position_gain);
+  w.numbers("body_dynamics.rate_gain_s", b.rate_gain_s);
+  w.numbers("body_dynamics.control_station_ft", b.control_station_ft);
+  w.number("body_dynamics.jet_vane_effectiveness_per_rad", b.jet_vane_effectiveness_per_rad);
+  w.number("body_dynamics.moment_reference_station_ft", b.moment_reference_station_ft);
+  w.number("body_dynamics.reference_length_ft", b.reference_length_ft);
+  w.number("body_dynamics.reference_area_ft2", b.reference_area_ft2);
+  w.number("body_dynamics.control_surfaces_per_plane", b.control_surfaces_per_plane);
+  w.table("body_dynamics.fin_normal_force_per_rad", b.fin_normal_force_per_rad);
+  w.table("body_dynamics.pitching_moment_per_rad", b.pitching_moment_per_rad);
+  w.table("body_dynamics.fin_pitching_moment_per_rad", b.fin_pitching_moment_per_rad);
+  for (int k = 0; k < kCgTableStages; ++k) {
+    w.table("body_dynamics.cg_station_ft" + bracket(static_cast<std::size_t>(k)), b.cg_station_ft[k]);
+  }
+
   out << "  if (!ok(status)) return status;\n"
       << "  MissionFault fault;\n"
       << "  return validate_mission(m, &fault);\n"

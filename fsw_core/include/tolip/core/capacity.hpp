@@ -22,6 +22,9 @@ inline constexpr int kMaxPoweredStages = 5;
 // Tables whose size the manual fixes by its card formats.
 inline constexpr int kMaxAeroTablePoints = 20;   // blocks 31/32: 42E12.8 = blank + 20 pairs + 1.0E10
 inline constexpr int kMaxPitchTablePoints = 15;  // block 40: 32E12.8 = blank + 15 pairs + 1.0E10
+inline constexpr int kMaxCgTablePoints = 10;     // block 37: 22E12.8 = blank + 10 pairs + 1.0E10
+inline constexpr int kBodyDynamicsStages = 3;    // block 33: gains and control stations of stages 1-3
+inline constexpr int kCgTableStages = 4;         // block 37: c.g. histories of stages 1-4
 
 // Our choices where the manual sets no limit (docs/architecture.md, "Capacities").
 inline constexpr int kMinStage1Steps = 25;              // data block 16: "at least 25 steps in stage 1"

@@ -38,6 +38,8 @@ enum class Status : int {
   kLiftoffLongerThanStage1,
   kInitialConditionsInvalid,
   kAtmosphereTableInvalid,
+  kBodyDynamicsDataMissing,
+  kControlStationAtCenterOfGravity,
   // Constraint parameters (optimizer/constraint_parameters.hpp)
   kUnknownConstraintCode,
   kConstraintNotHyperbolic,
@@ -54,6 +56,7 @@ enum class Status : int {
   kLinearizationDidNotConverge,
   kAdjustableParameterNotSupported,
   kPayoffNotSupported,
+  kBodyDynamicsNotTrimmable,
   kNotPrepared,
   // Guidance table image, loader and executor (table/; docs/table-format.md)
   kTableImageTruncated,

@@ -16,6 +16,7 @@ using ThrustTable = Table<kMaxThrustPoints>;      // stage time s -> vacuum thru
 using WeightTable = Table<kMaxWeightPoints>;      // stage time s -> consumable weight lb (block 38)
 using AeroTable = Table<kMaxAeroTablePoints>;     // Mach -> coefficient (blocks 31, 32)
 using PitchTable = Table<kMaxPitchTablePoints>;   // s from launch -> theta rad (block 40)
+using CgTable = Table<kMaxCgTablePoints>;         // stage time s -> c.g. body station ft (block 37)
 
 // Stage codes (manual KK2): 1-5 powered, 6-10 the coasts after stages 1-5.
 inline constexpr bool is_powered_stage(int code) { return code >= 1 && code <= 5; }
@@ -144,6 +145,33 @@ struct OutputFrequency {
   int final_trajectory[kMaxStages] = {1, 1, 1, 1, 1, 1, 1, 1, 1, 1};
 };
 
+// Data blocks 33-37: the body-dynamics (6D) data of manual Sec. 7 and 11 (DA6D, CNDELTA, CMALPHA,
+// CMDELTA, XCG1-XCG4). Body stations are measured aft from the nose, in ft (the deck gives inches);
+// "per radian" everywhere (the deck's per-degree jet-vane effectiveness is converted at the edge).
+// docs/theory/body-dynamics.md explains how body_dynamics.cpp uses each datum.
+struct BodyDynamicsBlocks {
+  bool present = false;                                   // the deck gave data blocks 33-37
+  double position_gain[kBodyDynamicsStages] = {};         // DA6D(1-3) K_theta, rad/rad, stages 1-3
+  double rate_gain_s[kBodyDynamicsStages] = {};           // DA6D(4-6) K_theta-dot (K_q), s
+  double control_station_ft[kBodyDynamicsStages] = {};    // DA6D(7-9) X_delta: stage-1 jet vanes and fins,
+                                                          // stage 2-3 control jets
+  double jet_vane_effectiveness_per_rad = 0.0;            // DA6D(10) K_TV-delta, lbf per lbf vacuum thrust
+                                                          // per rad, per vane
+  double moment_reference_station_ft = 0.0;               // DA6D(11) X_FS of the moment coefficients
+  double reference_length_ft = 0.0;                       // DA6D(16) l_ref of the moment coefficients
+  // S of Sec. 11: the area blocks 34-36 are referred to. DA6D has no word for it; the deck mapping
+  // takes stage 1's block 39 area SG1(2).
+  double reference_area_ft2 = 0.0;
+  // Fins and jet vanes acting in one plane, multiplying the per-fin and per-vane coefficients of
+  // blocks 34, 36 and DA6D(10) in M_delta (the factor 2 of Sec. 16's FORCEN; the Scout has four fins
+  // and four vanes in a cross). Not a manual word.
+  double control_surfaces_per_plane = 2.0;
+  AeroTable fin_normal_force_per_rad;      // block 34: Mach -> C_N_delta, per rad per fin
+  AeroTable pitching_moment_per_rad;       // block 35: Mach -> C_M_alpha about X_FS, per rad
+  AeroTable fin_pitching_moment_per_rad;   // block 36: Mach -> C_M_delta about X_FS, per rad per fin
+  CgTable cg_station_ft[kCgTableStages];   // block 37: XCG1-XCG4, stage time s -> c.g. station ft
+};
+
 struct Mission {
   char title[73] = {};        // block 1 (12A6)
   char case_heading[73] = {}; // block 2
@@ -161,6 +189,7 @@ struct Mission {
   ConvergenceData convergence;
   OutputFrequency output;
   PitchTable pitch_program_rad;  // block 40: theta (rad) vs time from launch (s)
+  BodyDynamicsBlocks body_dynamics;  // blocks 33-37 (checked by validate_mission when IP(6) >= 1)
 };
 
 // Where validate_mission() found a fault, in the manual's vocabulary.
@@ -173,6 +202,13 @@ struct MissionFault {
 // Checks the case at the boundary: sequence, capacities, tables, weights, durations, steps,
 // initial conditions. Returns kOk or the first fault, described in *fault.
 Status validate_mission(const Mission& mission, MissionFault* fault);
+
+// Checks the body-dynamics data a 6D trajectory needs (Sec. 7, 11: stage 1 and the following
+// coast): present, finite, K_theta > 0, K_q >= 0, l_ref > 0, S > 0, tables of blocks 34-36 and the
+// stage-1 c.g. history given and finalized, and the stage-1 control station outside the range of
+// the stage-1 c.g. stations (so X_delta - X_CG never vanishes). validate_mission() calls it when
+// IP(6) >= 1; fly_trajectory() when a 6D run is asked for.
+Status validate_body_dynamics(const Mission& mission, MissionFault* fault);
 
 // Vehicle weight (lb) in stage `code` at stage time t: consumable weight remaining of the current
 // powered stage + jettison weights of this and all later stages (+ payload) + the initial

@@ -64,6 +64,18 @@ struct LinearizationResult {
   // (a merged break does not count). False when the program has no coast-7 segment.
   bool coast7_below_min_rate = false;
   bool coast7_below_min_rate_change = false;
+  // IP(6) = 1, the 6D re-linearization (Sec. 10, 11): `body_dynamics` is true once the point-mass
+  // program met everything and the runs went on with body dynamics; `program`, `achieved` and
+  // `payoff` above then describe the 6D result. The point-mass result is kept here, with the
+  // constraint values of the point-mass program flown with body dynamics before any correction
+  // (the effect of the body dynamics alone).
+  bool body_dynamics = false;
+  bool point_mass_met = false;
+  int reference_flights = 0;  // 6D flights of the accepted point-mass program (not in forward_runs)
+  LinearProgram point_mass_program;
+  double point_mass_payoff = 0.0;
+  double point_mass_achieved[kMaxConstraints] = {};
+  double point_mass_program_6d_achieved[kMaxConstraints] = {};
 };
 
 struct LinearizationWorkspace {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "tolip/core/state.hpp"
+#include "tolip/core/status.hpp"
 #include "tolip/mission/mission.hpp"
 #include "tolip/vehicle/prepared_case.hpp"
 
@@ -39,6 +40,11 @@ struct StepCommand {
   double step_start_s = 0.0;  // time from launch
   double step_s = 1.0;
   bool heading_hold = false;  // dpsi/dt held at 0
+  // Body dynamics (6D, Sec. 7, 11): the attitude above is the autopilot's command theta_c (its rate
+  // theta_c-dot the step's (theta_end - theta_start) / step_s; 0 when held or zero-alpha); the
+  // flown attitude is the steady state of eqs. 7-6/7-7 and the Sec. 11 normal forces replace the
+  // point-mass lift. Set by fly_trajectory() in stage 1 and the following coast of a 6D run.
+  bool body_dynamics = false;
 };
 
 // Everything the equations of motion saw at one evaluation.
@@ -52,10 +58,17 @@ struct Evaluation {
   double density_slug_ft3 = 0.0;
   double mach = 0.0;
   Vector3 thrust_axis_local = Vector3(0.0, 1.0, 0.0);
-  double theta_rad = 0.0;
-  double chi_rad = 0.0;
+  double theta_rad = 0.0;          // flown
+  double chi_rad = 0.0;            // flown
+  double theta_command_rad = 0.0;  // commanded (equal to theta_rad without body dynamics)
   double drag_lbf = 0.0;
+  // Along +i_z: the point-mass lift; with body dynamics the i_z component of the Sec. 11
+  // aerodynamic and control normal forces.
   double lift_lbf = 0.0;
+  // With body dynamics (StepCommand::body_dynamics): the steady-state pitch deflection (eq. 7-3)
+  // and the status of eq. 7-6 (kBodyDynamicsNotTrimmable when the body had to follow the command).
+  double control_deflection_rad = 0.0;
+  Status body_status = Status::kOk;
 };
 
 // Evaluates the model at time t (from launch). `weight_offset_lb` is added to the vehicle weight

@@ -19,6 +19,11 @@ namespace tolip {
 struct TrajectoryPoint {
   double time_s = 0.0;          // from launch (TIMCT), coasts included
   int stage_code = 0;
+  // The commanded pitch attitude (the pitch program's theta_c). Equal to theta_rad but for body
+  // dynamics, where theta_rad is the flown steady state (Sec. 7). Single precision (1e-7 rad is far
+  // below any listing's resolution) so it fits the padding after stage_code: the point stays
+  // 240 bytes.
+  float theta_command_rad = 0.0f;
   double stage_time_s = 0.0;
   StateVector state = StateVector::Zero();
   double altitude_ft = 0.0;     // above the oblate surface
@@ -29,16 +34,20 @@ struct TrajectoryPoint {
   double net_thrust_lbf = 0.0;        // Tv - p Ae
   double dynamic_pressure_lbf_ft2 = 0.0;
   double mach = 0.0;
-  double alpha_rad = 0.0;       // in-plane angle between thrust axis and V
-  double theta_rad = 0.0;       // pitch attitude in the platform frame
-  double chi_rad = 0.0;         // yaw attitude in the platform frame
+  double alpha_rad = 0.0;       // in-plane angle between thrust axis and V (of the flown attitude)
+  double theta_rad = 0.0;       // pitch attitude flown, in the platform frame
+  double chi_rad = 0.0;         // yaw attitude flown, in the platform frame
   double drag_lbf = 0.0;
-  double lift_lbf = 0.0;
+  double lift_lbf = 0.0;        // along +i_z; body dynamics: i_z part of the Sec. 11 normal forces
   double heating_rate_btu_ft2_s = 0.0;  // Sec. 13 (0 when no nose radius)
   double downrange_rad = 0.0;   // central angle from the launch point
   InertialVelocity inertial;
   bool heading_hold = false;    // dpsi/dt held at 0 on the step starting here
   bool alpha_zero = false;      // theta set for alpha = 0 on the step starting here
+  bool body_dynamics = false;   // 6D (Sec. 7, 11) on the step starting here
+  // Body dynamics: the steady-state pitch deflection delta of eq. 7-3 (0 otherwise). Single
+  // precision in the padding after the flags.
+  float control_deflection_rad = 0.0f;
 };
 
 struct StageEvent {
@@ -101,6 +110,12 @@ struct FlightInputs {
   // With feedback, `live_program` is flown and rewritten in flight.
   PitchFeedback* feedback = nullptr;
   ControlProgram* live_program = nullptr;
+  // Body dynamics (6D, manual Sec. 7, 11; docs/theory/body-dynamics.md): in stage 1 and the coast
+  // after it the vehicle flies the autopilot's steady-state attitude about the pitch program above
+  // (block 40 table, `program` or the live program) and the Sec. 11 normal forces act; every other
+  // stage follows the command as without it. Needs data blocks 33-37 (validate_body_dynamics()),
+  // else the run fails with that status before flying. Off: the point-mass run, bit for bit.
+  bool body_dynamics = false;
 };
 
 Status fly_trajectory(const Mission& mission, const PreparedCase& prepared, const FlightInputs& inputs,

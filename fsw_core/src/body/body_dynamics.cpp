@@ -1,0 +1,146 @@
+// Body dynamics (manual Sec. 7, 11): body_dynamics.hpp, docs/theory/body-dynamics.md.
+#include "tolip/body/body_dynamics.hpp"
+
+#include <cmath>
+
+namespace tolip {
+namespace {
+
+// Below this relative size K_theta M_delta - M_alpha has no stable steady state (eq. 7-6).
+constexpr double kTrimTolerance = 1.0e-9;
+// Below this lever (ft) the control force of Sec. 11 is not defined; validate_body_dynamics keeps
+// the stage-1 control station outside the c.g. range, so only hand-made data reach it.
+constexpr double kMinimumLeverFt = 1.0e-6;
+
+int clamp_stage(int stage) {
+  if (stage < 1) return 1;
+  if (stage > kBodyDynamicsStages) return kBodyDynamicsStages;
+  return stage;
+}
+
+}  // namespace
+
+UnitMoments unit_moments(const BodyDynamicsBlocks& data, const MomentConditions& c) {
+  const int k = clamp_stage(c.stage) - 1;
+  UnitMoments m;
+  const CgTable& cg = data.cg_station_ft[k];
+  m.cg_station_ft = cg.empty() ? data.cg_station_ft[0](c.cg_stage_time_s) : cg(c.cg_stage_time_s);
+  m.control_lever_ft = data.control_station_ft[k] - m.cg_station_ft;
+  const double reference_arm_ft = data.moment_reference_station_ft - m.cg_station_ft;  // X_FS - X_CG
+  const double q_s = c.dynamic_pressure_lbf_ft2 * data.reference_area_ft2;
+  const double l_ref = data.reference_length_ft;
+
+  double aero_alpha = 0.0;
+  double aero_delta = 0.0;
+  if (q_s > 0.0) {
+    aero_alpha = (data.pitching_moment_per_rad(c.mach) * l_ref - c.normal_force_slope_per_rad * reference_arm_ft) * q_s;
+    aero_delta = (-data.fin_pitching_moment_per_rad(c.mach) * l_ref +
+                  data.fin_normal_force_per_rad(c.mach) * reference_arm_ft) * q_s;
+  }
+  const double jet_vanes = data.jet_vane_effectiveness_per_rad * c.vacuum_thrust_lbf * m.control_lever_ft;
+  m.m_alpha_lbf_ft_per_rad = aero_alpha;
+  m.m_delta_lbf_ft_per_rad = data.control_surfaces_per_plane * (aero_delta + jet_vanes);
+  return m;
+}
+
+PlatformVelocityAngles platform_velocity_angles(const Matrix3& platform_to_local) {
+  // Row 2 of [C] is the second column of C^-1 = C^T: the unit velocity in P.
+  const double vx = platform_to_local(1, 0);
+  const double vy = platform_to_local(1, 1);
+  const double vz = platform_to_local(1, 2);
+  PlatformVelocityAngles out;
+  out.gamma_w_rad = std::atan2(vz, std::sqrt(vx * vx + vy * vy));
+  out.azimuth_w_rad = std::atan2(vx, vy);
+  return out;
+}
+
+Status steady_state_attitude(const AutopilotGains& gains, const UnitMoments& moments,
+                             const AutopilotCommand& command, const PlatformVelocityAngles& velocity,
+                             SteadyAttitude* out) {
+  const double k_m_delta = gains.position_gain * moments.m_delta_lbf_ft_per_rad;  // K_theta M_delta
+  const double q_m_delta = gains.rate_gain_s * moments.m_delta_lbf_ft_per_rad;    // K_q M_delta
+  const double m_alpha = moments.m_alpha_lbf_ft_per_rad;
+  const double denominator = k_m_delta - m_alpha;
+  const double scale = std::fabs(k_m_delta) + std::fabs(m_alpha);
+
+  Status status = Status::kOk;
+  bool follow = !(scale > 0.0) || !std::isfinite(scale) || !std::isfinite(q_m_delta);
+  if (!follow && !(denominator > kTrimTolerance * scale)) {
+    follow = true;
+    status = Status::kBodyDynamicsNotTrimmable;
+  }
+  if (!follow) {
+    out->theta_rad = (k_m_delta * command.theta_rad - q_m_delta * command.theta_rate_rad_s -
+                      m_alpha * velocity.gamma_w_rad) / denominator;
+    out->chi_rad = (k_m_delta * command.chi_rad - q_m_delta * command.chi_rate_rad_s -
+                    m_alpha * velocity.azimuth_w_rad) / denominator;
+    follow = !std::isfinite(out->theta_rad) || !std::isfinite(out->chi_rad);
+  }
+  out->follows_command = follow;
+  if (follow) {
+    out->theta_rad = command.theta_rad;
+    out->chi_rad = command.chi_rad;
+  }
+  // Eq. 7-3 in the steady state (theta-dot = theta_c-dot).
+  out->pitch_deflection_rad =
+      gains.position_gain * (command.theta_rad - out->theta_rad) - gains.rate_gain_s * command.theta_rate_rad_s;
+  out->yaw_deflection_rad =
+      gains.position_gain * (command.chi_rad - out->chi_rad) - gains.rate_gain_s * command.chi_rate_rad_s;
+  return status;
+}
+
+MissileAxes missile_axes_platform(double theta_rad, double chi_rad) {
+  const double st = std::sin(theta_rad), ct = std::cos(theta_rad);
+  const double sc = std::sin(chi_rad), cc = std::cos(chi_rad);
+  MissileAxes axes;
+  axes.x = Vector3(cc, -sc, 0.0);
+  axes.y = Vector3(ct * sc, ct * cc, st);
+  axes.z = Vector3(-st * sc, -st * cc, ct);
+  return axes;
+}
+
+BodyAngles body_angles_of_attack(double theta_rad, double chi_rad, const Matrix3& platform_to_local) {
+  const MissileAxes axes = missile_axes_platform(theta_rad, chi_rad);
+  const Vector3 v = platform_to_local.row(1).transpose();  // unit V in P (C^T i_y)
+  const double v_mx = axes.x.dot(v);
+  const double v_my = axes.y.dot(v);
+  const double v_mz = axes.z.dot(v);
+  BodyAngles angles;
+  angles.alpha_rad = std::atan2(-v_mz, v_my);
+  angles.beta_rad = std::atan2(-v_mx, v_my);
+  return angles;
+}
+
+BodyForces body_forces(const UnitMoments& moments, const BodyAngles& angles, double normal_force_lbf_per_rad,
+                       double theta_rad, double chi_rad, const Matrix3& platform_to_local) {
+  BodyForces f;
+  if (std::fabs(moments.control_lever_ft) >= kMinimumLeverFt) {
+    f.control_x_lbf = moments.m_alpha_lbf_ft_per_rad * angles.beta_rad / moments.control_lever_ft;
+    f.control_z_lbf = moments.m_alpha_lbf_ft_per_rad * angles.alpha_rad / moments.control_lever_ft;
+  }
+  f.missile_x_lbf = f.control_x_lbf + normal_force_lbf_per_rad * angles.beta_rad;
+  f.missile_z_lbf = f.control_z_lbf + normal_force_lbf_per_rad * angles.alpha_rad;
+  // Sec. 11: F_jx = F_mx cos chi - F_mz sin theta sin chi, F_jy = -F_mx sin chi - F_mz sin theta cos chi,
+  // F_jz = F_mz cos theta, i.e. F_mx m_x + F_mz m_z.
+  const MissileAxes axes = missile_axes_platform(theta_rad, chi_rad);
+  f.platform_lbf = f.missile_x_lbf * axes.x + f.missile_z_lbf * axes.z;
+  f.local_lbf = platform_to_local * f.platform_lbf;
+  return f;
+}
+
+Status evaluate_body_dynamics(const BodyDynamicsBlocks& data, const BodyDynamicsInputs& in,
+                              BodyDynamicsResult* out) {
+  const int k = clamp_stage(in.conditions.stage) - 1;
+  out->moments = unit_moments(data, in.conditions);
+  out->velocity = platform_velocity_angles(in.platform_to_local);
+  AutopilotGains gains;
+  gains.position_gain = data.position_gain[k];
+  gains.rate_gain_s = data.rate_gain_s[k];
+  const Status status = steady_state_attitude(gains, out->moments, in.command, out->velocity, &out->attitude);
+  out->angles = body_angles_of_attack(out->attitude.theta_rad, out->attitude.chi_rad, in.platform_to_local);
+  out->forces = body_forces(out->moments, out->angles, in.normal_force_lbf_per_rad, out->attitude.theta_rad,
+                            out->attitude.chi_rad, in.platform_to_local);
+  return status;
+}
+
+}  // namespace tolip
