@@ -1,7 +1,8 @@
 // Speed of what follows the optimization (issue: each at most 20% of the full optimization time,
 // BM_FullReferenceOptimization in optimizer_bench): the pitch-program linearization with all its
-// attempts (Sec. 6, 10) and the exchange-ratio pass (Sec. 8, 12), both from the converged optimum
-// of the bundled example. BM_FullReferenceOptimization is repeated here so that the ratio comes
+// attempts (Sec. 6, 10; the example's IP(6) = 1 adds the 6D re-linearization, and the point-mass
+// attempts alone are measured too) and the exchange-ratio pass (Sec. 8, 12), all from the converged
+// optimum of the bundled example. BM_FullReferenceOptimization is repeated here so that the ratio comes
 // from one program run on one machine state.
 // Run: build/bench/post_optimization_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
@@ -66,6 +67,24 @@ void BM_Linearization(benchmark::State& state) {
   state.counters["payoff_lb"] = result->payoff;
 }
 BENCHMARK(BM_Linearization)->Unit(benchmark::kMillisecond);
+
+// The same without the 6D re-linearization (IP(6) = 0): the point-mass attempts alone.
+void BM_LinearizationPointMassOnly(benchmark::State& state) {
+  static auto point_mass = [] {
+    auto ws = std::make_unique<tolip::OptimizerWorkspace>(*optimum().workspace);
+    ws->mission.options.ip[6] = 0;
+    return ws;
+  }();
+  auto ws = std::make_unique<tolip::LinearizationWorkspace>();
+  auto result = std::make_unique<tolip::LinearizationResult>();
+  for (auto _ : state) {
+    const tolip::Status status = tolip::linearize_pitch_program(*point_mass, ws.get(), result.get());
+    benchmark::DoNotOptimize(status);
+  }
+  state.counters["forward_runs"] = result->forward_runs;
+  state.counters["payoff_lb"] = result->payoff;
+}
+BENCHMARK(BM_LinearizationPointMassOnly)->Unit(benchmark::kMillisecond);
 
 void BM_ExchangeRatios(benchmark::State& state) {
   const Optimum& o = optimum();
