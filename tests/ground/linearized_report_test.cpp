@@ -116,5 +116,47 @@ TEST(LinearizedReport, AbsentWithoutOption7AndNotComputedWhenTheOptimizationDidN
   EXPECT_TRUE(document["linearized"]["segments"].empty());
 }
 
+// IP(6) = 1 (the example): the body_dynamics object reports the 6D re-linearization.
+TEST(LinearizedReport, Sec10_BodyDynamicsObjectReportsTheSixDRelinearization) {
+  const nlohmann::json& document = example_document();
+  ASSERT_TRUE(document.contains("body_dynamics"));
+  const nlohmann::json& b = document["body_dynamics"];
+  EXPECT_EQ(b["option"], 1);
+  EXPECT_EQ(b["mode"], "relinearization");
+  EXPECT_EQ(b["status"], "kOk");
+  EXPECT_TRUE(b["point_mass_met"].get<bool>());
+  EXPECT_TRUE(b["relinearized"].get<bool>());
+  EXPECT_DOUBLE_EQ(b["body_dynamics_payoff"].get<double>(), document["linearized"]["payoff"].get<double>());
+  EXPECT_NEAR(b["payoff_difference"].get<double>(),
+              b["body_dynamics_payoff"].get<double>() - b["point_mass_payoff"].get<double>(), 1e-9);
+  // Body dynamics alone moves the accepted program's altitude far outside its deadband.
+  const nlohmann::json& altitude = b["point_mass_program_flown_6d"][0];
+  EXPECT_EQ(altitude["code"], 7);
+  EXPECT_GT(std::fabs(altitude["body_dynamics"].get<double>() - altitude["desired"].get<double>()), 10000.0);
+  EXPECT_LT(std::fabs(altitude["point_mass"].get<double>() - altitude["desired"].get<double>()), 2000.0);
+}
+
+// IP(6) = 2, "6D on initial nominal": optimize compares the deck's program flown point mass and
+// 6D, and simulate flies the 6D trajectory itself (the same final state).
+TEST(LinearizedReport, Sec22_Option6Equal2FliesTheInitialNominalSixD) {
+  ScratchDirectory scratch("body_dynamics_ip6_2");
+  const std::string deck = edited_deck(scratch, "ip6_2.toml", {{"body_dynamics_6d = 1", "body_dynamics_6d = 2"}});
+  const CommandResult optimized = run_tolip_executable({"optimize", deck, "--json"});
+  ASSERT_EQ(optimized.exit_code, 0) << optimized.err;
+  const nlohmann::json document = nlohmann::json::parse(optimized.out);
+  const nlohmann::json& b = document["body_dynamics"];
+  EXPECT_EQ(b["option"], 2);
+  EXPECT_EQ(b["mode"], "initial_nominal");
+  EXPECT_EQ(b["status"], "kOk");
+  EXPECT_GT(std::fabs(b["difference"]["altitude_ft"].get<double>()), 1000.0);
+  EXPECT_NEAR(b["difference"]["velocity_ft_s"].get<double>(),
+              b["body_dynamics"]["velocity_ft_s"].get<double>() - b["point_mass"]["velocity_ft_s"].get<double>(), 1e-9);
+  const CommandResult simulated = run_tolip_executable({"simulate", deck, "--json"});
+  ASSERT_EQ(simulated.exit_code, 0) << simulated.err;
+  const nlohmann::json flown = nlohmann::json::parse(simulated.out)["trajectory"];
+  ASSERT_FALSE(flown.empty());
+  EXPECT_DOUBLE_EQ(flown.back()["altitude_ft"].get<double>(), b["body_dynamics"]["altitude_ft"].get<double>());
+}
+
 }  // namespace
 }  // namespace tolip::test
