@@ -1,6 +1,8 @@
 // Per-case output names and message prefixes (case_output.hpp).
 #include "case_output.hpp"
 
+#include "tolip_ground/report.hpp"
+
 namespace tolip::ground {
 
 std::string case_file_path(const std::string& path, int case_number, std::size_t cases) {
@@ -18,6 +20,17 @@ std::string case_file_path(const std::string& path, int case_number, std::size_t
 
 std::string case_message_prefix(int case_number, std::size_t cases) {
   return cases > 1 ? "case " + std::to_string(case_number) + ": " : "";
+}
+
+void write_case_outputs(std::ostream& out, std::ostream& err, bool json, const nlohmann::ordered_json& documents,
+                        const std::string& listing, const std::vector<std::string>& failures) {
+  if (json) {
+    out << dump_json(documents.size() == 1 ? documents[0] : documents);
+  } else {
+    out << listing;
+  }
+  out.flush();
+  for (const std::string& failure : failures) err << failure;
 }
 
 }  // namespace tolip::ground

@@ -3,7 +3,11 @@
 #pragma once
 
 #include <cstddef>
+#include <ostream>
 #include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
 
 namespace tolip::ground {
 
@@ -14,5 +18,12 @@ std::string case_file_path(const std::string& path, int case_number, std::size_t
 // "case N: " before a case's diagnostics when the deck has several cases, "" otherwise (a
 // one-case deck keeps the messages it always had).
 std::string case_message_prefix(int case_number, std::size_t cases);
+
+// Writes what the cases produced, once every case has run: stdout gets one JSON document for a
+// deck of one case, an array for several (`json`), else the collected listing; then stderr gets
+// each case's failure line, in case order.
+// `documents` is the JSON array of the cases' documents.
+void write_case_outputs(std::ostream& out, std::ostream& err, bool json, const nlohmann::ordered_json& documents,
+                        const std::string& listing, const std::vector<std::string>& failures);
 
 }  // namespace tolip::ground

@@ -198,14 +198,7 @@ int run_optimize_command(const OptimizeCommandOptions& options, std::ostream& ou
   }
 
   // A deck of one case prints one document, as it always has; several cases an array.
-  if (options.json) {
-    out << dump_json(cases == 1 ? documents[0] : documents);
-  } else {
-    out << listing.str();
-  }
-  out.flush();
-
-  for (const std::string& failure : failures) err << failure;
+  write_case_outputs(out, err, options.json, documents, listing.str(), failures);
   return exit_code;
 }
 

@@ -113,14 +113,7 @@ int run_simulate_command(const SimulateCommandOptions& options, std::ostream& ou
     }
   }
 
-  if (options.json) {
-    out << dump_json(cases == 1 ? documents[0] : documents);
-  } else {
-    out << listing.str();
-  }
-  out.flush();
-
-  for (const std::string& failure : failures) err << failure;
+  write_case_outputs(out, err, options.json, documents, listing.str(), failures);
   return failures.empty() ? kExitOk : kExitFailure;
 }
 
