@@ -17,6 +17,8 @@
 #include <utility>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "cli_runner.hpp"
 #include "tolip/table/guidance_executor.hpp"
 #include "tolip/table/table_image.hpp"
@@ -452,6 +454,35 @@ TEST(InspectCli, PrintsAValidImageInEngineeringUnits) {
   char crc[16];
   std::snprintf(crc, sizeof crc, "0x%08X", static_cast<unsigned>(stored_table_crc(image.data())));
   EXPECT_TRUE(contains(result.out, crc));
+}
+
+// `inspect --json` holds the decoded image, the same numbers as the in-process table.
+TEST(InspectCli, JsonHoldsEveryFieldOfTheImage) {
+  const ReferenceCase& c = reference_case();
+  ScratchDirectory scratch("table_inspect_json");
+  const Image image = export_reference(scratch, "t.bin");
+  const CommandResult result = run_tolip_executable({"inspect", (scratch / "t.bin").string(), "--json"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const nlohmann::json document = nlohmann::json::parse(result.out);
+  const GuidanceTable& t = c.linearized_table;
+  EXPECT_TRUE(document["valid"].get<bool>());
+  EXPECT_EQ(document["image_size_bytes"].get<std::size_t>(), kTableImageSize);
+  char crc[16];
+  std::snprintf(crc, sizeof crc, "0x%08X", static_cast<unsigned>(stored_table_crc(image.data())));
+  EXPECT_EQ(document["crc32"], crc);
+  EXPECT_EQ(document["mission_id"], t.mission_id);
+  EXPECT_EQ(document["created_unix_s"].get<std::int64_t>(), 0);
+  EXPECT_DOUBLE_EQ(document["stage4_theta_deg"].get<double>(), t.stage4_theta_rad * kRadToDeg);
+  EXPECT_DOUBLE_EQ(document["max_pitch_rate_deg_s"].get<double>(), 5.0);
+  ASSERT_EQ(document["gains"].size(), 10u);
+  EXPECT_DOUBLE_EQ(document["gains"][0]["k_theta_deg_per_deg"].get<double>(), t.gains[0].k_theta);
+  ASSERT_EQ(document["segments"].size(), static_cast<std::size_t>(t.segment_count));
+  for (int i = 0; i < t.segment_count; ++i) {
+    const nlohmann::json& s = document["segments"][static_cast<std::size_t>(i)];
+    EXPECT_EQ(s["stage"].get<int>(), t.segments[i].stage_code);
+    EXPECT_DOUBLE_EQ(s["start_stage_time_s"].get<double>(), t.segments[i].start_stage_time_s);
+    EXPECT_DOUBLE_EQ(s["rate_deg_s"].get<double>(), t.segments[i].rate_rad_s * kRadToDeg);
+  }
 }
 
 TEST(InspectCli, NamesTheFaultOfABadImageAndExitsNonZero) {

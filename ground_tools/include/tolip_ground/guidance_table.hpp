@@ -20,6 +20,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "tolip/mission/mission.hpp"
 #include "tolip/optimizer/linearization.hpp"
 #include "tolip/table/table_image.hpp"
@@ -60,6 +62,10 @@ std::string table_image_c_header(const std::uint8_t* image, std::size_t size, co
 // Engineering-unit listing of a valid image (degrees, deg/s, s, UTC stamp), as `tolip inspect`
 // prints it.
 void write_table_listing(std::ostream& out, const GuidanceTable& table, std::uint32_t crc);
+
+// The same contents as one JSON document (degrees, deg/s, s; schema in docs/cli.md, 'tolip
+// inspect --json').
+nlohmann::ordered_json table_json(const GuidanceTable& table, std::uint32_t crc, std::size_t image_size);
 
 // Reads a whole file into bytes. Returns false and sets *error when it cannot.
 bool read_binary_file(const std::string& path, std::vector<std::uint8_t>* bytes, std::string* error);

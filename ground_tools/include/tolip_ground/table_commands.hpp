@@ -25,6 +25,7 @@ int run_export_command(const ExportCommandOptions& options, std::ostream& out, s
 // `tolip inspect IMAGE`
 struct InspectCommandOptions {
   std::string image_path;
+  bool json = false;  // the image's contents as one JSON document (docs/cli.md)
 };
 int run_inspect_command(const InspectCommandOptions& options, std::ostream& out, std::ostream& err);
 

@@ -266,14 +266,18 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
       "Prints the format version, size, CRC-32, mission id, creation stamp,\n"
       "lift-off duration, rate limits, maximum deflection, spun attitudes,\n"
       "gains of stage codes 1-10 and one row per segment.\n"
-      "Example:\n"
+      "Examples:\n"
       "  tolip inspect table.bin\n"
+      "  tolip inspect table.bin --json\n"
       "Exit codes: 0 valid; 2 bad command line, unreadable file or\n"
       "invalid image (stderr names the status, e.g. kTableImageCrcMismatch).\n"
       "Full reference: docs/cli.md, 'tolip inspect'.");
   inspect->add_option("IMAGE", inspect_options.image_path, "Table image written by tolip export")
       ->required()
       ->type_name("FILE");
+  inspect->add_flag("--json", inspect_options.json,
+                    "Print the contents as one JSON document instead of the listing\n"
+                    "(degrees, deg/s, s; keys in docs/cli.md)");
 
   // ---- convert ---------------------------------------------------------------------------------
   ConvertCommandOptions convert_options;

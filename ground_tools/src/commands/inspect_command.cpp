@@ -8,6 +8,7 @@
 #include "tolip/table/table_image.hpp"
 #include "tolip_ground/commands.hpp"
 #include "tolip_ground/guidance_table.hpp"
+#include "tolip_ground/report.hpp"
 #include "tolip_ground/table_commands.hpp"
 
 namespace tolip::ground {
@@ -25,6 +26,10 @@ int run_inspect_command(const InspectCommandOptions& options, std::ostream& out,
     err << "tolip: " << options.image_path << ": invalid guidance table image (" << bytes.size()
         << " bytes): " << status_name(status) << ": " << status_message(status) << '\n';
     return kExitBadInput;
+  }
+  if (options.json) {
+    out << dump_json(table_json(*table, stored_table_crc(bytes.data()), bytes.size()));
+    return kExitOk;
   }
   out << options.image_path << '\n';
   write_table_listing(out, *table, stored_table_crc(bytes.data()));

@@ -276,6 +276,46 @@ void write_table_listing(std::ostream& out, const GuidanceTable& t, std::uint32_
   }
 }
 
+nlohmann::ordered_json table_json(const GuidanceTable& t, std::uint32_t crc, std::size_t image_size) {
+  using json = nlohmann::ordered_json;
+  char crc_text[16];
+  std::snprintf(crc_text, sizeof crc_text, "0x%08X", static_cast<unsigned>(crc));
+  json gains = json::array();
+  for (int code = 1; code <= kMaxStages; ++code) {
+    gains.push_back(json{{"stage", code},
+                         {"k_theta_deg_per_deg", t.gains[code - 1].k_theta},
+                         {"k_q_s", t.gains[code - 1].k_q_s}});
+  }
+  json segments = json::array();
+  for (int i = 0; i < t.segment_count; ++i) {
+    const GuidanceSegment& s = t.segments[i];
+    segments.push_back(json{{"stage", s.stage_code},
+                            {"start_stage_time_s", s.start_stage_time_s},
+                            {"theta_start_deg", s.theta_start_rad * kRadToDeg},
+                            {"rate_deg_s", s.rate_rad_s * kRadToDeg}});
+  }
+  return json{
+      {"valid", true},
+      {"format_version", t.format_version},
+      {"image_size_bytes", image_size},
+      {"crc32", crc_text},
+      {"mission_id", t.mission_id},
+      {"created_unix_s", t.created_unix_s},
+      {"generator_version", t.generator_version},
+      {"liftoff_duration_s", t.liftoff_duration_s},
+      {"max_pitch_rate_deg_s", t.max_pitch_rate_rad_s * kRadToDeg},
+      {"min_pitch_rate_deg_s", t.min_pitch_rate_rad_s * kRadToDeg},
+      {"min_pitch_rate_change_deg_s", t.min_pitch_rate_change_rad_s * kRadToDeg},
+      {"max_deflection_deg", t.max_deflection_rad * kRadToDeg},
+      {"stage4_theta_deg", t.stage4_theta_rad * kRadToDeg},
+      {"stage4_chi_deg", t.stage4_chi_rad * kRadToDeg},
+      {"stage5_theta_deg", t.stage5_theta_rad * kRadToDeg},
+      {"stage5_chi_deg", t.stage5_chi_rad * kRadToDeg},
+      {"gains", std::move(gains)},
+      {"segments", std::move(segments)},
+  };
+}
+
 bool read_binary_file(const std::string& path, std::vector<std::uint8_t>* bytes, std::string* error) {
   std::ifstream in(path, std::ios::binary);
   if (!in) {
