@@ -50,6 +50,75 @@ const Baseline& baseline() {
   return *b;
 }
 
+// The exchange ratios' runs resume at the perturbed stage's ignition: for every powered stage and
+// every parameter that acts from there, the resumed flight equals the full flight bit for bit.
+TEST(Sec8ExchangeRatios, RunsResumedAtTheStageIgnitionEqualFullFlightsBitForBit) {
+  const Baseline& b = baseline();
+  ASSERT_EQ(b.status, Status::kOk);
+  const OptimizerWorkspace& ws = b.final_ws;
+  static Mission changed;
+  static PreparedCase prepared;
+  static PreparedCase base_prepared;
+  static Trajectory base;
+  static Trajectory full;
+  static Trajectory resumed;
+  ASSERT_EQ(prepare_case(ws.mission, &base_prepared), Status::kOk);
+  ASSERT_EQ(fly_trajectory(ws.mission, base_prepared, ws.program, &base), Status::kOk);
+  int compared = 0;
+  for (int slot = 1; slot < ws.prepared.stage_count; ++slot) {
+    const int code = ws.prepared.timeline[slot].code;
+    if (code < 1 || code > 5) continue;  // powered stages
+    for (ExchangeParameter parameter :
+         {ExchangeParameter::kBurnRate, ExchangeParameter::kSpecificImpulse, ExchangeParameter::kDrag}) {
+      ASSERT_EQ(perturb_stage_parameter(ws.mission, code, parameter, 1.0, &changed), Status::kOk);
+      ASSERT_EQ(prepare_case(changed, &prepared), Status::kOk);
+      ASSERT_EQ(fly_trajectory(changed, prepared, ws.program, &full), Status::kOk);
+      FlightInputs inputs;
+      inputs.program = &ws.program;
+      inputs.resume_from = &base;
+      inputs.resume_stage_slot = slot;
+      ASSERT_EQ(fly_trajectory(changed, prepared, inputs, &resumed), Status::kOk);
+      ASSERT_EQ(resumed.point_count, full.point_count);
+      ASSERT_EQ(resumed.step_count, full.step_count);
+      ASSERT_EQ(resumed.stage_count, full.stage_count);
+      for (int k = 0; k < full.point_count; ++k) {
+        ASSERT_EQ(resumed.points[k].time_s, full.points[k].time_s) << "stage " << code << " point " << k;
+        for (int i = 0; i < 6; ++i) ASSERT_EQ(resumed.points[k].state[i], full.points[k].state[i]) << k;
+        ASSERT_EQ(resumed.points[k].weight_lb, full.points[k].weight_lb) << k;
+      }
+      EXPECT_EQ(resumed.heat_integral_btu_ft2, full.heat_integral_btu_ft2);
+      for (int k = 0; k < full.stage_count; ++k) {
+        EXPECT_EQ(resumed.stages[k].weight_after_jettison_lb, full.stages[k].weight_after_jettison_lb);
+      }
+      ++compared;
+    }
+  }
+  EXPECT_EQ(compared, 3 * 3);  // stages 2, 3, 4
+  // The points before the stage really come from `resume_from` (not flown again): a mark put there
+  // is carried over.
+  static Trajectory marked;
+  marked = base;
+  marked.points[1].weight_lb += 1.0;
+  FlightInputs inputs;
+  inputs.program = &ws.program;
+  inputs.resume_from = &marked;
+  inputs.resume_stage_slot = 2;
+  ASSERT_EQ(fly_trajectory(ws.mission, base_prepared, inputs, &resumed), Status::kOk);
+  EXPECT_EQ(resumed.points[1].weight_lb, base.points[1].weight_lb + 1.0);
+  EXPECT_EQ(resumed.final_point().state, base.final_point().state);
+  // A resume that cannot be honoured is refused, never flown wrong.
+  FlightInputs bad;
+  bad.program = &ws.program;
+  bad.resume_from = &base;
+  bad.resume_stage_slot = 0;
+  EXPECT_EQ(fly_trajectory(ws.mission, base_prepared, bad, &resumed), Status::kValueOutOfRange);
+  bad.resume_stage_slot = base.stage_count;
+  EXPECT_EQ(fly_trajectory(ws.mission, base_prepared, bad, &resumed), Status::kValueOutOfRange);
+  bad.resume_stage_slot = 2;
+  bad.injection_point = 3;
+  EXPECT_EQ(fly_trajectory(ws.mission, base_prepared, bad, &resumed), Status::kValueOutOfRange);
+}
+
 int slot_of(const ExchangeRatios& r, int code) {
   for (int s = 0; s < r.stage_count; ++s) {
     if (r.stage_codes[s] == code) return s;

@@ -72,18 +72,40 @@ Status evaluate(const ConstraintSet& set, const Mission& mission, const Trajecto
   return Status::kOk;
 }
 
-// Flies scratch->mission with the final program, with `prepared` (nullptr: re-prepared from the
-// mission, Sec. 14 tables included).
+// Flies scratch->mission with the final program into `out`, with `prepared` (nullptr: re-prepared
+// from the mission, Sec. 14 tables included), resumed from scratch->base at timeline slot
+// `resume_slot` when it is > 0.
 Status fly_and_evaluate(const OptimizerWorkspace& ws, const ConstraintSet& set, const PreparedCase* prepared,
-                        ExchangeRatioScratch* scratch, double values[kMaxConstraints]) {
+                        int resume_slot, ExchangeRatioScratch* scratch, Trajectory* out,
+                        double values[kMaxConstraints]) {
   if (prepared == nullptr) {
     const Status status = prepare_case(scratch->mission, &scratch->prepared);
     if (!ok(status)) return status;
     prepared = &scratch->prepared;
   }
-  const Status status = fly_trajectory(scratch->mission, *prepared, ws.program, &scratch->trajectory);
+  FlightInputs inputs;
+  inputs.program = &ws.program;
+  if (resume_slot > 0) {
+    inputs.resume_from = &scratch->base;
+    inputs.resume_stage_slot = resume_slot;
+  }
+  const Status status = fly_trajectory(scratch->mission, *prepared, inputs, out);
   if (!ok(status)) return status;
-  return evaluate(set, scratch->mission, scratch->trajectory, values);
+  return evaluate(set, scratch->mission, *out, values);
+}
+
+// The timeline slot where a change of `parameter` of stage `code` starts to act: its ignition for
+// the burn rate, the specific impulse and the drag (nothing before the stage uses them); 0 (launch)
+// for the weights, which every earlier stage carries.
+int first_affected_slot(const OptimizerWorkspace& ws, int code, ExchangeParameter parameter) {
+  if (parameter != ExchangeParameter::kBurnRate && parameter != ExchangeParameter::kSpecificImpulse &&
+      parameter != ExchangeParameter::kDrag) {
+    return 0;
+  }
+  for (int k = 0; k < ws.prepared.stage_count; ++k) {
+    if (ws.prepared.timeline[k].code == code) return k;
+  }
+  return 0;
 }
 
 // The partial-weighted constraint change per unit step, sum_i partials_i d c_i, from the values of
@@ -120,7 +142,10 @@ struct Context {
 Status stage_ratio(Context* c, int code, ExchangeParameter parameter, double* ratio) {
   double plus[kMaxConstraints] = {};
   Status status = perturb_stage_parameter(c->ws->mission, code, parameter, kStepUnits, &c->scratch->mission);
-  if (ok(status)) status = fly_and_evaluate(*c->ws, c->set, nullptr, c->scratch, plus);
+  if (ok(status)) {
+    status = fly_and_evaluate(*c->ws, c->set, nullptr, first_affected_slot(*c->ws, code, parameter), c->scratch,
+                              &c->scratch->trajectory, plus);
+  }
   ++c->out->forward_runs;
   if (!ok(status)) return status;
   const double direct = (plus[0] - c->base[0]) / kStepUnits;  // 0 for the payload payoff
@@ -200,7 +225,7 @@ Status compute_exchange_ratios(const OptimizerWorkspace& final_ws, const Optimiz
   Status status = make_constraint_set(mission, result, &c.set);
   if (!ok(status)) return status;
   scratch->mission = mission;
-  status = fly_and_evaluate(final_ws, c.set, nullptr, scratch, c.base);
+  status = fly_and_evaluate(final_ws, c.set, nullptr, 0, scratch, &scratch->base, c.base);
   ++out->forward_runs;
   if (!ok(status)) return status;
 
@@ -216,7 +241,8 @@ Status compute_exchange_ratios(const OptimizerWorkspace& final_ws, const Optimiz
     for (int side = 0; side < 2; ++side) {
       scratch->mission = mission;
       if (side == 1) scratch->mission.vehicle.payload_lb += kStepUnits;
-      status = fly_and_evaluate(final_ws, c.set, &final_ws.prepared, scratch, side == 0 ? base : plus);
+      status = fly_and_evaluate(final_ws, c.set, &final_ws.prepared, 0, scratch, &scratch->trajectory,
+                                side == 0 ? base : plus);
       ++out->forward_runs;
       if (!ok(status)) return status;
     }

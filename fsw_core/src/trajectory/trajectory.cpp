@@ -45,6 +45,7 @@ class Flight {
   Status record(const StageContext& stage, double t, const StateVector& state,
                 const StepCommand& command, const Evaluation& eval);
   Status record_pad_point();
+  Status resume(StateVector* state);
 
   const Mission& mission_;
   const PreparedCase& prepared_;
@@ -184,6 +185,41 @@ Status Flight::record(const StageContext& stage, double t, const StateVector& st
   return Status::kOk;
 }
 
+// FlightInputs::resume_from: the flight before timeline slot resume_stage_slot, copied; *state is
+// the state at that stage's start (its first point records it).
+Status Flight::resume(StateVector* state) {
+  const Trajectory& from = *inputs_.resume_from;
+  const int slot = inputs_.resume_stage_slot;
+  if (inputs_.feedback != nullptr || inputs_.injection_point >= 0) return Status::kValueOutOfRange;
+  if (!ok(from.status) || slot <= 0 || slot >= prepared_.stage_count || slot >= from.stage_count ||
+      from.stages[slot].code != prepared_.timeline[slot].code) {
+    return Status::kValueOutOfRange;
+  }
+  const int first_point = from.stages[slot].first_point;
+  if (first_point <= 0 || first_point >= from.point_count) return Status::kValueOutOfRange;
+  for (int k = 0; k < first_point; ++k) {
+    trajectory_->points[k] = from.points[k];
+    // The heating integral accumulated exactly as record() does, point after point.
+    if (k > 0) {
+      const TrajectoryPoint& a = from.points[k - 1];
+      const TrajectoryPoint& b = from.points[k];
+      trajectory_->heat_integral_btu_ft2 +=
+          0.5 * (a.heating_rate_btu_ft2_s + b.heating_rate_btu_ft2_s) * (b.time_s - a.time_s);
+    }
+  }
+  trajectory_->point_count = first_point;
+  int steps = 0;
+  while (steps < from.step_count && from.steps[steps].point < first_point) {
+    trajectory_->steps[steps] = from.steps[steps];
+    ++steps;
+  }
+  trajectory_->step_count = steps;
+  for (int k = 0; k < slot; ++k) trajectory_->stages[k] = from.stages[k];
+  trajectory_->stage_count = slot;
+  *state = from.points[first_point].state;
+  return Status::kOk;
+}
+
 Status Flight::record_pad_point() {
   // At the pad V = 0 and the equations of motion are singular; the point is filled directly.
   const StateVector& pad = prepared_.pad_state;
@@ -295,14 +331,23 @@ Status Flight::run() {
     if (!ok(body)) return body;
   }
 
-  Status status = record_pad_point();
-  if (!ok(status)) return status;
-  LiftoffResult liftoff;
-  status = closed_form_liftoff(mission_, prepared_, &liftoff);
-  if (!ok(status)) return status;
-  StateVector state = liftoff.state_at_end;
+  StateVector state;
+  int first_slot = 0;
+  Status status = Status::kOk;
+  if (inputs_.resume_from != nullptr) {
+    status = resume(&state);
+    if (!ok(status)) return status;
+    first_slot = inputs_.resume_stage_slot;
+  } else {
+    status = record_pad_point();
+    if (!ok(status)) return status;
+    LiftoffResult liftoff;
+    status = closed_form_liftoff(mission_, prepared_, &liftoff);
+    if (!ok(status)) return status;
+    state = liftoff.state_at_end;
+  }
 
-  for (int k = 0; k < prepared_.stage_count; ++k) {
+  for (int k = first_slot; k < prepared_.stage_count; ++k) {
     status = fly_stage(k, &state);
     if (!ok(status)) {
       // Keep the stage that failed as an event over the points it did fly.

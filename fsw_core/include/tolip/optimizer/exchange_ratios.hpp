@@ -61,6 +61,9 @@ struct ExchangeRatioScratch {
   Mission mission;
   PreparedCase prepared;
   Trajectory trajectory;
+  // The re-prepared unperturbed flight: a change of a stage's burn rate, specific impulse or drag
+  // acts from that stage's ignition only, so its run resumes from this one there.
+  Trajectory base;
 };
 
 // *out = base with powered stage `stage_code`'s characteristic changed by `units` (percent for the

@@ -116,6 +116,14 @@ struct FlightInputs {
   // stage follows the command as without it. Needs data blocks 33-37 (validate_body_dynamics()),
   // else the run fails with that status before flying. Off: the point-mass run, bit for bit.
   bool body_dynamics = false;
+  // Resume at the start of timeline slot `resume_stage_slot` (> 0): the points, steps and stage
+  // events before it are copied from `resume_from`, a completed flight of a case that flies exactly
+  // like this one up to there (same mission and prepared case before that stage: a change of that
+  // stage's thrust, burn rate or drag, say), and the integration restarts from its state there.
+  // Every stage restarts its integrator, so the result is the full flight's, bit for bit; it skips
+  // the work before the stage (the exchange ratios' runs). Not with feedback or an injection.
+  const Trajectory* resume_from = nullptr;
+  int resume_stage_slot = 0;
 };
 
 Status fly_trajectory(const Mission& mission, const PreparedCase& prepared, const FlightInputs& inputs,
