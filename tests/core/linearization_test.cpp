@@ -60,8 +60,10 @@ TEST(Sec6Linearization, NineSegmentsMeetEveryRateLimitAndConstraintWithinHalfAPe
               100.0 * (result.payoff / optimum.payload_lb - 1.0));
   EXPECT_TRUE(result.constraints_met);
   EXPECT_TRUE(result.rate_limits_met);
+  EXPECT_TRUE(result.finished);
   for (int j = 0; j < result.constraint_count; ++j) {
     EXPECT_LE(std::fabs(result.desired[j] - result.achieved[j]), result.tolerance[j]) << "code " << result.codes[j];
+    EXPECT_TRUE(result.met[j]) << "code " << result.codes[j];
   }
   EXPECT_GE(result.payoff, 0.995 * optimum.payload_lb);
   EXPECT_LE(result.payoff, optimum.payload_lb * (1.0 + 1e-4));

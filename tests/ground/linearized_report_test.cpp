@@ -81,6 +81,7 @@ TEST(LinearizedReport, Sec10_JsonGivesSegmentsThatMeetTheLimitsAndConstraints) {
   for (const nlohmann::json& c : l["constraints"]) {
     EXPECT_LE(std::fabs(c["achieved"].get<double>() - c["desired"].get<double>()), c["tolerance"].get<double>())
         << c["code"];
+    EXPECT_TRUE(c["met"].get<bool>()) << c["code"];
   }
 }
 

@@ -186,13 +186,13 @@ bool solve_in_place(KktMatrix* a, KktVector* b, KktVector* x) {
 
 Status solve_program(const LinearConstraints& c, const BackwardRun& backward, const Trajectory& nominal,
                      const ControlProgram& nominal_program, const ControlProgram& optimum,
-                     const double achieved[], KktMatrix* kkt_storage, KktVector* rhs_storage, LinearProgram* p,
+                     const double achieved[], LinearizationSystem* system, LinearProgram* p,
                      double* payload_change_lb) {
   // Unknowns: the break values, then the payload change when it is free.
   const int breaks = p->segment_count + 1;
   const int n = breaks + (c.payload_free ? 1 : 0);
-  KktMatrix& kkt = *kkt_storage;
-  KktVector& rhs = *rhs_storage;
+  KktMatrix& kkt = system->assembled;
+  KktVector& rhs = system->rhs;
   kkt.setZero();
   rhs.setZero();
   for (int k = 0; k < nominal.point_count; ++k) {
@@ -251,18 +251,18 @@ Status solve_program(const LinearConstraints& c, const BackwardRun& backward, co
   for (int i = n + c.count + p->rate_repair_count; i < kKktSize; ++i) kkt(i, i) = 1.0;
   // The equality rows (fixed values, rate repairs) are checked on the solution: a nearly singular
   // system (more equalities than the program can meet) returns garbage rather than failing.
-  const KktMatrix system = kkt;
-  const KktVector wanted = rhs;
+  system->eliminated = kkt;
+  KktVector eliminated_rhs = rhs;
   KktVector x = KktVector::Zero();
-  if (!solve_in_place(&kkt, &rhs, &x)) return Status::kSteeringMatrixSingular;
+  if (!solve_in_place(&system->eliminated, &eliminated_rhs, &x)) return Status::kSteeringMatrixSingular;
   if (!x.allFinite()) return Status::kNonFiniteState;
   const int rows = n + c.count + p->rate_repair_count;
   for (int i = 0; i < rows; ++i) {
     const bool equality = i >= n || (i < breaks && p->fixed[i]);
     if (!equality) continue;
-    double residual = wanted(i);
-    for (int col = 0; col < rows; ++col) residual -= system(i, col) * x(col);
-    if (std::fabs(residual) > 1e-8 * (1.0 + std::fabs(wanted(i)))) return Status::kSteeringMatrixSingular;
+    double residual = rhs(i);
+    for (int col = 0; col < rows; ++col) residual -= kkt(i, col) * x(col);
+    if (std::fabs(residual) > 1e-8 * (1.0 + std::fabs(rhs(i)))) return Status::kSteeringMatrixSingular;
   }
   for (int b = 0; b < breaks; ++b) p->theta_rad[b] = x(b);
   *payload_change_lb = c.payload_free ? x(breaks) : 0.0;
@@ -302,11 +302,6 @@ double segment_rate(const LinearProgram& p, int s) {
   return (p.theta_rad[s + 1] - p.theta_rad[s]) / (p.break_time_s[s + 1] - p.break_time_s[s]);
 }
 
-// A break where the rate does not change (a merge, or a rate fixed equal to its neighbour's) joins
-// two segments into one: it is neither a change of rate nor a second positive rate.
-bool continues_previous(const LinearProgram& p, int s) {
-  return s > 0 && std::fabs(segment_rate(p, s) - segment_rate(p, s - 1)) < kMergedRateRadS;
-}
 
 // Adds the first repair the program needs, in the order of Sec. 10 (maximum rate, a single positive
 // rate, minimum rate, minimum change of rate); returns false when it meets every limit or no repair
@@ -345,7 +340,7 @@ bool repair_rate_limits(const Mission& mission, const LinearConstraints& c, doub
   }
   int positives = coast_rate_rad_s_after_last > kPositiveRateRadS ? 1 : 0;
   for (int s = 0; s < k; ++s) {
-    if (!(rate(s) > kPositiveRateRadS) || continues_previous(*p, s)) continue;
+    if (!(rate(s) > kPositiveRateRadS) || rate_continues_previous(*p, s)) continue;
     ++positives;
     if (positives > 1 && !merge_group(*p, s).rate_fixed && !determined(s)) {
       return impose(s, false, -limits.min_pitch_rate_rad_s);
@@ -358,7 +353,7 @@ bool repair_rate_limits(const Mission& mission, const LinearConstraints& c, doub
     }
   }
   for (int s = 0; s + 1 < k; ++s) {
-    if (!(limits.min_pitch_rate_change_rad_s > 0.0) || continues_previous(*p, s + 1) ||
+    if (!(limits.min_pitch_rate_change_rad_s > 0.0) || rate_continues_previous(*p, s + 1) ||
         std::fabs(rate(s + 1) - rate(s)) >= limits.min_pitch_rate_change_rad_s * (1.0 - 1e-9)) {
       continue;
     }
@@ -375,8 +370,8 @@ bool meets_rate_limits(const Mission& mission, double coast_rate_after_last, con
     const double r = segment_rate(p, s);
     if (limits.max_pitch_rate_rad_s > 0.0 && std::fabs(r) > limits.max_pitch_rate_rad_s * (1.0 + 1e-6)) return false;
     if (limits.min_pitch_rate_rad_s > 0.0 && std::fabs(r) < limits.min_pitch_rate_rad_s * (1.0 - 1e-6)) return false;
-    if (r > kPositiveRateRadS && !continues_previous(p, s)) ++positives;
-    if (s + 1 < p.segment_count && limits.min_pitch_rate_change_rad_s > 0.0 && !continues_previous(p, s + 1) &&
+    if (r > kPositiveRateRadS && !rate_continues_previous(p, s)) ++positives;
+    if (s + 1 < p.segment_count && limits.min_pitch_rate_change_rad_s > 0.0 && !rate_continues_previous(p, s + 1) &&
         std::fabs(segment_rate(p, s + 1) - r) < limits.min_pitch_rate_change_rad_s * (1.0 - 1e-6)) {
       return false;
     }
@@ -421,6 +416,12 @@ Status fly_linearized(const LinearizationWorkspace& ws, bool body_dynamics, Traj
 
 }  // namespace
 
+// A break where the rate does not change joins two segments into one: it is neither a change of
+// rate nor a second positive rate.
+bool rate_continues_previous(const LinearProgram& p, int s) {
+  return s > 0 && std::fabs(segment_rate(p, s) - segment_rate(p, s - 1)) < kMergedRateRadS;
+}
+
 // Sec. 10: "Before leaving the LINEAR routine, the coast stage 7 pitch rate is tested for minimum
 // rate violation and minimum change in rate violation."
 void check_coast7_rates(const Mission& mission, const LinearProgram& p, LinearizationResult* out) {
@@ -433,12 +434,13 @@ void check_coast7_rates(const Mission& mission, const LinearProgram& p, Lineariz
     if (limits.min_pitch_rate_rad_s > 0.0 && std::fabs(rate) < limits.min_pitch_rate_rad_s * (1.0 - 1e-6)) {
       out->coast7_below_min_rate = true;
     }
-    for (int n = s - 1; n <= s + 1; n += 2) {
-      if (n < 0 || n >= p.segment_count || !(limits.min_pitch_rate_change_rad_s > 0.0)) continue;
-      const double change = std::fabs(segment_rate(p, n) - rate);
-      if (change >= kMergedRateRadS && change < limits.min_pitch_rate_change_rad_s * (1.0 - 1e-6)) {
-        out->coast7_below_min_rate_change = true;
-      }
+    // The breaks at its start (with segment s - 1) and at its end (with s + 1); a merged one is
+    // no change of rate.
+    for (int later = s; later <= s + 1; ++later) {
+      if (later < 1 || later >= p.segment_count || !(limits.min_pitch_rate_change_rad_s > 0.0)) continue;
+      if (rate_continues_previous(p, later)) continue;
+      const double change = std::fabs(segment_rate(p, later) - segment_rate(p, later - 1));
+      if (change < limits.min_pitch_rate_change_rad_s * (1.0 - 1e-6)) out->coast7_below_min_rate_change = true;
     }
   }
 }
@@ -447,6 +449,7 @@ Status linearize_pitch_program(const OptimizerWorkspace& optimized, Linearizatio
   out->forward_runs = 0;
   out->backward_runs = 0;
   out->programs_computed = 0;
+  out->finished = false;
   out->constraints_met = false;
   out->rate_limits_met = false;
   // The optimized case, flown without the zero-alpha window and without the in-flight alpha = 0
@@ -553,7 +556,7 @@ Status linearize_pitch_program(const OptimizerWorkspace& optimized, Linearizatio
     }
     for (int sg = 0; sg < program.segment_count; ++sg) program.eta[sg] = previous.eta[sg];
     for (int attempt = 0; attempt < kMaxProgramsPerBackwardRun; ++attempt) {
-      status = solve_program(c, ws->backward, ws->nominal, ws->program, ws->optimum, achieved, &ws->kkt, &ws->kkt_rhs,
+      status = solve_program(c, ws->backward, ws->nominal, ws->program, ws->optimum, achieved, &ws->system,
                              &program, &payload_change_lb);
       if (!ok(status)) return out->status = status;
       ++out->programs_computed;
@@ -610,9 +613,11 @@ Status linearize_pitch_program(const OptimizerWorkspace& optimized, Linearizatio
     out->desired[j] = c.desired[j];
     out->achieved[j] = achieved[j];
     out->tolerance[j] = c.deadband[j];
+    out->met[j] = std::fabs(correction(c, j, achieved[j])) <= c.deadband[j];
   }
   status = linearized_payoff(ws->mission, ws->nominal, &out->payoff);
   if (!ok(status)) return out->status = status;
+  out->finished = true;
   out->status = success ? Status::kOk : Status::kLinearizationDidNotConverge;
   return out->status;
 }

@@ -36,8 +36,8 @@ void run_optimization(const Mission& mission, OptimizerObserver* observer, Optim
   const bool converged = ok(run->optimizer_status) && run->result->converged;
   const Status why_skipped = ok(run->optimizer_status) ? Status::kOptimizerDidNotConverge : run->optimizer_status;
 
-  // Exchange ratios (IP(3), Sec. 8) from the optimized case, before linearization changes nothing
-  // of it: they describe the optimum, not the straight-segment program.
+  // Exchange ratios (IP(3), Sec. 8) of the optimized case: they describe the optimum, not the
+  // straight-segment program.
   if (mission.options.exchange_ratios()) {
     ExchangeRatioStep& step = run->exchange_ratios;
     if (!converged) {

@@ -124,7 +124,7 @@ json exchange_ratios_json(const OptimizationReport& report) {
 // The linearized program (docs/cli.md): null when asked for but not run; otherwise the best program
 // found, with the status that says whether it meets the constraints and the rate limits.
 json linearized_json(const OptimizationReport& report) {
-  if (report.linearization == nullptr) {
+  if (report.linearization == nullptr || !report.linearization->finished) {
     return json{{"status", status_name(report.linearization_status)},
                 {"status_message", status_message(report.linearization_status)},
                 {"segments", json::array()}};
@@ -134,7 +134,7 @@ json linearized_json(const OptimizationReport& report) {
   json segments = json::array();
   const int count = std::clamp(p.segment_count, 0, kMaxLinearSegments);
   for (int s = 0; s < count; ++s) {
-    const bool merged = s > 0 && std::fabs(p.rate_rad_s[s] - p.rate_rad_s[s - 1]) < 1e-9;
+    const bool merged = rate_continues_previous(p, s);
     segments.push_back(json{
         {"stage", p.stage_code[s]},
         {"start_stage_time_s", number(p.start_stage_time_s[s])},
@@ -151,6 +151,7 @@ json linearized_json(const OptimizationReport& report) {
         {"desired", number(r.desired[j])},
         {"achieved", number(r.achieved[j])},
         {"tolerance", number(r.tolerance[j])},
+        {"met", r.met[j]},
     });
   }
   return json{
@@ -218,7 +219,7 @@ json body_dynamics_json(const OptimizationReport& report) {
   out["status"] = status_name(report.linearization_status);
   out["point_mass_met"] = r->point_mass_met;
   out["relinearized"] = r->body_dynamics;
-  if (!r->point_mass_met) return out;
+  if (!r->point_mass_met || !r->finished) return out;
   out["point_mass_payoff"] = number(r->point_mass_payoff);
   out["body_dynamics_payoff"] = number(r->payoff);
   out["payoff_difference"] = number(r->payoff - r->point_mass_payoff);

@@ -455,7 +455,7 @@ void write_exchange_ratios(Pager& pager, const OptimizationReport& report) {
 void write_linearized_program(Pager& pager, const OptimizationReport& report) {
   if (!report.linearization_requested) return;
   const LinearizationResult* r = report.linearization;
-  if (r == nullptr) {
+  if (r == nullptr || !r->finished) {
     pager.reserve(3);
     pager.emit(" LINEARIZED PITCH PROGRAM");
     pager.emit(std::string("   NOT COMPUTED: ") + status_name(report.linearization_status) + ": " +
@@ -470,7 +470,7 @@ void write_linearized_program(Pager& pager, const OptimizationReport& report) {
   pager.emit("    SEGMENT  STAGE   STAGE TIME  TIME FROM LAUNCH           THETA      PITCH RATE");
   pager.emit("                            SEC               SEC             DEG         DEG/SEC");
   for (int s = 0; s < count; ++s) {
-    const bool merged = s > 0 && std::fabs(p.rate_rad_s[s] - p.rate_rad_s[s - 1]) < 1e-9;
+    const bool merged = rate_continues_previous(p, s);
     pager.emit(right(std::to_string(s + 1), 11) + right(std::to_string(p.stage_code[s]), 7) +
                number_cell(p.start_stage_time_s[s], 3, 13) + number_cell(p.break_time_s[s], 3, 18) +
                number_cell(p.theta_rad[s] * kRadToDeg, 5, 16) + number_cell(p.rate_rad_s[s] * kRadToDeg, 5, 16) +
@@ -488,11 +488,10 @@ void write_linearized_program(Pager& pager, const OptimizationReport& report) {
   for (int j = 0; j < constraints; ++j) {
     ConstraintCode decoded;
     const QuantityText text = code_text(r->codes[j], &decoded);
-    const bool met = std::fabs(r->achieved[j] - r->desired[j]) <= r->tolerance[j];
     pager.emit(right(std::to_string(r->codes[j]), 14) + "  " + left(constraint_label(decoded, text), 27) +
                number_cell(r->desired[j], text.decimals, 16) + number_cell(r->achieved[j], text.decimals, 16) +
                number_cell(r->tolerance[j], text.decimals, 16) + "  " + left(text.unit_heading, 9) +
-               (met ? "YES" : "NO"));
+               (r->met[j] ? "YES" : "NO"));
   }
   const int ip1 = report.final_trajectory.mission->options.payoff();
   const double loss_percent = 100.0 * (report.optimum_payoff - r->payoff) / report.optimum_payoff;

@@ -58,7 +58,12 @@ struct LinearizationResult {
   double desired[kMaxConstraints] = {};
   double achieved[kMaxConstraints] = {};
   double tolerance[kMaxConstraints] = {};  // linearization deadbands
+  bool met[kMaxConstraints] = {};            // within its deadband (an inequality: not above it)
   double payoff = 0.0;                      // achieved by the linearized trajectory
+  // The runs ended as Sec. 10 ends them (everything met, or DA13(4) runs made): the program, the
+  // achieved values and the payoff above describe the last run. False when a failure (a singular
+  // fit, a failed run) stopped them first: only the status and the counts are then meaningful.
+  bool finished = false;
   // Sec. 10's closing checks of the coast between stages 2 and 3 (coast 7), which the manual reports
   // by message: its rate below the minimum rate, its rate within the minimum change of a neighbour's
   // (a merged break does not count). False when the program has no coast-7 segment.
@@ -78,6 +83,14 @@ struct LinearizationResult {
   double point_mass_program_6d_achieved[kMaxConstraints] = {};
 };
 
+// The eq. 6-22 system (about 33 kB: kept off the stack): as assembled, and a copy eliminated in
+// place; the assembled one checks the solution's equality rows.
+struct LinearizationSystem {
+  Eigen::Matrix<double, kLinearizationKktSize, kLinearizationKktSize> assembled;
+  Eigen::Matrix<double, kLinearizationKktSize, kLinearizationKktSize> eliminated;
+  Eigen::Matrix<double, kLinearizationKktSize, 1> rhs;
+};
+
 struct LinearizationWorkspace {
   Mission mission;                 // the optimized case, flown without the zero-alpha window
   PreparedCase prepared;
@@ -86,10 +99,13 @@ struct LinearizationWorkspace {
   Trajectory nominal;
   Trajectory candidate;
   BackwardRun backward;
-  // The eq. 6-22 system (about 17 kB: kept off the stack).
-  Eigen::Matrix<double, kLinearizationKktSize, kLinearizationKktSize> kkt;
-  Eigen::Matrix<double, kLinearizationKktSize, 1> kkt_rhs;
+  LinearizationSystem system;
 };
+
+// True when segment `segment` flies the rate of the one before it (a merge, or a rate fixed equal
+// to its neighbour's): the break between them is no change of rate (Sec. 10: a merge "in effect,
+// eliminates a segment").
+bool rate_continues_previous(const LinearProgram& program, int segment);
 
 // Sec. 10's closing checks of coast 7 on `program` (its stage_code per segment filled) with the
 // mission's data block 22 limits; sets result->coast7_below_min_rate(_change).

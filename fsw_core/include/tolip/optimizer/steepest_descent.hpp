@@ -63,8 +63,8 @@ struct OptimizerResult {
 };
 
 // Told of every forward run as it is recorded (a terminal progress display, a log). Called on the
-// optimizer's own thread, between runs; it must not touch the workspace. A plain interface rather
-// than a std::function: the core has no heap.
+// optimizer's own thread, between runs; it must not touch the workspace. A plain interface: a
+// type-erased callable could allocate, and the core never does.
 class OptimizerObserver {
  public:
   virtual void on_forward_run(const IterationRecord& record, const OptimizerResult& result) = 0;
