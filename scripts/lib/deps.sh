@@ -63,9 +63,15 @@ tolip_ensure_packages() {
   tolip_as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends "${missing[@]}"
 }
 
-# Configures (Release) and builds the project into the given build directory with two jobs.
+# Configures (Release) and builds the project into the given build directory with two jobs:
+# every target, or only the targets named after the two folders (setup.sh builds just `tolip`).
 tolip_configure_and_build() {
   local source_dir=$1 build_dir=$2
+  shift 2
   cmake -S "$source_dir" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release
-  cmake --build "$build_dir" -j2
+  if [[ $# -gt 0 ]]; then
+    cmake --build "$build_dir" -j2 --target "$@"
+  else
+    cmake --build "$build_dir" -j2
+  fi
 }

@@ -1,4 +1,5 @@
-// Access to the independent reference data in ../shared/reference (never written by this project).
+// Access to the independent reference data in tests/reference (PROVENANCE.md there: where it came
+// from; this project reads it and never writes it).
 #pragma once
 
 #include <nlohmann/json.hpp>

@@ -1,4 +1,4 @@
-// The reference Scout mission built straight from ../shared/reference/scout_reference.json, without
+// The reference Scout mission built straight from tests/reference/scout_reference.json, without
 // the deck reader, so trajectory tests do not depend on it (and can cross-check it).
 #pragma once
 
