@@ -87,7 +87,7 @@ TEST(ExchangeRatioReport, AbsentWithoutOption3AndNullWhenTheOptimizationDidNotCo
   ASSERT_TRUE(document.contains("exchange_ratios"));
   EXPECT_TRUE(document["exchange_ratios"].is_null());
   const CommandResult listing = run_tolip_executable({"optimize", budget});
-  EXPECT_TRUE(contains(listing.out, "NOT COMPUTED: kOptimizerDidNotConverge")) << listing.out.substr(0, 200);
+  EXPECT_TRUE(contains(listing.out, "NOT COMPUTED: kGuidanceDidNotConverge")) << listing.out.substr(0, 200);
 }
 
 }  // namespace

@@ -113,7 +113,7 @@ TEST(LinearizedReport, AbsentWithoutOption7AndNotComputedWhenTheOptimizationDidN
   EXPECT_EQ(stopped.exit_code, 1) << stopped.err;
   const nlohmann::json document = nlohmann::json::parse(stopped.out);
   ASSERT_TRUE(document.contains("linearized"));
-  EXPECT_EQ(document["linearized"]["status"], "kOptimizerDidNotConverge");
+  EXPECT_EQ(document["linearized"]["status"], "kGuidanceDidNotConverge");
   EXPECT_TRUE(document["linearized"]["segments"].empty());
 }
 

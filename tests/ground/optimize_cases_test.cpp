@@ -107,7 +107,7 @@ TEST(OptimizeCases, AFailedCaseMakesTheExitCodeNonZero) {
                                                       "          2.\n");
   const CommandResult run = run_tolip_executable({"optimize", deck, "--json"});
   EXPECT_EQ(run.exit_code, 1);
-  EXPECT_TRUE(contains(run.err, "tolip: case 2: kOptimizerDidNotConverge: ")) << run.err;
+  EXPECT_TRUE(contains(run.err, "tolip: case 2: optimization: kGuidanceDidNotConverge: ")) << run.err;
   EXPECT_FALSE(contains(run.err, "case 1:")) << run.err;
   const nlohmann::json documents = nlohmann::json::parse(run.out);
   ASSERT_EQ(documents.size(), 2u) << "both cases are still reported";

@@ -282,9 +282,12 @@ TEST(OptimizeCommand, NotConvergedExitsOneAndStillReportsTheBestTrajectory) {
                                                "max_forward_trajectories = 2");
   const CommandResult run = run_tolip_executable({"optimize", deck, "--json"});
   EXPECT_EQ(run.exit_code, 1);
-  EXPECT_TRUE(contains(run.err, "tolip: kOptimizerDidNotConverge: ")) << run.err;
+  EXPECT_TRUE(contains(run.err, "tolip: optimization: kGuidanceDidNotConverge: ")) << run.err;
   const nlohmann::json document = nlohmann::json::parse(run.out);
-  EXPECT_EQ(document["status"], "kOptimizerDidNotConverge");
+  EXPECT_EQ(document["status"], "kGuidanceDidNotConverge");
+  EXPECT_EQ(document["case_status"], "kGuidanceDidNotConverge");
+  EXPECT_EQ(document["optimization_stop"], "not_reached");
+  EXPECT_EQ(document["optimization_runs"].get<int>(), 0);
   EXPECT_EQ(document["converged"], false);
   EXPECT_EQ(document["forward_runs"].get<int>(), 2);
   EXPECT_FALSE(document["trajectory"].empty());
@@ -299,7 +302,7 @@ TEST(OptimizeCommand, NotConvergedExitsOneAndStillReportsTheBestTrajectory) {
 
   const CommandResult listing = run_tolip_executable({"optimize", deck});
   EXPECT_EQ(listing.exit_code, 1);
-  EXPECT_TRUE(contains(listing.out, "OPTIMIZATION ENDED: kOptimizerDidNotConverge"));
+  EXPECT_TRUE(contains(listing.out, "OPTIMIZATION ENDED: kGuidanceDidNotConverge"));
   EXPECT_TRUE(contains(listing.out, "FINAL TRAJECTORY"));
   // The trajectory itself completed: no termination line in its listing.
   EXPECT_FALSE(contains(listing.out, "TRAJECTORY TERMINATED"));

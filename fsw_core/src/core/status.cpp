@@ -45,7 +45,9 @@ const char* status_name(Status status) {
     case Status::kTrajectoryStorageFull: return "kTrajectoryStorageFull";
     case Status::kControlProgramSizeMismatch: return "kControlProgramSizeMismatch";
     case Status::kSteeringMatrixSingular: return "kSteeringMatrixSingular";
-    case Status::kOptimizerDidNotConverge: return "kOptimizerDidNotConverge";
+    case Status::kGuidanceDidNotConverge: return "kGuidanceDidNotConverge";
+    case Status::kOptimizationNotStarted: return "kOptimizationNotStarted";
+    case Status::kFinalGuidanceFailed: return "kFinalGuidanceFailed";
     case Status::kLinearizationDidNotConverge: return "kLinearizationDidNotConverge";
     case Status::kAdjustableParameterNotSupported: return "kAdjustableParameterNotSupported";
     case Status::kPayoffNotSupported: return "kPayoffNotSupported";
@@ -113,7 +115,9 @@ const char* status_message(Status status) {
     case Status::kControlProgramSizeMismatch: return "the pitch program has a different number of points than the case's trajectory";
     case Status::kSteeringMatrixSingular: return "the steering matrix (integral of Lambda Lambda^T plus S Y^-1 S^T) could not be inverted: the constraints cannot be controlled independently";
     case Status::kLinearizationDidNotConverge: return "the linearized pitch program did not meet the constraints within the linearization deadbands and the rate limits in DA13(4) forward runs";
-    case Status::kOptimizerDidNotConverge: return "the optimization ended (forward-run budget or minimum improvement) with constraints outside their deadbands";
+    case Status::kGuidanceDidNotConverge: return "not converged: the guidance runs used the forward-run budget DA13(3) without bringing every constraint inside its data block 29 deadband, so no optimization run was made";
+    case Status::kOptimizationNotStarted: return "not converged: guidance met every deadband but no optimization run was made (the first payoff-improvement attempt was below DA13(2), or the forward-run budget DA13(3) left no room); the trajectory is feasible, not optimized";
+    case Status::kFinalGuidanceFailed: return "not converged: the final guidance run did not meet every data block 29 deadband; the last feasible optimization run is reported instead";
     case Status::kAdjustableParameterNotSupported: return "an adjustable parameter code of data block 6 is not supported by this optimizer yet";
     case Status::kBodyDynamicsNotTrimmable: return "the autopilot has no steady state (Sec. 7): K_theta M_delta - M_alpha is not positive, a statically unstable vehicle with too little control moment";
     case Status::kPayoffNotSupported: return "the payoff of data block 8 does not match option IP(1) or is not supported";

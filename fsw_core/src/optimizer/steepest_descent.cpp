@@ -651,6 +651,7 @@ Status Iteration::run(const Mission& input) {
     const double before = error_norm(problem_, nominal_achieved_);
     double fraction = 1.0;
     for (int attempt = 0; attempt <= kGuidanceStepHalvings; ++attempt, fraction *= 0.5) {
+      ++result_->guidance_runs;
       status = fly_candidate(steering, corrections(nominal_achieved_), fraction);
       const bool better = ok(status) && error_norm(problem_, candidate_achieved_) < before;
       record(RunKind::kGuidance, better && within_deadbands(problem_, candidate_achieved_), 0.0);
@@ -661,6 +662,7 @@ Status Iteration::run(const Mission& input) {
   }
 
   // Optimization: ask for payoff improvement, judged by the corrected payoff; halve on failure.
+  const bool guidance_converged = within_deadbands(problem_, nominal_achieved_);
   double attempt_size = 0.0;
   double best_corrected = -1e300;
   bool first_attempt = true;
@@ -673,7 +675,9 @@ Status Iteration::run(const Mission& input) {
       const double dp2 = kTypicalPitchChangeRad * kTypicalPitchChangeRad * burn_time_s();
       if (!initial_payoff_improvement(problem_, steering, dphi, dp2, &attempt_size)) {
         attempt_size = ws_->mission.convergence.initial_payoff_improvement;
+        result_->initial_improvement_from_da13_1 = true;
       }
+      result_->initial_payoff_improvement = attempt_size;
       first_attempt = false;
     }
     bool improved = false;
@@ -681,6 +685,7 @@ Status Iteration::run(const Mission& input) {
       ConstraintVector dpsi = dphi;
       dpsi(0) = attempt_size;
       status = fly_candidate(steering, dpsi, 1.0);
+      ++result_->optimization_runs;
       improved = ok(status) && within_deadbands(problem_, candidate_achieved_) &&
                  corrected_payoff(candidate_achieved_) > best_corrected;
       record(RunKind::kOptimization, improved, attempt_size);
@@ -688,18 +693,30 @@ Status Iteration::run(const Mission& input) {
       attempt_size *= 0.5;
     }
     if (!improved) break;
+    ++result_->successful_optimization_runs;
     accept_candidate();
   }
+  // Once guidance has succeeded every nominal is feasible, so the phase ends by one of Sec. 22's
+  // two rules; which one is told by the budget.
+  if (result_->optimization_runs > 0) {
+    result_->optimization_stop = result_->forward_runs >= budget - 1 ? OptimizationStop::kForwardRunBudget
+                                                                     : OptimizationStop::kImprovementBelowMinimum;
+  }
 
-  // Final backward and forward guidance run.
+  // Final backward and forward guidance run. A feasible nominal is replaced only by a feasible
+  // final run (it is the reported optimum); an infeasible one by any run that reduces the errors.
   status = backward(1, &steering);
   if (!ok(status)) return status;
   status = fly_candidate(steering, corrections(nominal_achieved_), 1.0);
-  const bool final_ok = ok(status) && error_norm(problem_, candidate_achieved_) <= error_norm(problem_, nominal_achieved_);
-  record(RunKind::kFinalGuidance, final_ok && within_deadbands(problem_, candidate_achieved_), 0.0);
-  if (final_ok) accept_candidate();
+  result_->final_guidance_met = ok(status) && within_deadbands(problem_, candidate_achieved_);
+  const bool nominal_feasible = within_deadbands(problem_, nominal_achieved_);
+  const bool final_accepted =
+      nominal_feasible ? result_->final_guidance_met
+                       : ok(status) && error_norm(problem_, candidate_achieved_) <= error_norm(problem_, nominal_achieved_);
+  record(RunKind::kFinalGuidance, result_->final_guidance_met, 0.0);
+  if (final_accepted) accept_candidate();
 
-  result_->converged = within_deadbands(problem_, nominal_achieved_);
+  result_->converged = guidance_converged && result_->optimization_runs > 0 && result_->final_guidance_met;
   result_->constraint_count = problem_.constraint_count;
   for (int i = 0; i < problem_.constraint_count; ++i) {
     result_->codes[i] = problem_.codes[i].code;
@@ -724,7 +741,10 @@ Status Iteration::run(const Mission& input) {
         code == 6 ? launch.azimuth_rad : code == 7 ? launch.launch_space_age_date_days :
         ws_->mission.vehicle.stages[stage_index(coast_of_parameter(code))].duration_s;
   }
-  return result_->converged ? Status::kOk : Status::kOptimizerDidNotConverge;
+  if (!guidance_converged) return Status::kGuidanceDidNotConverge;
+  if (result_->optimization_runs == 0) return Status::kOptimizationNotStarted;
+  if (!result_->final_guidance_met) return Status::kFinalGuidanceFailed;
+  return Status::kOk;
 }
 
 }  // namespace
@@ -734,6 +754,13 @@ Status optimize_trajectory(const Mission& mission, OptimizerWorkspace* workspace
   result->backward_runs = 0;
   result->iteration_count = 0;
   result->converged = false;
+  result->optimization_stop = OptimizationStop::kNotReached;
+  result->guidance_runs = 0;
+  result->optimization_runs = 0;
+  result->successful_optimization_runs = 0;
+  result->final_guidance_met = false;
+  result->initial_payoff_improvement = 0.0;
+  result->initial_improvement_from_da13_1 = false;
   Problem problem;
   Status status = make_problem(mission, &problem);
   if (ok(status)) {

@@ -29,9 +29,14 @@ struct OptimizationReport {
   SimulationReport final_trajectory;
   const Mission* initial_mission = nullptr;   // the deck as loaded (initial parameter values)
   const OptimizerResult* result = nullptr;    // required
-  // The run's status: the optimizer's (kOk when converged, kOptimizerDidNotConverge, or the core
-  // failure that stopped it), or, when that is kOk, the final trajectory's or orbit's failure.
+  // The run's status: the optimizer's (kOk when converged; kGuidanceDidNotConverge,
+  // kOptimizationNotStarted, kFinalGuidanceFailed, or the core failure that stopped it), or, when
+  // that is kOk, the final trajectory's or orbit's failure.
   Status status = Status::kNotPrepared;
+  // The case's result by the one rule of optimization_job_verdict (the exit code): kOk when every
+  // computation the deck asks for succeeded, else the first failure and the computation's name.
+  Status case_status = Status::kNotPrepared;
+  std::string case_failed_step;
   // Performance exchange ratios (IP(3) = 1; manual Sec. 8, 12; compute_exchange_ratios), computed
   // after a converged optimization. `exchange_ratios` is null unless they were computed; when the
   // deck asks for them and they were not, `exchange_ratio_status` says why (the optimizer's status
@@ -103,6 +108,8 @@ const char* payoff_kind_name(int ip1);
 const char* payoff_unit(int ip1);
 // "initial_nominal", "guidance", "optimization", "final_guidance".
 const char* run_kind_name(RunKind kind);
+// JSON spelling of how the optimization phase ended (docs/cli.md "optimization_stop").
+const char* optimization_stop_name(OptimizationStop stop);
 
 // The constraints after the payoff: the optimizer's list when it finished (data block 8 entries
 // 2 .. IB3(1), then the heating constraint 14 if it became active), with its achieved values and

@@ -58,4 +58,15 @@ struct OptimizationRun {
 // with the optimizer's status.
 void run_optimization(const Mission& mission, OptimizerObserver* observer, OptimizationRun* run);
 
+// The one rule of a case's success, for every command that runs the job (optimize, export;
+// docs/cli.md "Exit codes"): kOk when every computation the deck asks for succeeded (the
+// optimization converged; the exchange ratios, under IP(3), were computed; the linearized program,
+// under IP(7), meets every constraint and rate limit); otherwise the status of the first that
+// did not, in the job's order, with that computation's name.
+struct JobVerdict {
+  Status status = Status::kOk;
+  const char* failed_step = "";  // "optimization", "exchange ratios" or "linearization"
+};
+JobVerdict optimization_job_verdict(const OptimizationRun& run);
+
 }  // namespace tolip::ground

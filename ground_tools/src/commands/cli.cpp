@@ -133,9 +133,12 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
       "  tolip optimize examples/scout/mission.dat --csv final.csv\n"
       "  tolip optimize examples/scout/mission.toml --json > result.json\n"
       "  tolip plot result.json --out plots\n"
-      "Exit codes: 0 every case converged; 1 a case did not converge or\n"
-      "failed in the core (everything is still printed, with the best\n"
-      "trajectory found), or the CSV not written (nothing printed);\n"
+      "Exit codes: 0 every case converged and every computation its\n"
+      "deck asks for (exchange ratios, linearization) succeeded; 1 a case\n"
+      "did not converge (guidance never did, no optimization run, final\n"
+      "guidance failed), a later step failed, or the core failed\n"
+      "(everything is still printed, with the best trajectory found),\n"
+      "or the CSV not written (nothing printed);\n"
       "2 bad command line, deck, or a case the optimizer rejects\n"
       "(unsupported payoff, adjustable parameter or constraint code).\n"
       "Full reference: docs/cli.md, 'tolip optimize'.");
@@ -225,8 +228,9 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
       "The image is decoded again with the flight-side loader's checks\n"
       "before anything is written; each file goes to FILE.tmp.<pid> and is\n"
       "renamed over FILE.\n"
-      "Exit codes: 0 written; 1 prepare_case failed or a file could not\n"
-      "be written; 2 bad command line, deck, or a case the image cannot\n"
+      "Exit codes: 0 written; 1 prepare_case failed, the optimization\n"
+      "job failed (IP(7) = 1: the same rule as optimize), or a file could\n"
+      "not be written; 2 bad command line, deck, or a case the image cannot\n"
       "carry (the message names the data block).\n"
       "Full reference: docs/cli.md, 'tolip export'; docs/table-format.md.");
   export_command->add_option("DECK", export_options.deck_path,

@@ -92,13 +92,13 @@ int run_export_command(const ExportCommandOptions& options, std::ostream& out, s
   const LinearProgram* linearized = nullptr;
   if (mission->options.linearization()) {
     run_optimization(*mission, nullptr, &run);
-    const Status status = run.linearization.status;
-    if (!ok(status)) {
+    // The same rule as `optimize` (optimization_job_status): a case that optimize would not pass is
+    // not exported.
+    const JobVerdict verdict = optimization_job_verdict(run);
+    if (!ok(verdict.status)) {
       err << "tolip: " << options.deck_path << ": no table exported: the deck asks for the linearized pitch program "
-          << "(IP(7) = 1) and "
-          << (run.linearization.outcome == StepOutcome::kRun ? "the linearization did not succeed: "
-                                                              : "the optimization did not converge: ")
-          << status_name(status) << ": " << status_message(status) << '\n';
+          << "(IP(7) = 1) and its " << verdict.failed_step << " did not succeed: " << status_name(verdict.status)
+          << ": " << status_message(verdict.status) << '\n';
       return kExitFailure;
     }
     table_mission = &run.linearization.workspace->mission;

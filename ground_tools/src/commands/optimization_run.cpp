@@ -33,8 +33,9 @@ void run_optimization(const Mission& mission, OptimizerObserver* observer, Optim
   run->workspace->observer = observer;
   run->optimizer_status = optimize_trajectory(mission, run->workspace.get(), run->result.get());
   run->workspace->observer = nullptr;  // the observer need not outlive this call
+  // The optimizer's status is kOk exactly when it converged; otherwise it names the failed phase.
   const bool converged = ok(run->optimizer_status) && run->result->converged;
-  const Status why_skipped = ok(run->optimizer_status) ? Status::kOptimizerDidNotConverge : run->optimizer_status;
+  const Status why_skipped = converged ? Status::kOk : run->optimizer_status;
 
   // Exchange ratios (IP(3), Sec. 8) of the optimized case: they describe the optimum, not the
   // straight-segment program.
@@ -64,6 +65,17 @@ void run_optimization(const Mission& mission, OptimizerObserver* observer, Optim
       step.status = linearize_pitch_program(*run->workspace, step.workspace.get(), step.result.get());
     }
   }
+}
+
+JobVerdict optimization_job_verdict(const OptimizationRun& run) {
+  if (!ok(run.optimizer_status)) return {run.optimizer_status, "optimization"};
+  if (run.exchange_ratios.outcome != StepOutcome::kNotRequested && !ok(run.exchange_ratios.status)) {
+    return {run.exchange_ratios.status, "exchange ratios"};
+  }
+  if (run.linearization.outcome != StepOutcome::kNotRequested && !ok(run.linearization.status)) {
+    return {run.linearization.status, "linearization"};
+  }
+  return {};
 }
 
 }  // namespace tolip::ground

@@ -47,6 +47,7 @@ struct CaseOutput {
   std::ostream* listing = nullptr;
   nlohmann::ordered_json document;
   Status failure = Status::kOk;  // the status to report once stdout is written (kOk: none)
+  const char* failed_step = "";  // which computation of the job it belongs to
   bool stop = false;             // the command stops here, with nothing on stdout
 };
 
@@ -101,13 +102,8 @@ int optimize_case(const Deck& deck, const DeckCase& deck_case, OptimizerObserver
   // Performance exchange ratios (IP(3) = 1, manual Sec. 8; docs/theory/exchange-ratios.md).
   report.exchange_ratios_requested = run.exchange_ratios.outcome != StepOutcome::kNotRequested;
   report.exchange_ratio_status = run.exchange_ratios.status;
-  if (run.exchange_ratios.outcome == StepOutcome::kRun) {
-    if (ok(run.exchange_ratios.status)) {
-      report.exchange_ratios = run.exchange_ratios.ratios.get();
-    } else {
-      err << "tolip: " << output->prefix << "exchange ratios not computed: " << status_name(run.exchange_ratios.status)
-          << ": " << status_message(run.exchange_ratios.status) << '\n';
-    }
+  if (run.exchange_ratios.outcome == StepOutcome::kRun && ok(run.exchange_ratios.status)) {
+    report.exchange_ratios = run.exchange_ratios.ratios.get();
   }
   // The linearized pitch program (IP(7) = 1, manual Sec. 6, 10; docs/theory/linearization.md).
   report.linearization_requested = run.linearization.outcome != StepOutcome::kNotRequested;
@@ -120,13 +116,14 @@ int optimize_case(const Deck& deck, const DeckCase& deck_case, OptimizerObserver
     report.initial_nominal_point_mass = run.initial_nominal_6d.point_mass.get();
     report.initial_nominal_6d = run.initial_nominal_6d.body_dynamics.get();
   }
-  if (run.linearization.outcome == StepOutcome::kRun) {
-    report.linearization = run.linearization.result.get();
-    if (!ok(run.linearization.status)) {
-      err << "tolip: " << output->prefix << "linearization did not succeed: " << status_name(run.linearization.status)
-          << ": " << status_message(run.linearization.status) << '\n';
-    }
-  }
+  if (run.linearization.outcome == StepOutcome::kRun) report.linearization = run.linearization.result.get();
+
+  // The one rule of a case's success (optimization_job_verdict, shared with export): a trajectory or
+  // orbit failure, else the first computation the deck asks for that did not succeed.
+  JobVerdict verdict = optimization_job_verdict(run);
+  if (ok(optimizer_status) && !ok(report.status)) verdict = {report.status, "final trajectory"};
+  report.case_status = verdict.status;
+  report.case_failed_step = verdict.failed_step;
 
   if (!output->csv_path.empty()) {
     std::string write_error;
@@ -151,8 +148,9 @@ int optimize_case(const Deck& deck, const DeckCase& deck_case, OptimizerObserver
     write_optimization_listing(*output->listing, report);
   }
 
-  if (!ok(report.status) || !result->converged) {
-    output->failure = ok(report.status) ? Status::kOptimizerDidNotConverge : report.status;
+  if (!ok(report.case_status)) {
+    output->failure = report.case_status;
+    output->failed_step = verdict.failed_step;
     return kExitFailure;
   }
   return kExitOk;
@@ -191,7 +189,7 @@ int run_optimize_command(const OptimizeCommandOptions& options, std::ostream& ou
     if (options.json) documents.push_back(std::move(output.document));
     if (!ok(output.failure)) {
       std::ostringstream line;
-      print_status(line, output.failure, output.prefix);
+      print_status(line, output.failure, output.prefix + output.failed_step + ": ");
       failures.push_back(line.str());
     }
     exit_code = std::max(exit_code, case_exit);

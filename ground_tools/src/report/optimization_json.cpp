@@ -247,6 +247,15 @@ json optimization_json(const OptimizationReport& report) {
 
   json additions = json::object();
   additions["converged"] = result.converged;
+  additions["optimization_stop"] = optimization_stop_name(result.optimization_stop);
+  additions["guidance_runs"] = result.guidance_runs;
+  additions["optimization_runs"] = result.optimization_runs;
+  additions["successful_optimization_runs"] = result.successful_optimization_runs;
+  additions["final_guidance_met"] = result.final_guidance_met;
+  additions["initial_payoff_improvement"] = number(result.initial_payoff_improvement);
+  additions["initial_improvement_from_da13_1"] = result.initial_improvement_from_da13_1;
+  additions["case_status"] = status_name(report.case_status);
+  additions["case_failed_step"] = report.case_failed_step;
   additions["forward_runs"] = result.forward_runs;
   additions["backward_runs"] = result.backward_runs;
   additions["payoff"] = payoff_json(payoff_summary(report));

@@ -181,6 +181,16 @@ std::string upper(const char* text) {
   return out;
 }
 
+// Sec. 22's two stopping rules of the optimization phase, as the summary prints them.
+const char* optimization_stop_text(OptimizationStop stop) {
+  switch (stop) {
+    case OptimizationStop::kNotReached: return "NOT REACHED";
+    case OptimizationStop::kImprovementBelowMinimum: return "ATTEMPT BELOW DA13(2)";
+    case OptimizationStop::kForwardRunBudget: return "RUN BUDGET DA13(3)";
+  }
+  return "UNKNOWN";
+}
+
 const char* run_kind_heading(RunKind kind) {
   switch (kind) {
     case RunKind::kInitialNominal: return "INITIAL NOMINAL";
@@ -338,10 +348,20 @@ void write_summary(Pager& pager, const OptimizationReport& report,
     return text;
   };
 
-  pager.reserve(12);
+  pager.reserve(16);
   pager.emit(" OPTIMIZATION SUMMARY");
   pager.emit(labelled("STATUS", status_name(report.status), ""));
   pager.emit(labelled("CONVERGED", result.converged ? "YES" : "NO", ""));
+  pager.emit(labelled("OPTIMIZATION ENDED BY", optimization_stop_text(result.optimization_stop), ""));
+  pager.emit(labelled("GUIDANCE RUNS", std::to_string(result.guidance_runs), ""));
+  pager.emit(labelled(result.initial_improvement_from_da13_1 ? "FIRST ATTEMPT (DA13(1))" : "FIRST ATTEMPT (EQ. 5-34)",
+                      trimmed(number_cell(result.initial_payoff_improvement, 4, 20)), payoff_heading));
+  pager.emit(labelled("OPTIMIZATION RUNS", std::to_string(result.optimization_runs) + " (" +
+                      std::to_string(result.successful_optimization_runs) + " SUCCESSFUL)", ""));
+  pager.emit(labelled("FINAL GUIDANCE RUN", result.final_guidance_met ? "MET EVERY DEADBAND" : "FAILED", ""));
+  pager.emit(labelled("CASE RESULT", ok(report.case_status) ? std::string("kOk")
+                                                          : report.case_failed_step + ": " + status_name(report.case_status),
+                      ""));
   pager.emit(labelled("FORWARD RUNS", std::to_string(result.forward_runs), ""));
   pager.emit(labelled("BACKWARD RUNS", std::to_string(result.backward_runs), ""));
   pager.emit(labelled("PAYOFF (" + upper(payoff_kind_name(ip1)) + ")", trimmed(number_cell(payoff, 4, 20)),
@@ -561,6 +581,15 @@ const char* run_kind_name(RunKind kind) {
     case RunKind::kGuidance: return "guidance";
     case RunKind::kOptimization: return "optimization";
     case RunKind::kFinalGuidance: return "final_guidance";
+  }
+  return "unknown";
+}
+
+const char* optimization_stop_name(OptimizationStop stop) {
+  switch (stop) {
+    case OptimizationStop::kNotReached: return "not_reached";
+    case OptimizationStop::kImprovementBelowMinimum: return "improvement_below_minimum";
+    case OptimizationStop::kForwardRunBudget: return "forward_run_budget";
   }
   return "unknown";
 }

@@ -52,7 +52,10 @@ enum class Status : int {
   kTrajectoryStorageFull,
   kControlProgramSizeMismatch,
   kSteeringMatrixSingular,
-  kOptimizerDidNotConverge,
+  // The optimizer did not converge (Sec. 22 sequence): which phase failed.
+  kGuidanceDidNotConverge,
+  kOptimizationNotStarted,
+  kFinalGuidanceFailed,
   kLinearizationDidNotConverge,
   kAdjustableParameterNotSupported,
   kPayoffNotSupported,

@@ -39,9 +39,32 @@ struct IterationRecord {
   double payoff_partials[kMaxConstraints] = {};
 };
 
+// Why the optimization phase ended (Sec. 22: "either until the attempted payoff improvement is
+// smaller than a specified magnitude or until the count of forward trajectories is within one of
+// a specified limit").
+enum class OptimizationStop : int {
+  kNotReached,               // no optimization run was made
+  kImprovementBelowMinimum,  // the attempted payoff improvement fell under DA13(2)
+  kForwardRunBudget,         // the forward-run count came within one of DA13(3)
+};
+
 struct OptimizerResult {
-  Status status = Status::kNotPrepared;  // kOk when the final trajectory meets every deadband
+  // kOk only when converged; otherwise the phase that failed (kGuidanceDidNotConverge,
+  // kOptimizationNotStarted, kFinalGuidanceFailed) or the core failure that stopped a run.
+  Status status = Status::kNotPrepared;
+  // Sec. 22's sequence ran to its end: a guidance run met every deadband, at least one optimization
+  // run was made, the optimization phase ended by one of its two stopping rules, and the final
+  // guidance run met every deadband. The reported trajectory is then that final guidance run.
   bool converged = false;
+  OptimizationStop optimization_stop = OptimizationStop::kNotReached;
+  int guidance_runs = 0;                // forward guidance runs before the optimization phase
+  int optimization_runs = 0;            // forward optimization runs (successful or not)
+  int successful_optimization_runs = 0;
+  bool final_guidance_met = false;      // the final forward guidance run met every deadband
+  // The first attempted payoff improvement (payoff units): from dP^2 (eqs. 5-31..5-34), or DA13(1)
+  // when that computation fails (`initial_improvement_from_da13_1`). 0 when never computed.
+  double initial_payoff_improvement = 0.0;
+  bool initial_improvement_from_da13_1 = false;
   int forward_runs = 0;
   int backward_runs = 0;
   int constraint_count = 0;

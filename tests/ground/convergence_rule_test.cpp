@@ -1,0 +1,130 @@
+// The one rule of a case's success (issue 10 part 1; manual Sec. 22 "Sequence of Trajectory
+// Iterations During Optimization"): `converged` only when guidance succeeded, at least one
+// optimization run was made, the optimization phase ended by one of its two stopping rules and the
+// final guidance run met every deadband; and `optimize` and `export` apply the same rule to the
+// linearization the deck asks for. Each deck is the bundled example with one field changed.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "cli_runner.hpp"
+
+namespace tolip::test {
+namespace {
+
+std::string mission_deck() { return std::string(TOLIP_EXAMPLES_DIR) + "/scout/mission.toml"; }
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+// The example deck with each `from` replaced by its `to` (each must occur), in the scratch folder.
+std::string edited_deck(const ScratchDirectory& scratch, const std::string& name,
+                        const std::vector<std::pair<std::string, std::string>>& edits) {
+  std::string text = read_text_file(mission_deck());
+  for (const auto& [from, to] : edits) {
+    const std::size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at == std::string::npos) return {};
+    text.replace(at, from.size(), to);
+  }
+  const std::string path = (scratch / name).string();
+  std::ofstream(path) << text;
+  return path;
+}
+
+void expect_every_constraint_met(const nlohmann::json& document) {
+  ASSERT_TRUE(document["constraints"].is_array());
+  for (const nlohmann::json& c : document["constraints"]) EXPECT_EQ(c["met"], true) << c["code"];
+}
+
+TEST(Sec22Convergence, TheExampleConvergesByTheMinimumImprovementRule) {
+  const CommandResult run = run_tolip_executable({"optimize", mission_deck(), "--json"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const nlohmann::json d = nlohmann::json::parse(run.out);
+  EXPECT_EQ(d["converged"], true);
+  EXPECT_EQ(d["status"], "kOk");
+  EXPECT_EQ(d["case_status"], "kOk");
+  EXPECT_EQ(d["optimization_stop"], "improvement_below_minimum");
+  EXPECT_GT(d["successful_optimization_runs"].get<int>(), 0);
+  EXPECT_EQ(d["final_guidance_met"], true);
+  // Every forward run is the initial nominal, a guidance, an optimization or the final guidance run.
+  EXPECT_EQ(d["forward_runs"].get<int>(), 1 + d["guidance_runs"].get<int>() + d["optimization_runs"].get<int>() + 1);
+  expect_every_constraint_met(d);
+}
+
+// Guidance succeeds, but a stopping magnitude DA13(2) larger than any attempt leaves the
+// optimization phase without a run: feasible, not optimized, and not converged (before issue 10
+// this printed CONVERGED YES and exited 0).
+TEST(Sec22Convergence, NoOptimizationRunIsNotConvergedButReportsTheFeasibleTrajectory) {
+  ScratchDirectory scratch("convergence_not_started");
+  const std::string deck =
+      edited_deck(scratch, "not_started.toml", {{"stop_improvement = 0.5", "stop_improvement = 1000000.0"}});
+  const CommandResult run = run_tolip_executable({"optimize", deck, "--json"});
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_TRUE(contains(run.err, "tolip: optimization: kOptimizationNotStarted: ")) << run.err;
+  const nlohmann::json d = nlohmann::json::parse(run.out);
+  EXPECT_EQ(d["converged"], false);
+  EXPECT_EQ(d["status"], "kOptimizationNotStarted");
+  EXPECT_EQ(d["optimization_runs"].get<int>(), 0);
+  EXPECT_EQ(d["optimization_stop"], "not_reached");
+  EXPECT_FALSE(d["trajectory"].empty());
+  expect_every_constraint_met(d);  // the best feasible trajectory is still reported
+
+  const CommandResult listing = run_tolip_executable({"optimize", deck});
+  EXPECT_EQ(listing.exit_code, 1);
+  EXPECT_TRUE(std::regex_search(listing.out, std::regex("\n   CONVERGED +=  +NO\n")));
+  EXPECT_TRUE(std::regex_search(listing.out, std::regex("\n   OPTIMIZATION ENDED BY +=  +NOT REACHED\n")));
+  EXPECT_TRUE(std::regex_search(listing.out, std::regex("\n   CASE RESULT += +optimization: kOptimizationNotStarted\n")));
+}
+
+// Sec. 22: "either until the attempted payoff improvement is smaller than a specified magnitude or
+// until the count of forward trajectories is within one of a specified limit. In either case, the
+// sequence is then ended with a backward and a final forward guidance trajectory."
+TEST(Sec22Convergence, TheForwardRunBudgetIsTheOtherStoppingRule) {
+  ScratchDirectory scratch("convergence_budget");
+  const CommandResult full = run_tolip_executable({"optimize", mission_deck(), "--json"});
+  ASSERT_EQ(full.exit_code, 0) << full.err;
+  const nlohmann::json f = nlohmann::json::parse(full.out);
+  // A budget that leaves room for two optimization runs after the example's guidance runs.
+  const int budget = 1 + f["guidance_runs"].get<int>() + 2 + 1;
+  ASSERT_LT(budget, f["forward_runs"].get<int>());
+  const std::string deck = edited_deck(
+      scratch, "budget.toml", {{"max_forward_trajectories = 30", "max_forward_trajectories = " + std::to_string(budget)}});
+  const CommandResult run = run_tolip_executable({"optimize", deck, "--json"});
+  const nlohmann::json d = nlohmann::json::parse(run.out);
+  EXPECT_EQ(d["optimization_stop"], "forward_run_budget");
+  EXPECT_EQ(d["optimization_runs"].get<int>(), 2);
+  EXPECT_EQ(d["forward_runs"].get<int>(), budget);
+  EXPECT_EQ(run.exit_code, d["final_guidance_met"] == true ? 0 : 1) << run.err;
+  EXPECT_EQ(d["converged"], d["final_guidance_met"]);
+}
+
+// Sec. 10: a linearization that does not meet its constraints and rate limits in DA13(4) forward
+// runs fails `optimize` (exit 1, naming the step) exactly as it stops `export` (before issue 10
+// optimize exited 0 on this deck while export exited 1).
+TEST(Sec10Convergence, AFailedLinearizationFailsOptimizeAndExportAlike) {
+  ScratchDirectory scratch("convergence_linearization");
+  const std::string deck = edited_deck(
+      scratch, "one_linear_run.toml", {{"max_linearization_iterations = 4", "max_linearization_iterations = 1"}});
+  const CommandResult run = run_tolip_executable({"optimize", deck, "--json"});
+  EXPECT_EQ(run.exit_code, 1) << run.err;
+  EXPECT_TRUE(contains(run.err, "tolip: linearization: kLinearizationDidNotConverge: ")) << run.err;
+  const nlohmann::json d = nlohmann::json::parse(run.out);
+  EXPECT_EQ(d["converged"], true);  // the optimization itself did converge
+  EXPECT_EQ(d["case_status"], "kLinearizationDidNotConverge");
+  EXPECT_EQ(d["case_failed_step"], "linearization");
+
+  const std::string image = (scratch / "table.bin").string();
+  const CommandResult exported = run_tolip_executable({"export", deck, "--out", image});
+  EXPECT_EQ(exported.exit_code, 1);
+  EXPECT_TRUE(contains(exported.err, "linearization did not succeed: kLinearizationDidNotConverge")) << exported.err;
+  EXPECT_FALSE(std::filesystem::exists(image));
+}
+
+}  // namespace
+}  // namespace tolip::test
