@@ -402,7 +402,7 @@ def mission_sections(deck, ref, variant):
     for i, code in enumerate(adjustable):
         deck.array_table("adjustable_parameter", "block 6 IB1(%d)" % (i + 2))
         deck.number("code", code)
-        deck.number("weight", mission["weighting_block27"][WEIGHT_KEYS[code]], "block 27 DA12(%d)" % (i + 1))
+        deck.number("weight", mission["weighting_block27"][WEIGHT_KEYS[code]], "block 27 DA12(%d)" % code)
 
     pitch = mission["pitch_program_definition"]
     tlin = pitch["tlin_block18"]
@@ -898,7 +898,8 @@ def card_words(deck):
         for i, entry in enumerate(parameters):
             opt.set(6, 0, i + 2, entry["code"])
             if "weight" in entry:
-                opt.set(27, 0, i + 1, entry["weight"])
+                # Data block 27 by code number (Sec. 22): DA12(k) weights code k.
+                opt.set(27, 0, entry["code"], entry["weight"])
     if "linearization" in deck:
         times = deck["linearization"]["coded_times"]
         opt.set(18, 0, 1, len(times) - 1)

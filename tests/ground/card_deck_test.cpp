@@ -57,7 +57,7 @@ const char* const kVehicleCards = R"(  5  1  2     STAGE SEQUENCE
           2.      2373.5
  21  1  6
          10.      -75.48         37.          0.        100.         90.
- 27  1  1
+ 27  6  6     WEIGHT OF ADJUSTABLE PARAMETER CODE 6 (BY CODE NUMBER)
           2.
  30  1  6  1  THRUST, STAGE 1
           0.      10000.          5.      10000.         10.      10000.
@@ -445,12 +445,47 @@ TEST(CardDeckErrors, LetterInAnIntegerField) {
       << message;
 }
 
+// Sec. 22, data block 27: DA12(1)...DA12(11) weight the adjustable parameters "identified by code
+// number as listed for Data Block 6": word k weights code k, unused words blank or zero.
+TEST(CardDeck, Sec22_Block27WeightsAreByCodeNumber) {
+  // Codes 1 and 3 (stage-4 theta, coast after stage 3) with the manual's layout: DA12(1), DA12(3).
+  const std::string scout = read_text_file(example_path("scout/mission.dat"));
+  ASSERT_TRUE(contains(scout, " 27  1  1     OPTIMIZATION PARAMETER WEIGHTS DA12\n         10.\n"
+                              " 27  3  3     OPTIMIZATION PARAMETER WEIGHTS DA12\n       .0001\n"));
+  const Parsed manual = parse(scout);
+  ASSERT_TRUE(manual.ok) << manual.error.to_string();
+  const AdjustableParameters& a = manual.deck.cases[0].mission->adjustable;
+  ASSERT_EQ(a.count, 2);
+  EXPECT_EQ(a.codes[0], 1);
+  EXPECT_EQ(a.weights[0], 10.0);
+  EXPECT_EQ(a.codes[1], 3);
+  EXPECT_EQ(a.weights[1], 1e-4);
+  // One card with the unused word 2 blank is the same deck.
+  const Parsed blank_word = parse(replaced(scout,
+                                           " 27  1  1     OPTIMIZATION PARAMETER WEIGHTS DA12\n         10.\n"
+                                           " 27  3  3     OPTIMIZATION PARAMETER WEIGHTS DA12\n       .0001\n",
+                                           " 27  1  3\n         10.                   .0001\n"));
+  ASSERT_TRUE(blank_word.ok) << blank_word.error.to_string();
+  EXPECT_EQ(blank_word.deck.cases[0].mission->adjustable.weights[1], 1e-4);
+
+  // The positional layout (weights in block 6's order, as tolip 0.1.0's convert wrote them) puts a
+  // weight in the word of code 2, which block 6 does not select: rejected, naming the word.
+  const std::string positional = replaced(scout,
+                                          " 27  1  1     OPTIMIZATION PARAMETER WEIGHTS DA12\n         10.\n"
+                                          " 27  3  3     OPTIMIZATION PARAMETER WEIGHTS DA12\n       .0001\n",
+                                          " 27  1  2\n         10.       .0001\n");
+  const std::string message = rejection(positional);
+  EXPECT_TRUE(contains(message, "data block 27, word 2: DA12(2) = 1e-04 weights adjustable parameter code 2, which "
+                                "data block 6 does not select: block 27 words are by code number"))
+      << message;
+}
+
 TEST(CardDeckErrors, UnknownAndUndefinedBlocks) {
-  EXPECT_TRUE(contains(rejection(edited(deck_text(), " 27  1  1\n", " 57  1  1\n")),
+  EXPECT_TRUE(contains(rejection(edited(deck_text(), " 27  6  6 ", " 57  1  1 ")),
                        "card 21, columns 1-3: case 1, data block 57: unknown data block 57: expected 1-55"));
-  EXPECT_TRUE(contains(rejection(edited(deck_text(), " 27  1  1\n", "  7  1  1\n")),
+  EXPECT_TRUE(contains(rejection(edited(deck_text(), " 27  6  6 ", "  7  1  1 ")),
                        "data block 7 is not defined in the manual (blocks 7, 24 and 25 are not used)"));
-  const std::string message = rejection(edited(deck_text(), " 27  1  1\n", " 45  1  1\n"));
+  const std::string message = rejection(edited(deck_text(), " 27  6  6 ", " 45  1  1 "));
   EXPECT_TRUE(contains(message, "data block 45 (HARDOVER DATA) belongs to the hardover data (IP(22)), not to the "
                                 "optimization data"))
       << message;

@@ -328,7 +328,7 @@ std::string word_description(int block, int stage, int word) {
       return kWords[word - 1];
     }
     case 26: return numbered("WEIGHT OF LINEAR SEGMENT", word);
-    case 27: return numbered("WEIGHT OF ADJUSTABLE PARAMETER", word);
+    case 27: return numbered("WEIGHT OF ADJUSTABLE PARAMETER CODE", word);
     case 28: {
       static const char* const kWords[] = {"INITIAL PAYOFF IMPROVEMENT", "STOP IMPROVEMENT", "MAX FORWARD TRAJECTORIES",
                                            "MAX LINEARIZATION ITERATIONS", "", ""};

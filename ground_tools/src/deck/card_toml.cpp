@@ -596,6 +596,11 @@ class Builder {
     if (count < 0 || count > kMaxAdjustableParameters) {
       fail(count_ref, "IB1(1) = " + str(count) + " adjustable parameters: expected 0-11 (codes in words 2-12)");
     }
+    // Data block 27 is by code number (Sec. 22: DA12(1)-DA12(11) "for adjustable parameters
+    // identified by code number as listed for Data Block 6"; the nomenclature's ST2(23)-(25) =
+    // DA12(3)-(5) and ST2(30)-(31) = DA12(10)-(11) are the coast codes): word k weights code k, and
+    // the words of unselected codes are blank or zero.
+    bool selected[kMaxAdjustableParameters + 1] = {};
     for (int i = 0; i < count; ++i) {
       const std::string path = "adjustable_parameter[" + str(i) + "]";
       const WordRef code_ref = ref_in(opt(), 6, 0, i + 2);
@@ -603,16 +608,33 @@ class Builder {
       if (code_word == nullptr) {
         fail(code_ref, "word " + str(i + 2) + " not given: IB1(1) = " + str(count) + " needs a parameter code here");
       }
+      const double code_value = code_word->number;
+      if (!(code_value >= 1.0 && code_value <= kMaxAdjustableParameters) || code_value != std::floor(code_value)) {
+        fail(code_ref, "IB1(" + str(i + 2) + ") = " + deck_detail::format_number(code_value) +
+                           ": an adjustable parameter code is a whole number 1-11 (Sec. 22, data block 6)");
+      }
+      const int code = static_cast<int>(code_value);
+      if (selected[code]) fail(code_ref, "IB1(" + str(i + 2) + ") = " + str(code) + ": code selected twice in data block 6");
+      selected[code] = true;
       blank();
       line(located_ ? "[[adjustable_parameter]]" : "[[adjustable_parameter]]  # " + note(code_ref), code_ref);
       remember(path, code_ref);
-      scalar(path, "code", toml_integer(code_word->number), code_ref);
-      const WordRef weight_ref = ref_in(opt(), 27, 0, i + 1);
-      if (const Word* weight = given(opt(), 27, 0, i + 1)) {
+      scalar(path, "code", toml_integer(code_value), code_ref);
+      const WordRef weight_ref = ref_in(opt(), 27, 0, code);
+      if (const Word* weight = given(opt(), 27, 0, code)) {
         scalar(path, "weight", toml_number(weight->number), weight_ref);
       } else {
         remember(path + ".weight", weight_ref);
       }
+    }
+    for (int code = 1; code <= kMaxAdjustableParameters; ++code) {
+      const Word* weight = given(opt(), 27, 0, code);
+      if (selected[code] || weight == nullptr || weight->number == 0.0) continue;
+      fail(ref_in(opt(), 27, 0, code),
+           "DA12(" + str(code) + ") = " + deck_detail::format_number(weight->number) + " weights adjustable parameter code " +
+               str(code) + ", which data block 6 does not select: block 27 words are by code number (Sec. 22: word k "
+               "weights code k; the words of unselected codes are blank or zero). Decks written by tolip 0.1.0's convert "
+               "put the weights in block 6's order instead: move each weight to the word of its code");
     }
   }
 

@@ -251,8 +251,14 @@ class FromToml {
     for (std::size_t i = 0; i < entries->size(); ++i) {
       const toml::table* entry = table_of(entries->get(i));
       if (entry == nullptr) continue;
-      set(opt(), 6, 0, static_cast<int>(i) + 2, number_of(entry->get("code")));
-      if (const toml::node* weight = entry->get("weight")) set(opt(), 27, 0, static_cast<int>(i) + 1, number_of(weight));
+      const double code = number_of(entry->get("code"));
+      set(opt(), 6, 0, static_cast<int>(i) + 2, code);
+      // Data block 27 by code number (Sec. 22): DA12(k) weights code k. A code the TOML reader
+      // would reject has no word of its own; the read-back of the cards reports it.
+      const toml::node* weight = entry->get("weight");
+      if (weight != nullptr && code >= 1.0 && code <= kMaxAdjustableParameters && code == std::floor(code)) {
+        set(opt(), 27, 0, static_cast<int>(code), number_of(weight));
+      }
     }
   }
 
