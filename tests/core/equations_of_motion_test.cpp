@@ -5,6 +5,7 @@
 #include <cmath>
 #include <random>
 
+#include "support/cartesian_model.hpp"
 #include "support/reference_data.hpp"
 #include "tolip/dynamics/equations_of_motion.hpp"
 #include "tolip/earth/earth_model.hpp"
@@ -13,53 +14,16 @@
 namespace tolip {
 namespace {
 
+using test::Cartesian;
+using test::from_cartesian;
+using test::j2_acceleration;
+using test::to_cartesian;
+
 Matrix3 json_to_matrix(const nlohmann::json& j) {
   Matrix3 m;
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c) m(r, c) = j[r][c].get<double>();
   return m;
-}
-
-// ---- Independent Cartesian model -------------------------------------------------------------
-struct Cartesian {
-  Vector3 r;  // inertial position (x through Greenwich at lift-off, z north)
-  Vector3 v;  // inertial velocity
-};
-
-Cartesian to_cartesian(const Constants& k, const StateVector& x) {
-  const double g = x[1], p = x[3], l = x[4], t = x[5];
-  const Vector3 up(std::cos(l) * std::cos(t), std::cos(l) * std::sin(t), std::sin(l));
-  const Vector3 east(-std::sin(t), std::cos(t), 0.0);
-  const Vector3 north = up.cross(east);
-  const Vector3 v_rel = x[0] * (std::cos(g) * (std::cos(p) * north + std::sin(p) * east) + std::sin(g) * up);
-  Cartesian c;
-  c.r = x[2] * up;
-  c.v = v_rel + Vector3(0.0, 0.0, k.earth_rotation_rate_rad_s).cross(c.r);
-  return c;
-}
-
-StateVector from_cartesian(const Constants& k, const Cartesian& c) {
-  const double r = c.r.norm();
-  const double l = std::asin(c.r.z() / r);
-  const double t = std::atan2(c.r.y(), c.r.x());
-  const Vector3 up = c.r / r;
-  const Vector3 east(-std::sin(t), std::cos(t), 0.0);
-  const Vector3 north = up.cross(east);
-  const Vector3 v_rel = c.v - Vector3(0.0, 0.0, k.earth_rotation_rate_rad_s).cross(c.r);
-  StateVector x;
-  x << v_rel.norm(), std::asin(v_rel.dot(up) / v_rel.norm()), r,
-      std::atan2(v_rel.dot(east), v_rel.dot(north)), l, t;
-  return x;
-}
-
-// Gradient of U = mu/r [1 - J2/2 (re/r)^2 (3 sin^2(lat) - 1)], the textbook Cartesian J2 form.
-Vector3 j2_acceleration(const Constants& k, const Vector3& r) {
-  const double rn = r.norm();
-  const double f = 1.5 * k.j2 * std::pow(k.earth_equatorial_radius_ft / rn, 2);
-  const double z2 = std::pow(r.z() / rn, 2);
-  const double m = -k.gravitational_parameter_ft3_s2 / std::pow(rn, 3);
-  return Vector3(m * r.x() * (1.0 - f * (5.0 * z2 - 1.0)), m * r.y() * (1.0 - f * (5.0 * z2 - 1.0)),
-                 m * r.z() * (1.0 - f * (5.0 * z2 - 3.0)));
 }
 
 // dX/dt by a central difference of the Cartesian-to-state map along (v, a): exact to O(h^2).

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "tolip/atmosphere/atmosphere.hpp"
+#include "tolip/dynamics/vertical_flight.hpp"
 #include "tolip/earth/earth_model.hpp"
 #include "tolip/optimizer/constraint_parameters.hpp"
 #include "tolip/trajectory/flight_dynamics.hpp"
@@ -21,6 +22,9 @@ using MassRow = Eigen::Matrix<double, 1, kMaxConstraints>;
 // backward run is the optimizer's main cost; one-sided differences halve it, and the adjoint
 // predictions still agree with central differences of forward runs to 3e-4, see the tests.)
 constexpr double kStateStep[6] = {1e-4, 1e-8, 0.1, 1e-8, 1e-8, 1e-8};
+// The same in the regular coordinates of a near-vertical step [v_up, v_N, r, v_E, lambda, tau]
+// (tolip/dynamics/vertical_flight.hpp).
+constexpr double kVerticalStep[6] = {1e-4, 1e-4, 0.1, 1e-4, 1e-8, 1e-8};
 constexpr double kWeightStepLb = 1e-4;
 constexpr double kAngleStepRad = 1e-8;
 
@@ -42,13 +46,19 @@ class Linearizer {
   Linearizer(const Mission& mission, const PreparedCase& prepared)
       : mission_(mission), prepared_(prepared) {}
 
+  // The psi of a vertical-flight step's first point (tolip/dynamics/vertical_flight.hpp).
+  void set_heading_reference(double heading_rad) { heading_reference_rad_ = heading_rad; }
+
+  // `x` is the state, or for a vertical-flight step its regular coordinates (and f, df_dx and the
+  // other partials are then those of their derivative).
   void linearize(const StageContext& stage, const StepCommand& command, double t,
                  const StateVector& x, Linearization* out) const {
     out->f = f(stage, command, t, x, 0.0);
+    const double* steps = command.vertical_flight ? kVerticalStep : kStateStep;
     for (int i = 0; i < 6; ++i) {
       StateVector xp = x;
-      xp[i] += kStateStep[i];
-      out->df_dx.col(i) = (f(stage, command, t, xp, 0.0) - out->f) / kStateStep[i];
+      xp[i] += steps[i];
+      out->df_dx.col(i) = (f(stage, command, t, xp, 0.0) - out->f) / steps[i];
     }
     // Without thrust and aerodynamics the mass and the attitude act on nothing.
     const bool forces_depend_on_attitude = stage.thrust != nullptr || stage.data->uses_lift_table;
@@ -99,12 +109,18 @@ class Linearizer {
   StateVector f(const StageContext& stage, const StepCommand& command, double t, const StateVector& x,
                 double weight_offset_lb) const {
     Evaluation e;
+    if (command.vertical_flight) {
+      const StateVector state = from_vertical_coordinates(x, heading_reference_rad_);
+      evaluate_flight(mission_, prepared_, stage, command, t, state, weight_offset_lb, &e);
+      return vertical_derivative(state, e.derivative);
+    }
     evaluate_flight(mission_, prepared_, stage, command, t, x, weight_offset_lb, &e);
     return e.derivative;
   }
 
   const Mission& mission_;
   const PreparedCase& prepared_;
+  double heading_reference_rad_ = 0.0;
 };
 
 // Adjoint-weighted contributions of one derivative evaluation: the "a" vectors of the reverse RK4
@@ -224,7 +240,17 @@ void BackwardSweep::rk4_step(const StepRecord& step) {
   const StepCommand& command = step.command;
   const double t = command.step_start_s;
   const double h = command.step_s;
-  const StateVector& y0 = trajectory_.points[step.point].state;
+  const int n = count_;
+  // A vertical-flight step is swept in its regular coordinates: the adjoint of the end state
+  // becomes theirs on the way in and the start state's on the way out (chain rule through the
+  // conversions; tolip/dynamics/vertical_flight.hpp).
+  const StateVector& x0 = trajectory_.points[step.point].state;
+  const StateVector y0 = command.vertical_flight ? to_vertical_coordinates(x0) : x0;
+  if (command.vertical_flight) {
+    linearizer_.set_heading_reference(x0[kStatePsi]);
+    const StateVector& x1 = trajectory_.points[step.point + 1].state;
+    state_.leftCols(n) = state_jacobian_from_vertical(x1).transpose() * state_.leftCols(n);
+  }
 
   Linearization l1, l2, l3, l4;
   linearizer_.linearize(stage, command, t, y0, &l1);
@@ -233,7 +259,6 @@ void BackwardSweep::rk4_step(const StepRecord& step) {
   linearizer_.linearize(stage, command, t + h, StateVector(y0 + h * l3.f), &l4);
 
   // Reverse sweep of y1 = y0 + h/6 (k1 + 2 k2 + 2 k3 + k4).
-  const int n = count_;
   StateRows a4 = StateRows::Zero(), a3 = StateRows::Zero(), a2 = StateRows::Zero(), a1 = StateRows::Zero();
   a4.leftCols(n) = (h / 6.0) * state_.leftCols(n);
   a3.leftCols(n) = (h / 3.0) * state_.leftCols(n) + h * l4.df_dx.transpose() * a4.leftCols(n);
@@ -250,6 +275,7 @@ void BackwardSweep::rk4_step(const StepRecord& step) {
   accumulate(l3, a3, n, &c3);
   accumulate(l4, a4, n, &c4);
   state_.leftCols(n) += c1.state.leftCols(n) + c2.state.leftCols(n) + c3.state.leftCols(n) + c4.state.leftCols(n);
+  if (command.vertical_flight) state_.leftCols(n) = vertical_jacobian(x0).transpose() * state_.leftCols(n);
   mass_.leftCols(n) += c1.mass.leftCols(n) + c2.mass.leftCols(n) + c3.mass.leftCols(n) + c4.mass.leftCols(n);
   if (command.mode == AttitudeMode::kHeld) out_->spun_chi.head(n) += c1.chi.head(n) + c2.chi.head(n) + c3.chi.head(n) + c4.chi.head(n);
   // theta(t) = theta_start + fraction (theta_end - theta_start), fraction 0, 1/2, 1/2, 1.

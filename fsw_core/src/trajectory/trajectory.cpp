@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "tolip/dynamics/vertical_flight.hpp"
 #include "tolip/earth/earth_model.hpp"
 #include "tolip/frames/frames.hpp"
 #include "tolip/integrator/rkad.hpp"
@@ -275,6 +276,11 @@ Status Flight::fly_stage(int slot, StateVector* state) {
     step.point = point;
     step.stage_slot = slot;
     step.adams = !powered && i >= kRkadStartSteps;
+    // Near the vertical a deck without the heading hold (the manual's decks) integrates the step in
+    // regular coordinates; with the hold the steps are the reference oracle's, bit for bit.
+    command.vertical_flight = !step.adams && !(mission_.launch.heading_hold_until_s > 0.0) &&
+                              starts_near_vertical(*state);
+    const double heading_reference_rad = (*state)[kStatePsi];
     step.command = command;
 
     const auto derivative = [&](double time, const StateVector& x) {
@@ -282,7 +288,15 @@ Status Flight::fly_stage(int slot, StateVector* state) {
       evaluate_flight(mission_, prepared_, stage, command, time, x, 0.0, &e);
       return e.derivative;
     };
-    if (!step.adams) {
+    if (command.vertical_flight) {
+      const auto vertical = [&](double time, const StateVector& y) {
+        const StateVector x = from_vertical_coordinates(y, heading_reference_rad);
+        return vertical_derivative(x, derivative(time, x));
+      };
+      const StateVector y1 = runge_kutta4_step(vertical, t, to_vertical_coordinates(*state),
+                                               vertical_derivative(*state, eval.derivative), line.step_s);
+      *state = from_vertical_coordinates(y1, heading_reference_rad);
+    } else if (!step.adams) {
       *state = runge_kutta4_step(derivative, t, *state, eval.derivative, line.step_s);
     } else {
       *state = adams_bashforth4_step(*state, eval.derivative, history.back(0), history.back(1),

@@ -40,6 +40,11 @@ struct StepCommand {
   double step_start_s = 0.0;  // time from launch
   double step_s = 1.0;
   bool heading_hold = false;  // dpsi/dt held at 0
+  // The step starts within 5 deg of the vertical and is integrated in the regular coordinates of
+  // tolip/dynamics/vertical_flight.hpp, with the psi of its first point as the heading reference
+  // (a Runge-Kutta step of a deck without the heading hold). Set by fly_trajectory(); no effect on
+  // evaluate_flight.
+  bool vertical_flight = false;
   // Body dynamics (6D, Sec. 7, 11): the attitude above is the autopilot's command theta_c (its rate
   // theta_c-dot the step's (theta_end - theta_start) / step_s; 0 when held or zero-alpha); the
   // flown attitude is the steady state of eqs. 7-6/7-7 and the Sec. 11 normal forces replace the
