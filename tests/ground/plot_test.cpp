@@ -241,7 +241,8 @@ TEST(PlotCommand, MalformedJsonIsNamedAndNothingIsWritten) {
 
   plot = run_tolip_executable({"plot", (scratch / "absent.json").string(), "--out", out.string()});
   EXPECT_EQ(plot.exit_code, 2);
-  EXPECT_TRUE(contains(plot.err, "cannot read '" + (scratch / "absent.json").string() + "'")) << plot.err;
+  EXPECT_EQ(plot.err, "tolip: " + (scratch / "absent.json").string() +
+                          ": cannot open the result file: No such file or directory\n");
   EXPECT_FALSE(fs::exists(out));
 }
 
