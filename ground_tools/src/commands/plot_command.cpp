@@ -132,6 +132,7 @@ int run_plot_command(const PlotCommandOptions& options, std::ostream& out, std::
       return kExitBadInput;
     }
     figure_count += figures[d].figures.size();
+    for (const std::string& note : figures[d].notes) err << "tolip: " << where << ": " << note << '\n';
   }
   if (figure_count == 0) {
     err << "tolip: " << source << ": nothing to plot";
