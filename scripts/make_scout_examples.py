@@ -17,7 +17,10 @@ README.md) and writes, in the TOML deck format of docs/deck-format.md:
 * examples/scout/mission.dat -- mission.toml as a heritage card deck (80-column card images, the
   card format of docs/deck-format.md "The card deck"), punched from the TOML deck with the same
   rules as `tolip convert mission.toml --to mission.dat` (a test checks both agree and that the
-  card deck loads to the same case as mission.toml).
+  card deck loads to the same case as mission.toml);
+* examples/scout/cases.dat -- a card deck of two cases, as decks were stacked in 1966: mission.dat,
+  then a second case of its changed words only (a new case heading and a 260 lb initial payload,
+  data blocks 2 and 15), for docs/user-guide.md "decks of several cases".
 
 Every TOML number is written with repr(), i.e. the shortest text that reads back to the same
 double; a card field holds the shortest text of at most 12 columns that reads back to the same
@@ -1085,6 +1088,28 @@ def build_cards(toml_text):
     return "\n".join(punch.cards) + "\n"
 
 
+# The second case of cases.dat: its changed words only (blocks 2 and 15), everything else carried
+# over from the first case.
+SECOND_CASE_CARDS = [
+    "  2  1 12     CASE HEADING",
+    "SECOND CASE: INITIAL PAYLOAD 260 LB",
+    " 15  1  1     EXTENSIONS: PAYLOAD",
+    "        260.",
+]
+
+
+def build_two_cases(cards_text):
+    """The card deck of one case followed by SECOND_CASE_CARDS: the first case through its blank
+    card and its optional groups, then the second case's changes, its blank card and the optional
+    groups again, then the 999 card."""
+    cards = cards_text.rstrip("\n").split("\n")
+    if cards[-1] != "999":
+        raise ValueError("the card deck does not end with the 999 card")
+    end = next(i for i, card in enumerate(cards) if card.strip() == "")  # the blank card ending case 1
+    first, groups = cards[:end + 1], cards[end + 1:-1]
+    return "\n".join(first + groups + SECOND_CASE_CARDS + [""] + groups + ["999"]) + "\n"
+
+
 def main(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--reference", default=DEFAULT_REFERENCE, help="scout_reference.json")
@@ -1103,8 +1128,13 @@ def main(argv):
         print("wrote " + os.path.relpath(path, ROOT))
         if variant == "initial":
             path = os.path.join(args.out, "mission.dat")
+            cards = build_cards(text)
             with open(path, "w", encoding="ascii", newline="\n") as handle:
-                handle.write(build_cards(text))
+                handle.write(cards)
+            print("wrote " + os.path.relpath(path, ROOT))
+            path = os.path.join(args.out, "cases.dat")
+            with open(path, "w", encoding="ascii", newline="\n") as handle:
+                handle.write(build_two_cases(cards))
             print("wrote " + os.path.relpath(path, ROOT))
     return 0
 

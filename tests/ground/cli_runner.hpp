@@ -100,4 +100,30 @@ inline CommandResult run_tolip_executable(std::initializer_list<std::string> arg
   return result;
 }
 
+// Runs TOLIP_EXECUTABLE like run_tolip_executable, but with at most 1 GiB of address space and
+// 60 s: for hostile inputs, so that a regression (an endless read) fails the test instead of
+// taking the machine down.
+inline CommandResult run_tolip_bounded(const std::vector<std::string>& arguments) {
+  static int counter = 0;
+  const std::filesystem::path err_path = std::filesystem::temp_directory_path() / ("tolip_hostile_stderr_" +
+                                                          std::to_string(static_cast<long long>(::getpid())) + "_" +
+                                                          std::to_string(++counter));
+  std::string command = "ulimit -v 1048576; exec timeout -s KILL 60 " + shell_quote(TOLIP_EXECUTABLE);
+  for (const std::string& argument : arguments) command += " " + shell_quote(argument);
+  command += " 2>" + shell_quote(err_path.string());
+  command = "sh -c " + shell_quote(command);
+  CommandResult result;
+  FILE* pipe = ::popen(command.c_str(), "r");
+  if (pipe == nullptr) return result;
+  char buffer[65536];
+  std::size_t got = 0;
+  while ((got = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) result.out.append(buffer, got);
+  const int status = ::pclose(pipe);
+  if (status != -1 && WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
+  result.err = read_text_file(err_path);
+  std::error_code ignored;
+  std::filesystem::remove(err_path, ignored);
+  return result;
+}
+
 }  // namespace tolip::test

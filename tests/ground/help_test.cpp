@@ -78,5 +78,18 @@ TEST(Help, EverySubcommandExplainsEachOptionAndGivesExamples) {
   }
 }
 
+// A first word that is no command is named, and the commands are listed (not CLI11's "A
+// subcommand is required").
+TEST(Help, UnknownCommandIsNamedAndTheCommandsListed) {
+  const CommandResult result = run_tolip_executable({"simulat", "examples/scout/mission.toml"});
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_EQ(result.err,
+            "tolip: unknown command 'simulat'; the commands are: atmosphere, simulate, optimize, plot, export, "
+            "inspect, convert\nRun 'tolip --help' for more information.\n");
+  const CommandResult bare = run_tolip_executable({});
+  EXPECT_EQ(bare.exit_code, 2);
+  EXPECT_TRUE(contains(bare.err, "A subcommand is required")) << "no word at all: CLI11's own message";
+}
+
 }  // namespace
 }  // namespace tolip::test

@@ -241,7 +241,8 @@ TEST(PlotCommand, MalformedJsonIsNamedAndNothingIsWritten) {
 
   plot = run_tolip_executable({"plot", (scratch / "absent.json").string(), "--out", out.string()});
   EXPECT_EQ(plot.exit_code, 2);
-  EXPECT_TRUE(contains(plot.err, "cannot read '" + (scratch / "absent.json").string() + "'")) << plot.err;
+  EXPECT_EQ(plot.err, "tolip: " + (scratch / "absent.json").string() +
+                          ": cannot open the result file: No such file or directory\n");
   EXPECT_FALSE(fs::exists(out));
 }
 
@@ -282,6 +283,56 @@ TEST(PlotCommand, UnwritableDirectoryIsNamed) {
   EXPECT_EQ(plot.exit_code, 1);
   EXPECT_TRUE(contains(plot.err, "tolip: cannot create the output directory '" + file + "/sub'")) << plot.err;
   EXPECT_EQ(read_text_file(file), "not a directory");
+}
+
+// A figure whose data hold no finite value (all null, or absurd magnitudes) is skipped with a note
+// naming it, the others drawn (not a raw gnuplot error).
+json result_with_altitudes(const json& altitude) {
+  json document = {{"program", "tolip"}, {"title", "HOSTILE"}};
+  document["trajectory"] = json::array();
+  for (int i = 0; i < 4; ++i) {
+    document["trajectory"].push_back(json{{"time_s", 10.0 * i},
+                                          {"range_nmi", 1.0 * i},
+                                          {"altitude_ft", altitude},
+                                          {"velocity_ft_s", 100.0 * i},
+                                          {"inertial_velocity_ft_s", 100.0 * i + 1000.0},
+                                          {"dynamic_pressure_lbf_ft2", 50.0 * i},
+                                          {"theta_deg", 90.0 - i}});
+  }
+  return document;
+}
+
+TEST(PlotCatalogue, FigureWithoutAFiniteValueIsSkippedWithANote) {
+  for (const json& altitude : {json(nullptr), json(1e308), json(-1e308)}) {
+    const tolip::ground::DocumentFigures figures = tolip::ground::figures_for_document(result_with_altitudes(altitude));
+    std::set<std::string> names;
+    for (const tolip::ground::Figure& figure : figures.figures) names.insert(figure.name);
+    EXPECT_EQ(names, (std::set<std::string>{"velocity_time", "dynamic_pressure_time", "theta_time"})) << altitude;
+    ASSERT_EQ(figures.notes.size(), 1u) << altitude;
+    EXPECT_EQ(figures.notes[0],
+              "figure altitude_downrange skipped: no finite value to draw (every value null, or beyond 1e30 in "
+              "magnitude)");
+  }
+}
+
+TEST(PlotCommand, AltitudeAllNullOrHugeSkipsThatFigureAndDrawsTheRest) {
+  if (!gnuplot_installed()) GTEST_SKIP() << "gnuplot is not installed (gnuplot-nox)";
+  ScratchDirectory scratch("hostile_plot_null");
+  for (const json& altitude : {json(nullptr), json(1e308)}) {
+    const std::string source = (scratch / "result.json").string();
+    std::ofstream(source) << result_with_altitudes(altitude).dump();
+    const fs::path out = scratch / "plots";
+    fs::remove_all(out);
+    const CommandResult result = run_tolip_executable({"plot", source, "--out", out.string()});
+    EXPECT_EQ(result.exit_code, 0) << altitude << ": " << result.err;
+    EXPECT_EQ(result.err,
+              "tolip: " + source +
+                  ": figure altitude_downrange skipped: no finite value to draw (every value null, or beyond 1e30 "
+                  "in magnitude)\n");
+    EXPECT_FALSE(fs::exists(out / "altitude_downrange.png"));
+    EXPECT_TRUE(fs::exists(out / "velocity_time.png"));
+    EXPECT_TRUE(fs::exists(out / "theta_time.svg"));
+  }
 }
 
 }  // namespace

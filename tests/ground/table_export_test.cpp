@@ -12,6 +12,7 @@
 #include <fstream>
 #include <limits>
 #include <memory>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -529,7 +530,53 @@ TEST(InspectCli, NamesTheFaultOfABadImageAndExitsNonZero) {
 TEST(InspectCli, MissingFileIsReportedAndExitsNonZero) {
   const CommandResult result = run_tolip_executable({"inspect", "/nonexistent/table.bin"});
   EXPECT_EQ(result.exit_code, 2);
-  EXPECT_TRUE(contains(result.err, "cannot open '/nonexistent/table.bin'")) << result.err;
+  EXPECT_EQ(result.err,
+            "tolip: /nonexistent/table.bin: cannot open the guidance table image: No such file or directory\n");
+}
+
+// The macros the help and the docs name are the ones the generated C header defines.
+TEST(ExportCli, HelpAndDocsNameTheMacrosTheHeaderDefines) {
+  ScratchDirectory scratch("hostile_header_macros");
+  const std::string symbol = "flight_table";
+  const std::string header = (scratch / "table.h").string();
+  const CommandResult exported = run_tolip_executable({"export", reference_deck(), "--out",
+                                                     (scratch / "t.bin").string(), "--c-header", header, "--symbol",
+                                                     symbol, "--created-unix-s", "0"});
+  ASSERT_EQ(exported.exit_code, 0) << exported.err;
+  const std::string text = read_text_file(header);
+
+  // Every macro name the help gives, with its placeholders filled in, is #defined.
+  const CommandResult help = run_tolip_executable({"export", "--help"});
+  ASSERT_EQ(help.exit_code, 0);
+  const std::regex macro(R"([A-Za-z_<>]+_(SIZE|CRC32)\b)");
+  std::vector<std::string> named;
+  for (std::sregex_iterator it(help.out.begin(), help.out.end(), macro), end; it != end; ++it) {
+    std::string name = it->str();
+    name = std::regex_replace(name, std::regex("<SYMBOL>"), "FLIGHT_TABLE");
+    name = std::regex_replace(name, std::regex("NAME"), symbol);
+    named.push_back(name);
+  }
+  ASSERT_EQ(named.size(), 2u) << help.out;
+  for (const std::string& name : named) {
+    EXPECT_TRUE(contains(text, "#define " + name + " ")) << name << " is not defined by the header:\n" << text;
+  }
+
+  // The docs spell the default symbol's macros; exported with it, the header defines them.
+  const std::string default_header = (scratch / "default.h").string();
+  ASSERT_EQ(run_tolip_executable({"export", reference_deck(), "--out", (scratch / "d.bin").string(),
+                               "--c-header", default_header, "--created-unix-s", "0"})
+                .exit_code,
+            0);
+  const std::string default_text = read_text_file(default_header);
+  for (const char* doc : {"docs/cli.md", "docs/table-format.md"}) {
+    const std::string page = read_text_file(std::string(TOLIP_SOURCE_DIR) + "/" + doc);
+    const std::regex spelled(R"(TOLIP_TABLE_IMAGE_TOLIP_PITCH_TABLE_H_(SIZE|CRC32))");
+    int found = 0;
+    for (std::sregex_iterator it(page.begin(), page.end(), spelled), end; it != end; ++it, ++found) {
+      EXPECT_TRUE(contains(default_text, "#define " + it->str() + " ")) << doc << ": " << it->str();
+    }
+    EXPECT_GE(found, 2) << doc << " does not spell the macros";
+  }
 }
 
 }  // namespace

@@ -67,7 +67,9 @@ void write_table_listing(std::ostream& out, const GuidanceTable& table, std::uin
 // inspect --json').
 nlohmann::ordered_json table_json(const GuidanceTable& table, std::uint32_t crc, std::size_t image_size);
 
-// Reads a whole file into bytes. Returns false and sets *error when it cannot.
-bool read_binary_file(const std::string& path, std::vector<std::uint8_t>* bytes, std::string* error);
+// Reads a table image file into bytes, never more than kTableImageSize (the format's fixed size;
+// read_file_capped, capped_read.hpp). Returns false and sets *error, naming the file, when it
+// cannot be opened, is a directory, is larger than an image or cannot be read.
+bool read_table_image_file(const std::string& path, std::vector<std::uint8_t>* bytes, std::string* error);
 
 }  // namespace tolip::ground

@@ -59,11 +59,19 @@ struct PlotKind {
 // Every plot, in the order they are drawn.
 std::span<const PlotKind> plot_catalogue();
 
+// The largest magnitude drawn: a value beyond it (1e308, a diverged run) is drawn as a gap, like
+// a JSON null; gnuplot cannot scale an axis to it.
+inline constexpr double kMaxPlotMagnitude = 1e30;
+
 // The figures of one result document (a JSON object) and the names of the catalogue plots skipped
-// for want of data. Throws PlotDataError for a malformed document.
+// for want of data. A figure whose data hold no drawable value (every value null, or beyond
+// kMaxPlotMagnitude) is not drawn either: `notes` says so, naming it (tolip plot prints the notes
+// on stderr); so is a curve of a figure left out for the same reason. Throws PlotDataError for a
+// malformed document.
 struct DocumentFigures {
   std::vector<Figure> figures;
   std::vector<std::string> skipped;  // "name (no member 'linearized')"
+  std::vector<std::string> notes;    // "figure altitude_downrange skipped: ..."
 };
 DocumentFigures figures_for_document(const nlohmann::json& document);
 

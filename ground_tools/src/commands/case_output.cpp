@@ -1,6 +1,9 @@
 // Per-case output names and message prefixes (case_output.hpp).
 #include "case_output.hpp"
 
+#include <algorithm>
+
+#include "tolip_ground/atomic_file.hpp"
 #include "tolip_ground/report.hpp"
 
 namespace tolip::ground {
@@ -16,6 +19,20 @@ std::string case_file_path(const std::string& path, int case_number, std::size_t
     return path + tag;
   }
   return path.substr(0, dot) + tag + path.substr(dot);
+}
+
+bool csv_spares_the_deck(const std::string& csv_path, const std::string& deck_path, std::size_t cases,
+                         std::string* error) {
+  if (csv_path.empty()) return true;
+  for (std::size_t number = 1; number <= std::max<std::size_t>(cases, 1); ++number) {
+    const std::string name = case_file_path(csv_path, static_cast<int>(number), cases);
+    if (names_same_file(name, deck_path)) {
+      *error = "the --csv file '" + name + "' is the input deck '" + deck_path +
+               "': writing it would destroy the deck; name another file";
+      return false;
+    }
+  }
+  return true;
 }
 
 std::string case_message_prefix(int case_number, std::size_t cases) {

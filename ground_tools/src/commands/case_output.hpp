@@ -15,6 +15,11 @@ namespace tolip::ground {
 // ("points.csv" -> "points.case2.csv", "points" -> "points.case2").
 std::string case_file_path(const std::string& path, int case_number, std::size_t cases);
 
+// True when no --csv file of the deck's cases (case_file_path) is the deck itself
+// (names_same_file); else false with *error naming both.
+bool csv_spares_the_deck(const std::string& csv_path, const std::string& deck_path, std::size_t cases,
+                         std::string* error);
+
 // "case N: " before a case's diagnostics when the deck has several cases, "" otherwise (a
 // one-case deck keeps the messages it always had).
 std::string case_message_prefix(int case_number, std::size_t cases);

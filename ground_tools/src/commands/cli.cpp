@@ -31,6 +31,34 @@ constexpr const char* kFooter =
     "Run 'tolip <command> --help' for a command's options and examples.\n"
     "Full reference: docs/cli.md.";
 
+// "atmosphere, simulate, ..." in the order of the help.
+std::string command_names(const CLI::App& app) {
+  std::string names;
+  for (const CLI::App* command : app.get_subcommands({})) {
+    names += (names.empty() ? "" : ", ") + command->get_name();
+  }
+  return names;
+}
+
+// The first word of the command line that is not an option, when no command was parsed and that
+// word names none; "" otherwise. The program's own options (--help, --version) take no value, so
+// that word is where the command belongs.
+std::string unknown_command_word(const CLI::App& app, int argc, const char* const* argv) {
+  for (const CLI::App* command : app.get_subcommands({})) {
+    if (command->parsed()) return {};
+  }
+  for (int i = 1; i < argc; ++i) {
+    const std::string word = argv[i];
+    if (word == "--") return i + 1 < argc ? argv[i + 1] : "";
+    if (word.empty() || word[0] == '-') continue;
+    for (const CLI::App* command : app.get_subcommands({})) {
+      if (command->check_name(word)) return {};
+    }
+    return word;
+  }
+  return {};
+}
+
 }  // namespace
 
 int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
@@ -182,7 +210,9 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
       "gnuplot: altitude vs downrange, velocity vs time, q-bar vs\n"
       "time, pitch attitude theta vs time (with optimize: the\n"
       "optimum, and the linearized program over it when the result\n"
-      "has one). A plot whose data the result lacks is skipped.");
+      "has one). A plot whose data the result lacks is skipped, and\n"
+      "so is one whose data hold no finite value (all null, or beyond\n"
+      "1e30 in magnitude), with a note on stderr naming it.");
   plot->footer(
       "Files: DIR/NAME.png and DIR/NAME.svg, NAME = altitude_downrange,\n"
       "velocity_time, dynamic_pressure_time, theta_time; for a JSON array\n"
@@ -193,8 +223,9 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
       "  tolip optimize examples/scout/mission.toml --json > result.json\n"
       "  tolip plot result.json --out plots\n"
       "Exit codes: 0 written; 1 gnuplot missing or failing, or DIR not\n"
-      "writable; 2 bad command line, unreadable file, or a result that is\n"
-      "not valid JSON or lacks the fields (the message names the field).\n"
+      "writable; 2 bad command line, unreadable file (a directory, or\n"
+      "larger than 64 MiB), or a result that is not valid JSON or lacks\n"
+      "the fields (the message names the field).\n"
       "Full reference: docs/cli.md, 'tolip plot'.");
   plot->add_option("RESULT", plot_options.result_path,
                    "JSON result of simulate --json or optimize --json: one\n"
@@ -228,9 +259,12 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
       "The image is decoded again with the flight-side loader's checks\n"
       "before anything is written; each file goes to FILE.tmp.<pid> and is\n"
       "renamed over FILE.\n"
+      "Outputs are written only as regular files: an existing FILE that\n"
+      "is a symbolic link, FIFO, device or directory is refused.\n"
       "Exit codes: 0 written; 1 prepare_case failed, the optimization\n"
       "job failed (IP(7) = 1: the same rule as optimize), or a file could\n"
-      "not be written; 2 bad command line, deck, or a case the image cannot\n"
+      "not be written; 2 bad command line (also --out and --c-header\n"
+      "naming one file, or the deck), deck, or a case the image cannot\n"
       "carry (the message names the data block).\n"
       "Full reference: docs/cli.md, 'tolip export'; docs/table-format.md.");
   export_command->add_option("DECK", export_options.deck_path,
@@ -242,9 +276,11 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
       ->required()
       ->type_name("FILE");
   export_command->add_option("--c-header", export_options.c_header_path,
-                             "Also write the image as a C const array in the\n"
-                             "linker section .tolip_table, with NAME_SIZE and\n"
-                             "NAME_CRC32 macros")
+                             "Also write the image as a C const array NAME in the\n"
+                             "linker section .tolip_table, with the macros\n"
+                             "TOLIP_TABLE_IMAGE_<SYMBOL>_H_SIZE (812u) and\n"
+                             "TOLIP_TABLE_IMAGE_<SYMBOL>_H_CRC32, <SYMBOL> = NAME\n"
+                             "upper-cased (include guard TOLIP_TABLE_IMAGE_<SYMBOL>_H)")
       ->type_name("FILE");
   export_command->add_option("--symbol", export_options.symbol,
                              "C array name in the header, a C identifier\n"
@@ -273,7 +309,8 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
       "Examples:\n"
       "  tolip inspect table.bin\n"
       "  tolip inspect table.bin --json\n"
-      "Exit codes: 0 valid; 2 bad command line, unreadable file or\n"
+      "Exit codes: 0 valid; 2 bad command line, unreadable file (a\n"
+      "directory, or larger than an image: at most 812 bytes are read) or\n"
       "invalid image (stderr names the status, e.g. kTableImageCrcMismatch).\n"
       "Full reference: docs/cli.md, 'tolip inspect'.");
   inspect->add_option("IMAGE", inspect_options.image_path, "Table image written by tolip export")
@@ -298,9 +335,10 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
       "Examples:\n"
       "  tolip convert examples/scout/mission.toml --to mission.dat\n"
       "  tolip convert mission.dat --to mission.toml\n"
-      "  tolip convert cases.dat --to case2.toml --case 2\n"
+      "  tolip convert examples/scout/cases.dat --to case2.toml --case 2\n"
       "Exit codes: 0 written; 1 the file could not be written (an existing\n"
-      "FILE is left untouched); 2 bad command line, deck, unknown output\n"
+      "FILE is left untouched; one that is not a regular file is refused);\n"
+      "2 bad command line (also FILE being DECK itself), deck, unknown output\n"
       "format, a several-case deck to TOML without --case, or a value the\n"
       "cards cannot hold.\n"
       "Full reference: docs/cli.md, 'tolip convert'; docs/deck-format.md.");
@@ -327,6 +365,13 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e, out, err);
   } catch (const CLI::ParseError& e) {
+    // No command parsed and the first word is not one: say which word, and what the commands are
+    // (CLI11 would only say that a subcommand is required).
+    if (const std::string unknown = unknown_command_word(app, argc, argv); !unknown.empty()) {
+      err << "tolip: unknown command '" << unknown << "'; the commands are: " << command_names(app) << "\n";
+      err << "Run 'tolip --help' for more information.\n";
+      return kExitBadInput;
+    }
     err << "tolip: " << e.what() << "\n";
     err << "Run 'tolip --help' for more information.\n";
     return kExitBadInput;

@@ -35,6 +35,13 @@ int run_convert_command(const ConvertCommandOptions& options, std::ostream& out,
     return kExitBadInput;
   }
 
+  // Converting a deck onto itself would replace it (its comments, its header) by the conversion.
+  if (names_same_file(options.out_path, options.deck_path)) {
+    err << "tolip: --to '" << options.out_path << "' is the input deck '" << options.deck_path
+        << "': converting a deck onto itself would replace it; name another file\n";
+    return kExitBadInput;
+  }
+
   Deck deck;
   DeckError error;
   if (!load_deck(options.deck_path, &deck, &error)) {

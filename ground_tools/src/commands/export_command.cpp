@@ -7,6 +7,7 @@
 #include <memory>
 #include <ostream>
 #include <string>
+#include <utility>
 
 #include "tolip/table/table_image.hpp"
 #include "tolip/vehicle/prepared_case.hpp"
@@ -62,6 +63,23 @@ int run_export_command(const ExportCommandOptions& options, std::ostream& out, s
     err << "tolip: --symbol '" << options.symbol << "' is not a C identifier\n";
     return kExitBadInput;
   }
+  // Two outputs naming one file would leave only the second; an output naming the deck would
+  // destroy it. Refused before anything runs.
+  const bool header_wanted = !options.c_header_path.empty();
+  if (header_wanted && names_same_file(options.out_path, options.c_header_path)) {
+    err << "tolip: --out '" << options.out_path << "' and --c-header '" << options.c_header_path
+        << "' name the same file: the header would replace the image; name two different files\n";
+    return kExitBadInput;
+  }
+  for (const auto& [option, path] : {std::pair<const char*, const std::string*>{"--out", &options.out_path},
+                                     {"--c-header", &options.c_header_path}}) {
+    if (!path->empty() && names_same_file(*path, options.deck_path)) {
+      err << "tolip: " << option << " '" << *path << "' is the input deck '" << options.deck_path
+          << "': writing it would destroy the deck; name another file\n";
+      return kExitBadInput;
+    }
+  }
+
   std::int64_t stamp = 0;
   std::string stamp_error;
   if (!creation_stamp(options, &stamp, &stamp_error)) {

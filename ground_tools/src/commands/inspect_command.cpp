@@ -16,7 +16,7 @@ namespace tolip::ground {
 int run_inspect_command(const InspectCommandOptions& options, std::ostream& out, std::ostream& err) {
   std::vector<std::uint8_t> bytes;
   std::string read_error;
-  if (!read_binary_file(options.image_path, &bytes, &read_error)) {
+  if (!read_table_image_file(options.image_path, &bytes, &read_error)) {
     err << "tolip: " << read_error << '\n';
     return kExitBadInput;
   }

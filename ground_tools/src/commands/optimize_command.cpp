@@ -167,6 +167,10 @@ int run_optimize_command(const OptimizeCommandOptions& options, std::ostream& ou
     return kExitBadInput;
   }
   const std::size_t cases = deck.cases.size();
+  if (std::string csv_error; !csv_spares_the_deck(options.csv_path, options.deck_path, cases, &csv_error)) {
+    err << "tolip: " << csv_error << '\n';
+    return kExitBadInput;
+  }
 
   ProgressLine progress(err, progress_enabled(options.progress));
   std::ostringstream listing;

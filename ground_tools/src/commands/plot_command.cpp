@@ -7,14 +7,13 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <ostream>
-#include <sstream>
 #include <string>
 #include <system_error>
 #include <vector>
 
 #include "tolip_ground/atomic_file.hpp"
+#include "tolip_ground/capped_read.hpp"
 #include "tolip_ground/commands.hpp"
 #include "tolip_ground/plot.hpp"
 
@@ -46,22 +45,6 @@ class WorkDirectory {
   std::string path_;
   std::string error_;
 };
-
-bool read_text(const std::string& path, std::string* text, std::string* error) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    *error = "cannot read '" + path + "': " + std::strerror(errno);
-    return false;
-  }
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  if (in.bad()) {
-    *error = "cannot read '" + path + "': " + std::strerror(errno);
-    return false;
-  }
-  *text = buffer.str();
-  return true;
-}
 
 // nlohmann's message without its "[json.exception.parse_error.101] " tag.
 std::string parse_message(const char* what) {
@@ -113,8 +96,8 @@ int run_plot_command(const PlotCommandOptions& options, std::ostream& out, std::
   const std::string& source = options.result_path;
   std::string text;
   std::string error;
-  if (!read_text(source, &text, &error)) {
-    err << "tolip: " << error << '\n';
+  if (!read_file_capped(source, kMaxResultFileBytes, "result file", &text, &error)) {
+    err << "tolip: " << source << ": " << error << '\n';
     return kExitBadInput;
   }
   nlohmann::json result;
@@ -149,6 +132,7 @@ int run_plot_command(const PlotCommandOptions& options, std::ostream& out, std::
       return kExitBadInput;
     }
     figure_count += figures[d].figures.size();
+    for (const std::string& note : figures[d].notes) err << "tolip: " << where << ": " << note << '\n';
   }
   if (figure_count == 0) {
     err << "tolip: " << source << ": nothing to plot";
@@ -188,7 +172,8 @@ int run_plot_command(const PlotCommandOptions& options, std::ostream& out, std::
   std::vector<std::string> contents(outputs.size());
   for (std::size_t i = 0; i < outputs.size(); ++i) {
     const std::string drawn = work.path() + "/" + outputs[i].file_name;
-    if (!read_text(drawn, &contents[i], &error) || !looks_like_image(contents[i], outputs[i].png)) {
+    if (!read_file_capped(drawn, kMaxResultFileBytes, "drawn image", &contents[i], &error) ||
+        !looks_like_image(contents[i], outputs[i].png)) {
       err << "tolip: gnuplot did not produce a complete " << (outputs[i].png ? "PNG" : "SVG") << " image '"
           << outputs[i].file_name << "'\n";
       return kExitFailure;

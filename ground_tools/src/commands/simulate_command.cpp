@@ -74,6 +74,10 @@ int run_simulate_command(const SimulateCommandOptions& options, std::ostream& ou
     return kExitBadInput;
   }
   const std::size_t cases = deck.cases.size();
+  if (std::string csv_error; !csv_spares_the_deck(options.csv_path, options.deck_path, cases, &csv_error)) {
+    err << "tolip: " << csv_error << '\n';
+    return kExitBadInput;
+  }
 
   // Everything goes to stdout at the end, so a CSV failure leaves stdout empty.
   std::ostringstream listing;

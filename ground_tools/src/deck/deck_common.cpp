@@ -1,12 +1,8 @@
 // Deck vocabulary shared by both deck formats (deck_common.hpp).
 #include "deck_common.hpp"
 
-#include <cerrno>
-#include <cstring>
-#include <fstream>
-#include <sstream>
-
 #include "tolip/core/constants.hpp"
+#include "tolip_ground/capped_read.hpp"
 
 namespace tolip::ground::deck_detail {
 
@@ -71,26 +67,15 @@ const char* dispersion_name(int code) {
 }
 
 bool read_deck_file(const std::string& path, std::string* text, DeckError* error) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
+  std::string reason;
+  if (!read_file_capped(path, kMaxDeckFileBytes, "deck file", text, &reason)) {
     if (error != nullptr) {
       *error = DeckError{};
       error->file = path;
-      error->message = std::string("cannot open the deck file: ") + std::strerror(errno);
+      error->message = reason;
     }
     return false;
   }
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  if (in.bad()) {
-    if (error != nullptr) {
-      *error = DeckError{};
-      error->file = path;
-      error->message = "cannot read the deck file";
-    }
-    return false;
-  }
-  *text = buffer.str();
   return true;
 }
 

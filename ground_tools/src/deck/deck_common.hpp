@@ -23,7 +23,9 @@ bool constraint_unit(int code, ConstraintUnit* unit);
 // The kind of dispersed trajectory of a data block 46 code (1-38, 40); nullptr for an unknown code.
 const char* dispersion_name(int code);
 
-// Reads a whole deck file; false with *error ("cannot open the deck file: ...") on failure.
+// Reads a whole deck file, at most kMaxDeckFileBytes (read_file_capped); false with *error
+// (file = path, message "cannot open the deck file: ...", "is a directory, not a deck file",
+// "more than ... bytes: ...") on failure.
 bool read_deck_file(const std::string& path, std::string* text, DeckError* error);
 
 }  // namespace tolip::ground::deck_detail

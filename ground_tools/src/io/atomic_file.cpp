@@ -9,6 +9,8 @@
 #include <cerrno>
 #include <cstring>
 #include <exception>
+#include <filesystem>
+#include <system_error>
 #include <sstream>
 
 namespace tolip::ground {
@@ -42,7 +44,41 @@ std::string directory_of(const std::string& path) {
   return path.substr(0, slash);
 }
 
+// What a non-regular file is, for the refusal message.
+const char* file_kind(mode_t mode) {
+  if (S_ISLNK(mode)) return "a symbolic link";
+  if (S_ISDIR(mode)) return "a directory";
+  if (S_ISFIFO(mode)) return "a FIFO (named pipe)";
+  if (S_ISCHR(mode)) return "a character device";
+  if (S_ISBLK(mode)) return "a block device";
+  if (S_ISSOCK(mode)) return "a socket";
+  return "not a regular file";
+}
+
 }  // namespace
+
+bool names_same_file(const std::string& a, const std::string& b) {
+  namespace fs = std::filesystem;
+  if (a.empty() || b.empty()) return false;
+  std::error_code code_a;
+  std::error_code code_b;
+  const fs::path canonical_a = fs::weakly_canonical(fs::absolute(a, code_a), code_a);
+  const fs::path canonical_b = fs::weakly_canonical(fs::absolute(b, code_b), code_b);
+  if (!code_a && !code_b && canonical_a == canonical_b) return true;
+  // Two names of one existing file (a hard link, a bind mount): the same device and inode.
+  struct stat info_a {};
+  struct stat info_b {};
+  return ::stat(a.c_str(), &info_a) == 0 && ::stat(b.c_str(), &info_b) == 0 && info_a.st_dev == info_b.st_dev &&
+         info_a.st_ino == info_b.st_ino;
+}
+
+bool check_replaceable_output(const std::string& path, std::string* error) {
+  struct stat existing {};
+  if (::lstat(path.c_str(), &existing) != 0 || S_ISREG(existing.st_mode)) return true;
+  set_error(error, "refusing to replace '" + path + "': it is " + file_kind(existing.st_mode) +
+                       "; tolip writes its outputs only as regular files (remove it or name another file)");
+  return false;
+}
 
 std::string atomic_temp_path(const std::string& path) {
   return path + ".tmp." + std::to_string(static_cast<long long>(::getpid()));
@@ -55,12 +91,15 @@ bool write_file_atomically(const std::string& path, std::string_view contents, s
     set_error(error, "cannot write a file with an empty name");
     return false;
   }
+  // Only a regular file is ever replaced: rename() would otherwise swap a symbolic link, a FIFO,
+  // a device or an empty directory for our file.
+  if (!check_replaceable_output(path, error)) return false;
   const std::string temp = atomic_temp_path(path);
 
   // Keep the permissions of a file being replaced; new files get 0666 less the umask.
   mode_t mode = 0666;
   struct stat existing {};
-  const bool replacing = ::stat(path.c_str(), &existing) == 0 && S_ISREG(existing.st_mode);
+  const bool replacing = ::lstat(path.c_str(), &existing) == 0 && S_ISREG(existing.st_mode);
   if (replacing) mode = existing.st_mode & 07777;
 
   int fd = -1;
@@ -110,6 +149,11 @@ bool write_file_atomically(const std::string& path, std::string_view contents, s
     return fail("cannot close", temp);
   }
   if (::close(fd_to_close) != 0) return fail("cannot close", temp);
+  // Once more just before the rename: the path may have been replaced meanwhile.
+  if (!check_replaceable_output(path, error)) {
+    ::unlink(temp.c_str());
+    return false;
+  }
   if (injected_fault(AtomicWriteStep::kRename) || ::rename(temp.c_str(), path.c_str()) != 0) {
     return fail("cannot replace", path);
   }

@@ -14,6 +14,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "tolip_ground/capped_read.hpp"
 #include "tolip_ground/plot.hpp"
 
 extern char** environ;
@@ -169,10 +170,9 @@ bool run_gnuplot(const std::string& program, const std::string& work_dir, const 
   if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return true;
 
   // The end of gnuplot's messages says which line of the script it stopped at.
-  std::ifstream log(log_path);
-  std::stringstream text;
-  text << log.rdbuf();
-  std::string messages = text.str();
+  std::string messages;
+  std::string ignored;
+  if (!read_file_capped(log_path, std::size_t{1} << 20, "gnuplot log", &messages, &ignored)) messages.clear();
   while (!messages.empty() && (messages.back() == '\n' || messages.back() == ' ')) messages.pop_back();
   if (messages.size() > 600) messages = "..." + messages.substr(messages.size() - 600);
   const std::string how = WIFEXITED(status) ? "exit code " + std::to_string(WEXITSTATUS(status))

@@ -1,5 +1,6 @@
 // The plots of `tolip plot` (plot.hpp): each a small function of one result document, keyed on
 // the member it needs. Field names and units are those of docs/cli.md (simulate/optimize --json).
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -212,6 +213,25 @@ constexpr PlotKind kCatalogue[] = {
      theta_time},
 };
 
+// Values gnuplot cannot draw become gaps; true when the series keeps at least one point.
+bool keep_drawable_points(PlotSeries* series) {
+  bool any = false;
+  const std::size_t n = std::min(series->x.size(), series->y.size());
+  for (std::size_t i = 0; i < n; ++i) {
+    double& x = series->x[i];
+    double& y = series->y[i];
+    if (!(std::fabs(x) <= kMaxPlotMagnitude) || !(std::fabs(y) <= kMaxPlotMagnitude)) {
+      x = kGap;
+      y = kGap;
+    } else {
+      any = true;
+    }
+  }
+  return any;
+}
+
+const char* const kNoDrawableValue = "no finite value to draw (every value null, or beyond 1e30 in magnitude)";
+
 }  // namespace
 
 std::span<const PlotKind> plot_catalogue() { return kCatalogue; }
@@ -226,6 +246,22 @@ DocumentFigures figures_for_document(const nlohmann::json& document) {
   for (const PlotKind& kind : plot_catalogue()) {
     std::optional<Figure> figure = kind.build(document);
     if (figure) {
+      std::vector<PlotSeries> drawable;
+      for (PlotSeries& series : figure->series) {
+        if (keep_drawable_points(&series)) {
+          drawable.push_back(std::move(series));
+        } else {
+          result.notes.push_back("figure " + std::string(kind.name) + ": curve '" + series.title + "' left out: " +
+                                 kNoDrawableValue);
+        }
+      }
+      if (drawable.empty()) {
+        // The curve notes say no more than this one.
+        result.notes.resize(result.notes.size() - figure->series.size());
+        result.notes.push_back("figure " + std::string(kind.name) + " skipped: " + kNoDrawableValue);
+        continue;
+      }
+      figure->series = std::move(drawable);
       result.figures.push_back(std::move(*figure));
     } else {
       const json* data = member(document, kind.member);

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "tolip/core/constants.hpp"
+#include "tolip_ground/capped_read.hpp"
 #include "tolip_ground/version.hpp"
 
 namespace tolip::ground {
@@ -316,17 +317,14 @@ nlohmann::ordered_json table_json(const GuidanceTable& t, std::uint32_t crc, std
   };
 }
 
-bool read_binary_file(const std::string& path, std::vector<std::uint8_t>* bytes, std::string* error) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    if (error != nullptr) *error = "cannot open '" + path + "'";
+bool read_table_image_file(const std::string& path, std::vector<std::uint8_t>* bytes, std::string* error) {
+  std::string contents;
+  std::string reason;
+  if (!read_file_capped(path, kTableImageSize, "guidance table image", &contents, &reason)) {
+    if (error != nullptr) *error = path + ": " + reason;
     return false;
   }
-  bytes->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  if (in.bad()) {
-    if (error != nullptr) *error = "cannot read '" + path + "'";
-    return false;
-  }
+  bytes->assign(contents.begin(), contents.end());
   return true;
 }
 
