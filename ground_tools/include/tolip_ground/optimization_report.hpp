@@ -62,24 +62,6 @@ struct OptimizationReport {
   Status initial_nominal_6d_status = Status::kNotPrepared;
 };
 
-// One constraint of data blocks 8/19/29 after the payoff, in the units of data block 19 (ft, rad,
-// ft/s, n.mi., ft^2/s^2, Btu/ft^2, lbf/ft^2).
-struct ConstraintSummary {
-  int code = 0;
-  std::string name;        // snake_case quantity: "altitude", "inertial_flight_path_angle", ...
-  int stage = 0;           // X of a stage-point code 10 X + 5..9; 0 for a terminal constraint
-  std::string unit;        // data block 19 unit: "ft", "rad", "ft/s", "nmi", ...
-  bool angle = false;      // unit "rad" (the listing adds degrees)
-  double desired = 0.0;
-  double achieved = 0.0;   // on the final trajectory; NaN when it could not be evaluated
-  double error = 0.0;      // achieved - desired (angles 12, 13, 101 wrapped into [-pi, pi))
-  double tolerance = 0.0;  // data block 29 optimization deadband
-  double payoff_partial = 0.0;  // d payoff / d constraint (eq. 9-22), payoff unit per `unit`
-  // An upper limit, not an equality: total heating (14, Sec. 13) and the dynamic pressure X9
-  // under IP(13) = 1. Only an excess (error > 0) counts.
-  bool inequality = false;
-  bool met = false;        // |error| <= tolerance (inequality: error <= tolerance)
-};
 
 // One adjustable parameter of data block 6: degrees for attitudes and the launch azimuth,
 // seconds for coast durations and for the launch time (code 7: seconds after 0h UT of the deck's

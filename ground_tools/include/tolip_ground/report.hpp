@@ -9,6 +9,7 @@
 #include <ostream>
 #include <span>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -19,6 +20,25 @@
 
 namespace tolip::ground {
 
+// One constraint of data blocks 8/19/29 after the payoff, in the units of data block 19 (ft, rad,
+// ft/s, n.mi., ft^2/s^2, Btu/ft^2, lbf/ft^2).
+struct ConstraintSummary {
+  int code = 0;
+  std::string name;        // snake_case quantity: "altitude", "inertial_flight_path_angle", ...
+  int stage = 0;           // X of a stage-point code 10 X + 5..9; 0 for a terminal constraint
+  std::string unit;        // data block 19 unit: "ft", "rad", "ft/s", "nmi", ...
+  bool angle = false;      // unit "rad" (the listing adds degrees)
+  double desired = 0.0;
+  double achieved = 0.0;   // on the trajectory; NaN when it could not be evaluated
+  double error = 0.0;      // achieved - desired (angles 12, 13, 101 wrapped into [-pi, pi))
+  double tolerance = 0.0;  // data block 29 optimization deadband
+  double payoff_partial = 0.0;  // d payoff / d constraint (eq. 9-22), payoff unit per `unit`
+  // An upper limit, not an equality: total heating (14, Sec. 13) and the dynamic pressure X9
+  // under IP(13) = 1. Only an excess (error > 0) counts.
+  bool inequality = false;
+  bool met = false;        // |error| <= tolerance (inequality: error <= tolerance)
+};
+
 // What `simulate` computed. `trajectory` may be partial (status not kOk): its points are those
 // flown up to the failure. The orbit elements exist only when the trajectory completed.
 struct SimulationReport {
@@ -28,7 +48,17 @@ struct SimulationReport {
   bool has_orbit = false;
   OrbitElements orbit;                      // meaningful when has_orbit
   std::string deck_path;                    // echoed in the JSON document
+  // `simulate`: the deck's constraints on this trajectory (deck_constraint_summaries), listed after
+  // the terminal conditions and in the JSON member "constraints". Empty for optimize's final
+  // trajectory, whose summary reports them against the optimizer's deadbands.
+  std::vector<ConstraintSummary> constraints;
 };
+
+// The deck's constraints (data blocks 8, 19, 29: code, desired value, optimization deadband) as
+// the optimizer evaluates them, on a trajectory that may have stopped early (then NaN achieved).
+std::vector<ConstraintSummary> deck_constraint_summaries(const Mission& mission, const Trajectory& trajectory);
+// Their JSON array (docs/cli.md: `constraints` of simulate and optimize).
+nlohmann::ordered_json constraints_json(const std::vector<ConstraintSummary>& constraints);
 
 // One column of the point table (CSV header, JSON point keys).
 enum class ColumnKind : int { kReal, kInteger, kFlag };
@@ -45,6 +75,30 @@ std::span<const PointColumn> trajectory_point_columns();
 
 // Angle in degrees reduced to (-180, 180].
 double wrap_degrees_180(double degrees);
+
+// The international nautical mile (1852 m) in ft: the unit of the orbit summary's altitudes (data
+// block 19's 300 n.mi. orbit is 1,822,834.647 ft).
+inline constexpr double kFeetPerNauticalMile = 1852.0 / 0.3048;
+
+// What the terminal state's path is, in a trajectory engineer's terms.
+enum class PathClass : int {
+  kOrbit,       // elliptic, perigee above the surface
+  kSuborbital,  // elliptic with the perigee below the surface: it comes down within a revolution
+  kEscape,      // parabolic or hyperbolic (2E >= 0)
+};
+const char* path_class_name(PathClass path);  // "orbit", "suborbital", "escape"
+
+// The orbit elements in engineering terms: perigee and apogee altitude above the oblate Earth at
+// their latitudes (sin(latitude) = sin(EYE) sin(BETAP) at perigee, its negative at apogee), and the
+// path class. Apogee values are NaN unless the orbit is elliptic.
+struct OrbitSummary {
+  PathClass path = PathClass::kOrbit;
+  double perigee_altitude_ft = 0.0;
+  double apogee_altitude_ft = 0.0;
+  double perigee_latitude_rad = 0.0;        // geocentric
+  bool perigee_in_atmosphere = false;       // above the surface but below CT1(7) HAERO
+};
+OrbitSummary summarize_orbit(const Constants& constants, const OrbitElements& orbit);
 
 // The number of stored points that may be read (point_count clamped to the storage).
 int stored_point_count(const Trajectory& trajectory);

@@ -61,6 +61,8 @@ void simulate_case(const Mission& mission, const std::string& deck_path, Simulat
     report.has_orbit = ok(status);
   }
   report.status = status;
+  // The deck's constraints, achieved against desired: what the engineer tunes the program for.
+  report.constraints = deck_constraint_summaries(mission, *trajectory);
 }
 
 }  // namespace

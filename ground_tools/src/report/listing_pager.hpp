@@ -6,6 +6,7 @@
 
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "tolip/mission/mission.hpp"
 #include "tolip_ground/report.hpp"
@@ -40,5 +41,9 @@ class Pager {
 // The pages of write_trajectory_listing (FINAL TRAJECTORY, then TERMINAL CONDITIONS with the stage
 // events, terminal conditions and orbit elements), continuing the pager's page numbers.
 void write_trajectory_pages(Pager& pager, const SimulationReport& report);
+
+// The constraint table (desired, achieved, error, tolerance in data block 19 units, angles also in
+// deg, MET) under `heading`; shared by optimize's summary and simulate's terminal conditions.
+void write_constraint_table(Pager& pager, const std::vector<ConstraintSummary>& constraints, const std::string& heading);
 
 }  // namespace tolip::ground::report_detail

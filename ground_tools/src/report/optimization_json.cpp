@@ -31,25 +31,6 @@ json payoff_json(const PayoffSummary& payoff) {
   };
 }
 
-json constraints_json(const std::vector<ConstraintSummary>& constraints) {
-  json array = json::array();
-  for (const ConstraintSummary& c : constraints) {
-    array.push_back(json{
-        {"code", c.code},
-        {"name", c.name},
-        {"stage", c.stage > 0 ? json(c.stage) : json(nullptr)},
-        {"unit", c.unit},
-        {"desired", number(c.desired)},
-        {"achieved", number(c.achieved)},
-        {"error", number(c.error)},
-        {"tolerance", number(c.tolerance)},
-        {"inequality", c.inequality},
-        {"met", c.met},
-    });
-  }
-  return array;
-}
-
 json adjustable_json(const std::vector<AdjustableSummary>& adjustable) {
   json array = json::array();
   for (const AdjustableSummary& a : adjustable) {

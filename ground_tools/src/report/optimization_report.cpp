@@ -101,10 +101,6 @@ bool result_complete(const OptimizationReport& report) {
          result.constraint_count >= report.final_trajectory.mission->constraints.count;
 }
 
-int constraint_count(const OptimizationReport& report) {
-  return std::clamp(report.final_trajectory.mission->constraints.count, 0, kMaxConstraints);
-}
-
 // `launch_day` is the space-age date (days) of 0h UT of the deck's launch day (code 7).
 double adjustable_value(const Mission& mission, int code, double launch_day) {
   const MiscellaneousData& misc = mission.misc;
@@ -375,29 +371,8 @@ void write_summary(Pager& pager, const OptimizationReport& report,
   }
   pager.emit("");
 
-  if (!constraints.empty()) {
-    pager.reserve(4 + static_cast<int>(constraints.size()));
-    pager.emit("   CONSTRAINTS ON THE FINAL TRAJECTORY (UNITS OF DATA BLOCK 19; ANGLES ALSO IN DEG)");
-    pager.emit("    NO.  CODE  PARAMETER                          DESIRED        ACHIEVED           ERROR"
-               "       TOLERANCE  UNIT      MET");
-    for (std::size_t i = 0; i < constraints.size(); ++i) {
-      const ConstraintSummary& c = constraints[i];
-      ConstraintCode decoded;
-      const QuantityText text = code_text(c.code, &decoded);
-      std::string line = right(std::to_string(i + 1), 7) + right(std::to_string(c.code), 6) + "  " +
-                         left(constraint_label(decoded, text) + (c.inequality ? " (MAX)" : ""), 27) +
-                         number_cell(c.desired, text.decimals, 16) + number_cell(c.achieved, text.decimals, 16) +
-                         number_cell(c.error, text.decimals, 16) + number_cell(c.tolerance, text.decimals, 16) +
-                         "  " + left(text.unit_heading, 9) + (c.met ? "YES" : "NO");
-      pager.emit(line);
-      if (c.angle) {
-        pager.emit(std::string(42, ' ') + number_cell(c.desired * kRadToDeg, 6, 16) +
-                   number_cell(c.achieved * kRadToDeg, 6, 16) + number_cell(c.error * kRadToDeg, 6, 16) +
-                   number_cell(c.tolerance * kRadToDeg, 6, 16) + "  DEG");
-      }
-    }
-    pager.emit("");
-  }
+  report_detail::write_constraint_table(pager, constraints,
+                                        "   CONSTRAINTS ON THE FINAL TRAJECTORY (UNITS OF DATA BLOCK 19; ANGLES ALSO IN DEG)");
 
   if (!constraints.empty()) {
     pager.reserve(3 + static_cast<int>(constraints.size()));
@@ -594,36 +569,88 @@ const char* optimization_stop_name(OptimizationStop stop) {
   return "unknown";
 }
 
+namespace {
+
+// Constraint i (>= 1) of the list, named, with the deck's desired value and deadband; `achieved`,
+// `error`, `met` and `payoff_partial` are left for the caller.
+ConstraintSummary describe_constraint(const Mission& mission, int code, ConstraintCode* decoded_out) {
+  ConstraintSummary c;
+  c.code = code;
+  ConstraintCode decoded;
+  const QuantityText text = code_text(c.code, &decoded);
+  c.name = text.name;
+  c.stage = decoded.is_stage_point ? decoded.stage_code : 0;
+  c.unit = text.unit;
+  c.angle = c.unit == "rad";
+  c.inequality = decoded.kind == ConstraintQuantity::kTotalHeating ||
+                 (decoded.kind == ConstraintQuantity::kDynamicPressure && mission.options.qbar_constraint_type() == 1);
+  *decoded_out = decoded;
+  return c;
+}
+
+void judge(const ConstraintCode& decoded, ConstraintSummary* c) {
+  c->error = std::isfinite(c->achieved) ? constraint_deviation(decoded, c->achieved, c->desired) : kNaN;
+  c->met = std::isfinite(c->error) && (c->inequality ? c->error <= c->tolerance : std::fabs(c->error) <= c->tolerance);
+}
+
+}  // namespace
+
+void report_detail::write_constraint_table(Pager& pager, const std::vector<ConstraintSummary>& constraints,
+                                           const std::string& heading) {
+  if (constraints.empty()) return;
+  pager.reserve(4 + static_cast<int>(constraints.size()));
+  pager.emit(heading);
+  pager.emit("    NO.  CODE  PARAMETER                          DESIRED        ACHIEVED           ERROR"
+             "       TOLERANCE  UNIT      MET");
+  for (std::size_t i = 0; i < constraints.size(); ++i) {
+    const ConstraintSummary& c = constraints[i];
+    ConstraintCode decoded;
+    const QuantityText text = code_text(c.code, &decoded);
+    std::string line = right(std::to_string(i + 1), 7) + right(std::to_string(c.code), 6) + "  " +
+                       left(constraint_label(decoded, text) + (c.inequality ? " (MAX)" : ""), 27) +
+                       number_cell(c.desired, text.decimals, 16) + number_cell(c.achieved, text.decimals, 16) +
+                       number_cell(c.error, text.decimals, 16) + number_cell(c.tolerance, text.decimals, 16) +
+                       "  " + left(text.unit_heading, 9) + (c.met ? "YES" : "NO");
+    pager.emit(line);
+    if (c.angle) {
+      pager.emit(std::string(42, ' ') + number_cell(c.desired * kRadToDeg, 6, 16) +
+                 number_cell(c.achieved * kRadToDeg, 6, 16) + number_cell(c.error * kRadToDeg, 6, 16) +
+                 number_cell(c.tolerance * kRadToDeg, 6, 16) + "  DEG");
+    }
+  }
+  pager.emit("");
+}
+
+std::vector<ConstraintSummary> deck_constraint_summaries(const Mission& mission, const Trajectory& trajectory) {
+  const int count = std::clamp(mission.constraints.count, 0, kMaxConstraints);
+  std::vector<ConstraintSummary> out;
+  for (int i = 1; i < count; ++i) {
+    ConstraintCode decoded;
+    ConstraintSummary c = describe_constraint(mission, mission.constraints.codes[i], &decoded);
+    c.desired = mission.constraints.desired[i];
+    c.tolerance = mission.constraints.deadband_optimization[i - 1];
+    c.achieved = evaluate_on_trajectory(mission, trajectory, c.code);
+    c.payoff_partial = kNaN;
+    judge(decoded, &c);
+    out.push_back(c);
+  }
+  return out;
+}
+
 std::vector<ConstraintSummary> constraint_summaries(const OptimizationReport& report) {
   const Mission& mission = *report.final_trajectory.mission;
   const OptimizerResult& result = *report.result;
-  const bool complete = result_complete(report);
-  const int count = complete ? std::clamp(result.constraint_count, 0, kMaxConstraints) : constraint_count(report);
+  if (!result_complete(report)) return deck_constraint_summaries(mission, *report.final_trajectory.trajectory);
+  const int count = std::clamp(result.constraint_count, 0, kMaxConstraints);
   std::vector<ConstraintSummary> out;
   for (int i = 1; i < count; ++i) {
-    ConstraintSummary c;
-    c.code = complete ? result.codes[i] : mission.constraints.codes[i];
     ConstraintCode decoded;
-    const QuantityText text = code_text(c.code, &decoded);
-    c.name = text.name;
-    c.stage = decoded.is_stage_point ? decoded.stage_code : 0;
-    c.unit = text.unit;
-    c.angle = c.unit == "rad";
-    c.inequality = decoded.kind == ConstraintQuantity::kTotalHeating ||
-                   (decoded.kind == ConstraintQuantity::kDynamicPressure && mission.options.qbar_constraint_type() == 1);
-    if (complete) {
-      c.desired = result.desired[i];
-      c.achieved = result.achieved[i];
-      c.tolerance = result.tolerance[i];
-      c.payoff_partial = result.payoff_partials[i];
-    } else {
-      c.desired = mission.constraints.desired[i];
-      c.tolerance = mission.constraints.deadband_optimization[i - 1];
-      c.achieved = evaluate_on_trajectory(mission, *report.final_trajectory.trajectory, c.code);
-      c.payoff_partial = kNaN;
-    }
-    c.error = std::isfinite(c.achieved) ? constraint_deviation(decoded, c.achieved, c.desired) : kNaN;
-    c.met = std::isfinite(c.error) && (c.inequality ? c.error <= c.tolerance : std::fabs(c.error) <= c.tolerance);
+    ConstraintSummary c = describe_constraint(mission, result.codes[i], &decoded);
+    c.desired = result.desired[i];
+    c.achieved = result.achieved[i];
+    c.tolerance = result.tolerance[i];
+    c.payoff_partial = result.payoff_partials[i];
+    judge(decoded, &c);
     out.push_back(c);
   }
   return out;

@@ -66,9 +66,10 @@ json inertial_json(const InertialVelocity& inertial) {
   };
 }
 
-json orbit_json(const OrbitElements& orbit) {
+json orbit_json(const OrbitElements& orbit, const Constants& constants) {
   const bool elliptic = orbit.has_semi_major_axis;
   const bool asymptote = orbit.has_asymptote;
+  const OrbitSummary summary = summarize_orbit(constants, orbit);
   return json{
       {"type", orbit_type_name(orbit.type)},
       {"twoe_ft2_s2", number(orbit.twice_energy_ft2_s2)},
@@ -91,6 +92,14 @@ json orbit_json(const OrbitElements& orbit) {
        asymptote ? degrees(orbit.asymptote_right_ascension_rad) : json(nullptr)},
       {"asymptote_declination_deg",
        asymptote ? degrees(orbit.asymptote_declination_rad) : json(nullptr)},
+      // In engineering terms (summarize_orbit): above the oblate Earth at their latitudes.
+      {"path", path_class_name(summary.path)},
+      {"perigee_altitude_ft", number(summary.perigee_altitude_ft)},
+      {"perigee_altitude_nmi", number(summary.perigee_altitude_ft / kFeetPerNauticalMile)},
+      {"apogee_altitude_ft", elliptic ? number(summary.apogee_altitude_ft) : json(nullptr)},
+      {"apogee_altitude_nmi", elliptic ? number(summary.apogee_altitude_ft / kFeetPerNauticalMile) : json(nullptr)},
+      {"perigee_geocentric_latitude_deg", degrees(summary.perigee_latitude_rad)},
+      {"perigee_below_haero", summary.perigee_in_atmosphere},
   };
 }
 
@@ -129,6 +138,26 @@ json stage_events_json(const Trajectory& trajectory) {
 
 }  // namespace
 
+nlohmann::ordered_json constraints_json(const std::vector<ConstraintSummary>& constraints) {
+  nlohmann::ordered_json array = nlohmann::ordered_json::array();
+  for (const ConstraintSummary& c : constraints) {
+    array.push_back(nlohmann::ordered_json{
+        {"code", c.code},
+        {"name", c.name},
+        {"stage", c.stage > 0 ? nlohmann::ordered_json(c.stage) : nlohmann::ordered_json(nullptr)},
+        {"unit", c.unit},
+        {"desired", number(c.desired)},
+        {"achieved", number(c.achieved)},
+        {"error", number(c.error)},
+        {"tolerance", number(c.tolerance)},
+        {"inequality", c.inequality},
+        {"met", c.met},
+    });
+  }
+  return array;
+}
+
+
 json trajectory_json(const SimulationReport& report) {
   const Mission& mission = *report.mission;
   const Trajectory& trajectory = *report.trajectory;
@@ -156,7 +185,8 @@ json trajectory_json(const SimulationReport& report) {
     document["burnout"] = nullptr;
     document["inertial"] = nullptr;
   }
-  document["orbit"] = report.has_orbit ? orbit_json(report.orbit) : json(nullptr);
+  document["orbit"] = report.has_orbit ? orbit_json(report.orbit, mission.constants) : json(nullptr);
+  if (!report.constraints.empty()) document["constraints"] = constraints_json(report.constraints);
   document["stage_events"] = stage_events_json(trajectory);
 
   json points = json::array();

@@ -313,6 +313,23 @@ void write_terminal_conditions(Pager& pager, const SimulationReport& report) {
                         "DEG"));
   }
   pager.emit("");
+
+  // The same orbit in engineering terms (altitudes above the oblate Earth at their latitudes).
+  const OrbitSummary summary = summarize_orbit(report.mission->constants, orbit);
+  pager.reserve(5);
+  pager.emit(" ORBIT SUMMARY");
+  const char* path = summary.path == PathClass::kOrbit        ? "ORBIT"
+                     : summary.path == PathClass::kSuborbital ? "SUBORBITAL: PERIGEE BELOW THE SURFACE"
+                                                              : "ESCAPE: 2E >= 0";
+  pager.emit(labelled("PATH", path, ""));
+  pager.emit(labelled("PERIGEE ALTITUDE", format("%.3f", summary.perigee_altitude_ft / kFeetPerNauticalMile),
+                      std::string("N.MI. AT GEOC LAT ") + format("%.3f", deg(summary.perigee_latitude_rad)) + " DEG" +
+                          (summary.perigee_in_atmosphere ? ", BELOW HAERO" : "")));
+  if (orbit.has_semi_major_axis) {
+    pager.emit(labelled("APOGEE ALTITUDE", format("%.3f", summary.apogee_altitude_ft / kFeetPerNauticalMile),
+                        "N.MI."));
+  }
+  pager.emit("");
 }
 
 }  // namespace
@@ -325,6 +342,8 @@ void report_detail::write_trajectory_pages(Pager& pager, const SimulationReport&
   pager.new_page("TERMINAL CONDITIONS", false);
   write_stage_events(pager, trajectory);
   write_terminal_conditions(pager, report);
+  write_constraint_table(pager, report.constraints,
+                         " CONSTRAINTS OF DATA BLOCK 8 ON THIS TRAJECTORY (DATA BLOCK 19 UNITS, DEADBANDS OF DATA BLOCK 29)");
 }
 
 void write_trajectory_listing(std::ostream& out, const SimulationReport& report) {
