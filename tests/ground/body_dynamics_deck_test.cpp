@@ -99,7 +99,7 @@ TEST(Sec22BodyDynamicsDeck, ControlStationInsideTheCgRangeIsNamed) {
       replaced(scout_mission_text(), "control_station_in = [842.0, 548.0, 296.0]", "control_station_in = [500.0, 548.0, 296.0]");
   const ground::DeckError error = rejected(text);
   EXPECT_EQ(error.data_block, 33);
-  EXPECT_EQ(error.field, "body_dynamics.control_station_in");
+  EXPECT_EQ(error.field, "body_dynamics.control_station_in[0]");
   EXPECT_NE(error.message.find("kControlStationAtCenterOfGravity"), std::string::npos) << error.message;
   EXPECT_NE(error.message.find("478-515 in"), std::string::npos) << error.message;
   EXPECT_GT(error.line, 0);

@@ -231,8 +231,9 @@ TEST(Sec22Deck, RejectsNegativeConsumableWeightNamingBlock38) {
   const std::string text = replaced(scout_mission_text(), "0.757, 0.0,", "0.757, -1.0,");
   const DeckError error = rejected(text);
   EXPECT_EQ(error.data_block, 38);
-  EXPECT_EQ(error.field, "stage.3.consumable_weight");
+  EXPECT_EQ(error.field, "stage.3.consumable_weight.remaining_lb[19]");
   EXPECT_TRUE(contains(error.message, "kNegativeWeight"));
+  EXPECT_TRUE(contains(error.message, "remaining_lb[19] = -1 lb; expected >= 0 lb")) << error.message;
 }
 
 TEST(Sec22Deck, RejectsTomlSyntaxErrorWithItsLine) {

@@ -181,13 +181,13 @@ TEST(MissionValidation, EveryDoubleMustBeFinite) {
   expect_fault(*mission, Status::kValueNotFinite, 21, 0, "azimuth_rad");
   mission = optimum();
   mission->constants.j2 = std::numeric_limits<double>::infinity();
-  expect_fault(*mission, Status::kValueNotFinite, 10, 0, "constants");
+  expect_fault(*mission, Status::kValueNotFinite, 10, 0, "j2");
   mission = optimum();
   mission->constraints.deadband_linearization[12] = nan;  // unused slot: still checked
-  expect_fault(*mission, Status::kValueNotFinite, 29, 0, "deadband");
+  expect_fault(*mission, Status::kValueNotFinite, 29, 0, "deadband_linearization");
   mission = optimum();
   mission->misc.nose_radius_ft = nan;
-  expect_fault(*mission, Status::kValueNotFinite, 17, 0, "misc");
+  expect_fault(*mission, Status::kValueNotFinite, 17, 0, "nose_radius_ft");
   mission = optimum();
   mission->vehicle.payload_lb = nan;
   expect_fault(*mission, Status::kValueNotFinite, 39, 4, "payload_lb");

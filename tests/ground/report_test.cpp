@@ -54,8 +54,8 @@ void fill_synthetic(Mission* mission, Trajectory* trajectory) {
   }
   trajectory->points[1].drag_lbf = std::numeric_limits<double>::quiet_NaN();
   trajectory->stage_count = 2;
-  trajectory->stages[0] = StageEvent{1, 0, 2, 27000.0, 22000.0};
-  trajectory->stages[1] = StageEvent{6, 3, 4, 22000.0, 22000.0};
+  trajectory->stages[0] = StageEvent{1, 0, 2, 27000.0, 22000.0, true};
+  trajectory->stages[1] = StageEvent{6, 3, 4, 22000.0, 22000.0, true};
 }
 
 struct SyntheticCase {

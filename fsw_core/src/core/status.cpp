@@ -35,6 +35,8 @@ const char* status_name(Status status) {
     case Status::kAtmosphereTableInvalid: return "kAtmosphereTableInvalid";
     case Status::kBodyDynamicsDataMissing: return "kBodyDynamicsDataMissing";
     case Status::kControlStationAtCenterOfGravity: return "kControlStationAtCenterOfGravity";
+    case Status::kThrustWithoutPropellant: return "kThrustWithoutPropellant";
+    case Status::kConsumableWeightIncreases: return "kConsumableWeightIncreases";
     case Status::kUnknownConstraintCode: return "kUnknownConstraintCode";
     case Status::kConstraintNotHyperbolic: return "kConstraintNotHyperbolic";
     case Status::kConstraintSingular: return "kConstraintSingular";
@@ -104,6 +106,8 @@ const char* status_message(Status status) {
     case Status::kAtmosphereTableInvalid: return "the atmosphere table is inconsistent";
     case Status::kBodyDynamicsDataMissing: return "a 6D (body dynamics) trajectory needs data blocks 33-37 (gains, stations, reference length and area, the block 34-36 tables and the stage-1 c.g. history), which the case does not give completely";
     case Status::kControlStationAtCenterOfGravity: return "the stage-1 control station DA6D(7) lies within the range of the stage-1 c.g. stations of data block 37, so X_delta - X_CG would vanish";
+    case Status::kThrustWithoutPropellant: return "a powered stage has thrust where no consumable weight (propellant) remains";
+    case Status::kConsumableWeightIncreases: return "the consumable weight remaining of a powered stage increases during the burn";
     case Status::kUnknownConstraintCode: return "a data block 8 constraint code is not 0-14, 10X+5 to 10X+9 (X = 1-9) or 100-102";
     case Status::kConstraintNotHyperbolic: return "a hyperbolic-asymptote constraint (100-102) needs a hyperbolic orbit (2E > 0)";
     case Status::kConstraintSingular: return "the constraint has no derivative at this state (equatorial or circular orbit, vertical inertial velocity, zero range)";

@@ -18,45 +18,127 @@ constexpr int kCanonicalSequence[kMaxStages] = {1, 6, 2, 7, 3, 8, 4, 9, 5, 10};
 // Tolerance on the 90-degree flight-path angle of block 21 (deck conversions round in the last bit).
 constexpr double kAngleTolerance_rad = 1.0e-9;
 
+// Angles the manual gives as angles (launch azimuth and longitude, spun-stage attitudes, the pitch
+// program) lie within one turn either way; latitude within +-90 deg.
+constexpr double kFullTurn_rad = 2.0 * kPi;
+
+// Launch altitude (DA6(1)): from below the lowest land (the Dead Sea shore, about -1400 ft) to an
+// air launch (tens of km).
+constexpr double kLowestLaunchAltitude_ft = -1500.0;
+constexpr double kHighestLaunchAltitude_ft = 100000.0;
+
+constexpr ValueRange at_least(double low) {
+  ValueRange range;
+  range.has_low = true;
+  range.low = low;
+  return range;
+}
+constexpr ValueRange above(double low) {
+  ValueRange range = at_least(low);
+  range.low_inclusive = false;
+  return range;
+}
+constexpr ValueRange at_most(double high) {
+  ValueRange range;
+  range.has_high = true;
+  range.high = high;
+  return range;
+}
+constexpr ValueRange between(double low, double high) {
+  ValueRange range = at_least(low);
+  range.has_high = true;
+  range.high = high;
+  return range;
+}
+constexpr ValueRange below(ValueRange range, double high) {
+  range.has_high = true;
+  range.high = high;
+  range.high_inclusive = false;
+  return range;
+}
+constexpr ValueRange exactly(double value) { return between(value, value); }
+
+bool within(double value, const ValueRange& range) {
+  if (range.has_low && !(range.low_inclusive ? value >= range.low : value > range.low)) return false;
+  if (range.has_high && !(range.high_inclusive ? value <= range.high : value < range.high)) return false;
+  return true;
+}
+
 struct Check {
   MissionFault* fault;
 
+  // A fault without a value (a missing table, a capacity the ground tools count themselves).
   Status fail(Status status, int data_block, int stage_code, const char* field) const {
     if (fault != nullptr) {
+      *fault = MissionFault{};
       fault->data_block = data_block;
       fault->stage_code = stage_code;
       fault->field = field;
     }
     return status;
   }
+
+  // A fault with the value found (element `index` of `field`, -1 for none), the range it must lie
+  // in and, when the range cannot say it, what was expected.
+  Status fail(Status status, int data_block, int stage_code, const char* field, int index, double value,
+              const char* unit, const ValueRange& range, const char* expected = "") const {
+    fail(status, data_block, stage_code, field);
+    if (fault != nullptr) {
+      fault->index = index;
+      fault->has_value = true;
+      fault->value = value;
+      fault->unit = unit;
+      fault->range = range;
+      fault->expected = expected;
+    }
+    return status;
+  }
+
+  // kOk when the value lies in the range, else `status` with the value and the range.
+  Status range(double value, const ValueRange& allowed, Status status, int data_block, int stage_code,
+               const char* field, const char* unit, int index = -1) const {
+    if (within(value, allowed)) return Status::kOk;
+    return fail(status, data_block, stage_code, field, index, value, unit, allowed);
+  }
+
+  // kOk when the value is finite, else kValueNotFinite with the value.
+  Status finite(double value, int data_block, int stage_code, const char* field, const char* unit,
+                int index = -1) const {
+    if (std::isfinite(value)) return Status::kOk;
+    return fail(Status::kValueNotFinite, data_block, stage_code, field, index, value, unit, ValueRange{},
+                "a finite number");
+  }
 };
 
-bool finite(double value) { return std::isfinite(value); }
+#define TOLIP_CHECK(expression)              \
+  do {                                       \
+    const Status check_status_ = expression; \
+    if (!ok(check_status_)) return check_status_; \
+  } while (false)
 
-bool all_finite(const double* values, int count) {
-  for (int i = 0; i < count; ++i) {
-    if (!finite(values[i])) return false;
-  }
-  return true;
-}
-
-// Every stored point finite and the abscissae strictly increasing (what finalize() checks).
+// Every stored point finite and the abscissae strictly increasing (what finalize() checks); the
+// fault names the point. `x_field` and `y_field` name the table's columns.
 template <int N>
-Status table_shape(const Table<N>& table) {
+Status table_shape(const Table<N>& table, const Check& check, int data_block, int stage_code, const char* x_field,
+                   const char* x_unit, const char* y_field, const char* y_unit) {
   for (int i = 0; i < table.size(); ++i) {
-    if (!finite(table.x(i)) || !finite(table.y(i))) return Status::kValueNotFinite;
-    if (i > 0 && !(table.x(i) > table.x(i - 1))) return Status::kTableNotMonotonic;
+    TOLIP_CHECK(check.finite(table.x(i), data_block, stage_code, x_field, x_unit, i));
+    TOLIP_CHECK(check.finite(table.y(i), data_block, stage_code, y_field, y_unit, i));
+    if (i > 0 && !(table.x(i) > table.x(i - 1))) {
+      return check.fail(Status::kTableNotMonotonic, data_block, stage_code, x_field, i, table.x(i), x_unit,
+                        above(table.x(i - 1)), "strictly increasing");
+    }
   }
   return Status::kOk;
 }
 
 // A table that may be empty; when it has points it must be well formed and finalized.
 template <int N>
-Status optional_table(const Table<N>& table) {
+Status optional_table(const Table<N>& table, const Check& check, int data_block, int stage_code, const char* x_field,
+                      const char* x_unit, const char* y_field, const char* y_unit) {
   if (table.empty()) return Status::kOk;
-  const Status shape = table_shape(table);
-  if (!ok(shape)) return shape;
-  return table.finalized() ? Status::kOk : Status::kTableNotMonotonic;
+  TOLIP_CHECK(table_shape(table, check, data_block, stage_code, x_field, x_unit, y_field, y_unit));
+  return table.finalized() ? Status::kOk : check.fail(Status::kTableNotMonotonic, data_block, stage_code, x_field);
 }
 
 // Data block 8 codes: 0-14 terminal (14 = heating), X5-X9 at the end of stage X = 1-9,
@@ -92,22 +174,23 @@ int last_powered_stage(const StageSequence& sequence) {
 // ---- data block 4 -------------------------------------------------------------------------------
 Status check_options(const Options& options, const Check& check) {
   const int* ip = options.ip;
-  auto in_range = [](int value, int low, int high) { return value >= low && value <= high; };
+  auto option = [&](int n, double low, double high) {
+    return check.range(ip[n], between(low, high), Status::kValueOutOfRange, 4, 0, "ip", "", n);
+  };
   // Options the manual marks "not used" must stay 0.
   const int unused[] = {4, 5, 8, 14, 16, 18, 19, 20};
-  for (int n : unused) {
-    if (ip[n] != 0) return check.fail(Status::kValueOutOfRange, 4, 0, "ip");
-  }
+  for (int n : unused) TOLIP_CHECK(option(n, 0, 0));
   const int binary[] = {2, 3, 7, 11, 12, 13, 15, 17, 21, 22, 23, 24};
-  for (int n : binary) {
-    if (!in_range(ip[n], 0, 1)) return check.fail(Status::kValueOutOfRange, 4, 0, "ip");
-  }
-  if (!in_range(ip[1], 0, 2) || !in_range(ip[6], 0, 2) || !in_range(ip[9], 0, 3) ||
-      !in_range(ip[10], 0, 2)) {
-    return check.fail(Status::kValueOutOfRange, 4, 0, "ip");
-  }
+  for (int n : binary) TOLIP_CHECK(option(n, 0, 1));
+  TOLIP_CHECK(option(1, 0, 2));
+  TOLIP_CHECK(option(6, 0, 2));
+  TOLIP_CHECK(option(9, 0, 3));
+  TOLIP_CHECK(option(10, 0, 2));
   // IP(6) = 1 (6D after linearization) requires IP(7) = 1.
-  if (ip[6] == 1 && ip[7] != 1) return check.fail(Status::kValueOutOfRange, 4, 0, "ip");
+  if (ip[6] == 1 && ip[7] != 1) {
+    return check.fail(Status::kValueOutOfRange, 4, 0, "ip", 7, ip[7], "", exactly(1),
+                      "IP(7) = 1 (linearization) with IP(6) = 1");
+  }
   return Status::kOk;
 }
 
@@ -115,21 +198,25 @@ Status check_options(const Options& options, const Check& check) {
 Status check_sequence(const Vehicle& vehicle, const Check& check) {
   const StageSequence& sequence = vehicle.sequence;
   if (sequence.count < 1 || sequence.count > kMaxStages) {
-    return check.fail(Status::kStageSequenceInvalid, 5, 0, "sequence");
+    return check.fail(Status::kStageSequenceInvalid, 5, 0, "sequence", -1, sequence.count, "",
+                      between(1, kMaxStages), "1-10 stage codes, a prefix of 1 6 2 7 3 8 4 9 5 10");
   }
   for (int k = 0; k < sequence.count; ++k) {
     const int code = sequence.codes[k];
     if (!is_powered_stage(code) && !is_coast_stage(code)) {
-      return check.fail(Status::kUnknownStageCode, 5, code, "sequence");
+      return check.fail(Status::kUnknownStageCode, 5, code, "sequence", k, code, "", between(1, kMaxStages),
+                        "1-5 (powered stages) or 6-10 (the coasts after them)");
     }
     if (code != kCanonicalSequence[k]) {
-      return check.fail(Status::kStageSequenceInvalid, 5, code, "sequence");
+      return check.fail(Status::kStageSequenceInvalid, 5, code, "sequence", k, code, "",
+                        exactly(kCanonicalSequence[k]), "a prefix of 1 6 2 7 3 8 4 9 5 10 starting with 1");
     }
   }
   for (int code = 1; code <= kMaxStages; ++code) {
     const bool listed = position_in_sequence(sequence, code) >= 0;
     if (vehicle.stages[stage_index(code)].in_sequence != listed) {
-      return check.fail(Status::kStageSequenceInvalid, 5, code, "in_sequence");
+      return check.fail(Status::kStageSequenceInvalid, 5, code, "in_sequence", -1, code, "", ValueRange{},
+                        "StageData::in_sequence set exactly for the stages of the sequence");
     }
   }
   return Status::kOk;
@@ -137,107 +224,104 @@ Status check_sequence(const Vehicle& vehicle, const Check& check) {
 
 // ---- data block 10 ------------------------------------------------------------------------------
 Status check_constants(const Constants& c, const Check& check) {
-  const double values[] = {c.earth_rotation_rate_rad_s, c.gravitational_parameter_ft3_s2,
-                           c.earth_equatorial_radius_ft, c.gas_constant_ft2_s2_R,
-                           c.g0_ft_s2, c.sea_level_pressure_lbf_ft2, c.haero_ft,
-                           c.lines_per_page, c.deg_to_rad_as_printed, c.time_epsilon_s,
-                           c.j2, c.inverse_flattening, c.ct1_13};
-  if (!all_finite(values, static_cast<int>(sizeof(values) / sizeof(values[0])))) {
-    return check.fail(Status::kValueNotFinite, 10, 0, "constants");
-  }
-  if (!(c.gravitational_parameter_ft3_s2 > 0.0)) {
-    return check.fail(Status::kValueOutOfRange, 10, 0, "gravitational_parameter_ft3_s2");
-  }
-  if (!(c.earth_equatorial_radius_ft > 0.0)) {
-    return check.fail(Status::kValueOutOfRange, 10, 0, "earth_equatorial_radius_ft");
-  }
-  if (!(c.gas_constant_ft2_s2_R > 0.0)) {
-    return check.fail(Status::kValueOutOfRange, 10, 0, "gas_constant_ft2_s2_R");
-  }
-  if (!(c.g0_ft_s2 > 0.0)) return check.fail(Status::kValueOutOfRange, 10, 0, "g0_ft_s2");
-  if (c.sea_level_pressure_lbf_ft2 < 0.0) {
-    return check.fail(Status::kValueOutOfRange, 10, 0, "sea_level_pressure_lbf_ft2");
-  }
-  if (c.haero_ft < 0.0) return check.fail(Status::kValueOutOfRange, 10, 0, "haero_ft");
-  if (!(c.time_epsilon_s > 0.0)) return check.fail(Status::kValueOutOfRange, 10, 0, "time_epsilon_s");
-  if (!(c.inverse_flattening > 1.0)) {
-    return check.fail(Status::kValueOutOfRange, 10, 0, "inverse_flattening");
-  }
+  struct Word {
+    double value;
+    const char* field;
+    const char* unit;
+  };
+  const Word words[] = {{c.earth_rotation_rate_rad_s, "earth_rotation_rate_rad_s", "rad/s"},
+                        {c.gravitational_parameter_ft3_s2, "gravitational_parameter_ft3_s2", "ft^3/s^2"},
+                        {c.earth_equatorial_radius_ft, "earth_equatorial_radius_ft", "ft"},
+                        {c.gas_constant_ft2_s2_R, "gas_constant_ft2_s2_R", "ft^2/(s^2 R)"},
+                        {c.g0_ft_s2, "g0_ft_s2", "ft/s^2"},
+                        {c.sea_level_pressure_lbf_ft2, "sea_level_pressure_lbf_ft2", "lbf/ft^2"},
+                        {c.haero_ft, "haero_ft", "ft"},
+                        {c.lines_per_page, "lines_per_page", ""},
+                        {c.deg_to_rad_as_printed, "deg_to_rad_as_printed", ""},
+                        {c.time_epsilon_s, "time_epsilon_s", "s"},
+                        {c.j2, "j2", ""},
+                        {c.inverse_flattening, "inverse_flattening", ""},
+                        {c.ct1_13, "ct1_13", ""}};
+  for (const Word& word : words) TOLIP_CHECK(check.finite(word.value, 10, 0, word.field, word.unit));
+  const Status bad = Status::kValueOutOfRange;
+  TOLIP_CHECK(check.range(c.gravitational_parameter_ft3_s2, above(0.0), bad, 10, 0, "gravitational_parameter_ft3_s2",
+                          "ft^3/s^2"));
+  TOLIP_CHECK(check.range(c.earth_equatorial_radius_ft, above(0.0), bad, 10, 0, "earth_equatorial_radius_ft", "ft"));
+  TOLIP_CHECK(check.range(c.gas_constant_ft2_s2_R, above(0.0), bad, 10, 0, "gas_constant_ft2_s2_R", "ft^2/(s^2 R)"));
+  TOLIP_CHECK(check.range(c.g0_ft_s2, above(0.0), bad, 10, 0, "g0_ft_s2", "ft/s^2"));
+  TOLIP_CHECK(check.range(c.sea_level_pressure_lbf_ft2, at_least(0.0), bad, 10, 0, "sea_level_pressure_lbf_ft2",
+                          "lbf/ft^2"));
+  TOLIP_CHECK(check.range(c.haero_ft, at_least(0.0), bad, 10, 0, "haero_ft", "ft"));
+  TOLIP_CHECK(check.range(c.time_epsilon_s, above(0.0), bad, 10, 0, "time_epsilon_s", "s"));
+  TOLIP_CHECK(check.range(c.inverse_flattening, above(1.0), bad, 10, 0, "inverse_flattening", ""));
   return Status::kOk;
 }
 
 // ---- data blocks 11-14 --------------------------------------------------------------------------
 Status check_atmosphere(const AtmosphereTable& a, const Check& check) {
-  if (!all_finite(a.base_geopotential_altitude_ft, kAtmosphereLayers)) {
-    return check.fail(Status::kValueNotFinite, 11, 0, "base_geopotential_altitude_ft");
-  }
-  if (!all_finite(a.base_molecular_temperature_R, kAtmosphereLayers)) {
-    return check.fail(Status::kValueNotFinite, 12, 0, "base_molecular_temperature_R");
-  }
-  if (!all_finite(a.lapse_rate_R_per_ft, kAtmosphereLayers)) {
-    return check.fail(Status::kValueNotFinite, 13, 0, "lapse_rate_R_per_ft");
-  }
-  if (!all_finite(a.base_density_slug_ft3, kAtmosphereLayers)) {
-    return check.fail(Status::kValueNotFinite, 14, 0, "base_density_slug_ft3");
-  }
-  if (a.base_geopotential_altitude_ft[0] != 0.0) {
-    return check.fail(Status::kAtmosphereTableInvalid, 11, 0, "base_geopotential_altitude_ft");
-  }
-  for (int i = 1; i < kAtmosphereLayers; ++i) {
-    if (!(a.base_geopotential_altitude_ft[i] > a.base_geopotential_altitude_ft[i - 1])) {
-      return check.fail(Status::kAtmosphereTableInvalid, 11, 0, "base_geopotential_altitude_ft");
-    }
+  for (int i = 0; i < kAtmosphereLayers; ++i) {
+    TOLIP_CHECK(check.finite(a.base_geopotential_altitude_ft[i], 11, 0, "base_geopotential_altitude_ft", "ft", i));
   }
   for (int i = 0; i < kAtmosphereLayers; ++i) {
-    if (!(a.base_molecular_temperature_R[i] > 0.0)) {
-      return check.fail(Status::kAtmosphereTableInvalid, 12, 0, "base_molecular_temperature_R");
-    }
-    if (!(a.base_density_slug_ft3[i] > 0.0)) {
-      return check.fail(Status::kAtmosphereTableInvalid, 14, 0, "base_density_slug_ft3");
-    }
+    TOLIP_CHECK(check.finite(a.base_molecular_temperature_R[i], 12, 0, "base_molecular_temperature_R", "R", i));
+  }
+  for (int i = 0; i < kAtmosphereLayers; ++i) {
+    TOLIP_CHECK(check.finite(a.lapse_rate_R_per_ft[i], 13, 0, "lapse_rate_R_per_ft", "R/ft", i));
+  }
+  for (int i = 0; i < kAtmosphereLayers; ++i) {
+    TOLIP_CHECK(check.finite(a.base_density_slug_ft3[i], 14, 0, "base_density_slug_ft3", "slug/ft^3", i));
+  }
+  const Status bad = Status::kAtmosphereTableInvalid;
+  TOLIP_CHECK(check.range(a.base_geopotential_altitude_ft[0], exactly(0.0), bad, 11, 0, "base_geopotential_altitude_ft",
+                          "ft", 0));
+  for (int i = 1; i < kAtmosphereLayers; ++i) {
+    TOLIP_CHECK(check.range(a.base_geopotential_altitude_ft[i], above(a.base_geopotential_altitude_ft[i - 1]), bad, 11,
+                            0, "base_geopotential_altitude_ft", "ft", i));
+  }
+  for (int i = 0; i < kAtmosphereLayers; ++i) {
+    TOLIP_CHECK(check.range(a.base_molecular_temperature_R[i], above(0.0), bad, 12, 0, "base_molecular_temperature_R",
+                            "R", i));
+    TOLIP_CHECK(check.range(a.base_density_slug_ft3[i], above(0.0), bad, 14, 0, "base_density_slug_ft3", "slug/ft^3", i));
   }
   return Status::kOk;
 }
 
 // ---- data blocks 16, 30, 31, 38, 39 for one stage ------------------------------------------------
 Status check_stage(const StageData& stage, int code, double time_epsilon_s, const Check& check) {
-  const double scalars[] = {stage.duration_s, stage.jettison_weight_lb, stage.reference_area_ft2,
-                            stage.nozzle_exit_area_ft2};
-  if (!finite(scalars[0])) return check.fail(Status::kValueNotFinite, 16, code, "duration_s");
-  if (!all_finite(scalars + 1, 3)) return check.fail(Status::kValueNotFinite, 39, code, "stage_data");
+  TOLIP_CHECK(check.finite(stage.duration_s, 16, code, "duration_s", "s"));
+  TOLIP_CHECK(check.finite(stage.jettison_weight_lb, 39, code, "jettison_weight_lb", "lb"));
+  TOLIP_CHECK(check.finite(stage.reference_area_ft2, 39, code, "reference_area_ft2", "ft^2"));
+  TOLIP_CHECK(check.finite(stage.nozzle_exit_area_ft2, 39, code, "nozzle_exit_area_ft2", "ft^2"));
 
-  if (!(stage.duration_s > 0.0)) return check.fail(Status::kNonPositiveDuration, 16, code, "duration_s");
-  if (stage.integration_steps <= 0) {
-    return check.fail(Status::kNonPositiveStepCount, 16, code, "integration_steps");
-  }
-  if (stage.jettison_weight_lb < 0.0) {
-    return check.fail(Status::kNegativeWeight, 39, code, "jettison_weight_lb");
-  }
-  if (stage.reference_area_ft2 < 0.0) {
-    return check.fail(Status::kValueOutOfRange, 39, code, "reference_area_ft2");
-  }
-  if (stage.nozzle_exit_area_ft2 < 0.0) {
-    return check.fail(Status::kValueOutOfRange, 39, code, "nozzle_exit_area_ft2");
-  }
+  TOLIP_CHECK(check.range(stage.duration_s, above(0.0), Status::kNonPositiveDuration, 16, code, "duration_s", "s"));
+  TOLIP_CHECK(check.range(stage.integration_steps, at_least(1), Status::kNonPositiveStepCount, 16, code,
+                          "integration_steps", ""));
+  TOLIP_CHECK(check.range(stage.jettison_weight_lb, at_least(0.0), Status::kNegativeWeight, 39, code,
+                          "jettison_weight_lb", "lb"));
+  TOLIP_CHECK(check.range(stage.reference_area_ft2, at_least(0.0), Status::kValueOutOfRange, 39, code,
+                          "reference_area_ft2", "ft^2"));
+  TOLIP_CHECK(check.range(stage.nozzle_exit_area_ft2, at_least(0.0), Status::kValueOutOfRange, 39, code,
+                          "nozzle_exit_area_ft2", "ft^2"));
 
-  Status status = optional_table(stage.drag_coefficient);
-  if (!ok(status)) return check.fail(status, 31, code, "drag_coefficient");
+  TOLIP_CHECK(optional_table(stage.drag_coefficient, check, 31, code, "drag_mach", "", "drag_coefficient", ""));
   if (!stage.drag_coefficient.empty() && !(stage.reference_area_ft2 > 0.0)) {
-    return check.fail(Status::kValueOutOfRange, 39, code, "reference_area_ft2");
+    return check.fail(Status::kValueOutOfRange, 39, code, "reference_area_ft2", -1, stage.reference_area_ft2, "ft^2",
+                      above(0.0), "> 0 for a stage with a drag table (data block 31)");
   }
 
   if (is_coast_stage(code)) {
-    if (stage.integration_steps > kMaxCoastSteps) {
-      return check.fail(Status::kTooManyCoastSteps, 16, code, "integration_steps");
-    }
+    TOLIP_CHECK(check.range(stage.integration_steps, at_most(kMaxCoastSteps), Status::kTooManyCoastSteps, 16, code,
+                            "integration_steps", ""));
     if (!stage.vacuum_thrust_lbf.empty()) {
-      return check.fail(Status::kValueOutOfRange, 30, code, "vacuum_thrust_lbf");
+      return check.fail(Status::kValueOutOfRange, 30, code, "vacuum_thrust_lbf", -1, stage.vacuum_thrust_lbf.size(),
+                        "points", exactly(0), "no thrust table in a coast");
     }
-    if (stage.nozzle_exit_area_ft2 != 0.0) {
-      return check.fail(Status::kValueOutOfRange, 39, code, "nozzle_exit_area_ft2");
-    }
+    TOLIP_CHECK(check.range(stage.nozzle_exit_area_ft2, exactly(0.0), Status::kValueOutOfRange, 39, code,
+                            "nozzle_exit_area_ft2", "ft^2"));
     if (!stage.consumable_weight_lb.empty()) {
-      return check.fail(Status::kValueOutOfRange, 38, code, "consumable_weight_lb");
+      return check.fail(Status::kValueOutOfRange, 38, code, "consumable_weight_lb", -1,
+                        stage.consumable_weight_lb.size(), "points", exactly(0),
+                        "no consumable weight table in a coast");
     }
     return Status::kOk;
   }
@@ -246,27 +330,48 @@ Status check_stage(const StageData& stage, int code, double time_epsilon_s, cons
   const ThrustTable& thrust = stage.vacuum_thrust_lbf;
   const WeightTable& weight = stage.consumable_weight_lb;
   if (thrust.empty()) return check.fail(Status::kMissingThrustTable, 30, code, "vacuum_thrust_lbf");
-  status = table_shape(thrust);
-  if (!ok(status)) return check.fail(status, 30, code, "vacuum_thrust_lbf");
+  TOLIP_CHECK(table_shape(thrust, check, 30, code, "vacuum_thrust_time_s", "s", "vacuum_thrust_lbf", "lbf"));
   if (!thrust.finalized()) return check.fail(Status::kMissingThrustTable, 30, code, "vacuum_thrust_lbf");
   if (weight.empty()) return check.fail(Status::kMissingWeightTable, 38, code, "consumable_weight_lb");
-  status = table_shape(weight);
-  if (!ok(status)) return check.fail(status, 38, code, "consumable_weight_lb");
+  TOLIP_CHECK(table_shape(weight, check, 38, code, "consumable_weight_time_s", "s", "consumable_weight_lb", "lb"));
   if (!weight.finalized()) {
     return check.fail(Status::kMissingWeightTable, 38, code, "consumable_weight_lb");
   }
-  if (thrust.first_x() < 0.0) return check.fail(Status::kValueOutOfRange, 30, code, "vacuum_thrust_lbf");
-  if (weight.first_x() < 0.0) {
-    return check.fail(Status::kValueOutOfRange, 38, code, "consumable_weight_lb");
-  }
+  TOLIP_CHECK(check.range(thrust.first_x(), at_least(0.0), Status::kValueOutOfRange, 30, code, "vacuum_thrust_time_s",
+                          "s", 0));
+  TOLIP_CHECK(check.range(weight.first_x(), at_least(0.0), Status::kValueOutOfRange, 38, code,
+                          "consumable_weight_time_s", "s", 0));
   for (int i = 0; i < thrust.size(); ++i) {
-    if (thrust.y(i) < 0.0) return check.fail(Status::kValueOutOfRange, 30, code, "vacuum_thrust_lbf");
+    TOLIP_CHECK(check.range(thrust.y(i), at_least(0.0), Status::kValueOutOfRange, 30, code, "vacuum_thrust_lbf", "lbf",
+                            i));
   }
   for (int i = 0; i < weight.size(); ++i) {
-    if (weight.y(i) < 0.0) return check.fail(Status::kNegativeWeight, 38, code, "consumable_weight_lb");
+    TOLIP_CHECK(check.range(weight.y(i), at_least(0.0), Status::kNegativeWeight, 38, code, "consumable_weight_lb", "lb",
+                            i));
+  }
+  // Propellant is consumed, never made: the weight remaining never increases.
+  for (int i = 1; i < weight.size(); ++i) {
+    if (weight.y(i) > weight.y(i - 1)) {
+      return check.fail(Status::kConsumableWeightIncreases, 38, code, "consumable_weight_lb", i, weight.y(i), "lb",
+                        at_most(weight.y(i - 1)), "no more than the weight remaining at the point before");
+    }
   }
   if (std::fabs(thrust.last_x() - weight.last_x()) > time_epsilon_s) {
     return check.fail(Status::kThrustWeightTimesDiffer, 38, code, "consumable_weight_lb");
+  }
+  // Thrust needs propellant: a stage with thrust carries consumable weight, and wherever the thrust
+  // table is positive before its last point some consumable weight remains.
+  bool thrusts = false;
+  for (int i = 0; i < thrust.size(); ++i) thrusts = thrusts || thrust.y(i) > 0.0;
+  if (thrusts && !(weight.y(0) > 0.0)) {
+    return check.fail(Status::kThrustWithoutPropellant, 38, code, "consumable_weight_lb", 0, weight.y(0), "lb",
+                      above(0.0), "propellant for the thrust of data block 30");
+  }
+  for (int i = 0; i + 1 < thrust.size(); ++i) {
+    if (thrust.y(i) > 0.0 && !(weight(thrust.x(i)) > 0.0)) {
+      return check.fail(Status::kThrustWithoutPropellant, 30, code, "vacuum_thrust_lbf", i, thrust.y(i), "lbf",
+                        exactly(0.0), "no thrust once the consumable weight of data block 38 is gone");
+    }
   }
   if (std::fabs(stage.duration_s - thrust.last_x()) > time_epsilon_s) {
     return check.fail(Status::kStageDurationMismatch, 16, code, "duration_s");
@@ -278,9 +383,7 @@ Status check_vehicle(const Vehicle& vehicle, const Constants& constants, const C
   const StageSequence& sequence = vehicle.sequence;
   for (int k = 0; k < sequence.count; ++k) {
     const int code = sequence.codes[k];
-    const Status status = check_stage(vehicle.stages[stage_index(code)], code,
-                                      constants.time_epsilon_s, check);
-    if (!ok(status)) return status;
+    TOLIP_CHECK(check_stage(vehicle.stages[stage_index(code)], code, constants.time_epsilon_s, check));
   }
 
   // Block 16 step counts.
@@ -317,83 +420,83 @@ Status check_vehicle(const Vehicle& vehicle, const Constants& constants, const C
   }
 
   // Block 32.
-  const Status lift = optional_table(vehicle.lift_curve_slope_per_rad);
-  if (!ok(lift)) return check.fail(lift, 32, 0, "lift_curve_slope_per_rad");
+  TOLIP_CHECK(optional_table(vehicle.lift_curve_slope_per_rad, check, 32, 0, "lift_mach", "",
+                             "lift_curve_slope_per_rad", "per rad"));
   for (int i = 0; i < kMaxStages; ++i) {
     if (vehicle.stages[i].in_sequence && vehicle.stages[i].uses_lift_table) {
       if (vehicle.lift_curve_slope_per_rad.empty()) {
         return check.fail(Status::kTableEmpty, 32, i + 1, "lift_curve_slope_per_rad");
       }
       if (!(vehicle.stages[i].reference_area_ft2 > 0.0)) {
-        return check.fail(Status::kValueOutOfRange, 39, i + 1, "reference_area_ft2");
+        return check.fail(Status::kValueOutOfRange, 39, i + 1, "reference_area_ft2", -1,
+                          vehicle.stages[i].reference_area_ft2, "ft^2", above(0.0),
+                          "> 0 for a stage using the lift table (data block 32)");
       }
     }
   }
 
   // The payload rides in the jettison weight of the last powered stage (Sec. 14).
   const int last_powered = last_powered_stage(sequence);
-  if (!finite(vehicle.payload_lb)) return check.fail(Status::kValueNotFinite, 39, last_powered, "payload_lb");
-  if (vehicle.payload_lb < 0.0) return check.fail(Status::kNegativeWeight, 39, last_powered, "payload_lb");
+  TOLIP_CHECK(check.finite(vehicle.payload_lb, 39, last_powered, "payload_lb", "lb"));
+  TOLIP_CHECK(check.range(vehicle.payload_lb, at_least(0.0), Status::kNegativeWeight, 39, last_powered, "payload_lb",
+                          "lb"));
   return Status::kOk;
 }
 
 // ---- data blocks 20, 21 -------------------------------------------------------------------------
 Status check_launch(const LaunchConditions& l, const Vehicle& vehicle, const Check& check) {
-  if (!finite(l.liftoff_duration_s)) return check.fail(Status::kValueNotFinite, 20, 0, "liftoff_duration_s");
-  if (!finite(l.launch_space_age_date_days)) {
-    return check.fail(Status::kValueNotFinite, 20, 0, "launch_space_age_date_days");
-  }
-  if (!finite(l.altitude_ft)) return check.fail(Status::kValueNotFinite, 21, 0, "altitude_ft");
-  if (!finite(l.longitude_rad)) return check.fail(Status::kValueNotFinite, 21, 0, "longitude_rad");
-  if (!finite(l.geocentric_latitude_rad)) {
-    return check.fail(Status::kValueNotFinite, 21, 0, "geocentric_latitude_rad");
-  }
-  if (!finite(l.velocity_ft_s)) return check.fail(Status::kValueNotFinite, 21, 0, "velocity_ft_s");
-  if (!finite(l.azimuth_rad)) return check.fail(Status::kValueNotFinite, 21, 0, "azimuth_rad");
-  if (!finite(l.flight_path_angle_rad)) {
-    return check.fail(Status::kValueNotFinite, 21, 0, "flight_path_angle_rad");
-  }
-  if (!finite(l.heading_hold_until_s)) {
-    return check.fail(Status::kValueNotFinite, 21, 0, "heading_hold_until_s");
-  }
+  TOLIP_CHECK(check.finite(l.liftoff_duration_s, 20, 0, "liftoff_duration_s", "s"));
+  TOLIP_CHECK(check.finite(l.launch_space_age_date_days, 20, 0, "launch_space_age_date_days", "days"));
+  TOLIP_CHECK(check.finite(l.altitude_ft, 21, 0, "altitude_ft", "ft"));
+  TOLIP_CHECK(check.finite(l.longitude_rad, 21, 0, "longitude_rad", "rad"));
+  TOLIP_CHECK(check.finite(l.geocentric_latitude_rad, 21, 0, "geocentric_latitude_rad", "rad"));
+  TOLIP_CHECK(check.finite(l.velocity_ft_s, 21, 0, "velocity_ft_s", "ft/s"));
+  TOLIP_CHECK(check.finite(l.azimuth_rad, 21, 0, "azimuth_rad", "rad"));
+  TOLIP_CHECK(check.finite(l.flight_path_angle_rad, 21, 0, "flight_path_angle_rad", "rad"));
+  TOLIP_CHECK(check.finite(l.heading_hold_until_s, 21, 0, "heading_hold_until_s", "s"));
 
-  if (l.liftoff_duration_s < 0.0) return check.fail(Status::kValueOutOfRange, 20, 0, "liftoff_duration_s");
+  const Status bad = Status::kValueOutOfRange;
+  TOLIP_CHECK(check.range(l.liftoff_duration_s, at_least(0.0), bad, 20, 0, "liftoff_duration_s", "s"));
   const StageData& stage1 = vehicle.stages[stage_index(1)];
-  if (!(l.liftoff_duration_s < stage1.duration_s)) {
-    return check.fail(Status::kLiftoffLongerThanStage1, 20, 1, "liftoff_duration_s");
-  }
-  if (std::fabs(l.geocentric_latitude_rad) > 0.5 * kPi) {
-    return check.fail(Status::kValueOutOfRange, 21, 0, "geocentric_latitude_rad");
-  }
-  if (l.velocity_ft_s != 0.0) return check.fail(Status::kInitialConditionsInvalid, 21, 0, "velocity_ft_s");
-  if (std::fabs(l.flight_path_angle_rad - 0.5 * kPi) > kAngleTolerance_rad) {
-    return check.fail(Status::kInitialConditionsInvalid, 21, 0, "flight_path_angle_rad");
-  }
-  if (l.heading_hold_until_s < 0.0) {
-    return check.fail(Status::kValueOutOfRange, 21, 0, "heading_hold_until_s");
-  }
+  TOLIP_CHECK(check.range(l.liftoff_duration_s, below(at_least(0.0), stage1.duration_s),
+                          Status::kLiftoffLongerThanStage1, 20, 1, "liftoff_duration_s", "s"));
+  TOLIP_CHECK(check.range(l.altitude_ft, between(kLowestLaunchAltitude_ft, kHighestLaunchAltitude_ft), bad, 21, 0,
+                          "altitude_ft", "ft"));
+  TOLIP_CHECK(check.range(l.longitude_rad, between(-kFullTurn_rad, kFullTurn_rad), bad, 21, 0, "longitude_rad", "rad"));
+  TOLIP_CHECK(check.range(l.geocentric_latitude_rad, between(-0.5 * kPi, 0.5 * kPi), bad, 21, 0,
+                          "geocentric_latitude_rad", "rad"));
+  TOLIP_CHECK(check.range(l.velocity_ft_s, exactly(0.0), Status::kInitialConditionsInvalid, 21, 0, "velocity_ft_s",
+                          "ft/s"));
+  TOLIP_CHECK(check.range(l.azimuth_rad, between(-kFullTurn_rad, kFullTurn_rad), bad, 21, 0, "azimuth_rad", "rad"));
+  TOLIP_CHECK(check.range(l.flight_path_angle_rad, between(0.5 * kPi - kAngleTolerance_rad, 0.5 * kPi + kAngleTolerance_rad),
+                          Status::kInitialConditionsInvalid, 21, 0, "flight_path_angle_rad", "rad"));
+  TOLIP_CHECK(check.range(l.heading_hold_until_s, at_least(0.0), bad, 21, 0, "heading_hold_until_s", "s"));
   return Status::kOk;
 }
 
 // ---- data block 22 ------------------------------------------------------------------------------
 Status check_control(const ControlConstraints& c, const Options& options, const Vehicle& vehicle,
                      double time_epsilon_s, const Check& check) {
-  const double values[] = {c.zero_alpha_start_s, c.zero_alpha_end_s, c.max_pitch_rate_rad_s,
-                           c.min_pitch_rate_rad_s, c.min_pitch_rate_change_rad_s};
-  if (!all_finite(values, 5)) return check.fail(Status::kValueNotFinite, 22, 0, "control");
-  if (c.max_pitch_rate_rad_s < 0.0) return check.fail(Status::kValueOutOfRange, 22, 0, "max_pitch_rate_rad_s");
-  if (c.min_pitch_rate_rad_s < 0.0) return check.fail(Status::kValueOutOfRange, 22, 0, "min_pitch_rate_rad_s");
-  if (c.min_pitch_rate_change_rad_s < 0.0) {
-    return check.fail(Status::kValueOutOfRange, 22, 0, "min_pitch_rate_change_rad_s");
-  }
+  TOLIP_CHECK(check.finite(c.zero_alpha_start_s, 22, 0, "zero_alpha_start_s", "s"));
+  TOLIP_CHECK(check.finite(c.zero_alpha_end_s, 22, 0, "zero_alpha_end_s", "s"));
+  TOLIP_CHECK(check.finite(c.max_pitch_rate_rad_s, 22, 0, "max_pitch_rate_rad_s", "rad/s"));
+  TOLIP_CHECK(check.finite(c.min_pitch_rate_rad_s, 22, 0, "min_pitch_rate_rad_s", "rad/s"));
+  TOLIP_CHECK(check.finite(c.min_pitch_rate_change_rad_s, 22, 0, "min_pitch_rate_change_rad_s", "rad/s"));
+  const Status bad = Status::kValueOutOfRange;
+  TOLIP_CHECK(check.range(c.max_pitch_rate_rad_s, at_least(0.0), bad, 22, 0, "max_pitch_rate_rad_s", "rad/s"));
+  TOLIP_CHECK(check.range(c.min_pitch_rate_rad_s, at_least(0.0), bad, 22, 0, "min_pitch_rate_rad_s", "rad/s"));
+  TOLIP_CHECK(check.range(c.min_pitch_rate_change_rad_s, at_least(0.0), bad, 22, 0, "min_pitch_rate_change_rad_s",
+                          "rad/s"));
   if (options.zero_alpha_window()) {
     // IP(11): the alpha = 0 window lies inside stage 1 (times from launch).
-    if (c.zero_alpha_start_s < 0.0) return check.fail(Status::kValueOutOfRange, 22, 0, "zero_alpha_start_s");
-    if (!(c.zero_alpha_end_s > c.zero_alpha_start_s)) {
-      return check.fail(Status::kValueOutOfRange, 22, 0, "zero_alpha_end_s");
-    }
-    if (c.zero_alpha_end_s > vehicle.stages[stage_index(1)].duration_s + time_epsilon_s) {
-      return check.fail(Status::kValueOutOfRange, 22, 1, "zero_alpha_end_s");
+    const double stage1_end_s = vehicle.stages[stage_index(1)].duration_s + time_epsilon_s;
+    TOLIP_CHECK(check.range(c.zero_alpha_start_s, at_least(0.0), bad, 22, 0, "zero_alpha_start_s", "s"));
+    if (!(c.zero_alpha_end_s > c.zero_alpha_start_s) || c.zero_alpha_end_s > stage1_end_s) {
+      ValueRange window = above(c.zero_alpha_start_s);
+      window.has_high = true;
+      window.high = stage1_end_s;
+      return check.fail(bad, 22, 1, "zero_alpha_end_s", -1, c.zero_alpha_end_s, "s", window,
+                        "after zero_alpha_start_s, by the end of stage 1 within CT1(10)");
     }
   }
   return Status::kOk;
@@ -402,43 +505,74 @@ Status check_control(const ControlConstraints& c, const Options& options, const 
 // ---- data block 17 ------------------------------------------------------------------------------
 Status check_misc(const MiscellaneousData& m, const AdjustableParameters& adjustable,
                   const Check& check) {
-  const double values[] = {m.stage4_theta_rad, m.stage4_chi_rad, m.nose_radius_ft,
-                           m.gyro_uncage_s_before_launch, m.stage5_theta_rad, m.stage5_chi_rad,
-                           m.payload_weighting_factor, m.coast_change_limit_s, m.minimum_coast_s};
-  if (!all_finite(values, 9)) return check.fail(Status::kValueNotFinite, 17, 0, "misc");
-  if (m.nose_radius_ft < 0.0) return check.fail(Status::kValueOutOfRange, 17, 0, "nose_radius_ft");
-  if (m.gyro_uncage_s_before_launch < 0.0) {
-    return check.fail(Status::kValueOutOfRange, 17, 0, "gyro_uncage_s_before_launch");
+  struct Word {
+    double value;
+    const char* field;
+    const char* unit;
+  };
+  const Word words[] = {{m.stage4_theta_rad, "stage4_theta_rad", "rad"},
+                        {m.stage4_chi_rad, "stage4_chi_rad", "rad"},
+                        {m.nose_radius_ft, "nose_radius_ft", "ft"},
+                        {m.gyro_uncage_s_before_launch, "gyro_uncage_s_before_launch", "s"},
+                        {m.stage5_theta_rad, "stage5_theta_rad", "rad"},
+                        {m.stage5_chi_rad, "stage5_chi_rad", "rad"},
+                        {m.payload_weighting_factor, "payload_weighting_factor", ""},
+                        {m.coast_change_limit_s, "coast_change_limit_s", "s"},
+                        {m.minimum_coast_s, "minimum_coast_s", "s"}};
+  for (const Word& word : words) TOLIP_CHECK(check.finite(word.value, 17, 0, word.field, word.unit));
+  const Status bad = Status::kValueOutOfRange;
+  // The spun-stage attitudes are angles: within one turn either way.
+  const int angles[] = {0, 1, 4, 5};
+  for (int i : angles) {
+    TOLIP_CHECK(check.range(words[i].value, between(-kFullTurn_rad, kFullTurn_rad), bad, 17, 0, words[i].field, "rad"));
   }
-  if (!(m.payload_weighting_factor > 0.0)) {
-    return check.fail(Status::kValueOutOfRange, 17, 0, "payload_weighting_factor");
-  }
-  if (m.coast_change_limit_s < 0.0) return check.fail(Status::kValueOutOfRange, 17, 0, "coast_change_limit_s");
-  if (m.minimum_coast_s < 0.0) return check.fail(Status::kValueOutOfRange, 17, 0, "minimum_coast_s");
+  TOLIP_CHECK(check.range(m.nose_radius_ft, at_least(0.0), bad, 17, 0, "nose_radius_ft", "ft"));
+  TOLIP_CHECK(check.range(m.gyro_uncage_s_before_launch, at_least(0.0), bad, 17, 0, "gyro_uncage_s_before_launch", "s"));
+  TOLIP_CHECK(check.range(m.payload_weighting_factor, above(0.0), bad, 17, 0, "payload_weighting_factor", ""));
+  TOLIP_CHECK(check.range(m.coast_change_limit_s, at_least(0.0), bad, 17, 0, "coast_change_limit_s", "s"));
+  TOLIP_CHECK(check.range(m.minimum_coast_s, at_least(0.0), bad, 17, 0, "minimum_coast_s", "s"));
   // DA2(16) "must be input if any coast is used as an adjustable parameter".
   for (int i = 0; i < adjustable.count && i < kMaxAdjustableParameters; ++i) {
     if (coast_adjustable_code(adjustable.codes[i]) && !(m.coast_change_limit_s > 0.0)) {
-      return check.fail(Status::kValueOutOfRange, 17, 0, "coast_change_limit_s");
+      return check.fail(bad, 17, 0, "coast_change_limit_s", -1, m.coast_change_limit_s, "s", above(0.0),
+                        "> 0 when a coast is an adjustable parameter (data block 6)");
     }
   }
   return Status::kOk;
 }
 
 // ---- data blocks 8, 19, 29 ----------------------------------------------------------------------
-Status check_constraints(const ConstraintList& c, const Options& options, const Check& check) {
+// Faults name the constraint entry (the index in IB3(2..), the payoff 0) in MissionFault::index;
+// deadband faults too (DA14(j) belongs to entry j + 1).
+Status check_constraints(const ConstraintList& c, const Options& options, const Vehicle& vehicle,
+                         const Check& check) {
   if (c.count > kMaxConstraints) return check.fail(Status::kTooManyConstraints, 8, 0, "count");
-  if (c.count < 1) return check.fail(Status::kValueOutOfRange, 8, 0, "count");
-  if (!all_finite(c.desired, kMaxConstraints + 1)) return check.fail(Status::kValueNotFinite, 19, 0, "desired");
-  if (!all_finite(c.deadband_optimization, kMaxConstraints) ||
-      !all_finite(c.deadband_linearization, kMaxConstraints)) {
-    return check.fail(Status::kValueNotFinite, 29, 0, "deadband");
+  TOLIP_CHECK(check.range(c.count, at_least(1), Status::kValueOutOfRange, 8, 0, "count", ""));
+  for (int i = 0; i < kMaxConstraints + 1; ++i) TOLIP_CHECK(check.finite(c.desired[i], 19, 0, "desired", "", i));
+  for (int j = 0; j < kMaxConstraints; ++j) {
+    TOLIP_CHECK(check.finite(c.deadband_optimization[j], 29, 0, "deadband_optimization", "", j + 1));
+    TOLIP_CHECK(check.finite(c.deadband_linearization[j], 29, 0, "deadband_linearization", "", j + 1));
   }
+  constexpr const char* kKnownCodes =
+      "a known code: 0-13 (terminal; 0 payload as the payoff only), 14 (heating, last), X5-X9 (at the end of stage X "
+      "of the sequence) or 100-102";
   for (int i = 0; i < c.count; ++i) {
     const int code = c.codes[i];
-    if (!known_constraint_code(code) || code == 14) return check.fail(Status::kValueOutOfRange, 8, 0, "codes");
-    if (code == 0 && i != 0) return check.fail(Status::kValueOutOfRange, 8, 0, "codes");
+    const bool stage_point = code >= 15 && code <= 99;
+    if (!known_constraint_code(code) || code == 14 ||
+        (stage_point && position_in_sequence(vehicle.sequence, code / 10) < 0)) {
+      return check.fail(Status::kUnknownConstraintCode, 8, stage_point ? code / 10 : 0, "codes", i, code, "",
+                        ValueRange{}, kKnownCodes);
+    }
+    if (code == 0 && i != 0) {
+      return check.fail(Status::kValueOutOfRange, 8, 0, "codes", i, code, "", ValueRange{},
+                        "payload (code 0) only as the payoff, the first entry");
+    }
     for (int j = 0; j < i; ++j) {
-      if (c.codes[j] == code) return check.fail(Status::kValueOutOfRange, 8, 0, "codes");
+      if (c.codes[j] == code) {
+        return check.fail(Status::kValueOutOfRange, 8, 0, "codes", i, code, "", ValueRange{},
+                          "each code once (it is listed twice)");
+      }
     }
   }
   // The payoff first, consistent with IP(1): payload (0), velocity (1 or 5), altitude (7).
@@ -446,20 +580,33 @@ Status check_constraints(const ConstraintList& c, const Options& options, const 
   const bool payoff_ok = (options.payoff() == 0 && payoff == 0) ||
                          (options.payoff() == 1 && (payoff == 1 || payoff == 5)) ||
                          (options.payoff() == 2 && payoff == 7);
-  if (!payoff_ok) return check.fail(Status::kValueOutOfRange, 8, 0, "codes");
+  if (!payoff_ok) {
+    return check.fail(Status::kValueOutOfRange, 8, 0, "codes", 0, payoff, "", ValueRange{},
+                      "the payoff of IP(1): code 0 with payoff 0, 1 or 5 with payoff 1, 7 with payoff 2");
+  }
   // The heating code 14 follows the counted list exactly when IP(2) = 1.
   const bool heating_listed = c.count < kMaxConstraints + 1 && c.codes[c.count] == 14;
   if (options.heating_constraint() != heating_listed) {
-    return check.fail(Status::kValueOutOfRange, 8, 0, "codes");
+    return check.fail(Status::kValueOutOfRange, 8, 0, "codes", c.count, c.codes[c.count], "", ValueRange{},
+                      "the heating code 14 after the counted constraints exactly when IP(2) = 1");
   }
+  // The optimizer appends the heating constraint to the counted list when it activates (Sec. 13),
+  // so with it the counted list holds at most 12.
+  if (heating_listed && c.count + 1 > kMaxConstraints) {
+    return check.fail(Status::kTooManyConstraints, 8, 0, "count", -1, c.count, "", at_most(kMaxConstraints - 1),
+                      "at most 12 counted constraints with the heating constraint (13 in all)");
+  }
+  // Every constraint after the payoff is scaled by its optimization deadband (it must be > 0);
+  // linearization (IP(7)) holds each constraint it fits (all but inclination and node) to its
+  // linearization deadband.
   const int deadbands = c.count - 1 + (heating_listed ? 1 : 0);
-  for (int i = 0; i < deadbands; ++i) {
-    if (c.deadband_optimization[i] < 0.0) {
-      return check.fail(Status::kValueOutOfRange, 29, 0, "deadband_optimization");
-    }
-    if (c.deadband_linearization[i] < 0.0) {
-      return check.fail(Status::kValueOutOfRange, 29, 0, "deadband_linearization");
-    }
+  for (int j = 0; j < deadbands; ++j) {
+    TOLIP_CHECK(check.range(c.deadband_optimization[j], above(0.0), Status::kValueOutOfRange, 29, 0,
+                            "deadband_optimization", "", j + 1));
+    const int code = c.codes[j + 1];
+    const bool fitted = options.linearization() && j + 1 < c.count && code != 10 && code != 12;
+    TOLIP_CHECK(check.range(c.deadband_linearization[j], fitted ? above(0.0) : at_least(0.0), Status::kValueOutOfRange,
+                            29, 0, "deadband_linearization", "", j + 1));
   }
   return Status::kOk;
 }
@@ -469,15 +616,16 @@ Status check_adjustable(const AdjustableParameters& a, const Vehicle& vehicle, c
   if (a.count > kMaxAdjustableParameters) {
     return check.fail(Status::kTooManyAdjustableParameters, 6, 0, "count");
   }
-  if (a.count < 0) return check.fail(Status::kValueOutOfRange, 6, 0, "count");
-  if (!all_finite(a.weights, kMaxAdjustableParameters)) {
-    return check.fail(Status::kValueNotFinite, 27, 0, "weights");
-  }
+  TOLIP_CHECK(check.range(a.count, at_least(0), Status::kValueOutOfRange, 6, 0, "count", ""));
+  for (int i = 0; i < kMaxAdjustableParameters; ++i) TOLIP_CHECK(check.finite(a.weights[i], 27, 0, "weights", "", i));
   for (int i = 0; i < a.count; ++i) {
     const int code = a.codes[i];
-    if (code < 1 || code > 11) return check.fail(Status::kValueOutOfRange, 6, 0, "codes");
+    TOLIP_CHECK(check.range(code, between(1, 11), Status::kValueOutOfRange, 6, 0, "codes", "", i));
     for (int j = 0; j < i; ++j) {
-      if (a.codes[j] == code) return check.fail(Status::kValueOutOfRange, 6, 0, "codes");
+      if (a.codes[j] == code) {
+        return check.fail(Status::kValueOutOfRange, 6, 0, "codes", i, code, "", ValueRange{},
+                          "each code once (it is listed twice)");
+      }
     }
     // A coast length (codes 5, 4, 3, 10, 11: coasts 6, 7, 8, 9, 10) needs that coast flown.
     int coast = 0;
@@ -487,9 +635,10 @@ Status check_adjustable(const AdjustableParameters& a, const Vehicle& vehicle, c
     if (code == 10) coast = 9;
     if (code == 11) coast = 10;
     if (coast != 0 && !vehicle.stages[stage_index(coast)].in_sequence) {
-      return check.fail(Status::kValueOutOfRange, 6, coast, "codes");
+      return check.fail(Status::kValueOutOfRange, 6, coast, "codes", i, code, "", ValueRange{},
+                        "a coast code only for a coast of the sequence");
     }
-    if (!(a.weights[i] > 0.0)) return check.fail(Status::kValueOutOfRange, 27, 0, "weights");
+    TOLIP_CHECK(check.range(a.weights[i], above(0.0), Status::kValueOutOfRange, 27, 0, "weights", "", i));
   }
   return Status::kOk;
 }
@@ -499,69 +648,72 @@ Status check_adjustable(const AdjustableParameters& a, const Vehicle& vehicle, c
 // order, unused entries 0. Between consecutive listed powered stages the coast is one implicit
 // segment, so segment_count = number of times - 1 (manual example: 103.0, 182.6, 200.0, 239.2 are
 // three segments).
-Status check_linearization(const LinearizationData& l, const Options& options, const Check& check) {
+// (Whether t lies within the burn is the deck reader's check: an exchange-ratio run that shortens a
+// burn keeps the deck's coded times.)
+Status check_linearization(const LinearizationData& l, const Options& options, const Vehicle& vehicle,
+                           const Check& check) {
   if (l.segment_count > kMaxLinearSegments) {
     return check.fail(Status::kTooManyLinearSegments, 18, 0, "segment_count");
   }
-  if (l.segment_count < 0) return check.fail(Status::kValueOutOfRange, 18, 0, "segment_count");
-  if (!all_finite(l.coded_start_times, kMaxLinearSegments + 1)) {
-    return check.fail(Status::kValueNotFinite, 18, 0, "coded_start_times");
+  TOLIP_CHECK(check.range(l.segment_count, at_least(0), Status::kValueOutOfRange, 18, 0, "segment_count", ""));
+  for (int i = 0; i < kMaxLinearSegments + 1; ++i) {
+    TOLIP_CHECK(check.finite(l.coded_start_times[i], 18, 0, "coded_start_times", "", i));
   }
-  if (!all_finite(l.segment_weights, kMaxLinearSegments)) {
-    return check.fail(Status::kValueNotFinite, 26, 0, "segment_weights");
-  }
+  for (int i = 0; i < kMaxLinearSegments; ++i) TOLIP_CHECK(check.finite(l.segment_weights[i], 26, 0, "segment_weights", "", i));
   int times = 0;
   while (times < kMaxLinearSegments + 1 && l.coded_start_times[times] != 0.0) ++times;
   for (int i = times; i < kMaxLinearSegments + 1; ++i) {
-    if (l.coded_start_times[i] != 0.0) return check.fail(Status::kValueOutOfRange, 18, 0, "coded_start_times");
+    if (l.coded_start_times[i] != 0.0) {
+      return check.fail(Status::kValueOutOfRange, 18, 0, "coded_start_times", i, l.coded_start_times[i], "",
+                        exactly(0.0), "0 after the first unused entry");
+    }
   }
   for (int i = 0; i < times; ++i) {
     const double coded = l.coded_start_times[i];
     const double stage = std::floor(coded / 100.0);
-    if (stage < 1.0 || stage > static_cast<double>(kMaxPoweredStages)) {
-      return check.fail(Status::kValueOutOfRange, 18, 0, "coded_start_times");
+    const int code = stage >= 1.0 && stage <= static_cast<double>(kMaxPoweredStages) ? static_cast<int>(stage) : 0;
+    if (code == 0 || !vehicle.stages[stage_index(code)].in_sequence) {
+      return check.fail(Status::kValueOutOfRange, 18, 0, "coded_start_times", i, coded, "", ValueRange{},
+                        "100 n + t with n a powered stage of the sequence");
     }
     if (i > 0 && !(coded > l.coded_start_times[i - 1])) {
-      return check.fail(Status::kTableNotMonotonic, 18, 0, "coded_start_times");
+      return check.fail(Status::kTableNotMonotonic, 18, 0, "coded_start_times", i, coded, "",
+                        above(l.coded_start_times[i - 1]), "strictly increasing");
     }
   }
   // IP(7) = 1 "requires input of times of beginning of each linear segment in Data Block 18".
-  if (options.linearization() && l.segment_count < 1) {
-    return check.fail(Status::kValueOutOfRange, 18, 0, "segment_count");
+  if (options.linearization()) {
+    TOLIP_CHECK(check.range(l.segment_count, at_least(1), Status::kValueOutOfRange, 18, 0, "segment_count", ""));
   }
   if (times != (l.segment_count > 0 ? l.segment_count + 1 : 0)) {
-    return check.fail(Status::kValueOutOfRange, 18, 0, "segment_count");
+    return check.fail(Status::kValueOutOfRange, 18, 0, "segment_count", -1, l.segment_count, "",
+                      exactly(times > 0 ? times - 1 : 0), "the number of coded times - 1");
   }
   for (int i = 0; i < l.segment_count; ++i) {
-    if (!(l.segment_weights[i] > 0.0)) return check.fail(Status::kValueOutOfRange, 26, 0, "segment_weights");
+    TOLIP_CHECK(check.range(l.segment_weights[i], above(0.0), Status::kValueOutOfRange, 26, 0, "segment_weights", "", i));
   }
   return Status::kOk;
 }
 
 // ---- data block 28 ------------------------------------------------------------------------------
 Status check_convergence(const ConvergenceData& c, const Check& check) {
-  if (!finite(c.initial_payoff_improvement) || !finite(c.stop_improvement)) {
-    return check.fail(Status::kValueNotFinite, 28, 0, "convergence");
-  }
-  if (c.initial_payoff_improvement < 0.0) {
-    return check.fail(Status::kValueOutOfRange, 28, 0, "initial_payoff_improvement");
-  }
-  if (c.stop_improvement < 0.0) return check.fail(Status::kValueOutOfRange, 28, 0, "stop_improvement");
-  if (c.max_forward_trajectories < 1) {
-    return check.fail(Status::kValueOutOfRange, 28, 0, "max_forward_trajectories");
-  }
-  if (c.max_linearization_iterations < 0) {
-    return check.fail(Status::kValueOutOfRange, 28, 0, "max_linearization_iterations");
-  }
+  TOLIP_CHECK(check.finite(c.initial_payoff_improvement, 28, 0, "initial_payoff_improvement", ""));
+  TOLIP_CHECK(check.finite(c.stop_improvement, 28, 0, "stop_improvement", ""));
+  const Status bad = Status::kValueOutOfRange;
+  TOLIP_CHECK(check.range(c.initial_payoff_improvement, at_least(0.0), bad, 28, 0, "initial_payoff_improvement", ""));
+  TOLIP_CHECK(check.range(c.stop_improvement, at_least(0.0), bad, 28, 0, "stop_improvement", ""));
+  TOLIP_CHECK(check.range(c.max_forward_trajectories, at_least(1), bad, 28, 0, "max_forward_trajectories", ""));
+  TOLIP_CHECK(check.range(c.max_linearization_iterations, at_least(0), bad, 28, 0, "max_linearization_iterations", ""));
   return Status::kOk;
 }
 
 // ---- data block 9 -------------------------------------------------------------------------------
 Status check_output(const OutputFrequency& o, const Check& check) {
+  const Status bad = Status::kValueOutOfRange;
   for (int i = 0; i < kMaxStages; ++i) {
-    if (o.initial[i] < 1) return check.fail(Status::kValueOutOfRange, 9, i + 1, "initial");
-    if (o.intermediate[i] < 1) return check.fail(Status::kValueOutOfRange, 9, i + 1, "intermediate");
-    if (o.final_trajectory[i] < 1) return check.fail(Status::kValueOutOfRange, 9, i + 1, "final_trajectory");
+    TOLIP_CHECK(check.range(o.initial[i], at_least(1), bad, 9, i + 1, "initial", "", i));
+    TOLIP_CHECK(check.range(o.intermediate[i], at_least(1), bad, 9, i + 1, "intermediate", "", i));
+    TOLIP_CHECK(check.range(o.final_trajectory[i], at_least(1), bad, 9, i + 1, "final_trajectory", "", i));
   }
   return Status::kOk;
 }
@@ -569,52 +721,43 @@ Status check_output(const OutputFrequency& o, const Check& check) {
 // ---- data blocks 33-37 (6D) --------------------------------------------------------------------
 // A table a 6D run needs: given, well formed and finalized.
 template <int N>
-Status required_table(const Table<N>& table) {
-  if (table.empty()) return Status::kBodyDynamicsDataMissing;
-  const Status shape = table_shape(table);
-  if (!ok(shape)) return shape;
-  return table.finalized() ? Status::kOk : Status::kTableNotMonotonic;
+Status required_table(const Table<N>& table, const Check& check, int data_block, int stage_code, const char* x_field,
+                      const char* x_unit, const char* y_field, const char* y_unit) {
+  if (table.empty()) return check.fail(Status::kBodyDynamicsDataMissing, data_block, stage_code, y_field);
+  return optional_table(table, check, data_block, stage_code, x_field, x_unit, y_field, y_unit);
 }
 
 Status check_body_dynamics(const Mission& mission, const Check& check) {
   const BodyDynamicsBlocks& b = mission.body_dynamics;
   if (!b.present) return check.fail(Status::kBodyDynamicsDataMissing, 33, 0, "body_dynamics");
   // Every word given must be finite (stages 2-3 are kept for the dispersion and hardover work).
-  if (!all_finite(b.position_gain, kBodyDynamicsStages)) return check.fail(Status::kValueNotFinite, 33, 0, "position_gain");
-  if (!all_finite(b.rate_gain_s, kBodyDynamicsStages)) return check.fail(Status::kValueNotFinite, 33, 0, "rate_gain_s");
-  if (!all_finite(b.control_station_ft, kBodyDynamicsStages)) {
-    return check.fail(Status::kValueNotFinite, 33, 0, "control_station_ft");
+  for (int k = 0; k < kBodyDynamicsStages; ++k) {
+    TOLIP_CHECK(check.finite(b.position_gain[k], 33, 0, "position_gain", "", k));
+    TOLIP_CHECK(check.finite(b.rate_gain_s[k], 33, 0, "rate_gain_s", "s", k));
+    TOLIP_CHECK(check.finite(b.control_station_ft[k], 33, 0, "control_station_ft", "ft", k));
   }
-  const double words[] = {b.jet_vane_effectiveness_per_rad, b.moment_reference_station_ft, b.reference_length_ft,
-                          b.reference_area_ft2, b.control_surfaces_per_plane};
-  const char* names[] = {"jet_vane_effectiveness_per_rad", "moment_reference_station_ft", "reference_length_ft",
-                         "reference_area_ft2", "control_surfaces_per_plane"};
-  for (int i = 0; i < 5; ++i) {
-    if (!finite(words[i])) return check.fail(Status::kValueNotFinite, 33, 0, names[i]);
-  }
+  TOLIP_CHECK(check.finite(b.jet_vane_effectiveness_per_rad, 33, 0, "jet_vane_effectiveness_per_rad", "per rad"));
+  TOLIP_CHECK(check.finite(b.moment_reference_station_ft, 33, 0, "moment_reference_station_ft", "ft"));
+  TOLIP_CHECK(check.finite(b.reference_length_ft, 33, 0, "reference_length_ft", "ft"));
+  TOLIP_CHECK(check.finite(b.reference_area_ft2, 33, 0, "reference_area_ft2", "ft^2"));
+  TOLIP_CHECK(check.finite(b.control_surfaces_per_plane, 33, 0, "control_surfaces_per_plane", ""));
   // Stage 1 (and the coast after it) is what a 6D run flies: a positive position gain (eq. 7-6
   // divides by K_theta M_delta - M_alpha, and K_theta = 0 means no autopilot), a rate gain >= 0.
-  if (!(b.position_gain[0] > 0.0)) return check.fail(Status::kValueOutOfRange, 33, 1, "position_gain");
-  if (!(b.rate_gain_s[0] >= 0.0)) return check.fail(Status::kValueOutOfRange, 33, 1, "rate_gain_s");
-  if (!(b.jet_vane_effectiveness_per_rad >= 0.0)) {
-    return check.fail(Status::kValueOutOfRange, 33, 0, "jet_vane_effectiveness_per_rad");
-  }
-  if (!(b.reference_length_ft > 0.0)) return check.fail(Status::kValueOutOfRange, 33, 0, "reference_length_ft");
-  if (!(b.reference_area_ft2 > 0.0)) return check.fail(Status::kValueOutOfRange, 33, 0, "reference_area_ft2");
-  if (!(b.control_surfaces_per_plane > 0.0)) {
-    return check.fail(Status::kValueOutOfRange, 33, 0, "control_surfaces_per_plane");
-  }
-  Status status = required_table(b.fin_normal_force_per_rad);
-  if (!ok(status)) return check.fail(status, 34, 0, "fin_normal_force_per_rad");
-  status = required_table(b.pitching_moment_per_rad);
-  if (!ok(status)) return check.fail(status, 35, 0, "pitching_moment_per_rad");
-  status = required_table(b.fin_pitching_moment_per_rad);
-  if (!ok(status)) return check.fail(status, 36, 0, "fin_pitching_moment_per_rad");
-  status = required_table(b.cg_station_ft[0]);
-  if (!ok(status)) return check.fail(status, 37, 1, "cg_station_ft");
+  const Status bad = Status::kValueOutOfRange;
+  TOLIP_CHECK(check.range(b.position_gain[0], above(0.0), bad, 33, 1, "position_gain", "", 0));
+  TOLIP_CHECK(check.range(b.rate_gain_s[0], at_least(0.0), bad, 33, 1, "rate_gain_s", "s", 0));
+  TOLIP_CHECK(check.range(b.jet_vane_effectiveness_per_rad, at_least(0.0), bad, 33, 0, "jet_vane_effectiveness_per_rad",
+                          "per rad"));
+  TOLIP_CHECK(check.range(b.reference_length_ft, above(0.0), bad, 33, 0, "reference_length_ft", "ft"));
+  TOLIP_CHECK(check.range(b.reference_area_ft2, above(0.0), bad, 33, 0, "reference_area_ft2", "ft^2"));
+  TOLIP_CHECK(check.range(b.control_surfaces_per_plane, above(0.0), bad, 33, 0, "control_surfaces_per_plane", ""));
+  TOLIP_CHECK(required_table(b.fin_normal_force_per_rad, check, 34, 0, "mach", "", "fin_normal_force_per_rad", "per rad"));
+  TOLIP_CHECK(required_table(b.pitching_moment_per_rad, check, 35, 0, "mach", "", "pitching_moment_per_rad", "per rad"));
+  TOLIP_CHECK(required_table(b.fin_pitching_moment_per_rad, check, 36, 0, "mach", "", "fin_pitching_moment_per_rad",
+                             "per rad"));
+  TOLIP_CHECK(required_table(b.cg_station_ft[0], check, 37, 1, "stage_time_s", "s", "cg_station_ft", "ft"));
   for (int k = 1; k < kCgTableStages; ++k) {
-    status = optional_table(b.cg_station_ft[k]);
-    if (!ok(status)) return check.fail(status, 37, k + 1, "cg_station_ft");
+    TOLIP_CHECK(optional_table(b.cg_station_ft[k], check, 37, k + 1, "stage_time_s", "s", "cg_station_ft", "ft"));
   }
   // F_CNL = M_alpha alpha / (X_delta - X_CG) (Sec. 11): the stage-1 c.g. (piecewise linear, its
   // values held past the ends) stays within its tabulated range, so X_delta must lie outside it.
@@ -627,7 +770,8 @@ Status check_body_dynamics(const Mission& mission, const Check& check) {
   }
   const double station = b.control_station_ft[0];
   if (station >= lowest && station <= highest) {
-    return check.fail(Status::kControlStationAtCenterOfGravity, 33, 1, "control_station_ft");
+    return check.fail(Status::kControlStationAtCenterOfGravity, 33, 1, "control_station_ft", 0, station, "ft",
+                      ValueRange{}, "outside the stage-1 c.g. stations of data block 37");
   }
   return Status::kOk;
 }
@@ -638,38 +782,29 @@ Status validate_mission(const Mission& mission, MissionFault* fault) {
   const Check check{fault};
   if (fault != nullptr) *fault = MissionFault{};
 
-  Status status = check_options(mission.options, check);
-  if (!ok(status)) return status;
-  status = check_sequence(mission.vehicle, check);
-  if (!ok(status)) return status;
-  status = check_constants(mission.constants, check);
-  if (!ok(status)) return status;
-  status = check_atmosphere(mission.atmosphere, check);
-  if (!ok(status)) return status;
-  status = check_vehicle(mission.vehicle, mission.constants, check);
-  if (!ok(status)) return status;
-  status = check_launch(mission.launch, mission.vehicle, check);
-  if (!ok(status)) return status;
-  status = check_control(mission.control, mission.options, mission.vehicle,
-                         mission.constants.time_epsilon_s, check);
-  if (!ok(status)) return status;
-  status = check_misc(mission.misc, mission.adjustable, check);
-  if (!ok(status)) return status;
-  status = check_constraints(mission.constraints, mission.options, check);
-  if (!ok(status)) return status;
-  status = check_adjustable(mission.adjustable, mission.vehicle, check);
-  if (!ok(status)) return status;
-  status = check_linearization(mission.linearization, mission.options, check);
-  if (!ok(status)) return status;
-  status = check_convergence(mission.convergence, check);
-  if (!ok(status)) return status;
-  status = check_output(mission.output, check);
-  if (!ok(status)) return status;
+  TOLIP_CHECK(check_options(mission.options, check));
+  TOLIP_CHECK(check_sequence(mission.vehicle, check));
+  TOLIP_CHECK(check_constants(mission.constants, check));
+  TOLIP_CHECK(check_atmosphere(mission.atmosphere, check));
+  TOLIP_CHECK(check_vehicle(mission.vehicle, mission.constants, check));
+  TOLIP_CHECK(check_launch(mission.launch, mission.vehicle, check));
+  TOLIP_CHECK(check_control(mission.control, mission.options, mission.vehicle, mission.constants.time_epsilon_s,
+                            check));
+  TOLIP_CHECK(check_misc(mission.misc, mission.adjustable, check));
+  TOLIP_CHECK(check_constraints(mission.constraints, mission.options, mission.vehicle, check));
+  TOLIP_CHECK(check_adjustable(mission.adjustable, mission.vehicle, check));
+  TOLIP_CHECK(check_linearization(mission.linearization, mission.options, mission.vehicle, check));
+  TOLIP_CHECK(check_convergence(mission.convergence, check));
+  TOLIP_CHECK(check_output(mission.output, check));
 
-  // Data block 40: the initial-nominal pitch program.
-  if (mission.pitch_program_rad.empty()) return check.fail(Status::kTableEmpty, 40, 0, "pitch_program_rad");
-  status = optional_table(mission.pitch_program_rad);
-  if (!ok(status)) return check.fail(status, 40, 0, "pitch_program_rad");
+  // Data block 40: the initial-nominal pitch program; theta is an attitude, within one turn.
+  const PitchTable& pitch = mission.pitch_program_rad;
+  if (pitch.empty()) return check.fail(Status::kTableEmpty, 40, 0, "pitch_program_rad");
+  TOLIP_CHECK(optional_table(pitch, check, 40, 0, "pitch_program_time_s", "s", "pitch_program_rad", "rad"));
+  for (int i = 0; i < pitch.size(); ++i) {
+    TOLIP_CHECK(check.range(pitch.y(i), between(-kFullTurn_rad, kFullTurn_rad), Status::kValueOutOfRange, 40, 0,
+                            "pitch_program_rad", "rad", i));
+  }
 
   // Data blocks 33-37 when a 6D trajectory is asked for (IP(6) = 1 or 2).
   if (mission.options.body_dynamics_6d() >= 1) return check_body_dynamics(mission, check);
@@ -681,6 +816,8 @@ Status validate_body_dynamics(const Mission& mission, MissionFault* fault) {
   if (fault != nullptr) *fault = MissionFault{};
   return check_body_dynamics(mission, check);
 }
+
+#undef TOLIP_CHECK
 
 // Consumable weight of the current powered stage (0 in a coast), plus the jettison weights of this
 // and every later stage of the sequence, plus the payload while the last powered stage is current

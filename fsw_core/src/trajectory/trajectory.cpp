@@ -39,6 +39,7 @@ class Flight {
 
  private:
   Status fly_stage(int slot, StateVector* state);
+  void set_weights_after_jettison(int ended);
   void latch_segments(const StageContext& stage, double t, const StateVector& state);
   StepCommand command_at(const StageContext& stage, int point, double t, double step_s,
                          const StateVector& state);
@@ -250,6 +251,7 @@ Status Flight::fly_stage(int slot, StateVector* state) {
   StageEvent& event = trajectory_->stages[trajectory_->stage_count];
   event.code = line.code;
   event.first_point = trajectory_->point_count;
+  event.completed = false;
 
   // Body dynamics act in stage 1 and the coast after it only (Sec. 11).
   const bool body_dynamics = inputs_.body_dynamics && (line.code == 1 || line.code == 6);
@@ -325,6 +327,7 @@ Status Flight::fly_stage(int slot, StateVector* state) {
   if (!ok(eval.body_status)) return eval.body_status;
   event.last_point = trajectory_->point_count - 1;
   event.burnout_weight_lb = eval.weight_lb;
+  event.completed = true;
   ++trajectory_->stage_count;
   return Status::kOk;
 }
@@ -364,7 +367,10 @@ Status Flight::run() {
   for (int k = first_slot; k < prepared_.stage_count; ++k) {
     status = fly_stage(k, &state);
     if (!ok(status)) {
-      // Keep the stage that failed as an event over the points it did fly.
+      // The stages that ended before the failure jettisoned as on a successful run.
+      set_weights_after_jettison(trajectory_->stage_count);
+      // Keep the stage that failed as an event over the points it did fly: it never ended, so it
+      // jettisoned nothing (its "burnout" weight is the weight at the last point flown).
       StageEvent& event = trajectory_->stages[trajectory_->stage_count];
       if (trajectory_->point_count > event.first_point) {
         event.last_point = trajectory_->point_count - 1;
@@ -375,15 +381,20 @@ Status Flight::run() {
       return status;
     }
   }
-  // Weight after each jettison: the next stage's first weight (the last stage keeps its own).
-  for (int k = 0; k < trajectory_->stage_count; ++k) {
+  set_weights_after_jettison(trajectory_->stage_count);
+  return Status::kOk;
+}
+
+// Weight after the jettison of each of the first `ended` stage events: the next stage's first
+// weight (the last stage of the flight keeps its burnout weight less its jettison weight).
+void Flight::set_weights_after_jettison(int ended) {
+  for (int k = 0; k < ended; ++k) {
     StageEvent& event = trajectory_->stages[k];
     event.weight_after_jettison_lb =
         (k + 1 < trajectory_->stage_count)
             ? trajectory_->points[trajectory_->stages[k + 1].first_point].weight_lb
             : event.burnout_weight_lb - mission_.vehicle.stages[stage_index(event.code)].jettison_weight_lb;
   }
-  return Status::kOk;
 }
 
 }  // namespace

@@ -15,6 +15,12 @@ inline constexpr int kExitOk = 0;
 inline constexpr int kExitFailure = 1;   // run-time or core failure (trajectory, orbit, file write)
 inline constexpr int kExitBadInput = 2;  // bad command line or deck
 
+// The altitudes `tolip atmosphere` accepts, ft: from -5 km (where the 1962 standard atmosphere
+// starts) to 1,000,000 ft (about 305 km; trajectories bypass the atmosphere above CT1(7) =
+// 250,000 ft, and far above the last Sec. 19 base the extended layer describes nothing).
+inline constexpr double kAtmosphereLowestAltitude_ft = -16404.0;
+inline constexpr double kAtmosphereHighestAltitude_ft = 1000000.0;
+
 // `tolip atmosphere --altitude-ft H [--json]`
 struct AtmosphereCommandOptions {
   double altitude_ft = 0.0;  // geometric altitude

@@ -33,9 +33,12 @@ int run_atmosphere_command(const AtmosphereCommandOptions& options, std::ostream
     err << "tolip: --altitude-ft must be a finite number of feet\n";
     return kExitBadInput;
   }
-  if (!(altitude_ft > -radius_ft)) {
-    err << "tolip: --altitude-ft must be above the Earth's centre (greater than -" << radius_ft
-        << " ft)\n";
+  if (!(altitude_ft >= kAtmosphereLowestAltitude_ft && altitude_ft <= kAtmosphereHighestAltitude_ft)) {
+    char text[160];
+    std::snprintf(text, sizeof text, "%.15g ft is outside the model's range: expected %.15g <= altitude <= %.15g",
+                  altitude_ft, kAtmosphereLowestAltitude_ft, kAtmosphereHighestAltitude_ft);
+    err << "tolip: --altitude-ft = " << text << " ft (the 1962 standard atmosphere starts at -5 km; above 1,000,000 ft the extended last layer"
+        << " of Sec. 19 describes no atmosphere)\n";
     return kExitBadInput;
   }
 

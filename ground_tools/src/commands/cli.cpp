@@ -59,6 +59,17 @@ std::string unknown_command_word(const CLI::App& app, int argc, const char* cons
   return {};
 }
 
+// Rejects an empty (or all-blank) option value, which CLI11 would otherwise read as 0 or as "not
+// given": `--altitude-ft ""`, `--mission-id ""`.
+CLI::Validator not_blank(const std::string& expected) {
+  return CLI::Validator(
+      [expected](std::string& value) -> std::string {
+        if (value.find_first_not_of(" \t") != std::string::npos) return std::string();
+        return "an empty value: expected " + expected;
+      },
+      "");
+}
+
 }  // namespace
 
 int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
@@ -82,13 +93,14 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
       "Examples:\n"
       "  tolip atmosphere --altitude-ft 0\n"
       "  tolip atmosphere --altitude-ft=-500 --json\n"
-      "Exit codes: 0 printed; 2 bad command line (missing, unparsable or\n"
-      "non-finite altitude, or below the Earth's centre).\n"
+      "Exit codes: 0 printed; 2 bad command line (missing, empty,\n"
+      "unparsable or non-finite altitude, or outside -16404 to 1000000 ft).\n"
       "Full reference: docs/cli.md, 'tolip atmosphere'.");
   atmosphere
       ->add_option("--altitude-ft", atmosphere_options.altitude_ft,
-                   "Geometric altitude, ft (finite, negative allowed, above -CT1(3))")
+                   "Geometric altitude, ft, -16404 (-5 km) to 1000000")
       ->required()
+      ->check(not_blank("an altitude in ft"))
       ->type_name("FT");
   atmosphere->add_flag("--json", atmosphere_options.json,
                        "Print one JSON object instead of text (keys\n"
@@ -289,6 +301,7 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
   export_command->add_option("--mission-id", export_options.mission_id,
                              "Mission identifier, 1-32 printable ASCII characters\n"
                              "(default: the case title, data block 1)")
+      ->check(not_blank("1-32 printable ASCII characters (leave the option out for the case title)"))
       ->type_name("TEXT");
   export_command->add_option("--created-unix-s", export_options.created_unix_s,
                              "Creation stamp, s since 1970-01-01Z, 0-253402300799\n"

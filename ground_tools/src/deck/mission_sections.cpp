@@ -394,7 +394,12 @@ void read_misc(Section& root, MiscellaneousData* misc) {
 
 // ---- data blocks 8, 19, 29 ----------------------------------------------------------------------
 // Returns true when a constraint needs the launch date (inertial longitude reference).
-bool read_constraints(Section& root, const Options& options, ConstraintList* list) {
+bool read_constraints(Section& root, const Options& options, const Vehicle& vehicle, ConstraintList* list) {
+  std::string sequence;
+  for (int k = 0; k < vehicle.sequence.count; ++k) {
+    if (k > 0) sequence += ' ';
+    sequence += str(vehicle.sequence.codes[k]);
+  }
   std::vector<Section> entries = root.array_of_tables("constraint", 8);
   if (entries.empty()) {
     root.fail(8, "constraint",
@@ -415,9 +420,14 @@ bool read_constraints(Section& root, const Options& options, ConstraintList* lis
     Section& entry = entries[i];
     const int code = codes[i];
     ConstraintUnit unit{};
-    if (!constraint_unit(code, &unit)) {
-      entry.fail_at("code", 8, "unknown constraint code " + str(code) +
-                                   ": expected 0-14 (terminal), X5-X9 (at the end of stage X = 1-9) or 100-102");
+    const bool stage_point = code >= 15 && code <= 99;
+    if (!constraint_unit(code, &unit) || (stage_point && !vehicle.stages[stage_index(code / 10)].in_sequence)) {
+      const std::string why = stage_point && constraint_unit(code, &unit)
+                                  ? " (stage " + str(code / 10) + " is not in the sequence " + sequence + ")"
+                                  : "";
+      entry.fail_at("code", 8, "unknown constraint code " + str(code) + why +
+                                   ": expected 0-13 (terminal), 14 (heating, last), X5-X9 (at the end of stage X of "
+                                   "the sequence " + sequence + ") or 100-102");
     }
     if (code == 14 && i + 1 != entries.size()) {
       entry.fail_at("code", 8, "the heating constraint (code 14) must be the last entry");
@@ -534,8 +544,9 @@ void read_linearization(Section& root, const Mission& mission, LinearizationData
                   "coded time " + format_number(times[i]) +
                       " does not name a powered stage of the sequence: expected 100 n + t with n = 1-5");
     }
+    // A stage duration that is not positive is the stage's fault (data block 16, validate_mission).
     const double duration = mission.vehicle.stages[stage_index(code)].duration_s;
-    if (t > duration + mission.constants.time_epsilon_s) {
+    if (duration > 0.0 && t > duration + mission.constants.time_epsilon_s) {
       reader.fail(line, 18, field,
                   "coded time " + format_number(times[i]) + " is " + format_number(t) + " s into stage " + str(code) +
                       ", after its burnout at " + format_number(duration) + " s");
@@ -651,7 +662,7 @@ void read_mission_sections(Section& root, Mission* mission) {
   const bool has_date = read_launch(root, &mission->launch);
   read_control(root, mission->options, &mission->control);
   read_misc(root, &mission->misc);
-  const bool needs_date = read_constraints(root, mission->options, &mission->constraints);
+  const bool needs_date = read_constraints(root, mission->options, mission->vehicle, &mission->constraints);
   if (needs_date && !has_date) {
     root.fail(20, "launch.space_age_date_days",
               "a constraint uses an inertial longitude reference (code 12 or 101): the launch date DA5(2) "

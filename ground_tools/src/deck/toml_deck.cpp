@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <fstream>
@@ -103,42 +105,109 @@ std::string deck_key(const std::string& core_field) {
   return key;
 }
 
-// The deck key path of a core fault (mission.hpp field names -> docs/deck-format.md keys).
-std::string fault_path(const MissionFault& fault) {
+// The [options] key of IP(n) (docs/deck-format.md); "" for the words the manual does not use.
+const char* option_key(int n) {
+  switch (n) {
+    case 1: return "payoff";
+    case 2: return "heating_constraint";
+    case 3: return "exchange_ratios";
+    case 6: return "body_dynamics_6d";
+    case 7: return "linearization";
+    case 9: return "spin_stages_4_5";
+    case 10: return "stage5_chi";
+    case 11: return "zero_alpha_window";
+    case 12: return "alpha_zero_at_stage2_ignition";
+    case 13: return "qbar_constraint_type";
+    case 15: return "memory_dump";
+    case 17: return "print_input";
+    case 21: return "dispersions";
+    case 22: return "hardover";
+    case 23: return "impact";
+    case 24: return "radar";
+    default: return "";
+  }
+}
+
+std::string element(const std::string& path, int index) {
+  return index >= 0 ? path + "[" + std::to_string(index) + "]" : path;
+}
+
+// The deck key of a constraint entry's word: code (block 8), desired (19) or a deadband (29), with
+// the unit suffix of its code.
+std::string constraint_key(const MissionFault& fault, const Mission& mission) {
+  const std::string field = fault.field != nullptr ? fault.field : "";
+  if (fault.index < 0) return "constraint";
+  const std::string entry = "constraint[" + std::to_string(fault.index) + "]";
+  if (fault.data_block == 8) return entry + ".code";
+  deck_detail::ConstraintUnit unit{};
+  const int code = fault.index <= kMaxConstraints ? mission.constraints.codes[fault.index] : -1;
+  if (!deck_detail::constraint_unit(code, &unit)) return entry;
+  if (fault.data_block == 19) return entry + ".desired_" + unit.suffix;
+  return entry + "." + field + "_" + unit.suffix;
+}
+
+// The deck key path of a core fault (mission.hpp field names -> docs/deck-format.md keys), with the
+// element the fault names.
+std::string fault_path(const MissionFault& fault, const Mission& mission) {
   const std::string field = fault.field != nullptr ? fault.field : "";
   const std::string stage = "stage." + std::to_string(fault.stage_code);
   const bool staged = fault.stage_code > 0;
+  const int index = fault.index;
   switch (fault.data_block) {
-    case 4: return "options";
-    case 5: return "vehicle.sequence";
-    case 6: case 27: return "adjustable_parameter";
-    case 8: case 19: case 29: return "constraint";
+    case 4: {
+      const char* key = option_key(index);
+      return *key != '\0' ? "options." + std::string(key) : "options";
+    }
+    case 5: return field == "sequence" ? element("vehicle.sequence", index) : "vehicle.sequence";
+    case 6: return index >= 0 ? "adjustable_parameter[" + std::to_string(index) + "].code" : "adjustable_parameter";
+    case 27: return index >= 0 ? "adjustable_parameter[" + std::to_string(index) + "].weight" : "adjustable_parameter";
+    case 8: case 19: case 29: return constraint_key(fault, mission);
     case 9: return "output_frequency." + std::string(field == "final_trajectory" ? "final" : field);
     case 10: return field == "constants" ? "constants" : "constants." + field;
-    case 11: case 12: case 13: case 14: return "atmosphere." + field;
+    case 11: case 12: case 13: case 14: return element("atmosphere." + field, index);
     case 16: return staged ? stage + "." + field : "stage";
     case 17: return field == "misc" ? "misc" : "misc." + deck_key(field);
-    case 18: return "linearization.coded_times";
+    case 18:
+      if (field == "segment_count") return "linearization.segment_count";
+      return element("linearization.coded_times", index);
     case 20: case 21:
       if (field == "launch_space_age_date_days") return "launch.space_age_date_days";
       return "launch." + deck_key(field);
     case 22: return field == "control" ? "control_constraints" : "control_constraints." + deck_key(field);
-    case 26: return "linearization.segment_weights";
+    case 26: return element("linearization.segment_weights", index);
     case 28: return field == "convergence" ? "convergence" : "convergence." + field;
-    case 30: return staged ? stage + ".thrust" : "stage";
-    case 31: return stage + ".drag";
-    case 32: return "vehicle.lift_curve_slope";
-    case 38: return staged ? stage + ".consumable_weight" : "stage";
+    case 30:
+      if (!staged) return "stage";
+      if (field == "vacuum_thrust_time_s") return element(stage + ".thrust.time_s", index);
+      if (index >= 0) return element(stage + ".thrust.vacuum_thrust_lbf", index);
+      return stage + ".thrust";
+    case 31:
+      if (field == "drag_mach") return element(stage + ".drag.mach", index);
+      if (index >= 0) return element(stage + ".drag.cd", index);
+      return stage + ".drag";
+    case 32:
+      if (field == "lift_mach") return element("vehicle.lift_curve_slope.mach", index);
+      if (index >= 0) return element("vehicle.lift_curve_slope.cl_alpha_per_rad", index);
+      return "vehicle.lift_curve_slope";
+    case 38:
+      if (!staged) return "stage";
+      if (field == "consumable_weight_time_s") return element(stage + ".consumable_weight.time_s", index);
+      if (index >= 0) return element(stage + ".consumable_weight.remaining_lb", index);
+      return stage + ".consumable_weight";
     case 39:
       if (field == "payload_lb") return "vehicle.payload_lb";
       if (field == "stage_data" || !staged) return staged ? stage : "stage";
       return stage + "." + field;
-    case 40: return "pitch_program";
+    case 40:
+      if (field == "pitch_program_time_s") return element("pitch_program.time_s", index);
+      if (index >= 0) return element("pitch_program.theta_deg", index);
+      return "pitch_program";
     case 33:
       // Core field names (mission.hpp BodyDynamicsBlocks) -> deck keys (docs/deck-format.md).
       if (field == "body_dynamics") return "body_dynamics";
-      if (field == "position_gain") return "body_dynamics.position_gain_deg_per_deg";
-      if (field == "control_station_ft") return "body_dynamics.control_station_in";
+      if (field == "position_gain") return element("body_dynamics.position_gain_deg_per_deg", index);
+      if (field == "rate_gain_s") return element("body_dynamics.rate_gain_s", index);
+      if (field == "control_station_ft") return element("body_dynamics.control_station_in", index);
       if (field == "moment_reference_station_ft") return "body_dynamics.moment_reference_station_in";
       if (field == "jet_vane_effectiveness_per_rad") return "body_dynamics.jet_vane_effectiveness_per_deg_per_vane";
       if (field == "reference_area_ft2") return "stage.1.reference_area_ft2";
@@ -149,6 +218,80 @@ std::string fault_path(const MissionFault& fault) {
     case 37: return "body_dynamics.cg." + std::to_string(fault.stage_code);
     default: return field;
   }
+}
+
+// A number in the deck's unit: the core's value converted (to_deck), printed with 12 significant
+// digits when converted so a degree read as radians prints as the degrees given.
+std::string deck_number(double core_value, double to_deck) {
+  if (!std::isfinite(core_value)) return format_number(core_value);
+  char buffer[64];
+  if (to_deck != 1.0) {
+    std::snprintf(buffer, sizeof buffer, "%.12g", core_value * to_deck);
+    return buffer;
+  }
+  // Plain digits where 15 significant digits hold the value exactly (100000, not 1e+05).
+  std::snprintf(buffer, sizeof buffer, "%.15g", core_value);
+  return std::strtod(buffer, nullptr) == core_value ? std::string(buffer) : format_number(core_value);
+}
+
+// The value and allowed range a core fault carries, in the units of the deck key that holds it:
+// "key = value unit; expected range unit" (or what the core says it expected).
+std::string value_detail(const MissionFault& fault, const Mission& mission, const std::string& path) {
+  if (!fault.has_value) return "";
+  std::string unit = fault.unit != nullptr ? fault.unit : "";
+  double to_deck = 1.0;
+  const auto ends_with = [&path](const std::string& tail) {
+    std::string key = path;
+    if (const std::size_t bracket = key.find('['); bracket != std::string::npos && key.back() == ']') {
+      key.resize(key.rfind('['));
+    }
+    return key.size() >= tail.size() && key.compare(key.size() - tail.size(), tail.size(), tail) == 0;
+  };
+  if (fault.data_block == 19 || fault.data_block == 29) {
+    deck_detail::ConstraintUnit constraint{};
+    const int code = fault.index >= 0 && fault.index <= kMaxConstraints ? mission.constraints.codes[fault.index] : -1;
+    if (deck_detail::constraint_unit(code, &constraint)) {
+      to_deck = 1.0 / constraint.to_core;
+      unit = constraint.suffix;  // ft_s -> ft/s, lb_ft2 -> lb/ft2
+      std::replace(unit.begin(), unit.end(), '_', '/');
+    }
+  } else if (unit == "rad" && ends_with("_deg")) {
+    to_deck = kRadToDeg;
+    unit = "deg";
+  } else if (unit == "rad/s" && ends_with("_deg_s")) {
+    to_deck = kRadToDeg;
+    unit = "deg/s";
+  } else if (unit == "ft" && ends_with("_in")) {
+    to_deck = 12.0;
+    unit = "in";
+  } else if (fault.data_block == 33 && fault.field != nullptr && std::strcmp(fault.field, "position_gain") == 0) {
+    unit = "deg/deg";
+  }
+  const std::string with_unit = unit.empty() || unit == "points" ? "" : " " + unit;
+  std::string key = path;
+  if (const std::size_t dot = key.rfind('.'); dot != std::string::npos) {
+    key = key.substr(dot + 1);
+  } else if (fault.field != nullptr && *fault.field != '\0' && key.find('[') == std::string::npos) {
+    key = fault.field;  // a whole table ([[constraint]]): the core's word, e.g. its count
+  }
+  std::string out = key + " = " + deck_number(fault.value, to_deck) + (unit == "points" ? " points" : with_unit);
+  const ValueRange& range = fault.range;
+  std::string expected;
+  if (range.has_low && range.has_high && range.low == range.high && range.low_inclusive && range.high_inclusive) {
+    expected = deck_number(range.low, to_deck) + with_unit;
+  } else if (range.has_low && range.has_high) {
+    expected = deck_number(range.low, to_deck) + (range.low_inclusive ? " <= " : " < ") + key +
+               (range.high_inclusive ? " <= " : " < ") + deck_number(range.high, to_deck) + with_unit;
+  } else if (range.has_low) {
+    expected = std::string(range.low_inclusive ? ">= " : "> ") + deck_number(range.low, to_deck) + with_unit;
+  } else if (range.has_high) {
+    expected = std::string(range.high_inclusive ? "<= " : "< ") + deck_number(range.high, to_deck) + with_unit;
+  }
+  const std::string phrase = fault.expected != nullptr ? fault.expected : "";
+  if (!expected.empty() && !phrase.empty()) return out + "; expected " + expected + " (" + phrase + ")";
+  if (!expected.empty()) return out + "; expected " + expected;
+  if (!phrase.empty()) return out + "; expected " + phrase;
+  return out;
 }
 
 int total_points(const Mission& mission, bool thrust) {
@@ -184,7 +327,7 @@ std::string fault_detail(Status status, const MissionFault& fault, const Mission
         return "stage " + std::to_string(code) + " jettison_weight_lb = " + format_number(stage->jettison_weight_lb) +
                "; expected >= 0";
       }
-      return "expected every consumable weight remaining >= 0";
+      break;
     case Status::kLiftoffLongerThanStage1:
       return "liftoff_duration_s = " + format_number(mission.launch.liftoff_duration_s) + " s but stage 1 lasts " +
              format_number(mission.vehicle.stages[0].duration_s) + " s; expected 0 <= lift-off < stage 1 duration";
@@ -237,14 +380,14 @@ std::string fault_detail(Status status, const MissionFault& fault, const Mission
     default:
       break;
   }
-  return "";
+  return value_detail(fault, mission, fault_path(fault, mission));
 }
 
 DeckError fault_error(Status status, const MissionFault& fault, const Mission& mission, const Reader& reader) {
   DeckError error;
   error.file = reader.file();
   error.data_block = fault.data_block;
-  error.field = fault_path(fault);
+  error.field = fault_path(fault, mission);
   error.line = reader.line_of(error.field);
   error.message = std::string(status_name(status)) + ": " + status_message(status);
   const std::string detail = fault_detail(status, fault, mission);

@@ -129,8 +129,10 @@ json stage_events_json(const Trajectory& trajectory) {
         {"end_velocity_ft_s", at_point(trajectory, event.last_point, velocity)},
         {"end_altitude_ft", at_point(trajectory, event.last_point, altitude)},
         {"burnout_weight_lb", number(event.burnout_weight_lb)},
-        {"jettison_weight_lb", number(event.burnout_weight_lb - event.weight_after_jettison_lb)},
-        {"weight_after_jettison_lb", number(event.weight_after_jettison_lb)},
+        {"completed", event.completed},
+        {"jettison_weight_lb",
+         event.completed ? number(event.burnout_weight_lb - event.weight_after_jettison_lb) : json(nullptr)},
+        {"weight_after_jettison_lb", event.completed ? number(event.weight_after_jettison_lb) : json(nullptr)},
     });
   }
   return events;

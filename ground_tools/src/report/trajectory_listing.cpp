@@ -218,9 +218,13 @@ std::string point_value(const Trajectory& trajectory, int index, const char* pat
   return format(pattern, value(trajectory.points[index]));
 }
 
-void write_stage_events(Pager& pager, const Trajectory& trajectory) {
+// The stage events that happened: every stage that ended (with its jettison), then the stage a
+// failed run stopped in (STOPPED: it jettisoned nothing), then the stages of the sequence the run
+// never reached (NOT REACHED).
+void write_stage_events(Pager& pager, const Mission& mission, const Trajectory& trajectory) {
   const int count = std::clamp(trajectory.stage_count, 0, kMaxStages);
-  pager.reserve(4 + count);
+  const int sequence_count = std::clamp(mission.vehicle.sequence.count, 0, kMaxStages);
+  pager.reserve(4 + std::max(count, sequence_count));
   pager.emit(" STAGE EVENTS");
   pager.emit("                             START TIME    END TIME  START WEIGHT   END WEIGHT"
              "    JETTISONED  WEIGHT AFTER");
@@ -237,9 +241,28 @@ void write_stage_events(Pager& pager, const Trajectory& trajectory) {
     line += right(point_value(trajectory, event.last_point, "%.3f", time), 12);
     line += right(point_value(trajectory, event.first_point, "%.2f", weight), 14);
     line += right(format("%.2f", event.burnout_weight_lb), 13);
-    line += right(format("%.2f", event.burnout_weight_lb - event.weight_after_jettison_lb), 14);
-    line += right(format("%.2f", event.weight_after_jettison_lb), 14);
+    if (event.completed) {
+      line += right(format("%.2f", event.burnout_weight_lb - event.weight_after_jettison_lb), 14);
+      line += right(format("%.2f", event.weight_after_jettison_lb), 14);
+    } else {
+      line += right("STOPPED", 14);
+      line += right("-", 14);
+    }
     pager.emit(line);
+  }
+  // The sequence's stages after the last one flown.
+  int reached = 0;
+  for (int s = 0; s < count; ++s) {
+    for (int k = 0; k < sequence_count; ++k) {
+      if (mission.vehicle.sequence.codes[k] == trajectory.stages[s].code) reached = std::max(reached, k + 1);
+    }
+  }
+  if (count > 0 && !trajectory.stages[count - 1].completed) {
+    for (int k = reached; k < sequence_count; ++k) {
+      std::string name = stage_name(mission.vehicle.sequence.codes[k]);
+      name.resize(26, ' ');
+      pager.emit(" " + name + right("NOT REACHED", 12));
+    }
   }
   pager.emit("");
 }
@@ -340,7 +363,7 @@ void report_detail::write_trajectory_pages(Pager& pager, const SimulationReport&
   pager.new_page("FINAL TRAJECTORY", true);
   write_points(pager, mission, trajectory);
   pager.new_page("TERMINAL CONDITIONS", false);
-  write_stage_events(pager, trajectory);
+  write_stage_events(pager, mission, trajectory);
   write_terminal_conditions(pager, report);
   write_constraint_table(pager, report.constraints,
                          " CONSTRAINTS OF DATA BLOCK 8 ON THIS TRAJECTORY (DATA BLOCK 19 UNITS, DEADBANDS OF DATA BLOCK 29)");

@@ -40,6 +40,8 @@ enum class Status : int {
   kAtmosphereTableInvalid,
   kBodyDynamicsDataMissing,
   kControlStationAtCenterOfGravity,
+  kThrustWithoutPropellant,
+  kConsumableWeightIncreases,
   // Constraint parameters (optimizer/constraint_parameters.hpp)
   kUnknownConstraintCode,
   kConstraintNotHyperbolic,

@@ -192,11 +192,29 @@ struct Mission {
   BodyDynamicsBlocks body_dynamics;  // blocks 33-37 (checked by validate_mission when IP(6) >= 1)
 };
 
-// Where validate_mission() found a fault, in the manual's vocabulary.
+// The allowed range of a value (core units); a side without a bound has has_low / has_high false.
+struct ValueRange {
+  bool has_low = false;
+  bool has_high = false;
+  bool low_inclusive = true;
+  bool high_inclusive = true;
+  double low = 0.0;
+  double high = 0.0;
+};
+
+// Where validate_mission() found a fault, in the manual's vocabulary, and what it found there: the
+// value (core units, `unit`) and the range it must lie in, or a phrase saying what was expected
+// when a range cannot say it. Ground tools turn it into a message naming the deck key or card word.
 struct MissionFault {
   int data_block = 0;   // manual data block number
   int stage_code = 0;   // 0 when not stage-coded
   const char* field = "";
+  int index = -1;              // element of `field` (table point, IP(n), constraint entry, ...); -1: none
+  bool has_value = false;      // `value` is the value found
+  double value = 0.0;          // core units
+  ValueRange range;            // where the value must lie (core units), when has_low or has_high
+  const char* unit = "";       // core unit of value and range: "s", "ft", "lb", "lbf", "rad", "rad/s", ...
+  const char* expected = "";   // what was expected, when the range does not say it ("" otherwise)
 };
 
 // Checks the case at the boundary: sequence, capacities, tables, weights, durations, steps,

@@ -56,6 +56,9 @@ struct StageEvent {
   int last_point = 0;    // index of the stage's last point (before jettison)
   double burnout_weight_lb = 0.0;   // at the end of the stage, before jettison
   double weight_after_jettison_lb = 0.0;
+  // The stage flew to its end (and jettisoned). false for the stage a failed run stopped in: its
+  // last point is the last point flown, it jettisoned nothing.
+  bool completed = false;
 };
 
 // One integration step as flown, so a backward run can re-evaluate exactly the same model.
