@@ -49,6 +49,7 @@ const char* status_name(Status status) {
     case Status::kSteeringMatrixSingular: return "kSteeringMatrixSingular";
     case Status::kGuidanceDidNotConverge: return "kGuidanceDidNotConverge";
     case Status::kOptimizationNotStarted: return "kOptimizationNotStarted";
+    case Status::kOptimizationBudgetExhausted: return "kOptimizationBudgetExhausted";
     case Status::kFinalGuidanceFailed: return "kFinalGuidanceFailed";
     case Status::kLinearizationDidNotConverge: return "kLinearizationDidNotConverge";
     case Status::kAdjustableParameterNotSupported: return "kAdjustableParameterNotSupported";
@@ -121,6 +122,7 @@ const char* status_message(Status status) {
     case Status::kLinearizationDidNotConverge: return "the linearized pitch program did not meet the constraints within the linearization deadbands and the rate limits in DA13(4) forward runs";
     case Status::kGuidanceDidNotConverge: return "not converged: the guidance runs used the forward-run budget DA13(3) without bringing every constraint inside its data block 29 deadband, so no optimization run was made";
     case Status::kOptimizationNotStarted: return "not converged: guidance met every deadband but no optimization run was made (the first payoff-improvement attempt was below DA13(2), or the forward-run budget DA13(3) left no room); the trajectory is feasible, not optimized";
+    case Status::kOptimizationBudgetExhausted: return "not converged: the forward-run budget DA13(3) ended the optimization while payoff-improvement attempts above DA13(2) remained; the last feasible optimization run is reported (raise DA13(3) to go on)";
     case Status::kFinalGuidanceFailed: return "not converged: the final guidance run did not meet every data block 29 deadband; the last feasible optimization run is reported instead";
     case Status::kAdjustableParameterNotSupported: return "an adjustable parameter code of data block 6 is not supported by this optimizer yet";
     case Status::kBodyDynamicsNotTrimmable: return "the autopilot has no steady state (Sec. 7): K_theta M_delta - M_alpha is not positive, a statically unstable vehicle with too little control moment";

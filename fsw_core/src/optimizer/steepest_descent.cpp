@@ -716,7 +716,9 @@ Status Iteration::run(const Mission& input) {
   record(RunKind::kFinalGuidance, result_->final_guidance_met, 0.0);
   if (final_accepted) accept_candidate();
 
-  result_->converged = guidance_converged && result_->optimization_runs > 0 && result_->final_guidance_met;
+  result_->converged = guidance_converged && result_->optimization_runs > 0 &&
+                       result_->optimization_stop == OptimizationStop::kImprovementBelowMinimum &&
+                       result_->final_guidance_met;
   result_->constraint_count = problem_.constraint_count;
   for (int i = 0; i < problem_.constraint_count; ++i) {
     result_->codes[i] = problem_.codes[i].code;
@@ -743,6 +745,7 @@ Status Iteration::run(const Mission& input) {
   }
   if (!guidance_converged) return Status::kGuidanceDidNotConverge;
   if (result_->optimization_runs == 0) return Status::kOptimizationNotStarted;
+  if (result_->optimization_stop == OptimizationStop::kForwardRunBudget) return Status::kOptimizationBudgetExhausted;
   if (!result_->final_guidance_met) return Status::kFinalGuidanceFailed;
   return Status::kOk;
 }

@@ -57,6 +57,7 @@ enum class Status : int {
   // The optimizer did not converge (Sec. 22 sequence): which phase failed.
   kGuidanceDidNotConverge,
   kOptimizationNotStarted,
+  kOptimizationBudgetExhausted,
   kFinalGuidanceFailed,
   kLinearizationDidNotConverge,
   kAdjustableParameterNotSupported,

@@ -53,8 +53,10 @@ struct OptimizerResult {
   // kOptimizationNotStarted, kFinalGuidanceFailed) or the core failure that stopped a run.
   Status status = Status::kNotPrepared;
   // Sec. 22's sequence ran to its end: a guidance run met every deadband, at least one optimization
-  // run was made, the optimization phase ended by one of its two stopping rules, and the final
-  // guidance run met every deadband. The reported trajectory is then that final guidance run.
+  // run was made, the attempted improvement fell under DA13(2) (the manual's other way out, the
+  // forward-run budget, ends the case too but leaves improvement on the table: not converged,
+  // kOptimizationBudgetExhausted), and the final guidance run met every deadband. The reported
+  // trajectory is then that final guidance run.
   bool converged = false;
   OptimizationStop optimization_stop = OptimizationStop::kNotReached;
   int guidance_runs = 0;                // forward guidance runs before the optimization phase
