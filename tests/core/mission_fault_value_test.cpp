@@ -163,8 +163,13 @@ TEST(MissionFaultValue, ZeroMaxForwardTrajectoriesAndNegativeLiftoffNameTheirBou
   EXPECT_EQ(fault.range.low, 1.0);
   mission = reference();
   mission->launch.liftoff_duration_s = -1.0;
-  fault = fault_of(*mission, Status::kValueOutOfRange);
+  fault = fault_of(*mission, Status::kLiftoffNotPositive);
   expect_value(fault, 20, "liftoff_duration_s", -1, -1.0);
+  // 0 too: the first step would start at V = 0, where the equations of motion are singular.
+  mission->launch.liftoff_duration_s = 0.0;
+  fault = fault_of(*mission, Status::kLiftoffNotPositive);
+  expect_value(fault, 20, "liftoff_duration_s", -1, 0.0);
+  EXPECT_EQ(fault.range.low, 0.0);
 }
 
 TEST(MissionFaultValue, ZeroAlphaWindowBeyondStage1CarriesTheWindow) {

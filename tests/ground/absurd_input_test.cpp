@@ -38,7 +38,10 @@ const std::vector<Edit>& reported_edits() {
        "launch.geocentric_latitude_deg", "geocentric_latitude_deg = 95 deg",
        "expected -90 <= geocentric_latitude_deg <= 90 deg"},
       {"liftoff_duration_s = 3.0", "liftoff_duration_s = -1.0", 20, "launch.liftoff_duration_s",
-       "liftoff_duration_s = -1 s", "expected >= 0 s"},
+       "liftoff_duration_s = -1 s", "expected > 0 s"},
+      // Before: accepted, then kNonFiniteState from the first step at V = 0 (issue 17).
+      {"liftoff_duration_s = 3.0", "liftoff_duration_s = 0.0", 20, "launch.liftoff_duration_s",
+       "liftoff_duration_s = 0 s", "expected > 0 s"},
       {"zero_alpha_end_s = 45.0", "zero_alpha_end_s = 400.0", 22, "control_constraints.zero_alpha_end_s",
        "zero_alpha_end_s = 400 s", "expected 15 < zero_alpha_end_s <= 45.02 s"},
       {"max_forward_trajectories = 30", "max_forward_trajectories = 0", 28, "convergence.max_forward_trajectories",

@@ -163,7 +163,9 @@ TEST(MissionValidation, ThrustAndWeightTablesEndTogether) {
 TEST(MissionValidation, LiftoffAndInitialConditions) {
   auto mission = optimum();
   mission->launch.liftoff_duration_s = -0.1;
-  expect_fault(*mission, Status::kValueOutOfRange, 20, 0, "liftoff_duration_s");
+  expect_fault(*mission, Status::kLiftoffNotPositive, 20, 0, "liftoff_duration_s");
+  mission->launch.liftoff_duration_s = 0.0;  // the equations of motion are singular at V = 0
+  expect_fault(*mission, Status::kLiftoffNotPositive, 20, 0, "liftoff_duration_s");
   mission->launch.liftoff_duration_s = 45.0;
   expect_fault(*mission, Status::kLiftoffLongerThanStage1, 20, 1, "liftoff_duration_s");
   mission = optimum();

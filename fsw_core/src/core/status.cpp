@@ -31,6 +31,7 @@ const char* status_name(Status status) {
     case Status::kThrustWeightTimesDiffer: return "kThrustWeightTimesDiffer";
     case Status::kStageDurationMismatch: return "kStageDurationMismatch";
     case Status::kLiftoffLongerThanStage1: return "kLiftoffLongerThanStage1";
+    case Status::kLiftoffNotPositive: return "kLiftoffNotPositive";
     case Status::kInitialConditionsInvalid: return "kInitialConditionsInvalid";
     case Status::kAtmosphereTableInvalid: return "kAtmosphereTableInvalid";
     case Status::kBodyDynamicsDataMissing: return "kBodyDynamicsDataMissing";
@@ -103,6 +104,7 @@ const char* status_message(Status status) {
     case Status::kThrustWeightTimesDiffer: return "thrust and weight tables of a stage end at different times";
     case Status::kStageDurationMismatch: return "a powered stage duration differs from the last time of its thrust table";
     case Status::kLiftoffLongerThanStage1: return "the lift-off interval is not shorter than stage 1";
+    case Status::kLiftoffNotPositive: return "the closed-form lift-off DA5(1) must last more than 0 s: the integration starts from its end state, and at V = 0 the equations of motion are singular (flight-path angle and heading undefined)";
     case Status::kInitialConditionsInvalid: return "initial conditions must have zero velocity and a 90 degree flight-path angle";
     case Status::kAtmosphereTableInvalid: return "the atmosphere table is inconsistent";
     case Status::kBodyDynamicsDataMissing: return "a 6D (body dynamics) trajectory needs data blocks 33-37 (gains, stations, reference length and area, the block 34-36 tables and the stage-1 c.g. history), which the case does not give completely";

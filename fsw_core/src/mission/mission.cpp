@@ -456,9 +456,12 @@ Status check_launch(const LaunchConditions& l, const Vehicle& vehicle, const Che
   TOLIP_CHECK(check.finite(l.heading_hold_until_s, 21, 0, "heading_hold_until_s", "s"));
 
   const Status bad = Status::kValueOutOfRange;
-  TOLIP_CHECK(check.range(l.liftoff_duration_s, at_least(0.0), bad, 20, 0, "liftoff_duration_s", "s"));
+  // The integration starts from the lift-off's end state: at V = 0 (no lift-off) the equations of
+  // motion are singular, so the closed-form lift-off must last a while.
+  TOLIP_CHECK(check.range(l.liftoff_duration_s, above(0.0), Status::kLiftoffNotPositive, 20, 0, "liftoff_duration_s",
+                          "s"));
   const StageData& stage1 = vehicle.stages[stage_index(1)];
-  TOLIP_CHECK(check.range(l.liftoff_duration_s, below(at_least(0.0), stage1.duration_s),
+  TOLIP_CHECK(check.range(l.liftoff_duration_s, below(above(0.0), stage1.duration_s),
                           Status::kLiftoffLongerThanStage1, 20, 1, "liftoff_duration_s", "s"));
   TOLIP_CHECK(check.range(l.altitude_ft, between(kLowestLaunchAltitude_ft, kHighestLaunchAltitude_ft), bad, 21, 0,
                           "altitude_ft", "ft"));

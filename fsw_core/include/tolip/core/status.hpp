@@ -36,6 +36,7 @@ enum class Status : int {
   kThrustWeightTimesDiffer,
   kStageDurationMismatch,
   kLiftoffLongerThanStage1,
+  kLiftoffNotPositive,
   kInitialConditionsInvalid,
   kAtmosphereTableInvalid,
   kBodyDynamicsDataMissing,
