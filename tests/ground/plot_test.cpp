@@ -424,6 +424,19 @@ TEST(PlotCatalogue, MalformedFieldsAreNamed) {
 
 // ---- the command ---------------------------------------------------------------------------------
 
+TEST(PlotCommand, HelpAndDocsNameEveryFigure) {
+  const CommandResult help = run_tolip_executable({"plot", "--help"});
+  ASSERT_EQ(help.exit_code, 0);
+  const std::string docs = read_text_file(std::string(TOLIP_SOURCE_DIR) + "/docs/cli.md");
+  const std::string guide = read_text_file(std::string(TOLIP_SOURCE_DIR) + "/docs/user-guide.md");
+  for (const ground::PlotKind& kind : ground::plot_catalogue()) {
+    EXPECT_TRUE(contains(help.out, kind.name)) << kind.name;
+    EXPECT_TRUE(contains(docs, std::string("| `") + kind.name + "` |")) << "docs/cli.md lacks " << kind.name;
+    EXPECT_TRUE(contains(guide, std::string("`") + kind.name + "`")) << "docs/user-guide.md lacks " << kind.name;
+  }
+  EXPECT_FALSE(contains(docs, "NAME.caseN")) << "no per-case figures any more";
+}
+
 TEST(PlotCommand, SimulateResultGivesEveryFigureAsPngAndSvg) {
   REQUIRE_GNUPLOT();
   ScratchDirectory scratch("plot_simulate");
