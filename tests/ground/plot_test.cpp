@@ -4,12 +4,14 @@
 // (scripts/setup.sh installs gnuplot-nox).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -22,8 +24,14 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-const std::vector<std::string> kFigures = {"altitude_downrange", "velocity_time", "dynamic_pressure_time",
-                                           "theta_time"};
+const std::vector<std::string> kFigures = {"altitude_downrange_ascent", "altitude_downrange", "velocity_time",
+                                           "flight_path_angle_time",    "dynamic_pressure_time", "alpha_time",
+                                           "qalpha_time",               "theta_time_ascent",  "theta_time",
+                                           "weight_time",               "ground_track",       "convergence"};
+// The figures of a simulate result (no 'iterations': no convergence figure).
+const std::vector<std::string> kTrajectoryFigures(kFigures.begin(), kFigures.end() - 1);
+
+constexpr double kFeetPerNauticalMile = 1852.0 / 0.3048;
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
@@ -34,22 +42,46 @@ bool gnuplot_installed() { return std::system("command -v gnuplot >/dev/null 2>&
     if (!gnuplot_installed()) GTEST_SKIP() << "gnuplot is not installed (gnuplot-nox)"; \
   } while (false)
 
-json point(double t, double range, double altitude, double velocity, json qbar, double theta) {
+// A trajectory point with every column the figures read; the others follow from these.
+json point(double t, int stage, double range, double altitude, double velocity, json qbar, double theta,
+           bool alpha_zero = false) {
   return json{{"time_s", t},
+              {"stage", stage},
               {"range_nmi", range},
               {"altitude_ft", altitude},
               {"velocity_ft_s", velocity},
               {"inertial_velocity_ft_s", velocity + 1000.0},
+              {"gamma_deg", theta - 2.0},
+              {"inertial_gamma_deg", theta - 3.0},
               {"dynamic_pressure_lbf_ft2", std::move(qbar)},
-              {"theta_deg", theta}};
+              {"alpha_deg", t < 40 ? -0.1 * t : 0.0},
+              {"qalpha_lbf_deg_ft2", t < 40 ? -10.0 * t : 0.0},
+              {"theta_deg", theta},
+              {"weight_lb", 10000.0 - 50.0 * t},
+              {"longitude_deg", -75.0 + 0.1 * t},
+              {"geodetic_latitude_deg", 37.8 - 0.05 * t},
+              {"alpha_zero", alpha_zero}};
 }
 
-// A small result in the optimize --json schema, with a linearized program.
+// A small result in the optimize --json schema, with a linearized program: stage 1 from 0 to 30 s,
+// a coast to 100 s, stage 2 to 110 s; max q (400) at 10 s; alpha = 0 on the steps from 10 to 30 s.
 json small_result(const std::string& title) {
-  json document = {{"program", "tolip"}, {"title", title}, {"iterations", json::array()}};
-  document["stage_events"] = json::array({json{{"stage", 1}, {"end_time_s", 30.0}}});
-  document["trajectory"] = json::array({point(0, 0, 0, 0, 0.0, 90), point(10, 1, 5000, 800, 400.0, 80),
-                                        point(20, 4, 20000, 2000, nullptr, 60), point(30, 10, 50000, 4000, 100.0, 45)});
+  json document = {{"program", "tolip"},    {"title", title},      {"case_heading", "HEADING"},
+                   {"status", "kOk"},       {"converged", true},   {"case_status", "kOk"},
+                   {"iterations", json::array()}};
+  document["stage_events"] = json::array({
+      json{{"stage", 1}, {"kind", "powered"}, {"first_point", 1}, {"last_point", 3}, {"start_time_s", 10.0},
+           {"end_time_s", 30.0}},
+      json{{"stage", 6}, {"kind", "coast"}, {"first_point", 4}, {"last_point", 6}, {"start_time_s", 30.0},
+           {"end_time_s", 100.0}},
+      json{{"stage", 2}, {"kind", "powered"}, {"first_point", 7}, {"last_point", 8}, {"start_time_s", 100.0},
+           {"end_time_s", 110.0}},
+  });
+  document["trajectory"] = json::array({point(0, 1, 0, 0, 0, 0.0, 90), point(10, 1, 1, 5000, 800, 400.0, 80, true),
+                                        point(20, 1, 4, 20000, 2000, nullptr, 60, true),
+                                        point(30, 1, 10, 50000, 4000, 100.0, 45), point(30, 6, 10, 50000, 4000, 100.0, 45),
+                                        point(65, 6, 60, 300000, 3800, 0.0, 45), point(100, 6, 110, 400000, 3600, 0.0, 45),
+                                        point(100, 2, 110, 400000, 3600, 0.0, 20), point(110, 2, 130, 410000, 9000, 0.0, 20)});
   document["linearized"] = {
       {"segments", json::array({json{{"stage", 1}, {"start_stage_time_s", 0.0}, {"start_time_s", 0.0},
                                      {"theta_deg", 90.0}, {"rate_deg_s", -1.0}},
@@ -58,7 +90,24 @@ json small_result(const std::string& title) {
       {"constraints_met", true},
       {"rate_limits_met", false},
       {"payoff", 300.0}};
+  document["payoff"] = {{"kind", "payload"}, {"unit", "lb"}};
+  document["constraints"] = json::array({json{{"name", "altitude"}, {"tolerance", 20000.0}, {"inequality", false}},
+                                         json{{"name", "total_heating"}, {"tolerance", 10.0}, {"inequality", true}}});
+  document["iterations"] = json::array(
+      {json{{"forward_run", 1}, {"successful", false}, {"payoff", 250.0}, {"constraint_corrections", {-40000.0, 0.0}}},
+       json{{"forward_run", 2}, {"successful", true}, {"payoff", 260.0}, {"constraint_corrections", {0.0, -5.0}}},
+       json{{"forward_run", 3}, {"successful", true}, {"payoff", 270.0}, {"constraint_corrections", {1000.0, 30.0}}}});
   return document;
+}
+
+// The figure of that name (a failed test when there is none).
+const ground::Figure& figure_named(const ground::DocumentFigures& figures, const std::string& name) {
+  for (const ground::Figure& figure : figures.figures) {
+    if (figure.name == name) return figure;
+  }
+  ADD_FAILURE() << "no figure " << name;
+  static const ground::Figure none;
+  return none;
 }
 
 std::string write_file(const ScratchDirectory& scratch, const std::string& name, const std::string& text) {
@@ -67,8 +116,9 @@ std::string write_file(const ScratchDirectory& scratch, const std::string& name,
   return path;
 }
 
-void expect_images(const fs::path& dir, const std::string& suffix) {
-  for (const std::string& figure : kFigures) {
+void expect_images(const fs::path& dir, const std::string& suffix,
+                   const std::vector<std::string>& figures = kFigures) {
+  for (const std::string& figure : figures) {
     const fs::path png = dir / (figure + suffix + ".png");
     const fs::path svg = dir / (figure + suffix + ".svg");
     ASSERT_TRUE(fs::exists(png)) << png;
@@ -105,14 +155,13 @@ TEST(PlotCatalogue, FiguresFromADocument) {
   ASSERT_EQ(result.figures.size(), kFigures.size());
   EXPECT_TRUE(result.skipped.empty());
 
-  const ground::Figure& qbar = result.figures[2];
-  EXPECT_EQ(qbar.name, "dynamic_pressure_time");
+  const ground::Figure& qbar = figure_named(result, "dynamic_pressure_time");
   ASSERT_EQ(qbar.series.size(), 1u);
   EXPECT_TRUE(std::isnan(qbar.series[0].y[2])) << "a null is a gap";
 
   // theta: the optimum, then the linearized program, segment by segment, the last one to the end
   // of its stage (no end_time_s given).
-  const ground::Figure& theta = result.figures[3];
+  const ground::Figure& theta = figure_named(result, "theta_time");
   ASSERT_EQ(theta.series.size(), 2u);
   const ground::PlotSeries& linear = theta.series[1];
   EXPECT_TRUE(contains(linear.title, "constraints met"));
@@ -126,7 +175,209 @@ TEST(PlotCatalogue, FiguresFromADocument) {
   // The lead's end_time_s, when given, ends the last segment.
   json with_end = small_result("");
   with_end["linearized"]["end_time_s"] = 25.0;
-  EXPECT_EQ(ground::figures_for_document(with_end).figures[3].series[1].x[3], 25.0);
+  EXPECT_EQ(figure_named(ground::figures_for_document(with_end), "theta_time").series[1].x[3], 25.0);
+}
+
+TEST(PlotCatalogue, StagingMarkersAtEveryIgnitionAndBurnout) {
+  const ground::DocumentFigures result = ground::figures_for_document(small_result(""));
+  // Against time: a vertical line per event; stage 1 ignites at lift-off, the first point.
+  for (const char* name : {"velocity_time", "flight_path_angle_time", "theta_time", "weight_time"}) {
+    std::vector<std::pair<double, std::string>> markers;
+    for (const ground::XMarker& marker : figure_named(result, name).x_markers) markers.emplace_back(marker.x, marker.label);
+    EXPECT_EQ(markers, (std::vector<std::pair<double, std::string>>{
+                           {0.0, "S1 ign"}, {30.0, "S1 bo"}, {100.0, "S2 ign"}, {110.0, "S2 bo"}}))
+        << name;
+    EXPECT_TRUE(contains(figure_named(result, name).key_entries.at(0).title, "staging")) << name;
+  }
+  // Against downrange: labelled points on the curve (the stage's first and last point).
+  std::vector<std::string> labels;
+  for (const ground::PointMarker& point : figure_named(result, "altitude_downrange").points) {
+    if (point.label == "S1 bo") {
+      EXPECT_EQ(point.x, 10.0);
+      EXPECT_EQ(point.y, 50000.0 / kFeetPerNauticalMile);
+    }
+    labels.push_back(point.label);
+  }
+  EXPECT_EQ(labels, (std::vector<std::string>{"S1 bo", "S2 ign", "S2 bo", "max q"}));
+}
+
+TEST(PlotCatalogue, MaxQIsMarked) {
+  const ground::DocumentFigures result = ground::figures_for_document(small_result(""));
+  const ground::Figure& qbar = figure_named(result, "dynamic_pressure_time");
+  ASSERT_EQ(qbar.points.size(), 1u);
+  EXPECT_EQ(qbar.points[0].x, 10.0);
+  EXPECT_EQ(qbar.points[0].y, 400.0);
+  EXPECT_EQ(qbar.points[0].label, "max q 400 lbf/ft^2 at 10.0 s");
+  const auto has_max_q_line = [](const ground::Figure& figure) {
+    for (const ground::XMarker& marker : figure.x_markers) {
+      if (marker.label == "max q" && marker.x == 10.0) return true;
+    }
+    return false;
+  };
+  EXPECT_TRUE(has_max_q_line(figure_named(result, "alpha_time")));
+  EXPECT_TRUE(has_max_q_line(figure_named(result, "qalpha_time")));
+  const ground::Figure& qalpha = figure_named(result, "qalpha_time");
+  ASSERT_FALSE(qalpha.points.empty());
+  EXPECT_EQ(qalpha.points.back().label, "peak |QALPHA| 300 at 30.0 s");
+}
+
+TEST(PlotCatalogue, AscentViewsEndAtTheBurnoutBeforeTheLastCoast) {
+  const ground::DocumentFigures result = ground::figures_for_document(small_result(""));
+  const ground::Figure& ascent = figure_named(result, "altitude_downrange_ascent");
+  EXPECT_EQ(ascent.x_max, 10.0) << "the downrange at the stage 1 burnout";
+  EXPECT_TRUE(contains(ascent.title, "ascent through S1 burnout"));
+  for (const double x : ascent.series.at(0).x) EXPECT_LE(x, 10.0);
+  for (const char* name : {"dynamic_pressure_time", "alpha_time", "qalpha_time", "theta_time_ascent"}) {
+    const ground::Figure& figure = figure_named(result, name);
+    EXPECT_EQ(figure.x_min, 0.0) << name;
+    EXPECT_EQ(figure.x_max, 30.0) << name;
+    for (const ground::PlotSeries& series : figure.series) {
+      for (const double x : series.x) {
+        if (std::isfinite(x)) EXPECT_LE(x, 30.0) << name;  // a null is a gap
+      }
+    }
+  }
+  // The full-flight views keep everything.
+  const ground::Figure& full = figure_named(result, "altitude_downrange");
+  EXPECT_TRUE(std::isnan(full.x_max));
+  EXPECT_EQ(full.series.at(0).x.back(), 130.0);
+  EXPECT_EQ(figure_named(result, "theta_time").series.at(0).x.back(), 110.0);
+}
+
+TEST(PlotCatalogue, AltitudeIsInNauticalMiles) {
+  const ground::DocumentFigures result = ground::figures_for_document(small_result(""));
+  const ground::Figure& altitude = figure_named(result, "altitude_downrange");
+  EXPECT_EQ(altitude.y_label, "altitude (n.mi.)");
+  EXPECT_DOUBLE_EQ(altitude.series.at(0).y[3], 50000.0 / 6076.115485564304);
+}
+
+TEST(PlotCatalogue, ZeroAlphaWindowIsShaded) {
+  const ground::DocumentFigures result = ground::figures_for_document(small_result(""));
+  for (const char* name : {"theta_time", "alpha_time", "qalpha_time", "dynamic_pressure_time", "flight_path_angle_time"}) {
+    const ground::Figure& figure = figure_named(result, name);
+    ASSERT_EQ(figure.bands.size(), 1u) << name;
+    EXPECT_EQ(figure.bands[0].from, 10.0) << "the steps starting at the flagged points 10 and 20 s";
+    EXPECT_EQ(figure.bands[0].to, 30.0);
+    EXPECT_TRUE(contains(figure.band_title, "zero-alpha")) << name;
+  }
+  EXPECT_TRUE(figure_named(result, "velocity_time").bands.empty());
+}
+
+TEST(PlotCatalogue, TitleNamesTheCaseHeadingAndRunStatus) {
+  json document = small_result("THE TITLE");
+  EXPECT_EQ(figure_named(ground::figures_for_document(document), "velocity_time").subtitle,
+            (std::vector<std::string>{"THE TITLE", "HEADING - converged, kOk"}));
+  document["converged"] = false;
+  document["status"] = "kGuidanceDidNotConverge";
+  document["case_status"] = "kGuidanceDidNotConverge";
+  EXPECT_EQ(ground::run_status_text(document), "not converged, kGuidanceDidNotConverge");
+  document["converged"] = true;
+  document["status"] = "kOk";
+  document["case_status"] = "kLinearizationDidNotConverge";
+  document["case_failed_step"] = "linearization";
+  EXPECT_EQ(ground::run_status_text(document), "converged, kOk; case failed: linearization: kLinearizationDidNotConverge");
+  document.erase("converged");
+  document["status"] = "kAltitudeBelowSurface";
+  EXPECT_EQ(ground::run_status_text(document), "simulated, kAltitudeBelowSurface");
+}
+
+TEST(PlotCatalogue, NewFiguresDrawTheirColumns) {
+  const ground::DocumentFigures result = ground::figures_for_document(small_result(""));
+  const ground::Figure& gamma = figure_named(result, "flight_path_angle_time");
+  ASSERT_EQ(gamma.series.size(), 2u);
+  EXPECT_EQ(gamma.series[0].y[1], 78.0);
+  EXPECT_EQ(gamma.series[1].y[1], 77.0);
+  EXPECT_EQ(figure_named(result, "alpha_time").series.at(0).y[2], -2.0);
+  EXPECT_EQ(figure_named(result, "qalpha_time").series.at(0).y[2], -200.0);
+  const ground::Figure& weight = figure_named(result, "weight_time");
+  EXPECT_TRUE(weight.y_log);
+  EXPECT_EQ(weight.series.at(0).y[1], 9500.0);
+}
+
+TEST(PlotCatalogue, GroundTrackMarksTheLaunchSiteAndBreaksAtTheDateLine) {
+  json document = small_result("");
+  const ground::DocumentFigures result = ground::figures_for_document(document);
+  const ground::Figure& track = figure_named(result, "ground_track");
+  EXPECT_EQ(track.x_label, "longitude (deg east)");
+  EXPECT_EQ(track.series.at(0).x[0], -75.0);
+  EXPECT_EQ(track.series.at(0).y[0], 37.8);
+  ASSERT_FALSE(track.points.empty());
+  EXPECT_EQ(track.points[0].label, "launch site 37.80 N, 75.00 W");
+  EXPECT_TRUE(std::isfinite(track.aspect_ratio));
+  EXPECT_LT(track.x_min, -75.0);
+
+  document["trajectory"][5]["longitude_deg"] = 179.5;
+  document["trajectory"][6]["longitude_deg"] = -179.5;
+  const ground::DocumentFigures crossed = ground::figures_for_document(document);
+  const ground::Figure& crossing = figure_named(crossed, "ground_track");
+  const std::vector<double>& x = crossing.series.at(0).x;
+  const auto east = std::find(x.begin(), x.end(), 179.5);
+  ASSERT_TRUE(east != x.end() && east + 2 < x.end());
+  EXPECT_TRUE(std::isnan(*(east + 1))) << "a gap between 179.5 and -179.5";
+  EXPECT_EQ(*(east + 2), -179.5);
+}
+
+TEST(PlotCatalogue, ConvergenceScalesConstraintErrorsByTheirDeadbands) {
+  const ground::DocumentFigures result = ground::figures_for_document(small_result(""));
+  const ground::Figure& convergence = figure_named(result, "convergence");
+  EXPECT_EQ(convergence.y_label, "payoff (lb)");
+  EXPECT_TRUE(convergence.y2_log);
+  ASSERT_EQ(convergence.y_lines.size(), 1u);
+  EXPECT_EQ(convergence.y_lines[0].y, 1.0) << "the deadband";
+  std::vector<std::string> titles;
+  for (const ground::PlotSeries& series : convergence.series) titles.push_back(series.title);
+  EXPECT_EQ(titles, (std::vector<std::string>{"payoff (left axis)", "successful run", "unsuccessful run",
+                                              "altitude (right axis)", "total_heating excess (right axis)"}));
+  EXPECT_EQ(convergence.series[0].y, (std::vector<double>{250.0, 260.0, 270.0}));
+  EXPECT_EQ(convergence.series[1].x, (std::vector<double>{2.0, 3.0}));
+  EXPECT_EQ(convergence.series[2].x, (std::vector<double>{1.0}));
+  const ground::PlotSeries& altitude = convergence.series[3];
+  EXPECT_TRUE(altitude.second_axis);
+  EXPECT_EQ(altitude.y[0], 2.0) << "|-40000| / 20000";
+  EXPECT_TRUE(std::isnan(altitude.y[1])) << "no error: nothing on a log axis";
+  EXPECT_EQ(altitude.y[2], 0.05);
+  const ground::PlotSeries& heating = convergence.series[4];
+  EXPECT_TRUE(std::isnan(heating.y[0]));
+  EXPECT_EQ(heating.y[1], 0.5) << "an inequality: the excess (desired - achieved = -5) over the deadband";
+  EXPECT_TRUE(std::isnan(heating.y[2])) << "within its limit: no error";
+
+  json simulate = small_result("");
+  simulate.erase("iterations");
+  const ground::DocumentFigures without = ground::figures_for_document(simulate);
+  EXPECT_EQ(without.skipped, (std::vector<std::string>{"convergence (no member 'iterations')"}));
+}
+
+TEST(PlotCatalogue, CasesAreOverlaidWithALegendPerCase) {
+  json one = small_result("SAME TITLE");
+  json two = small_result("SAME TITLE");
+  two["case_heading"] = "SECOND";
+  two["converged"] = false;
+  two["status"] = "kGuidanceDidNotConverge";
+  two.erase("linearized");
+  const ground::DocumentFigures result = ground::figures_for_cases({&one, &two});
+  ASSERT_EQ(result.figures.size(), kFigures.size()) << "one figure per name, not one per case";
+  const ground::Figure& velocity = figure_named(result, "velocity_time");
+  ASSERT_EQ(velocity.series.size(), 4u);
+  EXPECT_EQ(velocity.series[0].color, 1);
+  EXPECT_EQ(velocity.series[1].color, 1);
+  EXPECT_EQ(velocity.series[2].color, 2);
+  EXPECT_EQ(velocity.series[1].dash_type, velocity.series[3].dash_type) << "VI dashed alike in both cases";
+  EXPECT_NE(velocity.series[0].dash_type, velocity.series[1].dash_type);
+  std::vector<std::string> legend;
+  for (const ground::KeyEntry& entry : velocity.key_entries) legend.push_back(entry.title);
+  EXPECT_EQ(legend, (std::vector<std::string>{
+                        "staging: Sn ign = stage n ignition, Sn bo = burnout", "case 1: HEADING - converged, kOk",
+                        "case 2: SECOND - not converged, kGuidanceDidNotConverge", "VEL, Earth-relative",
+                        "VI, inertial"}));
+  EXPECT_EQ(velocity.subtitle, (std::vector<std::string>{"SAME TITLE", "2 cases overlaid, a colour per case"}));
+  // A figure of one curve a case has a legend entry per case only.
+  std::size_t entries = 0;
+  for (const ground::KeyEntry& entry : figure_named(result, "weight_time").key_entries) {
+    entries += contains(entry.title, "case ") ? 1 : 0;
+  }
+  EXPECT_EQ(entries, 2u);
+  EXPECT_EQ(figure_named(result, "weight_time").key_entries.size(), 3u);
+  EXPECT_EQ(figure_named(result, "theta_time").series.size(), 3u) << "case 2 has no linearized program";
 }
 
 TEST(PlotCatalogue, AbsentDataSkipsThePlotOnly) {
@@ -134,15 +385,17 @@ TEST(PlotCatalogue, AbsentDataSkipsThePlotOnly) {
   simulate.erase("linearized");
   simulate.erase("iterations");
   const ground::DocumentFigures result = ground::figures_for_document(simulate);
-  ASSERT_EQ(result.figures.size(), kFigures.size());
-  EXPECT_EQ(result.figures[3].series.size(), 1u) << "no overlay without 'linearized'";
-  EXPECT_EQ(result.figures[3].series[0].title, "theta");
+  ASSERT_EQ(result.figures.size(), kTrajectoryFigures.size());
+  EXPECT_EQ(figure_named(result, "theta_time").series.size(), 1u) << "no overlay without 'linearized'";
+  EXPECT_EQ(figure_named(result, "theta_time").series[0].title, "theta");
 
   const ground::DocumentFigures empty = ground::figures_for_document(json{{"trajectory", json::array()}});
   EXPECT_TRUE(empty.figures.empty());
   ASSERT_EQ(empty.skipped.size(), kFigures.size());
-  EXPECT_EQ(empty.skipped[0], "altitude_downrange ('trajectory' is empty)");
-  EXPECT_EQ(ground::figures_for_document(json::object()).skipped[0], "altitude_downrange (no member 'trajectory')");
+  EXPECT_EQ(empty.skipped[0], "altitude_downrange_ascent ('trajectory' is empty)");
+  EXPECT_EQ(empty.skipped.back(), "convergence (no member 'iterations')");
+  EXPECT_EQ(ground::figures_for_document(json::object()).skipped[0],
+            "altitude_downrange_ascent (no member 'trajectory')");
 }
 
 TEST(PlotCatalogue, MalformedFieldsAreNamed) {
@@ -171,6 +424,19 @@ TEST(PlotCatalogue, MalformedFieldsAreNamed) {
 
 // ---- the command ---------------------------------------------------------------------------------
 
+TEST(PlotCommand, HelpAndDocsNameEveryFigure) {
+  const CommandResult help = run_tolip_executable({"plot", "--help"});
+  ASSERT_EQ(help.exit_code, 0);
+  const std::string docs = read_text_file(std::string(TOLIP_SOURCE_DIR) + "/docs/cli.md");
+  const std::string guide = read_text_file(std::string(TOLIP_SOURCE_DIR) + "/docs/user-guide.md");
+  for (const ground::PlotKind& kind : ground::plot_catalogue()) {
+    EXPECT_TRUE(contains(help.out, kind.name)) << kind.name;
+    EXPECT_TRUE(contains(docs, std::string("| `") + kind.name + "` |")) << "docs/cli.md lacks " << kind.name;
+    EXPECT_TRUE(contains(guide, std::string("`") + kind.name + "`")) << "docs/user-guide.md lacks " << kind.name;
+  }
+  EXPECT_FALSE(contains(docs, "NAME.caseN")) << "no per-case figures any more";
+}
+
 TEST(PlotCommand, SimulateResultGivesEveryFigureAsPngAndSvg) {
   REQUIRE_GNUPLOT();
   ScratchDirectory scratch("plot_simulate");
@@ -183,8 +449,11 @@ TEST(PlotCommand, SimulateResultGivesEveryFigureAsPngAndSvg) {
   const CommandResult plot = run_tolip_executable({"plot", result, "--out", out.string()});
   ASSERT_EQ(plot.exit_code, 0) << plot.err;
   EXPECT_EQ(plot.err, "");
-  expect_images(out, "");
-  EXPECT_EQ(entry_count(out), 2 * kFigures.size()) << "no data, scripts or temporary files left";
+  expect_images(out, "", kTrajectoryFigures);
+  EXPECT_EQ(entry_count(out), 2 * kTrajectoryFigures.size()) << "no data, scripts or temporary files left";
+  EXPECT_TRUE(contains(plot.out, "skipped convergence (no member 'iterations')"));
+  // The title carries the case heading and the run status.
+  EXPECT_TRUE(contains(read_text_file(out / "velocity_time.svg"), "simulated, kOk"));
   EXPECT_TRUE(contains(plot.out, "wrote " + (out / "theta_time.svg").string()));
 }
 
@@ -200,17 +469,58 @@ TEST(PlotCommand, LinearizedProgramIsOverlaid) {
   EXPECT_TRUE(contains(svg, "theta, optimum"));
 }
 
-TEST(PlotCommand, ArrayOfCasesGivesFilesPerCase) {
+TEST(PlotCommand, ArrayOfCasesIsOverlaidOnOneSetOfFigures) {
   REQUIRE_GNUPLOT();
   ScratchDirectory scratch("plot_cases");
-  const json cases = json::array({small_result("ONE"), small_result("TWO")});
+  json two = small_result("TWO");
+  two["case_heading"] = "SECOND HEADING";
+  const json cases = json::array({small_result("ONE"), two});
   const std::string result = write_file(scratch, "cases.json", cases.dump());
   const fs::path out = scratch / "out";
   const CommandResult plot = run_tolip_executable({"plot", result, "--out", out.string()});
   ASSERT_EQ(plot.exit_code, 0) << plot.err;
-  expect_images(out, ".case1");
-  expect_images(out, ".case2");
-  EXPECT_EQ(entry_count(out), 4 * kFigures.size());
+  expect_images(out, "");
+  EXPECT_EQ(entry_count(out), 2 * kFigures.size()) << "no per-case files";
+  const std::string svg = read_text_file(out / "altitude_downrange.svg");
+  EXPECT_TRUE(contains(svg, "case 1: HEADING - converged, kOk"));
+  EXPECT_TRUE(contains(svg, "case 2: SECOND HEADING - converged, kOk"));
+}
+
+TEST(PlotCommand, FiguresShowStagingMaxQAndTheZeroAlphaWindow) {
+  REQUIRE_GNUPLOT();
+  ScratchDirectory scratch("plot_marks");
+  const std::string result = write_file(scratch, "result.json", small_result("MARKS").dump());
+  const CommandResult plot = run_tolip_executable({"plot", result, "--out", scratch.path().string()});
+  ASSERT_EQ(plot.exit_code, 0) << plot.err;
+  const std::string svg = read_text_file(scratch / "dynamic_pressure_time.svg");
+  EXPECT_TRUE(contains(svg, "max q 400 lbf/ft^2 at 10.0 s"));
+  EXPECT_TRUE(contains(svg, "S1 bo"));
+  EXPECT_TRUE(contains(svg, "zero-alpha window"));
+  EXPECT_TRUE(contains(svg, "HEADING - converged, kOk"));
+  EXPECT_TRUE(contains(read_text_file(scratch / "convergence.svg"), "deadband"));
+}
+
+TEST(PlotScript, MarkersCloseTogetherShareOneLabel) {
+  ScratchDirectory scratch("plot_script");
+  ground::Figure figure;
+  figure.name = "f";
+  figure.title = "T";
+  ground::PlotSeries series;
+  series.x = {0.0, 600.0};
+  series.y = {0.0, 1.0};
+  figure.series.push_back(series);
+  figure.x_markers = {{45.0, "S1 bo", 0}, {50.0, "S2 ign", 0}, {300.0, "S2 bo", 0}, {900.0, "far away", 0}};
+  figure.bands = {{10.0, 20.0}, {550.0, 700.0}};
+  figure.band_title = "window";
+  std::vector<ground::PlotOutput> outputs;
+  const std::string name = ground::write_gnuplot_files({figure}, scratch.path().string(), &outputs);
+  const std::string script = read_text_file(scratch / name);
+  EXPECT_TRUE(contains(script, "\"S1 bo, S2 ign\" at first 45"));
+  EXPECT_TRUE(contains(script, "\"S2 bo\" at first 300"));
+  EXPECT_FALSE(contains(script, "far away")) << "a marker beyond the data is not drawn";
+  EXPECT_TRUE(contains(script, "rectangle from first 550, graph 0 to first 600,")) << "a band clipped to the data";
+  EXPECT_TRUE(contains(script, "keyentry with boxes"));
+  EXPECT_EQ(outputs.size(), 2u);
 }
 
 TEST(PlotCommand, MalformedJsonIsNamedAndNothingIsWritten) {
@@ -237,7 +547,7 @@ TEST(PlotCommand, MalformedJsonIsNamedAndNothingIsWritten) {
   const std::string nothing = write_file(scratch, "nothing.json", "{\"program\": \"tolip\"}");
   plot = run_tolip_executable({"plot", nothing, "--out", out.string()});
   EXPECT_EQ(plot.exit_code, 2);
-  EXPECT_EQ(plot.err, "tolip: " + nothing + ": nothing to plot: altitude_downrange (no member 'trajectory')\n");
+  EXPECT_EQ(plot.err, "tolip: " + nothing + ": nothing to plot: altitude_downrange_ascent (no member 'trajectory')\n");
 
   plot = run_tolip_executable({"plot", (scratch / "absent.json").string(), "--out", out.string()});
   EXPECT_EQ(plot.exit_code, 2);
@@ -291,13 +601,9 @@ json result_with_altitudes(const json& altitude) {
   json document = {{"program", "tolip"}, {"title", "HOSTILE"}};
   document["trajectory"] = json::array();
   for (int i = 0; i < 4; ++i) {
-    document["trajectory"].push_back(json{{"time_s", 10.0 * i},
-                                          {"range_nmi", 1.0 * i},
-                                          {"altitude_ft", altitude},
-                                          {"velocity_ft_s", 100.0 * i},
-                                          {"inertial_velocity_ft_s", 100.0 * i + 1000.0},
-                                          {"dynamic_pressure_lbf_ft2", 50.0 * i},
-                                          {"theta_deg", 90.0 - i}});
+    json p = point(10.0 * i, 1, 1.0 * i, 0.0, 100.0 * i, 50.0 * i, 90.0 - i);
+    p["altitude_ft"] = altitude;
+    document["trajectory"].push_back(std::move(p));
   }
   return document;
 }
@@ -307,9 +613,12 @@ TEST(PlotCatalogue, FigureWithoutAFiniteValueIsSkippedWithANote) {
     const tolip::ground::DocumentFigures figures = tolip::ground::figures_for_document(result_with_altitudes(altitude));
     std::set<std::string> names;
     for (const tolip::ground::Figure& figure : figures.figures) names.insert(figure.name);
-    EXPECT_EQ(names, (std::set<std::string>{"velocity_time", "dynamic_pressure_time", "theta_time"})) << altitude;
-    ASSERT_EQ(figures.notes.size(), 1u) << altitude;
-    EXPECT_EQ(figures.notes[0],
+    std::set<std::string> expected(kTrajectoryFigures.begin(), kTrajectoryFigures.end());
+    expected.erase("altitude_downrange_ascent");
+    expected.erase("altitude_downrange");
+    EXPECT_EQ(names, expected) << altitude;
+    ASSERT_EQ(figures.notes.size(), 2u) << altitude;
+    EXPECT_EQ(figures.notes[1],
               "figure altitude_downrange skipped: no finite value to draw (every value null, or beyond 1e30 in "
               "magnitude)");
   }
@@ -327,6 +636,9 @@ TEST(PlotCommand, AltitudeAllNullOrHugeSkipsThatFigureAndDrawsTheRest) {
     EXPECT_EQ(result.exit_code, 0) << altitude << ": " << result.err;
     EXPECT_EQ(result.err,
               "tolip: " + source +
+                  ": figure altitude_downrange_ascent skipped: no finite value to draw (every value null, or beyond "
+                  "1e30 in magnitude)\n"
+                  "tolip: " + source +
                   ": figure altitude_downrange skipped: no finite value to draw (every value null, or beyond 1e30 "
                   "in magnitude)\n");
     EXPECT_FALSE(fs::exists(out / "altitude_downrange.png"));

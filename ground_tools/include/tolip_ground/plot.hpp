@@ -9,6 +9,7 @@
 // those analyses put their members in the JSON. docs/cli.md ("tolip plot") lists the plots.
 #pragma once
 
+#include <limits>
 #include <optional>
 #include <span>
 #include <stdexcept>
@@ -26,24 +27,85 @@ class PlotDataError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-enum class SeriesStyle { kLines, kPoints };
+enum class SeriesStyle { kLines, kPoints, kLinesPoints };
 
 // One curve. A non-finite x or y is a gap: the line is broken there (a JSON null).
 struct PlotSeries {
-  std::string title;  // legend entry
+  std::string title;  // legend entry; empty: none
   SeriesStyle style = SeriesStyle::kLines;
   bool dashed = false;
+  int dash_type = 0;         // gnuplot dash type when not 0 (overrides `dashed`)
+  int color = 0;             // palette index 1-8; 0: the series' place in the figure
+  int point_type = 7;        // gnuplot point type of kPoints and kLinesPoints (7 filled, 6 open circle)
+  bool second_axis = false;  // drawn against the right-hand axis (Figure::y2_label)
   std::vector<double> x;
   std::vector<double> y;  // same length as x
+};
+
+// A vertical line across the plot at x, labelled at its top: a stage ignition or burnout. Markers
+// closer than 2% of the x range share one label.
+struct XMarker {
+  double x = 0.0;
+  std::string label;  // empty: the line only
+  int color = 0;      // palette index; 0: grey (kMarkerGrey)
+};
+
+// The palette index of grey: staging lines and their legend entry.
+inline constexpr int kMarkerGrey = 8;
+
+// A point drawn as a dot and labelled beside it (to its left in the right quarter of the plot):
+// max q, the launch site, a staging point. Points close together share one label.
+struct PointMarker {
+  double x = 0.0;
+  double y = 0.0;
+  std::string label;
+  int color = 0;  // palette index; 0: black
+};
+
+// An x interval shaded behind the curves (the zero-alpha window); Figure::band_title names them.
+struct XBand {
+  double from = 0.0;
+  double to = 0.0;
+};
+
+// A horizontal reference line (a deadband) across the plot.
+struct YLine {
+  double y = 0.0;
+  bool second_axis = false;
+  std::string label;
+};
+
+// A legend entry with no data of its own (in an overlay of cases: one per case, one per quantity).
+struct KeyEntry {
+  std::string title;
+  SeriesStyle style = SeriesStyle::kLines;
+  int color = 0;  // palette index; 0: black
+  int dash_type = 1;
+  int point_type = 7;
 };
 
 // One figure: one PNG and one SVG named after `name`.
 struct Figure {
   std::string name;      // file stem, e.g. "altitude_downrange"
-  std::string title;     // first title line; the case title (data block 1) follows
+  std::string title;     // first title line
   std::string x_label;   // with its unit: "downrange (n.mi.)"
   std::string y_label;
   std::vector<PlotSeries> series;
+  std::vector<std::string> subtitle;  // further title lines: the case title, heading and run status
+  std::string y2_label;               // not empty: a right-hand axis for the series with second_axis
+  bool y_log = false;
+  bool y2_log = false;
+  double aspect_ratio = std::numeric_limits<double>::quiet_NaN();  // plot height / width; NaN: the terminal's
+  double x_min = std::numeric_limits<double>::quiet_NaN();  // the ranges drawn; NaN: gnuplot's
+  double x_max = std::numeric_limits<double>::quiet_NaN();
+  double y_min = std::numeric_limits<double>::quiet_NaN();
+  double y_max = std::numeric_limits<double>::quiet_NaN();
+  std::vector<XMarker> x_markers;
+  std::vector<PointMarker> points;
+  std::vector<XBand> bands;
+  std::string band_title;  // legend entry of the bands
+  std::vector<YLine> y_lines;
+  std::vector<KeyEntry> key_entries;  // drawn before the series' own entries
 };
 
 // One plot of the catalogue.
@@ -66,8 +128,9 @@ inline constexpr double kMaxPlotMagnitude = 1e30;
 // The figures of one result document (a JSON object) and the names of the catalogue plots skipped
 // for want of data. A figure whose data hold no drawable value (every value null, or beyond
 // kMaxPlotMagnitude) is not drawn either: `notes` says so, naming it (tolip plot prints the notes
-// on stderr); so is a curve of a figure left out for the same reason. Throws PlotDataError for a
-// malformed document.
+// on stderr); so is a curve of a figure left out for the same reason. Every figure's subtitle is
+// the case title (data block 1) and the case heading (block 2) with the run status. Throws
+// PlotDataError for a malformed document.
 struct DocumentFigures {
   std::vector<Figure> figures;
   std::vector<std::string> skipped;  // "name (no member 'linearized')"
@@ -75,21 +138,31 @@ struct DocumentFigures {
 };
 DocumentFigures figures_for_document(const nlohmann::json& document);
 
+// The figures of a result of one or several cases (a JSON array: a deck of several cases). One
+// case: figures_for_document. Several: every case overlaid on the same figures, a colour per
+// case, a legend entry per case (its heading and run status) and, where a figure has several
+// curves per case, one per quantity (by dash type); the skipped plots and notes say which case
+// ("... in case 2", "case 2: ..."). Throws PlotDataError naming the case ("case 2: trajectory...").
+DocumentFigures figures_for_cases(const std::vector<const nlohmann::json*>& documents);
+
+// The run status of a document for a title: "converged, kOk" or "not converged,
+// kGuidanceDidNotConverge" (optimize), "simulated, kOk" (simulate); with the case's failed step
+// when the case failed after a converged optimization.
+std::string run_status_text(const nlohmann::json& document);
+
 // ---- gnuplot ------------------------------------------------------------------------------------
 
 // One output file of a figure.
 struct PlotOutput {
-  std::string file_name;  // "altitude_downrange.case2.png"
+  std::string file_name;  // "altitude_downrange.png"
   bool png = false;       // else SVG
 };
 
 // Writes the data files and the gnuplot script that draw `figures` into `work_dir` (an existing,
-// private directory), the outputs named "<name><suffix>.png" and ".svg" (suffix e.g. ".case2"),
-// and appends the outputs to *outputs. `case_title` (data block 1; may be empty) is the second
-// title line of every figure. All file names are relative to work_dir, so the script is run
-// there. Returns the script's file name. Throws std::runtime_error when a file cannot be written.
-std::string write_gnuplot_files(const std::vector<Figure>& figures, const std::string& suffix,
-                                const std::string& case_title, const std::string& work_dir,
+// private directory), the outputs named "<name>.png" and ".svg", and appends the outputs to
+// *outputs. All file names are relative to work_dir, so the script is run there. Returns the
+// script's file name. Throws std::runtime_error when a file cannot be written.
+std::string write_gnuplot_files(const std::vector<Figure>& figures, const std::string& work_dir,
                                 std::vector<PlotOutput>* outputs);
 
 // The gnuplot program: `requested` when not empty, else $TOLIP_GNUPLOT when set, else "gnuplot"

@@ -81,15 +81,6 @@ bool prepare_output_directory(const std::string& dir, std::string* error) {
   return true;
 }
 
-// The case title (data block 1) of a document, for the figures' second title line.
-std::string case_title(const nlohmann::json& document) {
-  const auto it = document.find("title");
-  if (it == document.end() || !it->is_string()) return {};
-  std::string title = it->get<std::string>();
-  while (!title.empty() && title.back() == ' ') title.pop_back();
-  return title;
-}
-
 }  // namespace
 
 int run_plot_command(const PlotCommandOptions& options, std::ostream& out, std::ostream& err) {
@@ -119,24 +110,19 @@ int run_plot_command(const PlotCommandOptions& options, std::ostream& out, std::
   } else {
     documents.push_back(&result);
   }
-  const bool several = result.is_array();
 
-  std::vector<DocumentFigures> figures(documents.size());
-  std::size_t figure_count = 0;
-  for (std::size_t d = 0; d < documents.size(); ++d) {
-    const std::string where = several ? source + ": case " + std::to_string(d + 1) : source;
-    try {
-      figures[d] = figures_for_document(*documents[d]);
-    } catch (const PlotDataError& e) {
-      err << "tolip: " << where << ": " << e.what() << '\n';
-      return kExitBadInput;
-    }
-    figure_count += figures[d].figures.size();
-    for (const std::string& note : figures[d].notes) err << "tolip: " << where << ": " << note << '\n';
+  // Every case on the same figures (a deck of several cases: overlaid, a colour per case).
+  DocumentFigures figures;
+  try {
+    figures = figures_for_cases(documents);
+  } catch (const PlotDataError& e) {
+    err << "tolip: " << source << ": " << e.what() << '\n';
+    return kExitBadInput;
   }
-  if (figure_count == 0) {
+  for (const std::string& note : figures.notes) err << "tolip: " << source << ": " << note << '\n';
+  if (figures.figures.empty()) {
     err << "tolip: " << source << ": nothing to plot";
-    if (!figures[0].skipped.empty()) err << ": " << figures[0].skipped[0];
+    if (!figures.skipped.empty()) err << ": " << figures.skipped[0];
     err << '\n';
     return kExitBadInput;
   }
@@ -155,15 +141,10 @@ int run_plot_command(const PlotCommandOptions& options, std::ostream& out, std::
   const std::string program = gnuplot_program(options.gnuplot);
   std::vector<PlotOutput> outputs;
   try {
-    for (std::size_t d = 0; d < documents.size(); ++d) {
-      if (figures[d].figures.empty()) continue;
-      const std::string suffix = several ? ".case" + std::to_string(d + 1) : "";
-      const std::string script =
-          write_gnuplot_files(figures[d].figures, suffix, case_title(*documents[d]), work.path(), &outputs);
-      if (!run_gnuplot(program, work.path(), script, &error)) {
-        err << "tolip: " << error << '\n';
-        return kExitFailure;
-      }
+    const std::string script = write_gnuplot_files(figures.figures, work.path(), &outputs);
+    if (!run_gnuplot(program, work.path(), script, &error)) {
+      err << "tolip: " << error << '\n';
+      return kExitFailure;
     }
   } catch (const std::runtime_error& e) {
     err << "tolip: " << e.what() << '\n';
@@ -188,11 +169,7 @@ int run_plot_command(const PlotCommandOptions& options, std::ostream& out, std::
     }
     out << "wrote " << target << " (" << contents[i].size() << " bytes)\n";
   }
-  for (std::size_t d = 0; d < documents.size(); ++d) {
-    for (const std::string& skipped : figures[d].skipped) {
-      out << "skipped " << skipped << (several ? " in case " + std::to_string(d + 1) : "") << '\n';
-    }
-  }
+  for (const std::string& skipped : figures.skipped) out << "skipped " << skipped << '\n';
   return kExitOk;
 }
 
