@@ -854,6 +854,50 @@ TEST(CardDeck, SuccessiveCasesSurviveConversionToCards) {
   EXPECT_TRUE(contains(toml, "azimuth_deg = 95.0"));
 }
 
+// Data block 31 in every stage (issue 17): the manual stores drag tables for stages 1, 6 and 2 only
+// (a 1966 storage limit); a stage-3 table and one for the coast after stage 2 are read, act on the
+// flight, and survive `convert` to cards and back. (Before: rejected naming block 31.)
+TEST(CardDeck, Sec22_DragTablesOfEveryStageActAndSurviveConversion) {
+  ScratchDirectory scratch("card_drag_every_stage");
+  std::string text = replaced(scout_mission_text(), "[stage.3.thrust]",
+                              "[stage.3.drag]\nmach = [0.0, 5.0, 30.0]\ncd = [0.6, 0.6, 0.6]\n\n[stage.3.thrust]");
+  text = replaced(text, "reference_area_ft2 = 0.0                     # block 39 SG7(2)",
+                  "reference_area_ft2 = 4.9087\n\n[stage.7.drag]\nmach = [0.0, 30.0]\ncd = [0.9, 0.9]");
+  // The example is above HAERO (250,000 ft) by stage-2 burnout: raise it so that the upper stages
+  // fly in the (thin) tabulated atmosphere, in both runs.
+  text = replaced(text, "haero_ft = 250000.0", "haero_ft = 600000.0");
+  const std::string toml = (scratch / "drag.toml").string();
+  std::ofstream(toml) << text;
+  const std::string base_toml = (scratch / "base.toml").string();
+  std::ofstream(base_toml) << replaced(scout_mission_text(), "haero_ft = 250000.0", "haero_ft = 600000.0");
+  const CommandResult base = run_tolip_executable({"simulate", base_toml, "--json"});
+  const CommandResult with_drag = run_tolip_executable({"simulate", toml, "--json"});
+  ASSERT_EQ(with_drag.exit_code, 0) << with_drag.err;
+  const nlohmann::json a = nlohmann::json::parse(base.out), b = nlohmann::json::parse(with_drag.out);
+  // Drag where there was none: stage 3 (94-130 s) and coast 7 (88-94 s) still fly in air.
+  double drag_stage3_lbf = 0.0, drag_coast7_lbf = 0.0;
+  for (const nlohmann::json& p : b["trajectory"]) {
+    if (p["stage"] == 3) drag_stage3_lbf = std::max(drag_stage3_lbf, p["drag_lbf"].get<double>());
+    if (p["stage"] == 7) drag_coast7_lbf = std::max(drag_coast7_lbf, p["drag_lbf"].get<double>());
+  }
+  for (const nlohmann::json& p : a["trajectory"]) {
+    if (p["stage"] == 3 || p["stage"] == 7) EXPECT_EQ(p["drag_lbf"].get<double>(), 0.0);
+  }
+  EXPECT_GT(drag_stage3_lbf, 0.0);
+  EXPECT_GT(drag_coast7_lbf, 0.0);
+  EXPECT_LT(b["burnout"]["velocity_ft_s"].get<double>(), a["burnout"]["velocity_ft_s"].get<double>());
+
+  const std::string cards = (scratch / "drag.dat").string();
+  ASSERT_EQ(run_tolip_executable({"convert", toml, "--to", cards}).exit_code, 0);
+  const std::string punched = read_text_file(cards);
+  EXPECT_TRUE(contains(punched, " 31  1  8  3")) << "no stage-3 block 31 header";
+  EXPECT_TRUE(contains(punched, " 31  1  6  7")) << "no coast-7 block 31 header";
+  const CommandResult from_cards = run_tolip_executable({"simulate", cards, "--json"});
+  ASSERT_EQ(from_cards.exit_code, 0) << from_cards.err;
+  nlohmann::json c = nlohmann::json::parse(from_cards.out);
+  EXPECT_EQ(c["burnout"], b["burnout"]);
+}
+
 TEST(CardDeck, ConvertCommandErrors) {
   ScratchDirectory scratch("card_convert_errors");
   const CommandResult unknown =

@@ -321,15 +321,6 @@ TEST(Sec22Deck, RejectsMissingStageOfTheSequenceNamingBlock16) {
   EXPECT_TRUE(contains(error.message, "stage 7 is in the sequence"));
 }
 
-TEST(Sec22Deck, RejectsDragTableOutsideStages1_6_2NamingBlock31) {
-  const std::string text = replaced(scout_mission_text(), "[stage.3.thrust]",
-                                    "[stage.3.drag]\nmach = [0.0, 1.0]\ncd = [0.3, 0.5]\n\n[stage.3.thrust]");
-  const DeckError error = rejected(text);
-  EXPECT_EQ(error.data_block, 31);
-  EXPECT_EQ(error.field, "stage.3.drag");
-  EXPECT_TRUE(contains(error.message, "stages 1, 6 and 2 only"));
-}
-
 TEST(Sec22Deck, RejectsThrustTableInACoastNamingBlock30) {
   const std::string text = replaced(scout_mission_text(), "[stage.6.drag]",
                                     "[stage.6.thrust]\ntime_s = [0.0, 5.0]\nvacuum_thrust_lbf = [1.0, 1.0]\n\n[stage.6.drag]");

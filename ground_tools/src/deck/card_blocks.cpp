@@ -54,7 +54,7 @@ std::vector<BlockSpec> make_blocks() {
       {29, "CONSTRAINT DEVIATIONS DA14", F::kReal, 26, S::kWords, kOpt, 0, "", "", false},
       {30, "VACUUM THRUST TABLE", F::kReal, 250, S::kPairs, kOpt | kDispersionGroup, kPowered, "STAGE TIME, S",
        "VACUUM THRUST, LB", false},
-      {31, "DRAG COEFFICIENT TABLE (ALPHA = 0)", F::kReal, kTableWords, S::kTable, kOpt, bits({1, 2, 6}), "MACH",
+      {31, "DRAG COEFFICIENT TABLE (ALPHA = 0)", F::kReal, kTableWords, S::kTable, kOpt, kAllStages, "MACH",
        "CD", false},
       {32, "LIFT COEFFICIENT PER ALPHA TABLE TL1", F::kReal, kTableWords, S::kTable, kOpt, 0, "MACH",
        "CL ALPHA, PER RAD", false},

@@ -507,7 +507,7 @@ class Builder {
       }
       table_header(path, ref_in(opt(), 16, 0, 0), false,
                    (powered ? "powered stage " : "coast ") + str(code) + ": blocks 16, 39" +
-                       (powered ? ", 30, 38" : "") + (code == 1 || code == 2 || code == 6 ? ", 31" : ""));
+                       (powered ? ", 30, 38" : "") + (block_given(opt(), 31, code) ? ", 31" : ""));
       const struct {
         int block;
         int stage;
@@ -532,7 +532,7 @@ class Builder {
         table_section(path + ".thrust", opt(), 30, code, "time_s", "vacuum_thrust_lbf");
         table_section(path + ".consumable_weight", opt(), 38, code, "time_s", "remaining_lb");
       }
-      if (code == 1 || code == 2 || code == 6) table_section(path + ".drag", opt(), 31, code, "mach", "cd");
+      table_section(path + ".drag", opt(), 31, code, "mach", "cd");  // any stage (data block 31)
     }
   }
 

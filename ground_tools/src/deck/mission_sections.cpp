@@ -283,10 +283,10 @@ void read_stage(Section& section, int code, StageData* stage) {
                                        "data block 16 DA1(" + str(2 * code - 1) + "): duration of " + kind + " in s");
   }
 
+  // Data block 31: the manual stores drag tables for stages 1, 6 and 2 only (TD1, TD6, TD2, a
+  // storage limit of 1966); any powered or coast stage may have one here (issue 17), so a vehicle
+  // whose upper stages still fly in the atmosphere has their drag.
   if (std::optional<Section> drag = section.optional_table("drag", 31)) {
-    if (code != 1 && code != 2 && code != 6) {
-      section.fail_at("drag", 31, "data block 31 has drag tables for stages 1, 6 and 2 only (TD1, TD6, TD2)");
-    }
     const ReadTable read = drag->xy("mach", "cd", 31, "Mach number", "drag coefficient at alpha = 0");
     fill_table(*drag, "mach", read, 1.0, 31, "data block 31: 20 pairs", &stage->drag_coefficient);
     drag->finish();
