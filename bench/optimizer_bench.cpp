@@ -46,6 +46,22 @@ void BM_FullReferenceOptimization(benchmark::State& state) {
 }
 BENCHMARK(BM_FullReferenceOptimization)->Unit(benchmark::kMillisecond);
 
+// The same case as a heritage deck flies it: no heading hold, so the first steps after the lift-off
+// are near-vertical steps in regular coordinates (forward and backward; issue 10).
+void BM_FullReferenceOptimizationWithoutHeadingHold(benchmark::State& state) {
+  static tolip::Mission mission = load("mission.toml");
+  mission.launch.heading_hold_until_s = 0.0;
+  auto result = std::make_unique<tolip::OptimizerResult>();
+  for (auto _ : state) {
+    const tolip::Status status = tolip::optimize_trajectory(mission, &workspace(), result.get());
+    benchmark::DoNotOptimize(status);
+  }
+  state.counters["forward_runs"] = result->forward_runs;
+  state.counters["backward_runs"] = result->backward_runs;
+  state.counters["payload_lb"] = result->payload_lb;
+}
+BENCHMARK(BM_FullReferenceOptimizationWithoutHeadingHold)->Unit(benchmark::kMillisecond);
+
 // One backward run over the reference optimum with the mission's 4 constraints (payload, altitude,
 // gamma_I, V_I - V_circ), terminals given as unit partials.
 void BM_BackwardRun(benchmark::State& state) {
