@@ -5,6 +5,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <gtest/gtest.h>
+
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -12,6 +14,7 @@
 #include <sstream>
 #include <string>
 #include <system_error>
+#include <utility>
 #include <vector>
 
 namespace tolip::test {
@@ -75,17 +78,8 @@ class ScratchDirectory {
   std::filesystem::path path_;
 };
 
-// Runs TOLIP_EXECUTABLE with the arguments; stderr is captured through a scratch file.
-inline CommandResult run_tolip_executable(std::initializer_list<std::string> arguments) {
-  static int counter = 0;
-  const std::filesystem::path err_path =
-      std::filesystem::temp_directory_path() /
-      ("tolip_test_stderr_" + std::to_string(static_cast<long long>(::getpid())) + "_" +
-       std::to_string(++counter));
-  std::string command = shell_quote(TOLIP_EXECUTABLE);
-  for (const std::string& argument : arguments) command += " " + shell_quote(argument);
-  command += " 2>" + shell_quote(err_path.string());
-
+// Runs a shell command line whose stderr goes to `err_path`: stdout, stderr and the exit code.
+inline CommandResult run_capturing(const std::string& command, const std::filesystem::path& err_path) {
   CommandResult result;
   FILE* pipe = ::popen(command.c_str(), "r");
   if (pipe == nullptr) return result;
@@ -100,30 +94,47 @@ inline CommandResult run_tolip_executable(std::initializer_list<std::string> arg
   return result;
 }
 
+// A scratch file for one run's stderr, unique in this process.
+inline std::filesystem::path stderr_path(const char* prefix) {
+  static int counter = 0;
+  return std::filesystem::temp_directory_path() /
+         (std::string(prefix) + std::to_string(static_cast<long long>(::getpid())) + "_" + std::to_string(++counter));
+}
+
+// Runs TOLIP_EXECUTABLE with the arguments; stderr is captured through a scratch file.
+inline CommandResult run_tolip_executable(std::initializer_list<std::string> arguments) {
+  const std::filesystem::path err_path = stderr_path("tolip_test_stderr_");
+  std::string command = shell_quote(TOLIP_EXECUTABLE);
+  for (const std::string& argument : arguments) command += " " + shell_quote(argument);
+  command += " 2>" + shell_quote(err_path.string());
+  return run_capturing(command, err_path);
+}
+
 // Runs TOLIP_EXECUTABLE like run_tolip_executable, but with at most 1 GiB of address space and
 // 60 s: for hostile inputs, so that a regression (an endless read) fails the test instead of
 // taking the machine down.
 inline CommandResult run_tolip_bounded(const std::vector<std::string>& arguments) {
-  static int counter = 0;
-  const std::filesystem::path err_path = std::filesystem::temp_directory_path() / ("tolip_hostile_stderr_" +
-                                                          std::to_string(static_cast<long long>(::getpid())) + "_" +
-                                                          std::to_string(++counter));
+  const std::filesystem::path err_path = stderr_path("tolip_hostile_stderr_");
   std::string command = "ulimit -v 1048576; exec timeout -s KILL 60 " + shell_quote(TOLIP_EXECUTABLE);
   for (const std::string& argument : arguments) command += " " + shell_quote(argument);
   command += " 2>" + shell_quote(err_path.string());
-  command = "sh -c " + shell_quote(command);
-  CommandResult result;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (pipe == nullptr) return result;
-  char buffer[65536];
-  std::size_t got = 0;
-  while ((got = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) result.out.append(buffer, got);
-  const int status = ::pclose(pipe);
-  if (status != -1 && WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
-  result.err = read_text_file(err_path);
-  std::error_code ignored;
-  std::filesystem::remove(err_path, ignored);
-  return result;
+  return run_capturing("sh -c " + shell_quote(command), err_path);
+}
+
+// The bundled example deck examples/scout/mission.toml with each `from` replaced by its `to` (each
+// must occur; a missing one fails the calling test), written as `name` into the scratch folder.
+inline std::string edited_example_deck(const ScratchDirectory& scratch, const std::string& name,
+                                       const std::vector<std::pair<std::string, std::string>>& edits) {
+  std::string text = read_text_file(std::string(TOLIP_EXAMPLES_DIR) + "/scout/mission.toml");
+  for (const auto& [from, to] : edits) {
+    const std::size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at == std::string::npos) return {};
+    text.replace(at, from.size(), to);
+  }
+  const std::string path = (scratch / name).string();
+  std::ofstream(path) << text;
+  return path;
 }
 
 }  // namespace tolip::test

@@ -22,21 +22,6 @@ std::string mission_deck() { return std::string(TOLIP_EXAMPLES_DIR) + "/scout/mi
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
-// The example deck with each `from` replaced by its `to` (each must occur), in the scratch folder.
-std::string edited_deck(const ScratchDirectory& scratch, const std::string& name,
-                        const std::vector<std::pair<std::string, std::string>>& edits) {
-  std::string text = read_text_file(mission_deck());
-  for (const auto& [from, to] : edits) {
-    const std::size_t at = text.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    if (at == std::string::npos) return {};
-    text.replace(at, from.size(), to);
-  }
-  const std::string path = (scratch / name).string();
-  std::ofstream(path) << text;
-  return path;
-}
-
 void expect_every_constraint_met(const nlohmann::json& document) {
   ASSERT_TRUE(document["constraints"].is_array());
   for (const nlohmann::json& c : document["constraints"]) EXPECT_EQ(c["met"], true) << c["code"];
@@ -63,7 +48,7 @@ TEST(Sec22Convergence, TheExampleConvergesByTheMinimumImprovementRule) {
 TEST(Sec22Convergence, NoOptimizationRunIsNotConvergedButReportsTheFeasibleTrajectory) {
   ScratchDirectory scratch("convergence_not_started");
   const std::string deck =
-      edited_deck(scratch, "not_started.toml", {{"stop_improvement = 0.5", "stop_improvement = 1000000.0"}});
+      edited_example_deck(scratch, "not_started.toml", {{"stop_improvement = 0.5", "stop_improvement = 1000000.0"}});
   const CommandResult run = run_tolip_executable({"optimize", deck, "--json"});
   EXPECT_EQ(run.exit_code, 1);
   EXPECT_TRUE(contains(run.err, "tolip: optimization: kOptimizationNotStarted: ")) << run.err;
@@ -94,7 +79,7 @@ TEST(Sec22Convergence, ABudgetEndedOptimizationIsReportedAsExhaustedNotConverged
   // A budget that leaves room for two optimization runs after the example's guidance runs.
   const int budget = 1 + f["guidance_runs"].get<int>() + 2 + 1;
   ASSERT_LT(budget, f["forward_runs"].get<int>());
-  const std::string deck = edited_deck(
+  const std::string deck = edited_example_deck(
       scratch, "budget.toml", {{"max_forward_trajectories = 30", "max_forward_trajectories = " + std::to_string(budget)}});
   const CommandResult run = run_tolip_executable({"optimize", deck, "--json"});
   const nlohmann::json d = nlohmann::json::parse(run.out);
@@ -121,7 +106,7 @@ TEST(Sec22Convergence, AHeritageDeckWithoutTheHeadingHoldConvergesToTheHeldPaylo
   ASSERT_EQ(held.exit_code, 0) << held.err;
   const double held_payload_lb = nlohmann::json::parse(held.out)["payload_lb"].get<double>();
 
-  const std::string heritage = edited_deck(scratch, "heritage.toml",
+  const std::string heritage = edited_example_deck(scratch, "heritage.toml",
                                            {{"payload_lb = 250.0 ", "payload_lb = 0.0 "},
                                             {"jettison_weight_lb = 125.0 ", "jettison_weight_lb = 375.0 "},
                                             {"heading_hold_until_s = 5.0 ", "heading_hold_until_s = 0.0 "}});
@@ -142,7 +127,7 @@ TEST(Sec22Convergence, AHeritageDeckWithoutTheHeadingHoldConvergesToTheHeldPaylo
 // optimize exited 0 on this deck while export exited 1).
 TEST(Sec10Convergence, AFailedLinearizationFailsOptimizeAndExportAlike) {
   ScratchDirectory scratch("convergence_linearization");
-  const std::string deck = edited_deck(
+  const std::string deck = edited_example_deck(
       scratch, "one_linear_run.toml", {{"max_linearization_iterations = 4", "max_linearization_iterations = 1"}});
   const CommandResult run = run_tolip_executable({"optimize", deck, "--json"});
   EXPECT_EQ(run.exit_code, 1) << run.err;

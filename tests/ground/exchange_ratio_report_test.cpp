@@ -17,19 +17,6 @@ std::string mission_deck() { return std::string(TOLIP_EXAMPLES_DIR) + "/scout/mi
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
-// The example deck with `from` replaced by `to`, written to the scratch directory.
-std::string edited_deck(const ScratchDirectory& scratch, const std::string& name, const std::string& from,
-                        const std::string& to) {
-  std::string text = read_text_file(mission_deck());
-  const std::size_t at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  if (at == std::string::npos) return {};
-  text.replace(at, from.size(), to);
-  const std::string path = (scratch / name).string();
-  std::ofstream(path) << text;
-  return path;
-}
-
 TEST(ExchangeRatioReport, JsonListsEveryPoweredStageWithTheSignsIntuitionAsks) {
   const CommandResult run = run_tolip_executable({"optimize", mission_deck(), "--json"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
@@ -72,7 +59,7 @@ TEST(ExchangeRatioReport, ListingPrintsTheTableWithinTheLineWidth) {
 
 TEST(ExchangeRatioReport, AbsentWithoutOption3AndNullWhenTheOptimizationDidNotConverge) {
   ScratchDirectory scratch("exchange_ratio_report");
-  const std::string off = edited_deck(scratch, "off.toml", "exchange_ratios = true", "exchange_ratios = false");
+  const std::string off = edited_example_deck(scratch, "off.toml", {{"exchange_ratios = true", "exchange_ratios = false"}});
   const CommandResult without = run_tolip_executable({"optimize", off, "--json"});
   ASSERT_EQ(without.exit_code, 0) << without.err;
   EXPECT_FALSE(nlohmann::json::parse(without.out).contains("exchange_ratios"));
@@ -80,7 +67,7 @@ TEST(ExchangeRatioReport, AbsentWithoutOption3AndNullWhenTheOptimizationDidNotCo
 
   // A forward-run budget of 2 stops the optimization before it converges: no ratios.
   const std::string budget =
-      edited_deck(scratch, "budget.toml", "max_forward_trajectories = 30", "max_forward_trajectories = 2");
+      edited_example_deck(scratch, "budget.toml", {{"max_forward_trajectories = 30", "max_forward_trajectories = 2"}});
   const CommandResult json_run = run_tolip_executable({"optimize", budget, "--json"});
   EXPECT_EQ(json_run.exit_code, 1);
   const nlohmann::json document = nlohmann::json::parse(json_run.out);

@@ -18,20 +18,6 @@ std::string mission_deck() { return std::string(TOLIP_EXAMPLES_DIR) + "/scout/mi
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
-// The example deck with each `from` replaced by its `to`, written to the scratch directory.
-std::string edited_deck(const ScratchDirectory& scratch, const std::string& name,
-                        std::initializer_list<std::pair<std::string, std::string>> edits) {
-  std::string text = read_text_file(mission_deck());
-  for (const auto& [from, to] : edits) {
-    const std::size_t at = text.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    if (at != std::string::npos) text.replace(at, from.size(), to);
-  }
-  const std::string path = (scratch / name).string();
-  std::ofstream(path) << text;
-  return path;
-}
-
 const nlohmann::json& example_document() {
   static const nlohmann::json document = [] {
     const CommandResult run = run_tolip_executable({"optimize", mission_deck(), "--json"});
@@ -99,7 +85,7 @@ TEST(LinearizedReport, ListingPrintsTheProgramAndItsConstraints) {
 
 TEST(LinearizedReport, AbsentWithoutOption7AndNotComputedWhenTheOptimizationDidNotConverge) {
   ScratchDirectory scratch("linearized_report");
-  const std::string off = edited_deck(scratch, "off.toml",
+  const std::string off = edited_example_deck(scratch, "off.toml",
                                       {{"linearization = true", "linearization = false"},
                                        {"body_dynamics_6d = 1", "body_dynamics_6d = 0"}});
   const CommandResult without = run_tolip_executable({"optimize", off, "--json"});
@@ -108,7 +94,7 @@ TEST(LinearizedReport, AbsentWithoutOption7AndNotComputedWhenTheOptimizationDidN
 
   // A forward-run budget of 2 cannot converge: the linearization is not run and says why.
   const std::string short_run =
-      edited_deck(scratch, "short.toml", {{"max_forward_trajectories = 30", "max_forward_trajectories = 2"}});
+      edited_example_deck(scratch, "short.toml", {{"max_forward_trajectories = 30", "max_forward_trajectories = 2"}});
   const CommandResult stopped = run_tolip_executable({"optimize", short_run, "--json"});
   EXPECT_EQ(stopped.exit_code, 1) << stopped.err;
   const nlohmann::json document = nlohmann::json::parse(stopped.out);
@@ -141,7 +127,7 @@ TEST(LinearizedReport, Sec10_BodyDynamicsObjectReportsTheSixDRelinearization) {
 // 6D, and simulate flies the 6D trajectory itself (the same final state).
 TEST(LinearizedReport, Sec22_Option6Equal2FliesTheInitialNominalSixD) {
   ScratchDirectory scratch("body_dynamics_ip6_2");
-  const std::string deck = edited_deck(scratch, "ip6_2.toml", {{"body_dynamics_6d = 1", "body_dynamics_6d = 2"}});
+  const std::string deck = edited_example_deck(scratch, "ip6_2.toml", {{"body_dynamics_6d = 1", "body_dynamics_6d = 2"}});
   const CommandResult optimized = run_tolip_executable({"optimize", deck, "--json"});
   ASSERT_EQ(optimized.exit_code, 0) << optimized.err;
   const nlohmann::json document = nlohmann::json::parse(optimized.out);

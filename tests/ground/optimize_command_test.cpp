@@ -29,19 +29,6 @@ bool contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
 }
 
-// The example deck with its first `from` replaced by `to`, written to the scratch directory.
-std::string edited_mission_deck(const ScratchDirectory& scratch, const std::string& name,
-                                const std::string& from, const std::string& to) {
-  std::string text = read_text_file(mission_deck());
-  const std::size_t at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  if (at == std::string::npos) return {};
-  text.replace(at, from.size(), to);
-  const std::string path = (scratch / name).string();
-  std::ofstream(path) << text;
-  return path;
-}
-
 // One `optimize --json --csv FILE` run and one listing run of the example, shared by the tests.
 struct CachedRuns {
   ScratchDirectory scratch{"optimize_cache"};
@@ -278,8 +265,7 @@ TEST(OptimizeCommand, ListingHasTheIterationTablesTheFinalTrajectoryAndTheSummar
 TEST(OptimizeCommand, NotConvergedExitsOneAndStillReportsTheBestTrajectory) {
   ScratchDirectory scratch("optimize_budget");
   // A forward-run budget of 2: the initial nominal and one guidance run leave V_I - V_circ outside.
-  const std::string deck = edited_mission_deck(scratch, "budget.toml", "max_forward_trajectories = 30",
-                                               "max_forward_trajectories = 2");
+  const std::string deck = edited_example_deck(scratch, "budget.toml", {{"max_forward_trajectories = 30", "max_forward_trajectories = 2"}});
   const CommandResult run = run_tolip_executable({"optimize", deck, "--json"});
   EXPECT_EQ(run.exit_code, 1);
   EXPECT_TRUE(contains(run.err, "tolip: optimization: kGuidanceDidNotConverge: ")) << run.err;
@@ -311,7 +297,7 @@ TEST(OptimizeCommand, NotConvergedExitsOneAndStillReportsTheBestTrajectory) {
 TEST(OptimizeCommand, BadInputExitsTwoWithNothingOnStdout) {
   ScratchDirectory scratch("optimize_bad");
   // IP(1) = 1 (velocity) but the payoff entry of data block 8 is the payload (code 0).
-  const std::string mismatch = edited_mission_deck(scratch, "mismatch.toml", "payoff = 0 ", "payoff = 1 ");
+  const std::string mismatch = edited_example_deck(scratch, "mismatch.toml", {{"payoff = 0 ", "payoff = 1 "}});
   CommandResult run = run_tolip_executable({"optimize", mismatch, "--json"});
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_TRUE(run.out.empty());

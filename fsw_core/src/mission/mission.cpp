@@ -222,14 +222,17 @@ Status check_sequence(const Vehicle& vehicle, const Check& check) {
   return Status::kOk;
 }
 
+// A word of a data block with its field name and unit, for the checks that every word of a block
+// is finite.
+struct NamedWord {
+  double value;
+  const char* field;
+  const char* unit;
+};
+
 // ---- data block 10 ------------------------------------------------------------------------------
 Status check_constants(const Constants& c, const Check& check) {
-  struct Word {
-    double value;
-    const char* field;
-    const char* unit;
-  };
-  const Word words[] = {{c.earth_rotation_rate_rad_s, "earth_rotation_rate_rad_s", "rad/s"},
+  const NamedWord words[] = {{c.earth_rotation_rate_rad_s, "earth_rotation_rate_rad_s", "rad/s"},
                         {c.gravitational_parameter_ft3_s2, "gravitational_parameter_ft3_s2", "ft^3/s^2"},
                         {c.earth_equatorial_radius_ft, "earth_equatorial_radius_ft", "ft"},
                         {c.gas_constant_ft2_s2_R, "gas_constant_ft2_s2_R", "ft^2/(s^2 R)"},
@@ -242,7 +245,7 @@ Status check_constants(const Constants& c, const Check& check) {
                         {c.j2, "j2", ""},
                         {c.inverse_flattening, "inverse_flattening", ""},
                         {c.ct1_13, "ct1_13", ""}};
-  for (const Word& word : words) TOLIP_CHECK(check.finite(word.value, 10, 0, word.field, word.unit));
+  for (const NamedWord& word : words) TOLIP_CHECK(check.finite(word.value, 10, 0, word.field, word.unit));
   const Status bad = Status::kValueOutOfRange;
   TOLIP_CHECK(check.range(c.gravitational_parameter_ft3_s2, above(0.0), bad, 10, 0, "gravitational_parameter_ft3_s2",
                           "ft^3/s^2"));
@@ -508,12 +511,7 @@ Status check_control(const ControlConstraints& c, const Options& options, const 
 // ---- data block 17 ------------------------------------------------------------------------------
 Status check_misc(const MiscellaneousData& m, const AdjustableParameters& adjustable,
                   const Check& check) {
-  struct Word {
-    double value;
-    const char* field;
-    const char* unit;
-  };
-  const Word words[] = {{m.stage4_theta_rad, "stage4_theta_rad", "rad"},
+  const NamedWord words[] = {{m.stage4_theta_rad, "stage4_theta_rad", "rad"},
                         {m.stage4_chi_rad, "stage4_chi_rad", "rad"},
                         {m.nose_radius_ft, "nose_radius_ft", "ft"},
                         {m.gyro_uncage_s_before_launch, "gyro_uncage_s_before_launch", "s"},
@@ -522,7 +520,7 @@ Status check_misc(const MiscellaneousData& m, const AdjustableParameters& adjust
                         {m.payload_weighting_factor, "payload_weighting_factor", ""},
                         {m.coast_change_limit_s, "coast_change_limit_s", "s"},
                         {m.minimum_coast_s, "minimum_coast_s", "s"}};
-  for (const Word& word : words) TOLIP_CHECK(check.finite(word.value, 17, 0, word.field, word.unit));
+  for (const NamedWord& word : words) TOLIP_CHECK(check.finite(word.value, 17, 0, word.field, word.unit));
   const Status bad = Status::kValueOutOfRange;
   // The spun-stage attitudes are angles: within one turn either way.
   const int angles[] = {0, 1, 4, 5};

@@ -16,6 +16,7 @@
 #include <sstream>
 #include <string>
 
+#include "card_internal.hpp"
 #include "deck_common.hpp"
 #include "toml_reader.hpp"
 #include "tolip_ground/deck.hpp"
@@ -105,28 +106,6 @@ std::string deck_key(const std::string& core_field) {
   return key;
 }
 
-// The [options] key of IP(n) (docs/deck-format.md); "" for the words the manual does not use.
-const char* option_key(int n) {
-  switch (n) {
-    case 1: return "payoff";
-    case 2: return "heating_constraint";
-    case 3: return "exchange_ratios";
-    case 6: return "body_dynamics_6d";
-    case 7: return "linearization";
-    case 9: return "spin_stages_4_5";
-    case 10: return "stage5_chi";
-    case 11: return "zero_alpha_window";
-    case 12: return "alpha_zero_at_stage2_ignition";
-    case 13: return "qbar_constraint_type";
-    case 15: return "memory_dump";
-    case 17: return "print_input";
-    case 21: return "dispersions";
-    case 22: return "hardover";
-    case 23: return "impact";
-    case 24: return "radar";
-    default: return "";
-  }
-}
 
 std::string element(const std::string& path, int index) {
   return index >= 0 ? path + "[" + std::to_string(index) + "]" : path;
@@ -155,7 +134,7 @@ std::string fault_path(const MissionFault& fault, const Mission& mission) {
   const int index = fault.index;
   switch (fault.data_block) {
     case 4: {
-      const char* key = option_key(index);
+      const char* key = card_detail::option_key(index);  // the one IP(n) -> key mapping
       return *key != '\0' ? "options." + std::string(key) : "options";
     }
     case 5: return field == "sequence" ? element("vehicle.sequence", index) : "vehicle.sequence";
