@@ -122,6 +122,26 @@ TEST(Sec22Convergence, AHeritageDeckWithoutTheHeadingHoldConvergesToTheHeldPaylo
   EXPECT_NEAR(payload_lb, held_payload_lb, 0.01);  // measured 0.0009 lb
 }
 
+// The iteration history keeps the first kMaxOptimizerIterations (80) records and says how many it
+// did not keep (issue 17: it stopped at 80 without notice). A budget of 100 with an unreachable
+// stopping magnitude makes 100 forward runs.
+TEST(Sec22Convergence, RunsBeyondTheHistoryCapacityAreCountedNotSilentlyDropped) {
+  ScratchDirectory scratch("convergence_history");
+  const std::string deck =
+      edited_example_deck(scratch, "long.toml",
+                          {{"max_forward_trajectories = 30", "max_forward_trajectories = 100"},
+                           {"stop_improvement = 0.5", "stop_improvement = 1e-300"}});
+  const CommandResult run = run_tolip_executable({"optimize", deck, "--json"});
+  const nlohmann::json d = nlohmann::json::parse(run.out);
+  const int runs = d["forward_runs"].get<int>();
+  ASSERT_GT(runs, 80) << run.err;
+  EXPECT_EQ(d["iterations"].size(), 80u);
+  EXPECT_EQ(d["iterations_dropped"].get<int>(), runs - 80);
+  for (const nlohmann::json& r : d["iterations"]) EXPECT_EQ(r["run_status"], "kOk") << r["forward_run"];
+  const CommandResult listing = run_tolip_executable({"optimize", deck});
+  EXPECT_TRUE(contains(listing.out, "    ... " + std::to_string(runs - 80) + " LATER FORWARD RUNS NOT RECORDED"));
+}
+
 // Sec. 10: a linearization that does not meet its constraints and rate limits in DA13(4) forward
 // runs fails `optimize` (exit 1, naming the step) exactly as it stops `export` (before issue 10
 // optimize exited 0 on this deck while export exited 1).

@@ -3,6 +3,7 @@
 
 #include <Eigen/Cholesky>
 #include <cmath>
+#include <limits>
 
 #include "tolip/atmosphere/atmosphere.hpp"
 #include "tolip/earth/earth_model.hpp"
@@ -431,7 +432,7 @@ class Iteration {
   Status launch_sensitivities();
   Status fly_candidate(const Steering& steering, const ConstraintVector& dpsi, double step_fraction);
   void accept_candidate();
-  void record(RunKind kind, bool successful, double attempted);
+  void record(RunKind kind, Status run_status, bool successful, double attempted);
   ConstraintVector corrections(const double achieved[kMaxConstraints]) const;
   double corrected_payoff(const double achieved[kMaxConstraints]) const;
   double burn_time_s() const;
@@ -467,19 +468,28 @@ double Iteration::burn_time_s() const {
   return total;
 }
 
-void Iteration::record(RunKind kind, bool successful, double attempted) {
-  if (result_->iteration_count >= kMaxOptimizerIterations) return;
-  IterationRecord& r = result_->iterations[result_->iteration_count++];
+// Records the forward run just made. Beyond the history's capacity the run is still told to the
+// observer and counted in iterations_dropped. A run that failed (run_status not kOk: it went below
+// the surface, say) has no payoff or constraint values of its own: they are NaN, flagged by its
+// status, rather than the previous run's.
+void Iteration::record(RunKind kind, Status run_status, bool successful, double attempted) {
+  IterationRecord overflow;
+  const bool stored = result_->iteration_count < kMaxOptimizerIterations;
+  IterationRecord& r = stored ? result_->iterations[result_->iteration_count++] : overflow;
+  if (!stored) ++result_->iterations_dropped;
   r.forward_run = result_->forward_runs;
   r.kind = kind;
+  r.run_status = run_status;
   r.successful = successful;
   r.attempted_payoff_improvement = attempted;
-  r.payoff = candidate_achieved_[0];
-  r.corrected_payoff = corrected_payoff(candidate_achieved_);
+  const bool flown = ok(run_status);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  r.payoff = flown ? candidate_achieved_[0] : nan;
+  r.corrected_payoff = flown ? corrected_payoff(candidate_achieved_) : nan;
   r.payload_lb = ws_->candidate_mission.vehicle.payload_lb;
   r.payload_increment_lb = ws_->candidate_mission.vehicle.payload_lb - ws_->mission.vehicle.payload_lb;
   for (int i = 1; i < problem_.constraint_count; ++i) {
-    r.constraint_corrections[i] = correction(problem_, i, candidate_achieved_);
+    r.constraint_corrections[i] = flown ? correction(problem_, i, candidate_achieved_) : nan;
     r.payoff_partials[i] = partials_[i];
   }
   if (ws_->observer != nullptr) ws_->observer->on_forward_run(r, *result_);
@@ -497,7 +507,7 @@ Status Iteration::fly_nominal_from_table() {
   if (!ok(status)) return status;
   for (int i = 0; i < problem_.constraint_count; ++i) candidate_achieved_[i] = nominal_achieved_[i];
   ws_->candidate_mission = ws_->mission;
-  record(RunKind::kInitialNominal, within_deadbands(problem_, nominal_achieved_), 0.0);
+  record(RunKind::kInitialNominal, Status::kOk, within_deadbands(problem_, nominal_achieved_), 0.0);
   return Status::kOk;
 }
 
@@ -654,7 +664,7 @@ Status Iteration::run(const Mission& input) {
       ++result_->guidance_runs;
       status = fly_candidate(steering, corrections(nominal_achieved_), fraction);
       const bool better = ok(status) && error_norm(problem_, candidate_achieved_) < before;
-      record(RunKind::kGuidance, better && within_deadbands(problem_, candidate_achieved_), 0.0);
+      record(RunKind::kGuidance, status, better && within_deadbands(problem_, candidate_achieved_), 0.0);
       if (better || attempt == kGuidanceStepHalvings || result_->forward_runs >= budget - 1) break;
     }
     if (!ok(status)) return status;
@@ -688,7 +698,7 @@ Status Iteration::run(const Mission& input) {
       ++result_->optimization_runs;
       improved = ok(status) && within_deadbands(problem_, candidate_achieved_) &&
                  corrected_payoff(candidate_achieved_) > best_corrected;
-      record(RunKind::kOptimization, improved, attempt_size);
+      record(RunKind::kOptimization, status, improved, attempt_size);
       if (improved) break;
       attempt_size *= 0.5;
     }
@@ -713,7 +723,7 @@ Status Iteration::run(const Mission& input) {
   const bool final_accepted =
       nominal_feasible ? result_->final_guidance_met
                        : ok(status) && error_norm(problem_, candidate_achieved_) <= error_norm(problem_, nominal_achieved_);
-  record(RunKind::kFinalGuidance, result_->final_guidance_met, 0.0);
+  record(RunKind::kFinalGuidance, status, result_->final_guidance_met, 0.0);
   if (final_accepted) accept_candidate();
 
   result_->converged = guidance_converged && result_->optimization_runs > 0 &&
@@ -756,6 +766,7 @@ Status optimize_trajectory(const Mission& mission, OptimizerWorkspace* workspace
   result->forward_runs = 0;
   result->backward_runs = 0;
   result->iteration_count = 0;
+  result->iterations_dropped = 0;
   result->converged = false;
   result->optimization_stop = OptimizationStop::kNotReached;
   result->guidance_runs = 0;

@@ -60,6 +60,7 @@ json iterations_json(const OptimizationReport& report, int rows) {
     array.push_back(json{
         {"forward_run", r.forward_run},
         {"kind", run_kind_name(r.kind)},
+        {"run_status", status_name(r.run_status)},
         {"successful", r.successful},
         {"attempted_payoff_improvement", number(r.attempted_payoff_improvement)},
         {"payoff", number(r.payoff)},
@@ -248,6 +249,7 @@ json optimization_json(const OptimizationReport& report) {
   additions["adjustable"] = adjustable_json(adjustable);
   additions["theta_history"] = theta_history_json(*report.final_trajectory.trajectory);
   additions["iterations"] = iterations_json(report, static_cast<int>(constraints.size()));
+  additions["iterations_dropped"] = result.iterations_dropped;
   if (report.exchange_ratios_requested) additions["exchange_ratios"] = exchange_ratios_json(report);
   if (report.linearization_requested) additions["linearized"] = linearized_json(report);
   if (report.body_dynamics_option == 1 || report.body_dynamics_option == 2) {

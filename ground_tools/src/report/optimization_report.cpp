@@ -276,7 +276,12 @@ void write_iteration_table(Pager& pager, const OptimizationReport& report) {
     line += number_cell(r.attempted_payoff_improvement, 4, 21) + number_cell(r.payoff, 4, 16) +
             number_cell(r.corrected_payoff, 4, 18) + number_cell(r.payload_lb, 4, 16) +
             number_cell(r.payload_increment_lb, 4, 19);
+    if (!ok(r.run_status)) line += std::string("  RUN FAILED: ") + status_name(r.run_status);
     pager.emit(line);
+  }
+  if (result.iterations_dropped > 0) {
+    pager.emit("    ... " + std::to_string(result.iterations_dropped) + " LATER FORWARD RUNS NOT RECORDED (THE HISTORY HOLDS " +
+               std::to_string(kMaxOptimizerIterations) + ")");
   }
   pager.emit("");
 }
@@ -292,7 +297,8 @@ void write_iteration_details(Pager& pager, const OptimizationReport& report,
     const IterationRecord& r = result.iterations[k];
     pager.reserve(9 + rows);
     pager.emit(" FORWARD RUN " + std::to_string(r.forward_run) + "   " + run_kind_heading(r.kind) + "   " +
-               (r.successful ? "SUCCESSFUL" : "NOT SUCCESSFUL"));
+               (r.successful ? "SUCCESSFUL" : "NOT SUCCESSFUL") +
+               (ok(r.run_status) ? std::string() : std::string("   RUN FAILED: ") + status_name(r.run_status)));
     pager.emit("   NOMINAL PAYOFF INCREMENT          PAYOFF  CORRECTED PAYOFF         PAYLOAD  PAYLOAD INCREMENT");
     pager.emit("   " + right(payoff, 24) + right(payoff, 16) + right(payoff, 18) + right("LB", 16) + right("LB", 19));
     pager.emit("   " + number_cell(r.attempted_payoff_improvement, 4, 24) + number_cell(r.payoff, 4, 16) +

@@ -87,7 +87,8 @@ std::string optimizer_progress_text(const IterationRecord& record, const char* p
     std::snprintf(payoff, sizeof payoff, "payoff - %s", payoff_unit);
   }
   return "forward run " + std::to_string(record.forward_run) + "  " + payoff + "  " +
-         (record.successful ? "successful" : "unsuccessful");
+         (record.successful ? "successful" : "unsuccessful") +
+         (ok(record.run_status) ? std::string() : std::string(" (") + status_name(record.run_status) + ")");
 }
 
 OptimizerProgress::OptimizerProgress(ProgressLine& line, const Mission& mission)

@@ -19,7 +19,7 @@
 
 namespace tolip {
 
-inline constexpr int kMaxOptimizerIterations = 80;  // history records kept (>= DA13(3))
+inline constexpr int kMaxOptimizerIterations = 80;  // history records kept; later runs are counted
 
 enum class RunKind : int { kInitialNominal, kGuidance, kOptimization, kFinalGuidance };
 
@@ -27,6 +27,9 @@ enum class RunKind : int { kInitialNominal, kGuidance, kOptimization, kFinalGuid
 struct IterationRecord {
   int forward_run = 0;
   RunKind kind = RunKind::kInitialNominal;
+  // The run's own outcome: kOk, or why it stopped (kAltitudeBelowSurface, ...); then the payoff
+  // values and constraint corrections below are NaN (the run has none).
+  Status run_status = Status::kOk;
   bool successful = false;
   double attempted_payoff_improvement = 0.0;  // delta m_d on optimization runs
   double payoff = 0.0;                        // achieved on this run
@@ -85,6 +88,8 @@ struct OptimizerResult {
   double adjustable_values[kMaxAdjustableParameters] = {};
   int iteration_count = 0;
   IterationRecord iterations[kMaxOptimizerIterations];
+  int iterations_dropped = 0;  // forward runs after the first kMaxOptimizerIterations, not kept
+
 };
 
 // Told of every forward run as it is recorded (a terminal progress display, a log). Called on the
