@@ -116,8 +116,11 @@ TEST(MissionValidation, NegativeWeights) {
 
 TEST(MissionValidation, DurationsAndStepCounts) {
   auto mission = optimum();
-  stage(*mission, 7).duration_s = 0.0;
+  stage(*mission, 7).duration_s = -1.0;
   expect_fault(*mission, Status::kNonPositiveDuration, 16, 7, "duration_s");
+  mission = optimum();
+  stage(*mission, 7).duration_s = 0.0;  // issue 17: leave the coast out of the sequence instead
+  expect_fault(*mission, Status::kZeroLengthCoast, 16, 7, "duration_s");
   mission = optimum();
   stage(*mission, 8).integration_steps = 0;
   expect_fault(*mission, Status::kNonPositiveStepCount, 16, 8, "integration_steps");
