@@ -22,7 +22,15 @@ namespace {
 const std::string kSequence = "sequence = [1, 6, 2, 7, 3, 8, 4]";
 const std::string kWithoutCoast7 = "sequence = [1, 6, 2, 3, 8, 4]";
 
-std::string without_coast7() { return replaced(scout_mission_text(), kSequence, kWithoutCoast7); }
+const std::string kCodedTimes = "segment_count = 9                            # TLIN(1)\n"
+                                "coded_times = [103.0, 108.0, 115.0, 145.0, 200.0, 219.0, 238.0, 300.0,";
+// Without coast 7 stage 2's burnout (238.0) is stage 3's ignition (300.0): block 18 lists one.
+const std::string kCodedTimesWithoutCoast7 = "segment_count = 8\n"
+                                             "coded_times = [103.0, 108.0, 115.0, 145.0, 200.0, 219.0, 300.0,";
+
+std::string without_coast7() {
+  return replaced(replaced(scout_mission_text(), kSequence, kWithoutCoast7), kCodedTimes, kCodedTimesWithoutCoast7);
+}
 
 std::string written(const ScratchDirectory& scratch, const std::string& name, const std::string& text) {
   const std::string path = (scratch / name).string();
@@ -52,6 +60,14 @@ TEST(Sec22Block5Deck, OutOfOrderSequenceSaysWhatMayComeNext) {
   error = rejected(replaced(scout_mission_text(), kSequence, "sequence = [1, 6, 3, 8, 4]"));
   EXPECT_EQ(error.field, "vehicle.sequence[2]");
   EXPECT_TRUE(contains(error.message, "expected 2 here")) << error.message;
+}
+
+TEST(Sec22Block18Deck, BurnoutAndNextIgnitionAtTheSameInstantAreRefused) {
+  // Coast 7 left out but block 18 still codes stage 2's burnout 238.0 and stage 3's ignition 300.0.
+  const ground::DeckError error = rejected(replaced(scout_mission_text(), kSequence, kWithoutCoast7));
+  EXPECT_EQ(error.data_block, 18);
+  EXPECT_TRUE(contains(error.message, "kTableNotMonotonic")) << error.message;
+  EXPECT_TRUE(contains(error.message, "list one of the two")) << error.message;
 }
 
 TEST(Sec22Block16Deck, ZeroLengthCoastIsRefusedTellingToLeaveItOutOfTheSequence) {

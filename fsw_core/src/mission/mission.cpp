@@ -162,6 +162,18 @@ int position_in_sequence(const StageSequence& sequence, int code) {
   return -1;
 }
 
+// Time from launch at which stage `code` of the sequence starts (the durations of data block 16
+// of the stages before it); -1 when it is not in the sequence.
+double stage_ignition_s(const Vehicle& vehicle, int code) {
+  double start = 0.0;
+  for (int k = 0; k < vehicle.sequence.count; ++k) {
+    const int listed = vehicle.sequence.codes[k];
+    if (listed == code) return start;
+    if (listed >= 1 && listed <= kMaxStages) start += vehicle.stages[stage_index(listed)].duration_s;
+  }
+  return -1.0;
+}
+
 int last_powered_stage(const StageSequence& sequence) {
   int last = 0;
   for (int k = 0; k < sequence.count; ++k) {
@@ -689,6 +701,18 @@ Status check_linearization(const LinearizationData& l, const Options& options, c
     if (i > 0 && !(coded > l.coded_start_times[i - 1])) {
       return check.fail(Status::kTableNotMonotonic, 18, 0, "coded_start_times", i, coded, "",
                         above(l.coded_start_times[i - 1]), "strictly increasing");
+    }
+    // With stage n+1 directly after stage n (no coast between them), 100 n + (its burn) and
+    // 100 (n+1) + 0 are the same instant: a segment of no length.
+    if (i > 0) {
+      const int previous_code = static_cast<int>(std::floor(l.coded_start_times[i - 1] / 100.0));
+      if (previous_code != code &&
+          !(stage_ignition_s(vehicle, code) + (coded - 100.0 * code) >
+            stage_ignition_s(vehicle, previous_code) + (l.coded_start_times[i - 1] - 100.0 * previous_code))) {
+        return check.fail(Status::kTableNotMonotonic, 18, 0, "coded_start_times", i, coded, "", ValueRange{},
+                          "later in flight than the coded time before it (a stage that ignites at the burnout "
+                          "of the one before, with no coast between, starts at that burnout: list one of the two)");
+      }
     }
   }
   // IP(7) = 1 "requires input of times of beginning of each linear segment in Data Block 18".
