@@ -219,7 +219,7 @@ TEST(MissionValidation, AtmosphereTableMustBeOrdered) {
 TEST(MissionValidation, AdjustableCoastMustBeFlown) {
   auto mission = optimum();
   mission->adjustable.codes[1] = 10;  // coast after stage 4 (code 9) is not in the sequence
-  expect_fault(*mission, Status::kValueOutOfRange, 6, 9, "codes");
+  expect_fault(*mission, Status::kAdjustableCoastNotInSequence, 6, 9, "codes");
 }
 
 // Vehicle weight against the oracle's stage events (README section 3).
