@@ -196,8 +196,9 @@ TEST(Sec22Deck, RejectsOutOfOrderSequenceNamingBlock5) {
   const std::string text = replaced(scout_mission_text(), "sequence = [1, 6, 2, 7, 3, 8, 4]", "sequence = [1, 2, 6]");
   const DeckError error = rejected(text);
   EXPECT_EQ(error.data_block, 5);
-  EXPECT_EQ(error.field, "vehicle.sequence[1]");
-  EXPECT_TRUE(contains(error.message, "prefix of 1 6 2 7 3 8 4 9 5 10"));
+  EXPECT_EQ(error.field, "vehicle.sequence[2]");  // 1 2 is stage 2 directly after stage 1 (issue 17)
+  EXPECT_TRUE(contains(error.message, "order 1 6 2 7 3 8 4 9 5 10")) << error.message;
+  EXPECT_TRUE(contains(error.message, "expected 3 or its coast 7 here")) << error.message;
 }
 
 TEST(Sec22Deck, RejectsUnknownStageTableNamingBlock16) {

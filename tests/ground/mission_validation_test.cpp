@@ -116,8 +116,11 @@ TEST(MissionValidation, NegativeWeights) {
 
 TEST(MissionValidation, DurationsAndStepCounts) {
   auto mission = optimum();
-  stage(*mission, 7).duration_s = 0.0;
+  stage(*mission, 7).duration_s = -1.0;
   expect_fault(*mission, Status::kNonPositiveDuration, 16, 7, "duration_s");
+  mission = optimum();
+  stage(*mission, 7).duration_s = 0.0;  // issue 17: leave the coast out of the sequence instead
+  expect_fault(*mission, Status::kZeroLengthCoast, 16, 7, "duration_s");
   mission = optimum();
   stage(*mission, 8).integration_steps = 0;
   expect_fault(*mission, Status::kNonPositiveStepCount, 16, 8, "integration_steps");
@@ -216,7 +219,7 @@ TEST(MissionValidation, AtmosphereTableMustBeOrdered) {
 TEST(MissionValidation, AdjustableCoastMustBeFlown) {
   auto mission = optimum();
   mission->adjustable.codes[1] = 10;  // coast after stage 4 (code 9) is not in the sequence
-  expect_fault(*mission, Status::kValueOutOfRange, 6, 9, "codes");
+  expect_fault(*mission, Status::kAdjustableCoastNotInSequence, 6, 9, "codes");
 }
 
 // Vehicle weight against the oracle's stage events (README section 3).

@@ -32,6 +32,8 @@ const char* status_name(Status status) {
     case Status::kStageDurationMismatch: return "kStageDurationMismatch";
     case Status::kLiftoffLongerThanStage1: return "kLiftoffLongerThanStage1";
     case Status::kLiftoffNotPositive: return "kLiftoffNotPositive";
+    case Status::kZeroLengthCoast: return "kZeroLengthCoast";
+    case Status::kAdjustableCoastNotInSequence: return "kAdjustableCoastNotInSequence";
     case Status::kInitialConditionsInvalid: return "kInitialConditionsInvalid";
     case Status::kAtmosphereTableInvalid: return "kAtmosphereTableInvalid";
     case Status::kBodyDynamicsDataMissing: return "kBodyDynamicsDataMissing";
@@ -97,7 +99,7 @@ const char* status_message(Status status) {
     case Status::kNegativeWeight: return "a weight is negative";
     case Status::kNonPositiveDuration: return "a stage duration must be positive";
     case Status::kNonPositiveStepCount: return "a stage needs at least one integration step";
-    case Status::kStageSequenceInvalid: return "the stage sequence must follow 1 6 2 7 3 8 4 9 5 10, starting with 1";
+    case Status::kStageSequenceInvalid: return "the stage sequence must start with stage 1 and follow the order 1 6 2 7 3 8 4 9 5 10: each powered stage is the next one, each coast n+5 comes directly after its stage n, and a coast may be left out (powered stages then burn back to back)";
     case Status::kUnknownStageCode: return "a stage code is not one of 1-10";
     case Status::kMissingThrustTable: return "a powered stage has no vacuum thrust table";
     case Status::kMissingWeightTable: return "a powered stage has no consumable-weight table";
@@ -105,6 +107,8 @@ const char* status_message(Status status) {
     case Status::kStageDurationMismatch: return "a powered stage duration differs from the last time of its thrust table";
     case Status::kLiftoffLongerThanStage1: return "the lift-off interval is not shorter than stage 1";
     case Status::kLiftoffNotPositive: return "the closed-form lift-off DA5(1) must last more than 0 s: the integration starts from its end state, and at V = 0 the equations of motion are singular (flight-path angle and heading undefined)";
+    case Status::kZeroLengthCoast: return "a coast of the stage sequence lasts 0 s: leave the coast out of the stage sequence (data block 5) instead, the powered stages around it then burn back to back with the jettison at the boundary";
+    case Status::kAdjustableCoastNotInSequence: return "a coast length is an adjustable parameter (data block 6) but that coast is not in the stage sequence (data block 5)";
     case Status::kInitialConditionsInvalid: return "initial conditions must have zero velocity and a 90 degree flight-path angle";
     case Status::kAtmosphereTableInvalid: return "the atmosphere table is inconsistent";
     case Status::kBodyDynamicsDataMissing: return "a 6D (body dynamics) trajectory needs data blocks 33-37 (gains, stations, reference length and area, the block 34-36 tables and the stage-1 c.g. history), which the case does not give completely";

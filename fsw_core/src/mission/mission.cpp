@@ -13,7 +13,6 @@ namespace tolip {
 namespace {
 
 // Data block 5: the only order stages may be flown in.
-constexpr int kCanonicalSequence[kMaxStages] = {1, 6, 2, 7, 3, 8, 4, 9, 5, 10};
 
 // Tolerance on the 90-degree flight-path angle of block 21 (deck conversions round in the last bit).
 constexpr double kAngleTolerance_rad = 1.0e-9;
@@ -163,6 +162,18 @@ int position_in_sequence(const StageSequence& sequence, int code) {
   return -1;
 }
 
+// Time from launch at which stage `code` of the sequence starts (the durations of data block 16
+// of the stages before it); -1 when it is not in the sequence.
+double stage_ignition_s(const Vehicle& vehicle, int code) {
+  double start = 0.0;
+  for (int k = 0; k < vehicle.sequence.count; ++k) {
+    const int listed = vehicle.sequence.codes[k];
+    if (listed == code) return start;
+    if (listed >= 1 && listed <= kMaxStages) start += vehicle.stages[stage_index(listed)].duration_s;
+  }
+  return -1.0;
+}
+
 int last_powered_stage(const StageSequence& sequence) {
   int last = 0;
   for (int k = 0; k < sequence.count; ++k) {
@@ -199,7 +210,7 @@ Status check_sequence(const Vehicle& vehicle, const Check& check) {
   const StageSequence& sequence = vehicle.sequence;
   if (sequence.count < 1 || sequence.count > kMaxStages) {
     return check.fail(Status::kStageSequenceInvalid, 5, 0, "sequence", -1, sequence.count, "",
-                      between(1, kMaxStages), "1-10 stage codes, a prefix of 1 6 2 7 3 8 4 9 5 10");
+                      between(1, kMaxStages), "1-10 stage codes in the order 1 6 2 7 3 8 4 9 5 10, coasts optional");
   }
   for (int k = 0; k < sequence.count; ++k) {
     const int code = sequence.codes[k];
@@ -207,9 +218,11 @@ Status check_sequence(const Vehicle& vehicle, const Check& check) {
       return check.fail(Status::kUnknownStageCode, 5, code, "sequence", k, code, "", between(1, kMaxStages),
                         "1-5 (powered stages) or 6-10 (the coasts after them)");
     }
-    if (code != kCanonicalSequence[k]) {
-      return check.fail(Status::kStageSequenceInvalid, 5, code, "sequence", k, code, "",
-                        exactly(kCanonicalSequence[k]), "a prefix of 1 6 2 7 3 8 4 9 5 10 starting with 1");
+    if (!may_follow_in_sequence(k == 0 ? 0 : sequence.codes[k - 1], code)) {
+      return check.fail(Status::kStageSequenceInvalid, 5, code, "sequence", k, code, "", ValueRange{},
+                        k == 0 ? "stage 1 first"
+                               : "after stage n the next powered stage n+1 or the coast n+5, after coast n+5 stage n+1 "
+                                 "(the order 1 6 2 7 3 8 4 9 5 10, coasts optional)");
     }
   }
   for (int code = 1; code <= kMaxStages; ++code) {
@@ -296,6 +309,12 @@ Status check_stage(const StageData& stage, int code, double time_epsilon_s, cons
   TOLIP_CHECK(check.finite(stage.reference_area_ft2, 39, code, "reference_area_ft2", "ft^2"));
   TOLIP_CHECK(check.finite(stage.nozzle_exit_area_ft2, 39, code, "nozzle_exit_area_ft2", "ft^2"));
 
+  // A coast of 0 s is not flown as zero steps: it is left out of the sequence (data block 5), so
+  // the powered stages around it burn back to back (docs/deck-format.md).
+  if (is_coast_stage(code) && stage.duration_s == 0.0) {
+    return check.fail(Status::kZeroLengthCoast, 16, code, "duration_s", -1, 0.0, "s", above(0.0),
+                      "> 0, or leave the coast out of the stage sequence (data block 5)");
+  }
   TOLIP_CHECK(check.range(stage.duration_s, above(0.0), Status::kNonPositiveDuration, 16, code, "duration_s", "s"));
   TOLIP_CHECK(check.range(stage.integration_steps, at_least(1), Status::kNonPositiveStepCount, 16, code,
                           "integration_steps", ""));
@@ -636,8 +655,8 @@ Status check_adjustable(const AdjustableParameters& a, const Vehicle& vehicle, c
     if (code == 10) coast = 9;
     if (code == 11) coast = 10;
     if (coast != 0 && !vehicle.stages[stage_index(coast)].in_sequence) {
-      return check.fail(Status::kValueOutOfRange, 6, coast, "codes", i, code, "", ValueRange{},
-                        "a coast code only for a coast of the sequence");
+      return check.fail(Status::kAdjustableCoastNotInSequence, 6, coast, "codes", i, code, "", ValueRange{},
+                        "a coast-length code only for a coast of the stage sequence (data block 5)");
     }
     TOLIP_CHECK(check.range(a.weights[i], above(0.0), Status::kValueOutOfRange, 27, 0, "weights", "", i));
   }
@@ -646,9 +665,9 @@ Status check_adjustable(const AdjustableParameters& a, const Vehicle& vehicle, c
 
 // ---- data blocks 18, 26 -------------------------------------------------------------------------
 // TLIN: the coded times 100 n + t (n a powered stage, t seconds from its ignition) in increasing
-// order, unused entries 0. Between consecutive listed powered stages the coast is one implicit
-// segment, so segment_count = number of times - 1 (manual example: 103.0, 182.6, 200.0, 239.2 are
-// three segments).
+// order, unused entries 0. Between consecutive listed powered stages the coast (when the sequence
+// has one; else the staging instant) lies within one segment, so segment_count = number of times - 1
+// (manual example: 103.0, 182.6, 200.0, 239.2 are three segments).
 // (Whether t lies within the burn is the deck reader's check: an exchange-ratio run that shortens a
 // burn keeps the deck's coded times.)
 Status check_linearization(const LinearizationData& l, const Options& options, const Vehicle& vehicle,
@@ -680,6 +699,18 @@ Status check_linearization(const LinearizationData& l, const Options& options, c
     if (i > 0 && !(coded > l.coded_start_times[i - 1])) {
       return check.fail(Status::kTableNotMonotonic, 18, 0, "coded_start_times", i, coded, "",
                         above(l.coded_start_times[i - 1]), "strictly increasing");
+    }
+    // With stage n+1 directly after stage n (no coast between them), 100 n + (its burn) and
+    // 100 (n+1) + 0 are the same instant: a segment of no length.
+    if (i > 0) {
+      const int previous_code = static_cast<int>(std::floor(l.coded_start_times[i - 1] / 100.0));
+      if (previous_code != code &&
+          !(stage_ignition_s(vehicle, code) + (coded - 100.0 * code) >
+            stage_ignition_s(vehicle, previous_code) + (l.coded_start_times[i - 1] - 100.0 * previous_code))) {
+        return check.fail(Status::kTableNotMonotonic, 18, 0, "coded_start_times", i, coded, "", ValueRange{},
+                          "later in flight than the coded time before it (a stage that ignites at the burnout "
+                          "of the one before, with no coast between, starts at that burnout: list one of the two)");
+      }
     }
   }
   // IP(7) = 1 "requires input of times of beginning of each linear segment in Data Block 18".

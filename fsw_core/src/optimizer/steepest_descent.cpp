@@ -93,6 +93,11 @@ Status make_problem(const Mission& mission, Problem* problem) {
     const bool supported = code == 1 || code == 2 || code == 6 || code == 7 || code == 8 || code == 9 ||
                            coast_of_parameter(code) != 0;
     if (!supported) return Status::kAdjustableParameterNotSupported;
+    // A coast left out of the sequence (powered stages back to back) has no length to adjust.
+    const int coast = coast_of_parameter(code);
+    if (coast != 0 && !mission.vehicle.stages[stage_index(coast)].in_sequence) {
+      return Status::kAdjustableCoastNotInSequence;
+    }
     problem->adjustable_codes[p] = code;
     problem->adjustable_weight[p] = mission.adjustable.weights[p];
     problem->adjustable_active[p] = true;

@@ -10,7 +10,6 @@
 namespace tolip::ground::deck_detail {
 namespace {
 
-constexpr int kCanonicalSequence[kMaxStages] = {1, 6, 2, 7, 3, 8, 4, 9, 5, 10};
 
 std::string str(int value) { return std::to_string(value); }
 
@@ -178,11 +177,11 @@ void read_vehicle(Section& root, Vehicle* vehicle) {
   std::vector<int> codes = section.integers("sequence", 5, "stage codes in flight order");
   if (!codes.empty() && codes.back() == 0) codes.pop_back();  // the card's terminating 0
   if (codes.empty()) {
-    section.fail_at("sequence", 5, "empty stage sequence: expected at least stage 1 (a prefix of 1 6 2 7 3 8 4 9 5 10)");
+    section.fail_at("sequence", 5, "empty stage sequence: expected at least stage 1 (the order 1 6 2 7 3 8 4 9 5 10, coasts optional)");
   }
   if (static_cast<int>(codes.size()) > kMaxStages) {
     section.fail_at("sequence", 5, "too many stages (" + str(static_cast<int>(codes.size())) +
-                                       "): at most 10 codes, a prefix of 1 6 2 7 3 8 4 9 5 10");
+                                       "): at most 10 codes, in the order 1 6 2 7 3 8 4 9 5 10");
   }
   Reader& reader = section.reader();
   for (std::size_t k = 0; k < codes.size(); ++k) {
@@ -197,11 +196,20 @@ void read_vehicle(Section& root, Vehicle* vehicle) {
                   "unknown stage code " + str(code) +
                       ": expected 1-5 (powered stages) or 6-10 (the coasts after stages 1-5)");
     }
-    if (code != kCanonicalSequence[k]) {
+    const int previous = (k == 0) ? 0 : codes[k - 1];
+    if (!may_follow_in_sequence(previous, code)) {
+      std::string expected = "1";
+      if (is_powered_stage(previous)) {
+        expected = previous < kMaxPoweredStages ? str(previous + 1) + " or its coast " + str(previous + 5)
+                                                 : "its coast " + str(previous + 5);
+      } else if (previous != 0) {
+        expected = str(previous - 4);
+      }
       reader.fail(line, 5, field,
                   "stage code " + str(code) + " cannot be at position " + str(static_cast<int>(k) + 1) +
-                      ": the sequence must be a prefix of 1 6 2 7 3 8 4 9 5 10 starting with 1 (expected " +
-                      str(kCanonicalSequence[k]) + " here)");
+                      ": the sequence keeps the order 1 6 2 7 3 8 4 9 5 10 starting with 1, each coast "
+                      "n+5 directly after its stage n, coasts optional (expected " +
+                      expected + " here)");
     }
     vehicle->sequence.codes[k] = code;
   }

@@ -353,6 +353,10 @@ std::string fault_detail(Status status, const MissionFault& fault, const Mission
     case Status::kNonPositiveDuration:
       if (stage == nullptr) break;
       return "duration_s = " + format_number(stage->duration_s) + "; expected > 0";
+    case Status::kZeroLengthCoast:
+      return "duration_s = 0; expected > 0, or coast " + std::to_string(fault.stage_code) +
+             " left out of vehicle.sequence (data block 5), so that stage " + std::to_string(fault.stage_code - 4) +
+             " ignites at the burnout of stage " + std::to_string(fault.stage_code - 5);
     case Status::kNonPositiveStepCount:
       if (stage == nullptr) break;
       return "integration_steps = " + std::to_string(stage->integration_steps) + "; expected >= 1";

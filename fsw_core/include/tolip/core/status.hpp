@@ -37,6 +37,8 @@ enum class Status : int {
   kStageDurationMismatch,
   kLiftoffLongerThanStage1,
   kLiftoffNotPositive,
+  kZeroLengthCoast,
+  kAdjustableCoastNotInSequence,
   kInitialConditionsInvalid,
   kAtmosphereTableInvalid,
   kBodyDynamicsDataMissing,

@@ -23,7 +23,20 @@ inline constexpr bool is_powered_stage(int code) { return code >= 1 && code <= 5
 inline constexpr bool is_coast_stage(int code) { return code >= 6 && code <= 10; }
 inline constexpr int stage_index(int code) { return code - 1; }
 
-// Data block 5: the flown order, a prefix of 1 6 2 7 3 8 4 9 5 10 ending after any stage.
+// Data block 5 order: whether stage `code` may directly follow stage `previous` (0: the start).
+// The sequence starts with 1; after powered stage n comes the next powered stage n+1 or its coast
+// n+5; after coast n+5 comes stage n+1. So the codes keep the order 1 6 2 7 3 8 4 9 5 10, no
+// powered stage is skipped, and a coast may be left out (powered stages burning back to back:
+// hot staging, parallel boosters), e.g. 1 2 7 3 8 4. The sequence may end after any stage.
+inline constexpr bool may_follow_in_sequence(int previous, int code) {
+  if (previous == 0) return code == 1;
+  if (is_powered_stage(previous)) return code == previous + 1 || code == previous + 5;
+  if (is_coast_stage(previous)) return code == previous - 4;
+  return false;
+}
+
+// Data block 5: the flown order (may_follow_in_sequence() between neighbours), ending after any
+// stage.
 struct StageSequence {
   int codes[kMaxStages] = {};
   int count = 0;
