@@ -8,6 +8,7 @@
 
 #include "support/reference_data.hpp"
 #include "tolip/earth/earth_model.hpp"
+#include "tolip/optimizer/constraint_parameters.hpp"
 
 namespace tolip {
 namespace {
@@ -112,6 +113,24 @@ TEST(Sec4OblateEarth, DeltaLambdaMatchesOracleExample) {
   // It vanishes at the equator and the poles and is odd in latitude.
   EXPECT_EQ(delta_lambda_rad(Constants{}, 0.0, 2.09e7), 0.0);
   EXPECT_NEAR(delta_lambda_rad(Constants{}, -0.6, 2.09e7), -dl, 1e-8);
+}
+
+// CT1(12) = 0: the figure is a sphere of radius CT1(3) (the eta form would divide by zero).
+TEST(Sec4Earth, SphericalEarthHasTheEquatorialRadiusAtEveryLatitude) {
+  Constants sphere;
+  sphere.inverse_flattening = 0.0;
+  ASSERT_TRUE(is_spherical_earth(sphere));
+  ASSERT_FALSE(is_spherical_earth(Constants{}));
+  const double a = sphere.earth_equatorial_radius_ft;
+  for (double deg = -90.0; deg <= 90.0; deg += 2.5) {
+    const double lat = deg * kDegToRad;
+    EXPECT_EQ(oblate_radius_ft(sphere, lat), a) << deg;
+    EXPECT_EQ(oblate_radius_ft(sphere, std::sin(lat), std::cos(lat)), a) << deg;
+    EXPECT_EQ(oblate_altitude_ft(sphere, a + 1234.5, lat), 1234.5) << deg;
+    EXPECT_EQ(oblate_radius_latitude_derivative_ft_per_rad(sphere, lat), 0.0) << deg;
+  }
+  EXPECT_EQ(polar_radius_ft(sphere), a);
+  EXPECT_EQ(polar_radius_ft(Constants{}), a * (298.3 - 1.0) / 298.3);
 }
 
 // Geopotential of the J2 Earth (the function the manual says the gravity model differentiates):

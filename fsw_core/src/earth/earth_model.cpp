@@ -16,7 +16,16 @@ constexpr double kFigureDeflectionCoefficient = 0.001638;
 
 }  // namespace
 
+bool is_spherical_earth(const Constants& constants) { return constants.inverse_flattening == 0.0; }
+
+double polar_radius_ft(const Constants& constants) {
+  const double a = constants.earth_equatorial_radius_ft;
+  if (is_spherical_earth(constants)) return a;
+  return a * (constants.inverse_flattening - 1.0) / constants.inverse_flattening;
+}
+
 double oblate_radius_ft(const Constants& constants, double geocentric_latitude_rad) {
+  if (is_spherical_earth(constants)) return constants.earth_equatorial_radius_ft;
   const double f = constants.inverse_flattening;
   // atan2 rather than the printed atan(tan) so the poles need no special case; the result is
   // the same reduced latitude eta everywhere else.
@@ -68,6 +77,7 @@ Gravity j2_gravity(const Constants& constants, double radius_ft, double geocentr
 
 double oblate_radius_ft(const Constants& constants, double sin_latitude, double cos_latitude) {
   const double a = constants.earth_equatorial_radius_ft;
+  if (is_spherical_earth(constants)) return a;
   const double b = a * (constants.inverse_flattening - 1.0) / constants.inverse_flattening;
   return a * b / std::sqrt(b * b * cos_latitude * cos_latitude + a * a * sin_latitude * sin_latitude);
 }

@@ -1,13 +1,22 @@
 // Oblate Earth of manual Sec. 4: flattening 1/f (f = CT1(12) = 298.3), J2 gravity, the angle
 // between geodetic and geocentric verticals, geodetic latitude for output.
+//
+// CT1(12) = 0 means a spherical Earth (no flattening; see docs/deck-format.md).
 #pragma once
 
 #include "tolip/core/constants.hpp"
 
 namespace tolip {
 
+// CT1(12) = 0: the Earth is a sphere of radius CT1(3).
+bool is_spherical_earth(const Constants& constants);
+
+// Polar semi-axis b = R_eq (f - 1) / f; R_eq for the sphere.
+double polar_radius_ft(const Constants& constants);
+
 // Surface radius at geocentric latitude lambda_c (Sec. 4 "Oblate Earth model"):
-// eta = atan(f/(f-1) tan lambda_c), R = R_eq sqrt(cos^2 eta + ((f-1)/f)^2 sin^2 eta).
+// eta = atan(f/(f-1) tan lambda_c), R = R_eq sqrt(cos^2 eta + ((f-1)/f)^2 sin^2 eta); R_eq for
+// the sphere.
 double oblate_radius_ft(const Constants& constants, double geocentric_latitude_rad);
 
 // The same radius from the latitude's sine and cosine, in the ellipse's polar form
