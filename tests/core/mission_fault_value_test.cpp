@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <memory>
 
 #include "support/reference_mission.hpp"
@@ -66,6 +67,26 @@ TEST(MissionFaultValue, ZeroG0AndInverseFlatteningOneCarryTheirExclusiveLowerBou
   expect_value(fault, 10, "inverse_flattening", -1, 1.0);
   EXPECT_EQ(fault.range.low, 1.0);
   EXPECT_FALSE(fault.range.low_inclusive);
+}
+
+// Data block 10: CT1(12) = 0 is the spherical Earth (Sec. 4's figure turned off, issue 17); any
+// other value is 1 / flattening and must exceed 1; infinity is not a way to say "sphere".
+TEST(Sec4Earth, InverseFlatteningZeroIsAcceptedAsTheSphereAndOtherValuesAtOrBelowOneAreNot) {
+  auto mission = reference();
+  mission->constants.inverse_flattening = 0.0;
+  EXPECT_EQ(validate_mission(*mission, nullptr), Status::kOk);
+  for (double bad : {1.0, 0.5, -298.3, 1e-300}) {
+    mission = reference();
+    mission->constants.inverse_flattening = bad;
+    const MissionFault fault = fault_of(*mission, Status::kValueOutOfRange);
+    expect_value(fault, 10, "inverse_flattening", -1, bad);
+    EXPECT_EQ(fault.range.low, 1.0);
+    EXPECT_FALSE(fault.range.low_inclusive);
+    EXPECT_STREQ(fault.expected, "or 0 for a spherical Earth");
+  }
+  mission = reference();
+  mission->constants.inverse_flattening = std::numeric_limits<double>::infinity();
+  EXPECT_STREQ(fault_of(*mission, Status::kValueNotFinite).field, "inverse_flattening");
 }
 
 TEST(MissionFaultValue, LatitudeBeyondNinetyDegreesCarriesPlusMinusHalfPi) {

@@ -33,7 +33,7 @@ const std::vector<Edit>& reported_edits() {
        "stage.1.thrust.vacuum_thrust_lbf[1]", "vacuum_thrust_lbf[1] = -68199.8 lbf", "expected >= 0 lbf"},
       {"g0_ft_s2 = 32.174", "g0_ft_s2 = 0.0", 10, "constants.g0_ft_s2", "g0_ft_s2 = 0 ft/s^2", "expected > 0 ft/s^2"},
       {"inverse_flattening = 298.3", "inverse_flattening = 1.0", 10, "constants.inverse_flattening",
-       "inverse_flattening = 1", "expected > 1"},
+       "inverse_flattening = 1", "expected > 1 (or 0 for a spherical Earth)"},
       {"geocentric_latitude_deg = 37.653239661", "geocentric_latitude_deg = 95.0", 21,
        "launch.geocentric_latitude_deg", "geocentric_latitude_deg = 95 deg",
        "expected -90 <= geocentric_latitude_deg <= 90 deg"},

@@ -204,6 +204,19 @@ TEST(CardDeck, ConstantsPatchedWordByWord) {
   EXPECT_EQ(m.atmosphere.base_molecular_temperature_R[1], AtmosphereTable{}.base_molecular_temperature_R[1]);
 }
 
+// Issue 17: CT1 word 12 = 0 is the spherical Earth (docs/deck-format.md, data block 10), read
+// and validated like the TOML deck's `inverse_flattening = 0`; 1 or a negative value stay errors.
+TEST(CardDeck, Sec4Earth_InverseFlatteningZeroInCt1Word12IsTheSphere) {
+  const Parsed parsed = parse(deck_text("001000000000001000000000", " 10 12 12     SPHERICAL EARTH\n          0.\n"));
+  ASSERT_TRUE(parsed.ok) << parsed.error.to_string();
+  const Mission& m = *parsed.deck.cases[0].mission;
+  EXPECT_EQ(m.constants.inverse_flattening, 0.0);
+  EXPECT_EQ(validate_mission(m, nullptr), Status::kOk);
+  const Parsed one = parse(deck_text("001000000000001000000000", " 10 12 12\n          1.\n"));
+  ASSERT_FALSE(one.ok);
+  EXPECT_NE(one.error.to_string().find("or 0 for a spherical Earth"), std::string::npos) << one.error.to_string();
+}
+
 TEST(CardDeck, FortranNumberFormsAreRead) {
   // Blanks around a number, a leading point, exponents with E, D or only a sign (FORTRAN E input).
   const Parsed parsed = parse(deck_text("001000000000001000000000",

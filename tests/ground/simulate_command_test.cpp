@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -227,6 +228,43 @@ TEST(SimulateCommand, FailedTrajectoryStillReportsThePointsFlown) {
   EXPECT_TRUE(contains(listing.out, "TRAJECTORY TERMINATED: " + document["status"].get<std::string>()))
       << listing.out;
   EXPECT_EQ(listed_points(listing.out), static_cast<int>(flown));
+}
+
+
+// Issue 17: a deck may say the Earth is a sphere (CT1(12) inverse_flattening = 0, Sec. 4's oblate
+// figure turned off); with J2 = 0 and no rotation as well the case flies end to end, the launch
+// vertical is the geocentric one and every point's geodetic latitude is its geocentric latitude,
+// its altitude the radius less CT1(3).
+TEST(SimulateCommand, Sec4Earth_DeckWithASphericalNonRotatingEarthSimulates) {
+  ScratchDirectory scratch("simulate_sphere");
+  const std::string deck = edited_reference_deck(
+      scratch, "sphere.toml", "[constants]", "earth_rotation_rate_rad_s = 7.29211e-05", "inverse_flattening = 298.3",
+      "earth_rotation_rate_rad_s = 0.0\n"
+      "gravitational_parameter_ft3_s2 = 1.407735e+16\n"
+      "earth_equatorial_radius_ft = 20925696.0\n"
+      "j2 = 0.0\n"
+      "inverse_flattening = 0  # a spherical Earth");
+  ASSERT_FALSE(deck.empty());
+  const CommandResult result = run_tolip_executable({"simulate", deck, "--json"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const nlohmann::json document = nlohmann::json::parse(result.out);
+  EXPECT_EQ(document["status"], "kOk");
+  const nlohmann::json& points = document["trajectory"];
+  ASSERT_GT(points.size(), 100u);
+  for (const nlohmann::json& point : points) {
+    EXPECT_EQ(point["geodetic_latitude_deg"].get<double>(), point["geocentric_latitude_deg"].get<double>())
+        << point["time_s"];
+    EXPECT_NEAR(point["altitude_ft"].get<double>(), point["radius_ft"].get<double>() - 20925696.0, 1e-6)
+        << point["time_s"];
+  }
+  // The spherical Earth flies a different case from the oblate one (same deck otherwise).
+  const CommandResult oblate = run_tolip_executable({"simulate", reference_deck(), "--json"});
+  ASSERT_EQ(oblate.exit_code, 0) << oblate.err;
+  const nlohmann::json oblate_document = nlohmann::json::parse(oblate.out);
+  EXPECT_NE(oblate_document["burnout"]["altitude_ft"].get<double>(), document["burnout"]["altitude_ft"].get<double>());
+  std::printf("[ figures  ] spherical non-rotating Earth: %zu points, burnout altitude %.1f ft (oblate %.1f ft)\n",
+              points.size(), document["burnout"]["altitude_ft"].get<double>(),
+              oblate_document["burnout"]["altitude_ft"].get<double>());
 }
 
 }  // namespace

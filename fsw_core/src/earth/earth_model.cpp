@@ -7,16 +7,38 @@ namespace tolip {
 
 namespace {
 
-// Purcell-Cowan series coefficients as printed in Sec. 4.
+// Purcell-Cowan series coefficients as printed in Sec. 4 (for the flattening 1/298.3).
 constexpr double kPurcellCowanC1 = 3.372672e-3;
 constexpr double kPurcellCowanC2 = -5.6873e-6;
 
-// "6 sigma" of Sec. 4: the oblate-figure part of the deflection of the vertical.
+// "6 sigma" of Sec. 4: the oblate-figure part of the deflection of the vertical, as printed (it
+// belongs to the manual's Earth, J2 = 1.0827e-3).
 constexpr double kFigureDeflectionCoefficient = 0.001638;
+
+double purcell_cowan_geodetic_rad(double geocentric_latitude_rad) {
+  return geocentric_latitude_rad + kPurcellCowanC1 * std::sin(2.0 * geocentric_latitude_rad) +
+         kPurcellCowanC2 * std::sin(4.0 * geocentric_latitude_rad);
+}
+
+// (b / a)^2 = ((f - 1) / f)^2 of the deck's ellipsoid.
+double axis_ratio_squared(const Constants& constants) {
+  const double f = constants.inverse_flattening;
+  const double ratio = (f - 1.0) / f;
+  return ratio * ratio;
+}
 
 }  // namespace
 
+bool is_spherical_earth(const Constants& constants) { return constants.inverse_flattening == 0.0; }
+
+double polar_radius_ft(const Constants& constants) {
+  const double a = constants.earth_equatorial_radius_ft;
+  if (is_spherical_earth(constants)) return a;
+  return a * (constants.inverse_flattening - 1.0) / constants.inverse_flattening;
+}
+
 double oblate_radius_ft(const Constants& constants, double geocentric_latitude_rad) {
+  if (is_spherical_earth(constants)) return constants.earth_equatorial_radius_ft;
   const double f = constants.inverse_flattening;
   // atan2 rather than the printed atan(tan) so the poles need no special case; the result is
   // the same reduced latitude eta everywhere else.
@@ -31,12 +53,32 @@ double oblate_altitude_ft(const Constants& constants, double radius_ft, double g
   return radius_ft - oblate_radius_ft(constants, geocentric_latitude_rad);
 }
 
-double geodetic_from_geocentric_rad(double geocentric_latitude_rad) {
-  return geocentric_latitude_rad + kPurcellCowanC1 * std::sin(2.0 * geocentric_latitude_rad) +
-         kPurcellCowanC2 * std::sin(4.0 * geocentric_latitude_rad);
+bool uses_purcell_cowan_series(const Constants& constants) {
+  return constants.inverse_flattening == kManualInverseFlattening;
 }
 
-double geocentric_from_geodetic_rad(double geodetic_latitude_rad) {
+double ellipsoid_geodetic_from_geocentric_rad(const Constants& constants, double geocentric_latitude_rad) {
+  if (is_spherical_earth(constants)) return geocentric_latitude_rad;
+  // tan lambda_d = (a / b)^2 tan lambda_c, with atan2 so the poles map onto themselves.
+  return std::atan2(std::sin(geocentric_latitude_rad),
+                    axis_ratio_squared(constants) * std::cos(geocentric_latitude_rad));
+}
+
+double ellipsoid_geocentric_from_geodetic_rad(const Constants& constants, double geodetic_latitude_rad) {
+  if (is_spherical_earth(constants)) return geodetic_latitude_rad;
+  return std::atan2(axis_ratio_squared(constants) * std::sin(geodetic_latitude_rad),
+                    std::cos(geodetic_latitude_rad));
+}
+
+double geodetic_from_geocentric_rad(const Constants& constants, double geocentric_latitude_rad) {
+  if (uses_purcell_cowan_series(constants)) return purcell_cowan_geodetic_rad(geocentric_latitude_rad);
+  return ellipsoid_geodetic_from_geocentric_rad(constants, geocentric_latitude_rad);
+}
+
+double geocentric_from_geodetic_rad(const Constants& constants, double geodetic_latitude_rad) {
+  if (!uses_purcell_cowan_series(constants)) {
+    return ellipsoid_geocentric_from_geodetic_rad(constants, geodetic_latitude_rad);
+  }
   // Newton on the forward series so that the round trip is exact to round-off (the closed-form
   // ellipsoid inverse differs from the series by ~5e-4 deg, enough to shift the launch point).
   // The series' slope is 1 +- 0.007, so convergence is quadratic from the geodetic value and
@@ -44,7 +86,7 @@ double geocentric_from_geodetic_rad(double geodetic_latitude_rad) {
   constexpr int kMaxIterations = 8;
   double geocentric_rad = geodetic_latitude_rad;
   for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
-    const double residual_rad = geodetic_from_geocentric_rad(geocentric_rad) - geodetic_latitude_rad;
+    const double residual_rad = purcell_cowan_geodetic_rad(geocentric_rad) - geodetic_latitude_rad;
     const double slope = 1.0 + 2.0 * kPurcellCowanC1 * std::cos(2.0 * geocentric_rad) +
                          4.0 * kPurcellCowanC2 * std::cos(4.0 * geocentric_rad);
     const double step_rad = residual_rad / slope;
@@ -54,10 +96,15 @@ double geocentric_from_geodetic_rad(double geodetic_latitude_rad) {
   return geocentric_rad;
 }
 
+double figure_deflection_coefficient(const Constants& constants) {
+  if (constants.j2 == kManualJ2) return kFigureDeflectionCoefficient;
+  return 1.5 * constants.j2;
+}
+
 double delta_lambda_rad(const Constants& constants, double geocentric_latitude_rad, double radius_ft) {
   const double omega = constants.earth_rotation_rate_rad_s;
   const double g_ft_s2 = constants.gravitational_parameter_ft3_s2 / (radius_ft * radius_ft);
-  return (kFigureDeflectionCoefficient + omega * omega * radius_ft / (2.0 * g_ft_s2)) *
+  return (figure_deflection_coefficient(constants) + omega * omega * radius_ft / (2.0 * g_ft_s2)) *
          std::sin(2.0 * geocentric_latitude_rad);
 }
 
@@ -68,6 +115,7 @@ Gravity j2_gravity(const Constants& constants, double radius_ft, double geocentr
 
 double oblate_radius_ft(const Constants& constants, double sin_latitude, double cos_latitude) {
   const double a = constants.earth_equatorial_radius_ft;
+  if (is_spherical_earth(constants)) return a;
   const double b = a * (constants.inverse_flattening - 1.0) / constants.inverse_flattening;
   return a * b / std::sqrt(b * b * cos_latitude * cos_latitude + a * a * sin_latitude * sin_latitude);
 }

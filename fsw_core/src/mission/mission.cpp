@@ -269,7 +269,11 @@ Status check_constants(const Constants& c, const Check& check) {
                           "lbf/ft^2"));
   TOLIP_CHECK(check.range(c.haero_ft, at_least(0.0), bad, 10, 0, "haero_ft", "ft"));
   TOLIP_CHECK(check.range(c.time_epsilon_s, above(0.0), bad, 10, 0, "time_epsilon_s", "s"));
-  TOLIP_CHECK(check.range(c.inverse_flattening, above(1.0), bad, 10, 0, "inverse_flattening", ""));
+  // CT1(12) = 0 is the spherical Earth (no flattening); any other value is 1 / flattening.
+  if (c.inverse_flattening != 0.0 && !within(c.inverse_flattening, above(1.0))) {
+    return check.fail(bad, 10, 0, "inverse_flattening", -1, c.inverse_flattening, "", above(1.0),
+                      "or 0 for a spherical Earth");
+  }
   return Status::kOk;
 }
 

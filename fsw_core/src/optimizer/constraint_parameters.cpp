@@ -354,9 +354,9 @@ Status decode_constraint_code(int code, ConstraintCode* out) {
 double oblate_radius_latitude_derivative_ft_per_rad(const Constants& constants,
                                                     double geocentric_latitude_rad) {
   // R = a b / sqrt(b^2 cos^2 + a^2 sin^2), b = a (f - 1)/f (equal to the manual's eta form), so
-  // dR/dlambda = -R^3 (a^2 - b^2) sin lambda cos lambda / (a^2 b^2).
+  // dR/dlambda = -R^3 (a^2 - b^2) sin lambda cos lambda / (a^2 b^2); 0 on the sphere (b = a).
   const double a = constants.earth_equatorial_radius_ft;
-  const double b = a * (constants.inverse_flattening - 1.0) / constants.inverse_flattening;
+  const double b = polar_radius_ft(constants);
   const double radius = oblate_radius_ft(constants, geocentric_latitude_rad);
   return -radius * radius * radius * (a * a - b * b) * std::sin(geocentric_latitude_rad) *
          std::cos(geocentric_latitude_rad) / (a * a * b * b);

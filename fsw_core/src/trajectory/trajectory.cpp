@@ -153,7 +153,7 @@ Status Flight::record(const StageContext& stage, double t, const StateVector& st
   p.altitude_ft = eval.altitude_ft;
   p.earth_longitude_rad =
       std::remainder(state[kStateTau] - constants.earth_rotation_rate_rad_s * t, 2.0 * kPi);
-  p.geodetic_latitude_rad = geodetic_from_geocentric_rad(state[kStateLambda]);
+  p.geodetic_latitude_rad = geodetic_from_geocentric_rad(constants, state[kStateLambda]);
   p.weight_lb = eval.weight_lb;
   p.vacuum_thrust_lbf = eval.vacuum_thrust_lbf;
   p.net_thrust_lbf = eval.net_thrust_lbf;
