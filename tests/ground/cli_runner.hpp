@@ -121,6 +121,18 @@ inline CommandResult run_tolip_bounded(const std::vector<std::string>& arguments
   return run_capturing("sh -c " + shell_quote(command), err_path);
 }
 
+// stderr without the "tolip: warning: " lines of inputs read but not acted on (the bundled example
+// asks for analyses this version does not compute; tolip_ground/unused_inputs.hpp).
+inline std::string without_input_warnings(const std::string& err) {
+  std::string kept;
+  std::istringstream lines(err);
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("tolip: warning: ", 0) != 0) kept += line + "\n";
+  }
+  if (!err.empty() && err.back() != '\n' && !kept.empty()) kept.pop_back();
+  return kept;
+}
+
 // The bundled example deck examples/scout/mission.toml with each `from` replaced by its `to` (each
 // must occur; a missing one fails the calling test), written as `name` into the scratch folder.
 inline std::string edited_example_deck(const ScratchDirectory& scratch, const std::string& name,

@@ -18,6 +18,7 @@
 #include "tolip_ground/guidance_table.hpp"
 #include "tolip_ground/optimization_run.hpp"
 #include "tolip_ground/table_commands.hpp"
+#include "tolip_ground/unused_inputs.hpp"
 
 namespace tolip::ground {
 namespace {
@@ -94,6 +95,7 @@ int run_export_command(const ExportCommandOptions& options, std::ostream& out, s
     err << "tolip: " << deck_error.to_string() << '\n';
     return kExitBadInput;
   }
+  print_input_warnings(err, options.deck_path, 1, 1, unused_inputs(*mission, *extras));
   auto prepared = std::make_unique<PreparedCase>();
   const Status prepare = prepare_case(*mission, prepared.get());
   if (!ok(prepare)) {

@@ -23,6 +23,7 @@
 #include "tolip_ground/optimization_run.hpp"
 #include "tolip_ground/progress.hpp"
 #include "tolip_ground/report.hpp"
+#include "tolip_ground/unused_inputs.hpp"
 
 namespace tolip::ground {
 namespace {
@@ -170,6 +171,11 @@ int run_optimize_command(const OptimizeCommandOptions& options, std::ostream& ou
   if (std::string csv_error; !csv_spares_the_deck(options.csv_path, options.deck_path, cases, &csv_error)) {
     err << "tolip: " << csv_error << '\n';
     return kExitBadInput;
+  }
+  // Inputs read but not acted on are named, never dropped (tolip_ground/unused_inputs.hpp).
+  for (const DeckCase& deck_case : deck.cases) {
+    print_input_warnings(err, options.deck_path, deck_case.number, static_cast<int>(cases),
+                         unused_inputs(*deck_case.mission, deck_case.extras));
   }
 
   ProgressLine progress(err, progress_enabled(options.progress));

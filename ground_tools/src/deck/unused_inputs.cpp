@@ -1,0 +1,84 @@
+// Inputs read but not acted on (tolip_ground/unused_inputs.hpp).
+#include "tolip_ground/unused_inputs.hpp"
+
+namespace tolip::ground {
+
+std::vector<InputWarning> unused_inputs(const Mission& mission, const DeckExtras& extras) {
+  std::vector<InputWarning> out;
+  const Options& o = mission.options;
+  const auto warn = [&out](int block, const char* word, const char* field, std::string message) {
+    out.push_back(InputWarning{block, word, field, std::move(message)});
+  };
+  // Data block 4: options of analyses this version does not compute yet, and the 1966 dump.
+  if (o.stage5_chi() != 0) {
+    warn(4, "IP(10)", "options.stage5_chi",
+         "the stage-5 yaw option = " + std::to_string(o.stage5_chi()) +
+             " has no effect: stage 5 holds the attitudes of data block 17 as IP(9) says");
+  }
+  if (o.ip[15] != 0) {
+    warn(4, "IP(15)", "options.memory_dump", "the core-memory dump of the 1966 program has no counterpart: ignored");
+  }
+  const struct {
+    bool requested;
+    const char* word;
+    const char* field;
+    const char* what;
+  } analyses[] = {
+      {o.dispersions(), "IP(21)", "options.dispersions", "dispersions (Sec. 15, data blocks 46-55)"},
+      {o.hardover(), "IP(22)", "options.hardover", "hardover turns (Sec. 16, data blocks 44-45)"},
+      {o.impact(), "IP(23)", "options.impact", "the impact locus (Sec. 17, data blocks 42-43)"},
+      {o.radar(), "IP(24)", "options.radar", "radar tracking (Sec. 18, data block 41)"},
+  };
+  for (const auto& a : analyses) {
+    if (a.requested) {
+      warn(4, a.word, a.field,
+           std::string(a.what) + " asked for but not computed by this version; the data blocks are read and checked");
+    }
+  }
+  // Data block 9: only the final trajectory is listed.
+  for (int i = 0; i < kMaxStages; ++i) {
+    if (mission.output.initial[i] != 1 || mission.output.intermediate[i] != 1) {
+      warn(9, "initial and intermediate print frequencies", "output_frequency.initial/intermediate",
+           "only the final trajectory is listed (data block 9's third word per stage); the others have no effect");
+      break;
+    }
+  }
+  // Data block 10: CT1(13) has no use in the equations this version integrates.
+  if (mission.constants.ct1_13 != 1.0) {
+    warn(10, "CT1(13)", "constants.ct1_13", "has no effect in this version");
+  }
+  // Data block 17: the platform frame is fixed at lift-off here (the launch matrices), not at uncage.
+  if (mission.misc.gyro_uncage_s_before_launch != 0.0) {
+    warn(17, "DA2(8)", "misc.gyro_uncage_s_before_launch",
+         "the gyro uncage time has no effect: the platform frame is aligned at lift-off in this version "
+         "(uncaging DA2(8) s earlier would turn it by the Earth's rotation in that time)");
+  }
+  // Data block 33: 6D steps are the point-mass steps; the impact step rate waits for the analysis.
+  const BodyDynamicsData& bd = extras.body_dynamics;
+  for (double multiplier : bd.integration_frequency_multiplier) {
+    if (multiplier != 1.0) {
+      warn(33, "DA6D(12-15)", "body_dynamics.integration_frequency_multiplier",
+           "6D steps are the stage's point-mass steps: the integration frequency multipliers have no effect");
+      break;
+    }
+  }
+  for (int every : bd.impact_every_nth_step) {
+    if (every != 1) {
+      warn(33, "DA6D(17-19)", "body_dynamics.impact_every_nth_step",
+           "the impact locus is not computed by this version: the step rate has no effect");
+      break;
+    }
+  }
+  return out;
+}
+
+void print_input_warnings(std::ostream& err, const std::string& deck_path, int case_number, int case_count,
+                          const std::vector<InputWarning>& warnings) {
+  for (const InputWarning& w : warnings) {
+    err << "tolip: warning: " << deck_path;
+    if (case_count > 1) err << ": case " << case_number;
+    err << ": data block " << w.data_block << ", " << w.word << " (" << w.field << "): " << w.message << '\n';
+  }
+}
+
+}  // namespace tolip::ground
