@@ -9,6 +9,8 @@
 
 #include <cmath>
 
+#include "tolip/mission/adjustable_parameter.hpp"
+
 namespace tolip {
 namespace {
 
@@ -151,9 +153,7 @@ bool known_constraint_code(int code) {
   return code >= 100 && code <= 102;
 }
 
-bool coast_adjustable_code(int code) {
-  return code == 3 || code == 4 || code == 5 || code == 10 || code == 11;
-}
+bool coast_adjustable_code(int code) { return adjusted_coast_stage_code(code) != 0; }
 
 int position_in_sequence(const StageSequence& sequence, int code) {
   for (int k = 0; k < sequence.count; ++k) {
@@ -652,12 +652,7 @@ Status check_adjustable(const AdjustableParameters& a, const Vehicle& vehicle, c
       }
     }
     // A coast length (codes 5, 4, 3, 10, 11: coasts 6, 7, 8, 9, 10) needs that coast flown.
-    int coast = 0;
-    if (code == 5) coast = 6;
-    if (code == 4) coast = 7;
-    if (code == 3) coast = 8;
-    if (code == 10) coast = 9;
-    if (code == 11) coast = 10;
+    const int coast = adjusted_coast_stage_code(code);
     if (coast != 0 && !vehicle.stages[stage_index(coast)].in_sequence) {
       return check.fail(Status::kAdjustableCoastNotInSequence, 6, coast, "codes", i, code, "", ValueRange{},
                         "a coast-length code only for a coast of the stage sequence (data block 5)");

@@ -7,6 +7,7 @@
 
 #include "tolip/atmosphere/atmosphere.hpp"
 #include "tolip/earth/earth_model.hpp"
+#include "tolip/mission/adjustable_parameter.hpp"
 #include "tolip/optimizer/constraint_parameters.hpp"
 
 namespace tolip {
@@ -30,7 +31,7 @@ struct Problem {
   bool payload_is_control = false;
   double payload_weight = 1.0;         // DA2(15)
   int adjustable_count = 0;
-  int adjustable_codes[kMaxAdjustableParameters] = {};
+  AdjustableParameter adjustable[kMaxAdjustableParameters] = {};
   double adjustable_weight[kMaxAdjustableParameters] = {};
   bool adjustable_active[kMaxAdjustableParameters] = {};
   // Inequalities (achieved <= desired): total heating (IP(2), Sec. 13) and dynamic pressure under
@@ -41,18 +42,6 @@ struct Problem {
   double heating_limit_btu_ft2 = 0.0;
   double heating_deadband_btu_ft2 = 0.0;
 };
-
-// Coast stage code of a coast-length adjustable parameter (Sec. 9 table), 0 if not a coast.
-int coast_of_parameter(int code) {
-  switch (code) {
-    case 3: return 8;
-    case 4: return 7;
-    case 5: return 6;
-    case 10: return 9;
-    case 11: return 10;
-    default: return 0;
-  }
-}
 
 Status make_problem(const Mission& mission, Problem* problem) {
   const ConstraintList& list = mission.constraints;
@@ -89,16 +78,16 @@ Status make_problem(const Mission& mission, Problem* problem) {
 
   problem->adjustable_count = mission.adjustable.count;
   for (int p = 0; p < mission.adjustable.count; ++p) {
-    const int code = mission.adjustable.codes[p];
-    const bool supported = code == 1 || code == 2 || code == 6 || code == 7 || code == 8 || code == 9 ||
-                           coast_of_parameter(code) != 0;
-    if (!supported) return Status::kAdjustableParameterNotSupported;
+    AdjustableParameter parameter = AdjustableParameter::kStage4Theta;
+    if (!decode_adjustable_parameter(mission.adjustable.codes[p], &parameter)) {
+      return Status::kAdjustableParameterNotSupported;
+    }
     // A coast left out of the sequence (powered stages back to back) has no length to adjust.
-    const int coast = coast_of_parameter(code);
+    const int coast = adjusted_coast_stage_code(parameter);
     if (coast != 0 && !mission.vehicle.stages[stage_index(coast)].in_sequence) {
       return Status::kAdjustableCoastNotInSequence;
     }
-    problem->adjustable_codes[p] = code;
+    problem->adjustable[p] = parameter;
     problem->adjustable_weight[p] = mission.adjustable.weights[p];
     problem->adjustable_active[p] = true;
   }
@@ -186,12 +175,15 @@ struct LaunchColumns {
 // Sensitivity column of adjustable parameter p.
 ConstraintVector parameter_column(const Problem& problem, const BackwardRun& backward,
                                   const LaunchColumns& launch, int p) {
-  const int code = problem.adjustable_codes[p];
-  if (code == 1 || code == 8) return backward.spun_theta;
-  if (code == 2 || code == 9) return backward.spun_chi;
-  if (code == 6) return launch.azimuth;
-  if (code == 7) return launch.launch_time;
-  return backward.coast_duration[stage_index(coast_of_parameter(code))];
+  switch (problem.adjustable[p]) {
+    case AdjustableParameter::kStage4Theta:
+    case AdjustableParameter::kStage5Theta: return backward.spun_theta;
+    case AdjustableParameter::kStage4Chi:
+    case AdjustableParameter::kStage5Chi: return backward.spun_chi;
+    case AdjustableParameter::kLaunchAzimuth: return launch.azimuth;
+    case AdjustableParameter::kLaunchTime: return launch.launch_time;
+    default: return backward.coast_duration[stage_index(adjusted_coast_stage_code(problem.adjustable[p]))];
+  }
 }
 
 struct Steering {
@@ -520,7 +512,7 @@ Status Iteration::launch_sensitivities() {
   launch_columns_ = LaunchColumns();
   bool azimuth = false;
   for (int p = 0; p < problem_.adjustable_count; ++p) {
-    if (problem_.adjustable_codes[p] == 6) azimuth = problem_.adjustable_active[p];
+    if (problem_.adjustable[p] == AdjustableParameter::kLaunchAzimuth) azimuth = problem_.adjustable_active[p];
   }
   for (int i = 0; i < problem_.constraint_count; ++i) {
     launch_columns_.launch_time(i) = constraint_partial_wrt_launch_time(problem_.codes[i]);
@@ -585,20 +577,20 @@ Status Iteration::fly_candidate(const Steering& steering, const ConstraintVector
     if (!problem_.adjustable_active[p]) continue;
     const double change = scaled(problem_, parameter_column(problem_, b, launch_columns_, p), steering.first).dot(nu) /
                           problem_.adjustable_weight[p];
-    const int code = problem_.adjustable_codes[p];
-    switch (code) {
-      case 1: m.misc.stage4_theta_rad += change; break;
-      case 2: m.misc.stage4_chi_rad += change; break;
-      case 8: m.misc.stage5_theta_rad += change; break;
-      case 9: m.misc.stage5_chi_rad += change; break;
-      case 6:
+    const AdjustableParameter parameter = problem_.adjustable[p];
+    switch (parameter) {
+      case AdjustableParameter::kStage4Theta: m.misc.stage4_theta_rad += change; break;
+      case AdjustableParameter::kStage4Chi: m.misc.stage4_chi_rad += change; break;
+      case AdjustableParameter::kStage5Theta: m.misc.stage5_theta_rad += change; break;
+      case AdjustableParameter::kStage5Chi: m.misc.stage5_chi_rad += change; break;
+      case AdjustableParameter::kLaunchAzimuth:
         m.launch.azimuth_rad += change;
         launch_changed = true;
         break;
-      case 7: m.launch.launch_space_age_date_days += change / 86400.0; break;
+      case AdjustableParameter::kLaunchTime: m.launch.launch_space_age_date_days += change / 86400.0; break;
       default: {
         // Coast lengths: at most DA2(16) per iteration, never below DA2(17) (Sec. 9).
-        StageData& coast = m.vehicle.stages[stage_index(coast_of_parameter(code))];
+        StageData& coast = m.vehicle.stages[stage_index(adjusted_coast_stage_code(parameter))];
         const double limit = m.misc.coast_change_limit_s;
         const double bounded = (limit > 0.0) ? std::fmax(-limit, std::fmin(limit, change)) : change;
         const double minimum = std::fmax(m.misc.minimum_coast_s, 1e-3 * coast.integration_steps);
@@ -748,15 +740,21 @@ Status Iteration::run(const Mission& input) {
   result_->payload_lb = ws_->mission.vehicle.payload_lb;
   result_->adjustable_count = problem_.adjustable_count;
   for (int p = 0; p < problem_.adjustable_count; ++p) {
-    const int code = problem_.adjustable_codes[p];
-    result_->adjustable_codes[p] = code;
+    const AdjustableParameter parameter = problem_.adjustable[p];
+    result_->adjustable_codes[p] = adjustable_parameter_code(parameter);
     const MiscellaneousData& misc = ws_->mission.misc;
     const LaunchConditions& launch = ws_->mission.launch;
-    result_->adjustable_values[p] =
-        code == 1 ? misc.stage4_theta_rad : code == 2 ? misc.stage4_chi_rad :
-        code == 8 ? misc.stage5_theta_rad : code == 9 ? misc.stage5_chi_rad :
-        code == 6 ? launch.azimuth_rad : code == 7 ? launch.launch_space_age_date_days :
-        ws_->mission.vehicle.stages[stage_index(coast_of_parameter(code))].duration_s;
+    double value = 0.0;
+    switch (parameter) {
+      case AdjustableParameter::kStage4Theta: value = misc.stage4_theta_rad; break;
+      case AdjustableParameter::kStage4Chi: value = misc.stage4_chi_rad; break;
+      case AdjustableParameter::kStage5Theta: value = misc.stage5_theta_rad; break;
+      case AdjustableParameter::kStage5Chi: value = misc.stage5_chi_rad; break;
+      case AdjustableParameter::kLaunchAzimuth: value = launch.azimuth_rad; break;
+      case AdjustableParameter::kLaunchTime: value = launch.launch_space_age_date_days; break;
+      default: value = ws_->mission.vehicle.stages[stage_index(adjusted_coast_stage_code(parameter))].duration_s; break;
+    }
+    result_->adjustable_values[p] = value;
   }
   if (!guidance_converged) return Status::kGuidanceDidNotConverge;
   if (result_->optimization_runs == 0) return Status::kOptimizationNotStarted;

@@ -14,6 +14,7 @@
 #include "tolip/atmosphere/atmosphere.hpp"
 #include "tolip/core/constants.hpp"
 #include "tolip/earth/earth_model.hpp"
+#include "tolip/mission/adjustable_parameter.hpp"
 #include "tolip/optimizer/constraint_parameters.hpp"
 #include "tolip_ground/optimization_report.hpp"
 
@@ -104,22 +105,16 @@ bool result_complete(const OptimizationReport& report) {
 // `launch_day` is the space-age date (days) of 0h UT of the deck's launch day (code 7).
 double adjustable_value(const Mission& mission, int code, double launch_day) {
   const MiscellaneousData& misc = mission.misc;
-  const auto coast = [&mission](int stage_code) {
-    return mission.vehicle.stages[stage_index(stage_code)].duration_s;
-  };
-  switch (code) {
-    case 1: return misc.stage4_theta_rad * kRadToDeg;
-    case 2: return misc.stage4_chi_rad * kRadToDeg;
-    case 3: return coast(8);
-    case 4: return coast(7);
-    case 5: return coast(6);
-    case 6: return mission.launch.azimuth_rad * kRadToDeg;
-    case 7: return (mission.launch.launch_space_age_date_days - launch_day) * 86400.0;
-    case 8: return misc.stage5_theta_rad * kRadToDeg;
-    case 9: return misc.stage5_chi_rad * kRadToDeg;
-    case 10: return coast(9);
-    case 11: return coast(10);
-    default: return kNaN;
+  AdjustableParameter parameter = AdjustableParameter::kStage4Theta;
+  if (!decode_adjustable_parameter(code, &parameter)) return kNaN;
+  switch (parameter) {
+    case AdjustableParameter::kStage4Theta: return misc.stage4_theta_rad * kRadToDeg;
+    case AdjustableParameter::kStage4Chi: return misc.stage4_chi_rad * kRadToDeg;
+    case AdjustableParameter::kLaunchAzimuth: return mission.launch.azimuth_rad * kRadToDeg;
+    case AdjustableParameter::kLaunchTime: return (mission.launch.launch_space_age_date_days - launch_day) * 86400.0;
+    case AdjustableParameter::kStage5Theta: return misc.stage5_theta_rad * kRadToDeg;
+    case AdjustableParameter::kStage5Chi: return misc.stage5_chi_rad * kRadToDeg;
+    default: return mission.vehicle.stages[stage_index(adjusted_coast_stage_code(parameter))].duration_s;
   }
 }
 
@@ -130,20 +125,22 @@ struct ParameterText {
 };
 
 ParameterText parameter_text(int code) {
-  switch (code) {
-    case 1: return {"stage4_theta", "STAGE 4 THETA (SPUN)", "deg"};
-    case 2: return {"stage4_chi", "STAGE 4 CHI (SPUN)", "deg"};
-    case 3: return {"coast_after_stage_3", "COAST AFTER STAGE 3", "s"};
-    case 4: return {"coast_after_stage_2", "COAST AFTER STAGE 2", "s"};
-    case 5: return {"coast_after_stage_1", "COAST AFTER STAGE 1", "s"};
-    case 6: return {"launch_azimuth", "LAUNCH AZIMUTH", "deg"};
-    case 7: return {"launch_time", "LAUNCH TIME (UT)", "s"};
-    case 8: return {"stage5_theta", "STAGE 5 THETA (SPUN)", "deg"};
-    case 9: return {"stage5_chi", "STAGE 5 CHI (SPUN)", "deg"};
-    case 10: return {"coast_after_stage_4", "COAST AFTER STAGE 4", "s"};
-    case 11: return {"coast_after_stage_5", "COAST AFTER STAGE 5", "s"};
-    default: return {"unknown", "UNKNOWN", ""};
+  AdjustableParameter parameter = AdjustableParameter::kStage4Theta;
+  if (!decode_adjustable_parameter(code, &parameter)) return {"unknown", "UNKNOWN", ""};
+  switch (parameter) {
+    case AdjustableParameter::kStage4Theta: return {"stage4_theta", "STAGE 4 THETA (SPUN)", "deg"};
+    case AdjustableParameter::kStage4Chi: return {"stage4_chi", "STAGE 4 CHI (SPUN)", "deg"};
+    case AdjustableParameter::kCoastAfterStage3: return {"coast_after_stage_3", "COAST AFTER STAGE 3", "s"};
+    case AdjustableParameter::kCoastAfterStage2: return {"coast_after_stage_2", "COAST AFTER STAGE 2", "s"};
+    case AdjustableParameter::kCoastAfterStage1: return {"coast_after_stage_1", "COAST AFTER STAGE 1", "s"};
+    case AdjustableParameter::kLaunchAzimuth: return {"launch_azimuth", "LAUNCH AZIMUTH", "deg"};
+    case AdjustableParameter::kLaunchTime: return {"launch_time", "LAUNCH TIME (UT)", "s"};
+    case AdjustableParameter::kStage5Theta: return {"stage5_theta", "STAGE 5 THETA (SPUN)", "deg"};
+    case AdjustableParameter::kStage5Chi: return {"stage5_chi", "STAGE 5 CHI (SPUN)", "deg"};
+    case AdjustableParameter::kCoastAfterStage4: return {"coast_after_stage_4", "COAST AFTER STAGE 4", "s"};
+    case AdjustableParameter::kCoastAfterStage5: return {"coast_after_stage_5", "COAST AFTER STAGE 5", "s"};
   }
+  return {"unknown", "UNKNOWN", ""};
 }
 
 // ---- listing helpers -------------------------------------------------------------------------
