@@ -220,7 +220,7 @@ void BackwardSweep::attribute_theta(const StepRecord& step, const ConstraintVect
   const StepCommand& c = step.command;
   if (c.mode == AttitudeMode::kHeld) {
     const int code = prepared_.timeline[step.stage_slot].code;
-    if (code == 4 || code == 5 || code == 9 || code == 10) out_->spun_theta.head(count_) += start.head(count_) + end.head(count_);
+    if (mission_.options.stage_is_spun(code)) out_->spun_theta.head(count_) += start.head(count_) + end.head(count_);
     return;
   }
   if (c.mode != AttitudeMode::kLinear) return;

@@ -383,7 +383,7 @@ bool meets_rate_limits(const Mission& mission, double coast_rate_after_last, con
 double coast_rate_after_program(const Mission& mission, const PreparedCase& prepared, const LinearProgram& p) {
   for (int k = 0; k < prepared.stage_count; ++k) {
     const StageTimeline& line = prepared.timeline[k];
-    if (line.code == 8 && mission.options.spin_stages_4_5() == 1 && line.duration_s > 0.0) {
+    if (line.code == 8 && mission.options.stage_is_spun(4) && line.duration_s > 0.0) {
       return (mission.misc.stage4_theta_rad - p.theta_rad[p.segment_count]) / line.duration_s;
     }
   }
@@ -455,8 +455,8 @@ Status linearize_pitch_program(const OptimizerWorkspace& optimized, Linearizatio
   // The optimized case, flown without the zero-alpha window and without the in-flight alpha = 0
   // attitude at stage-2 ignition: both become fixed values of the linear program.
   ws->mission = optimized.mission;
-  ws->mission.options.ip[11] = 0;
-  ws->mission.options.ip[12] = 0;
+  ws->mission.options.set_zero_alpha_window(false);
+  ws->mission.options.set_alpha_zero_at_stage2_ignition(false);
   ws->prepared = optimized.prepared;
   const Trajectory& optimum_trajectory = optimized.nominal;
   ws->optimum.point_count = optimum_trajectory.point_count;

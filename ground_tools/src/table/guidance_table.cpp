@@ -123,12 +123,12 @@ bool build_guidance_table(const Mission& mission, const DeckExtras& extras, cons
   const int spin = mission.options.spin_stages_4_5();
   const bool stage4_flown = in_sequence(mission, 4) || in_sequence(mission, 9);
   const bool stage5_flown = in_sequence(mission, 5) || in_sequence(mission, 10);
-  if (stage4_flown && spin != 1) {
+  if (stage4_flown && !mission.options.stage_is_spun(4)) {
     return fail("data block 4, field options.spin_stages_4_5 (IP(9)) = " + std::to_string(spin) +
                 ": stage 4 flies continuous control, which the table image (segments in stages 1-3 and "
                 "coasts 6-8 only) cannot carry; IP(9) = 1 (stages 4 and 5 spun) is required");
   }
-  if (stage5_flown && spin != 1 && spin != 2) {
+  if (stage5_flown && !mission.options.stage_is_spun(5)) {
     return fail("data block 4, field options.spin_stages_4_5 (IP(9)) = " + std::to_string(spin) +
                 ": stage 5 flies continuous control, which the table image cannot carry");
   }

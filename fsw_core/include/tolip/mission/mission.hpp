@@ -80,6 +80,18 @@ struct Options {
   bool hardover() const { return ip[22] == 1; }
   bool impact() const { return ip[23] == 1; }
   bool radar() const { return ip[24] == 1; }
+  // IP(9), the one rule of which stages are spun (Sec. 22: 1 stages 4 and 5 spun; 2 stage 4
+  // continuous and stage 5 spun; 3 both continuous): a spun stage, and the coast after it (9, 10),
+  // holds the data block 17 attitudes.
+  bool stage_is_spun(int stage_code) const {
+    const int spin = spin_stages_4_5();
+    if (stage_code == 4 || stage_code == 9) return spin == 1;
+    if (stage_code == 5 || stage_code == 10) return spin == 1 || spin == 2;
+    return false;
+  }
+  // The linearization flies the optimized case without the in-flight attitudes (IP(11), IP(12)).
+  void set_zero_alpha_window(bool on) { ip[11] = on ? 1 : 0; }
+  void set_alpha_zero_at_stage2_ignition(bool on) { ip[12] = on ? 1 : 0; }
 };
 
 // Data blocks 20 and 21 (angles in rad).
