@@ -20,23 +20,25 @@ clone="$parent/tolip"
 mkdir "$clone"
 
 cd "$root"
-if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then
+if command -v git >/dev/null 2>&1 && git rev-parse --is-inside-work-tree >/dev/null 2>&1; then
   git ls-files -co --exclude-standard -z | while IFS= read -r -d '' f; do [[ -e "$f" ]] && printf '%s\0' "$f"; done |
     tar --null -T - -cf - | tar -C "$clone" -xf -
 else
   tar --exclude='./build*' --exclude='./.git' -cf - . | tar -C "$clone" -xf -
 fi
 cd "$clone"
-git init -q
-git add -A
-git -c user.name=clean-clone -c user.email=clean-clone@localhost commit -q -m "clean clone" >/dev/null
+if command -v git >/dev/null 2>&1; then  # a user's clone is a git repository; the build does not need one
+  git init -q
+  git add -A
+  git -c user.name=clean-clone -c user.email=clean-clone@localhost commit -q -m "clean clone" >/dev/null
+fi
 
 beside=$(ls -A "$parent")
 if [[ "$beside" != "tolip" ]]; then
   echo "error: the clone's folder holds more than the clone: $beside" >&2
   exit 1
 fi
-echo "-- clean clone of $(git ls-files | wc -l) files in $clone (nothing beside it); running scripts/test.sh"
+echo "-- clean copy of $(find . -type f -not -path './.git/*' | wc -l) files in $clone (nothing beside it); running scripts/test.sh"
 start=$(date +%s)
 TOLIP_IN_CLEAN_CLONE=1 TOLIP_BUILD_DIR="$clone/build" scripts/test.sh
 echo "-- clean clone passed scripts/test.sh in $(( $(date +%s) - start )) s"
