@@ -5,8 +5,8 @@
 
 #include <cmath>
 #include <cstdio>
-#include <functional>
 
+#include "support/adjoint_check.hpp"
 #include "support/reference_mission.hpp"
 #include "tolip/earth/earth_model.hpp"
 #include "tolip/optimizer/backward_run.hpp"
@@ -15,22 +15,10 @@
 namespace tolip {
 namespace {
 
-// The terminal quantities of the reference mission (data block 8 codes 7, 2, 3) and the final
-// velocity, flight-path angle and longitude, as functions of the final state.
-constexpr int kTerminalCount = 6;
-const char* const kTerminalNames[kTerminalCount] = {"altitude", "gamma_I", "V_I - V_circ", "V", "psi", "tau"};
-
-double terminal(const Constants& k, const StateVector& x, int which) {
-  const InertialVelocity iv = inertial_velocity(k, x);
-  switch (which) {
-    case 0: return x[kStateR] - oblate_radius_ft(k, x[kStateLambda]);
-    case 1: return iv.flight_path_angle_rad;
-    case 2: return iv.velocity_ft_s - std::sqrt(k.gravitational_parameter_ft3_s2 / x[kStateR]);
-    case 3: return x[kStateV];
-    case 4: return x[kStatePsi];
-    default: return x[kStateTau];
-  }
-}
+using test::expect_agreement;
+using test::kTerminalCount;
+using test::kTerminalNames;
+using test::terminal;
 
 struct Fixture {
   Mission mission;
@@ -49,20 +37,8 @@ Fixture& fixture() {
     EXPECT_EQ(fly_trajectory(fx.mission, fx.prepared, &fx.nominal), Status::kOk);
     fx.program.point_count = fx.nominal.point_count;
     for (int i = 0; i < fx.nominal.point_count; ++i) fx.program.theta_rad[i] = fx.nominal.points[i].theta_rad;
-    // The terminals' partials by central differences of the functions above.
     ConstraintTerminal terminals[kTerminalCount];
-    const StateVector xf = fx.nominal.final_point().state;
-    const double steps[6] = {1e-3, 1e-8, 1e-2, 1e-8, 1e-8, 1e-8};
-    for (int j = 0; j < kTerminalCount; ++j) {
-      terminals[j].point = fx.nominal.point_count - 1;
-      for (int i = 0; i < 6; ++i) {
-        StateVector xp = xf, xm = xf;
-        xp[i] += steps[i];
-        xm[i] -= steps[i];
-        terminals[j].partials[i] =
-            (terminal(fx.mission.constants, xp, j) - terminal(fx.mission.constants, xm, j)) / (2.0 * steps[i]);
-      }
-    }
+    test::terminal_partials(fx.mission.constants, fx.nominal, terminals);
     EXPECT_EQ(run_backward(fx.mission, fx.prepared, fx.nominal, kTerminalCount, terminals, &fx.backward),
               Status::kOk);
     return &fx;
@@ -70,25 +46,11 @@ Fixture& fixture() {
   return *f;
 }
 
-// Central difference of every terminal quantity for a change applied by `apply(sign)`.
-void central_difference(const std::function<Status(double sign, Trajectory*)>& fly, double out[kTerminalCount]) {
+// Central difference of every terminal quantity for a change flown by `fly(sign, perturbed)`.
+template <typename Fly>
+void central_difference(const Fly& fly, double out[kTerminalCount]) {
   Fixture& f = fixture();
-  double plus[kTerminalCount], minus[kTerminalCount];
-  ASSERT_EQ(fly(+1.0, &f.perturbed), Status::kOk);
-  for (int j = 0; j < kTerminalCount; ++j) plus[j] = terminal(f.mission.constants, f.perturbed.final_point().state, j);
-  ASSERT_EQ(fly(-1.0, &f.perturbed), Status::kOk);
-  for (int j = 0; j < kTerminalCount; ++j) minus[j] = terminal(f.mission.constants, f.perturbed.final_point().state, j);
-  for (int j = 0; j < kTerminalCount; ++j) out[j] = (plus[j] - minus[j]) / 2.0;
-}
-
-// |predicted - fd| within 1% of the largest sensitivity magnitude in this family, per quantity.
-void expect_agreement(const char* what, const double predicted[kTerminalCount], const double fd[kTerminalCount]) {
-  for (int j = 0; j < kTerminalCount; ++j) {
-    const double error = std::fabs(predicted[j] - fd[j]);
-    std::printf("%-28s %-14s adjoint % .6e  fd % .6e  rel %.1e\n", what, kTerminalNames[j], predicted[j], fd[j],
-                error / std::fmax(std::fabs(fd[j]), 1e-300));
-    EXPECT_LE(error, 0.01 * std::fabs(fd[j]) + 1e-12) << what << " " << kTerminalNames[j];
-  }
+  test::central_difference(f.mission.constants, fly, &f.perturbed, out);
 }
 
 TEST(Sec5Adjoint, StatePerturbationsAtSeveralTimesMatchCentralDifferences) {

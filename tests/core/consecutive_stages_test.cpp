@@ -8,9 +8,9 @@
 
 #include <cmath>
 #include <cstdio>
-#include <functional>
 #include <string>
 
+#include "support/adjoint_check.hpp"
 #include "support/reference_mission.hpp"
 #include "tolip/earth/earth_model.hpp"
 #include "tolip/optimizer/backward_run.hpp"
@@ -60,35 +60,11 @@ void drop_repeated_staging_instants(Mission* mission) {
   }
 }
 
-constexpr int kTerminalCount = 6;
-const char* const kTerminalNames[kTerminalCount] = {"altitude", "gamma_I", "V_I - V_circ", "V", "psi", "tau"};
-
-double terminal(const Constants& k, const StateVector& x, int which) {
-  const InertialVelocity iv = inertial_velocity(k, x);
-  switch (which) {
-    case 0: return x[kStateR] - oblate_radius_ft(k, x[kStateLambda]);
-    case 1: return iv.flight_path_angle_rad;
-    case 2: return iv.velocity_ft_s - std::sqrt(k.gravitational_parameter_ft3_s2 / x[kStateR]);
-    case 3: return x[kStateV];
-    case 4: return x[kStatePsi];
-    default: return x[kStateTau];
-  }
-}
-
-// The final-state partials of the terminal quantities, by central differences.
-void terminal_partials(const Constants& k, const Trajectory& t, ConstraintTerminal terminals[kTerminalCount]) {
-  const StateVector xf = t.final_point().state;
-  const double steps[6] = {1e-3, 1e-8, 1e-2, 1e-8, 1e-8, 1e-8};
-  for (int j = 0; j < kTerminalCount; ++j) {
-    terminals[j].point = t.point_count - 1;
-    for (int i = 0; i < 6; ++i) {
-      StateVector xp = xf, xm = xf;
-      xp[i] += steps[i];
-      xm[i] -= steps[i];
-      terminals[j].partials[i] = (terminal(k, xp, j) - terminal(k, xm, j)) / (2.0 * steps[i]);
-    }
-  }
-}
+using test::expect_agreement;
+using test::kTerminalCount;
+using test::kTerminalNames;
+using test::terminal;
+using test::terminal_partials;
 
 struct Fixture {
   Mission mission;  // the reference optimum without coast 6
@@ -198,25 +174,11 @@ TEST(Sec22Block5ConsecutiveStages, AbsentCoastAgreesWithAnEpsilonCoastToFirstOrd
   }
 }
 
-// Central difference of every terminal quantity for a change applied by `fly(sign)`.
-void central_difference(const std::function<Status(double sign, Trajectory*)>& fly, double out[kTerminalCount]) {
+// Central difference of every terminal quantity for a change flown by `fly(sign, perturbed)`.
+template <typename Fly>
+void central_difference(const Fly& fly, double out[kTerminalCount]) {
   Fixture& f = fixture();
-  double plus[kTerminalCount], minus[kTerminalCount];
-  ASSERT_EQ(fly(+1.0, &f.perturbed), Status::kOk);
-  for (int j = 0; j < kTerminalCount; ++j) plus[j] = terminal(f.mission.constants, f.perturbed.final_point().state, j);
-  ASSERT_EQ(fly(-1.0, &f.perturbed), Status::kOk);
-  for (int j = 0; j < kTerminalCount; ++j) minus[j] = terminal(f.mission.constants, f.perturbed.final_point().state, j);
-  for (int j = 0; j < kTerminalCount; ++j) out[j] = (plus[j] - minus[j]) / 2.0;
-}
-
-// |predicted - fd| within 1% of |fd| per quantity (as tests/core/backward_run_test.cpp).
-void expect_agreement(const char* what, const double predicted[kTerminalCount], const double fd[kTerminalCount]) {
-  for (int j = 0; j < kTerminalCount; ++j) {
-    const double error = std::fabs(predicted[j] - fd[j]);
-    std::printf("%-30s %-14s adjoint % .6e  fd % .6e  rel %.1e\n", what, kTerminalNames[j], predicted[j], fd[j],
-                error / std::fmax(std::fabs(fd[j]), 1e-300));
-    EXPECT_LE(error, 0.01 * std::fabs(fd[j]) + 1e-12) << what << " " << kTerminalNames[j];
-  }
+  test::central_difference(f.mission.constants, fly, &f.perturbed, out);
 }
 
 TEST(Sec5AdjointConsecutiveStages, StatePerturbationsAcrossTheStage1To2BoundaryMatchCentralDifferences) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "tolip/mission/mission.hpp"
+#include "tolip_ground/card_deck.hpp"
 #include "tolip_ground/deck_extras.hpp"
 
 namespace tolip::ground {
@@ -26,5 +27,8 @@ std::vector<InputWarning> unused_inputs(const Mission& mission, const DeckExtras
 // "tolip: warning: DECK[: case N]: data block B, WORD (FIELD): MESSAGE", one line each.
 void print_input_warnings(std::ostream& err, const std::string& deck_path, int case_number, int case_count,
                           const std::vector<InputWarning>& warnings);
+
+// The warnings of every case of a loaded deck, in case order.
+void print_deck_input_warnings(std::ostream& err, const std::string& deck_path, const Deck& deck);
 
 }  // namespace tolip::ground

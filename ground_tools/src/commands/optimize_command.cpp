@@ -173,10 +173,7 @@ int run_optimize_command(const OptimizeCommandOptions& options, std::ostream& ou
     return kExitBadInput;
   }
   // Inputs read but not acted on are named, never dropped (tolip_ground/unused_inputs.hpp).
-  for (const DeckCase& deck_case : deck.cases) {
-    print_input_warnings(err, options.deck_path, deck_case.number, static_cast<int>(cases),
-                         unused_inputs(*deck_case.mission, deck_case.extras));
-  }
+  print_deck_input_warnings(err, options.deck_path, deck);
 
   ProgressLine progress(err, progress_enabled(options.progress));
   std::ostringstream listing;

@@ -15,7 +15,7 @@ std::vector<InputWarning> unused_inputs(const Mission& mission, const DeckExtras
          "the stage-5 yaw option = " + std::to_string(o.stage5_chi()) +
              " has no effect: stage 5 holds the attitudes of data block 17 as IP(9) says");
   }
-  if (o.ip[15] != 0) {
+  if (o.memory_dump()) {
     warn(4, "IP(15)", "options.memory_dump", "the core-memory dump of the 1966 program has no counterpart: ignored");
   }
   const struct {
@@ -78,6 +78,13 @@ void print_input_warnings(std::ostream& err, const std::string& deck_path, int c
     err << "tolip: warning: " << deck_path;
     if (case_count > 1) err << ": case " << case_number;
     err << ": data block " << w.data_block << ", " << w.word << " (" << w.field << "): " << w.message << '\n';
+  }
+}
+
+void print_deck_input_warnings(std::ostream& err, const std::string& deck_path, const Deck& deck) {
+  const int count = static_cast<int>(deck.cases.size());
+  for (const DeckCase& deck_case : deck.cases) {
+    print_input_warnings(err, deck_path, deck_case.number, count, unused_inputs(*deck_case.mission, deck_case.extras));
   }
 }
 

@@ -75,6 +75,7 @@ struct Options {
   bool zero_alpha_window() const { return ip[11] == 1; }
   bool alpha_zero_at_stage2_ignition() const { return ip[12] == 1; }
   int qbar_constraint_type() const { return ip[13]; }
+  bool memory_dump() const { return ip[15] != 0; }             // the 1966 core dump: not acted on
   bool print_input() const { return ip[17] == 1; }
   bool dispersions() const { return ip[21] == 1; }
   bool hardover() const { return ip[22] == 1; }
