@@ -223,6 +223,17 @@ TEST(Sec5Adjoint, Sec22_IP9Is3_FiveStageVehicleStage5PitchProgramSensitivitiesMa
   l.segment_count += 2;
   MissionFault fault;
   ASSERT_EQ(validate_mission(c.mission, &fault), Status::kOk) << fault.field << " " << fault.data_block;
+  // The five stages within the powered-step capacity (data block 16: 168); one step more is a
+  // named fault.
+  int powered_steps = 0;
+  for (int code = 1; code <= kMaxPoweredStages; ++code) powered_steps += c.mission.vehicle.stages[stage_index(code)].integration_steps;
+  EXPECT_LE(powered_steps, kMaxPoweredSteps);
+  static Mission over;
+  over = c.mission;
+  over.vehicle.stages[stage_index(5)].integration_steps += kMaxPoweredSteps - powered_steps + 1;
+  EXPECT_EQ(validate_mission(over, &fault), Status::kTooManyPoweredSteps);
+  EXPECT_EQ(fault.data_block, 16);
+
   fly_and_run_backward(&c, c.mission.misc.stage4_theta_rad);
   expect_stage_sensitivities_match(&c, 5);
   expect_stage_sensitivities_match(&c, 4);

@@ -9,6 +9,8 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "cli_runner.hpp"
 #include "tolip/table/table_image.hpp"
@@ -124,6 +126,58 @@ TEST(Sec22Deck, IP9Is2_Stage4AttitudeWordsAreReportedUnusedAndItsAdjustableCodeI
   EXPECT_NE(result.exit_code, 0);
   EXPECT_NE(result.err.find("data block 6"), std::string::npos) << result.err;
   EXPECT_NE(result.err.find("IP(9)"), std::string::npos) << result.err;
+}
+
+// Sec. 22 IP(9) = 3 ("Stages 4 and 5 continuous"; "set = 3 only when there are five stages"): the
+// example with an illustrative fifth stage (a 1,500 lbf, 15 s kick motor after a 6 s coast 9)
+// optimizes with both upper stages steered, linearizes with segments in stages 4 and 5, and exports.
+TEST(Sec22Optimizer, IP9Is3_AFiveStageScoutSteersStages4And5LinearizesAndExports) {
+  ScratchDirectory scratch("ip9_five_stages");
+  std::vector<std::pair<std::string, std::string>> edits = kStage4Continuous;
+  edits[0].second = "spin_stages_4_5 = 3";
+  edits[2].second = "segment_count = 13";
+  edits[3].second = "300.0, 318.0, 336.0, 400.0, 428.0, 500.0, 515.0]";
+  edits.push_back({"sequence = [1, 6, 2, 7, 3, 8, 4] ", "sequence = [1, 6, 2, 7, 3, 8, 4, 9, 5] "});
+  edits.push_back({"[launch]  # data blocks 20 and 21",
+                   "[stage.9]\nduration_s = 6.0\nintegration_steps = 3\njettison_weight_lb = 0.0\nreference_area_ft2 = 0.0\n\n"
+                   "[stage.5]\nname = \"illustrative kick motor\"\nduration_s = 15.0\nintegration_steps = 12\n"
+                   "jettison_weight_lb = 30.0\nreference_area_ft2 = 1.0\nnozzle_exit_area_ft2 = 0.3\n\n"
+                   "[stage.5.thrust]\ntime_s = [0.0, 0.2, 14.8, 15.0]\nvacuum_thrust_lbf = [0.0, 1500.0, 1500.0, 0.0]\n\n"
+                   "[stage.5.consumable_weight]\ntime_s = [0.0, 0.2, 14.8, 15.0]\nremaining_lb = [80.0, 79.99, 0.01, 0.0]\n\n"
+                   "[launch]  # data blocks 20 and 21"});
+  const std::string deck = edited_example_deck(scratch, "five_stages.toml", edits);
+  const CommandResult run = run_tolip_executable({"optimize", deck, "--json"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const nlohmann::json d = nlohmann::json::parse(run.out, nullptr, false);
+  ASSERT_FALSE(d.is_discarded());
+  EXPECT_TRUE(d["converged"].get<bool>());
+  for (const nlohmann::json& c : d["constraints"]) EXPECT_TRUE(c["met"].get<bool>()) << c.dump();
+  std::printf("five stages, IP(9) = 3: payload %.4f lb in %d forward runs, linearized %.4f lb\n",
+              d["payload_lb"].get<double>(), d["forward_runs"].get<int>(), d["linearized"]["payoff"].get<double>());
+  for (int code : {4, 5}) {
+    double lowest = 1e9, highest = -1e9;
+    for (const nlohmann::json& p : d["trajectory"]) {
+      if (p["stage"].get<int>() != code) continue;
+      lowest = std::fmin(lowest, p["theta_deg"].get<double>());
+      highest = std::fmax(highest, p["theta_deg"].get<double>());
+    }
+    EXPECT_GT(highest - lowest, 0.01) << "stage " << code << " is steered";
+  }
+  EXPECT_EQ(d["linearized"]["status"].get<std::string>(), "kOk");
+  int stage5_segments = 0;
+  for (const nlohmann::json& s : d["linearized"]["segments"]) stage5_segments += s["stage"].get<int>() == 5 ? 1 : 0;
+  EXPECT_GE(stage5_segments, 1);
+
+  const std::string image = (scratch / "table.bin").string();
+  const CommandResult exported = run_tolip_executable({"export", deck, "--out", image, "--created-unix-s", "0"});
+  ASSERT_EQ(exported.exit_code, 0) << exported.err;
+  const CommandResult inspected = run_tolip_executable({"inspect", image, "--json"});
+  ASSERT_EQ(inspected.exit_code, 0) << inspected.err;
+  const nlohmann::json t = nlohmann::json::parse(inspected.out, nullptr, false);
+  EXPECT_EQ(t["spin_option_ip9"].get<int>(), 3);
+  int table_stage5 = 0;
+  for (const nlohmann::json& s : t["segments"]) table_stage5 += s["stage"].get<int>() == 5 ? 1 : 0;
+  EXPECT_EQ(table_stage5, stage5_segments);
 }
 
 }  // namespace
