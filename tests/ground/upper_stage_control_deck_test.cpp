@@ -128,6 +128,22 @@ TEST(Sec22Deck, IP9Is2_Stage4AttitudeWordsAreReportedUnusedAndItsAdjustableCodeI
   EXPECT_NE(result.err.find("IP(9)"), std::string::npos) << result.err;
 }
 
+// The card deck (80 columns, Sec. 22) acts on IP(9) as the TOML deck does: converted, it optimizes
+// to the same payload (to the E12.8 rounding of two words).
+TEST(Sec22Deck, IP9Is2_TheCardDeckOptimizesLikeTheTomlDeck) {
+  const Runs& r = runs();
+  ASSERT_EQ(r.continuous.exit_code, 0) << r.continuous.err;
+  const std::string cards = (r.scratch / "stage4_continuous.dat").string();
+  const CommandResult converted = run_tolip_executable({"convert", r.deck, "--to", cards});
+  ASSERT_EQ(converted.exit_code, 0) << converted.err;
+  const CommandResult run = run_tolip_executable({"optimize", cards, "--json"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const nlohmann::json d = nlohmann::json::parse(run.out, nullptr, false);
+  ASSERT_FALSE(d.is_discarded());
+  EXPECT_TRUE(d["converged"].get<bool>());
+  EXPECT_NEAR(d["payload_lb"].get<double>(), r.continuous_doc["payload_lb"].get<double>(), 1e-3);
+}
+
 // Sec. 22 IP(9) = 3 ("Stages 4 and 5 continuous"; "set = 3 only when there are five stages"): the
 // example with an illustrative fifth stage (a 1,500 lbf, 15 s kick motor after a 6 s coast 9)
 // optimizes with both upper stages steered, linearizes with segments in stages 4 and 5, and exports.
