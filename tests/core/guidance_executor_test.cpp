@@ -139,6 +139,41 @@ TEST_F(Executor, HoldsSpunAttitudesInStagesFourAndFive) {
   }
 }
 
+// Sec. 22 IP(9) = 2: stage 4 flies its segments (and coast 9 the last one, held), stage 5 and coast
+// 10 stay spun; IP(9) = 3: stage 5 flies segments too.
+TEST_F(Executor, Sec22_IP9FliesSegmentsInTheContinuousUpperStagesAndHoldsTheSpunOnes) {
+  GuidanceTable table = test::make_test_table();
+  table.spin_option = 2;
+  table.stage4_theta_rad = 0.0;
+  table.stage4_chi_rad = 0.0;
+  const int stage4 = table.segment_count;
+  table.segments[table.segment_count++] = GuidanceSegment{4, 0.0, -0.35, -0.001};
+  table.segments[table.segment_count++] = GuidanceSegment{9, 0.0, -0.38, 0.0};
+  load(table);
+  for (double t : {550.0, 560.0, 577.9}) {
+    const GuidanceCommand c = command_at(t);
+    EXPECT_EQ(c.stage_code, 4);
+    EXPECT_EQ(c.mode, GuidanceMode::kSegment) << t;
+    EXPECT_EQ(c.segment_index, stage4) << t;
+    EXPECT_NEAR(c.theta_rad, -0.35 - 0.001 * (t - 550.0), 1e-15) << t;
+    EXPECT_EQ(c.theta_dot_rad_s, -0.001);
+  }
+  const GuidanceCommand coast9 = command_at(590.0);
+  EXPECT_EQ(coast9.mode, GuidanceMode::kSegment);
+  EXPECT_EQ(coast9.theta_rad, -0.38);
+  for (double t : {600.0, 640.0}) {
+    const GuidanceCommand c = command_at(t);
+    EXPECT_EQ(c.mode, GuidanceMode::kSpunHold) << t;
+    EXPECT_EQ(c.theta_rad, table.stage5_theta_rad);
+  }
+  table.spin_option = 3;
+  load(table);
+  const GuidanceCommand stage5 = command_at(610.0);
+  EXPECT_EQ(stage5.stage_code, 5);
+  EXPECT_EQ(stage5.mode, GuidanceMode::kSegment);  // the coast-9 hold stays in force
+  EXPECT_EQ(stage5.theta_rad, -0.38);
+}
+
 TEST_F(Executor, HoldsVerticalAfterLiftoffUntilTheFirstSegmentStarts) {
   GuidanceTable table = test::make_test_table();
   table.segments[0].start_stage_time_s = 6.0;

@@ -55,7 +55,7 @@ TEST(TableImage, WritesEveryHeaderFieldLittleEndianAtItsOffset) {
   const GuidanceTable table = test::make_test_table();
   const Image image = encode(table);
   EXPECT_EQ(std::memcmp(image.data(), "TLGT", 4), 0);
-  EXPECT_EQ(image[4], 0x01);  // format version 1, little-endian u16
+  EXPECT_EQ(image[4], 0x02);  // format version 2, little-endian u16
   EXPECT_EQ(image[5], 0x00);
   EXPECT_EQ(image[6], 96);    // header size
   EXPECT_EQ(image[8], 0x2C);  // image size 812 = 0x032C
@@ -65,6 +65,9 @@ TEST(TableImage, WritesEveryHeaderFieldLittleEndianAtItsOffset) {
   EXPECT_EQ(image[14], 32);   // segment record size
   EXPECT_EQ(image[16], table.segment_count);
   EXPECT_EQ(image[18], 10);   // gain records
+  EXPECT_EQ(get_u16_le(image.data() + 20), static_cast<std::uint16_t>(table.spin_option));  // IP(9)
+  EXPECT_EQ(image[22], 0);    // reserved
+  EXPECT_EQ(image[23], 0);
   EXPECT_EQ(get_u64_le(image.data() + 24), static_cast<std::uint64_t>(table.created_unix_s));
   EXPECT_EQ(std::memcmp(image.data() + 32, "TEST MISSION A", 14), 0);
   EXPECT_EQ(image[32 + 14], 0);
@@ -215,8 +218,36 @@ TEST(TableImage, FlightOrderIndexFollowsTheStageSequence) {
   for (int i = 0; i < 10; ++i) EXPECT_EQ(flight_order_index(sequence[i]), i);
   EXPECT_EQ(flight_order_index(0), -1);
   EXPECT_EQ(flight_order_index(11), -1);
-  for (int code : {1, 2, 3, 6, 7, 8}) EXPECT_TRUE(is_segment_stage(code)) << code;
-  for (int code : {0, 4, 5, 9, 10, 11}) EXPECT_FALSE(is_segment_stage(code)) << code;
+  // IP(9) = 1 (stages 4 and 5 spun): the segment stages of format version 1.
+  for (int code : {1, 2, 3, 6, 7, 8}) EXPECT_TRUE(is_segment_stage(1, code)) << code;
+  for (int code : {0, 4, 5, 9, 10, 11}) EXPECT_FALSE(is_segment_stage(1, code)) << code;
+}
+
+// Sec. 22 IP(9): "2 Stage 4 continuous and Stage 5 spun; 3 Stages 4 and 5 continuous". The image
+// carries IP(9), its segments may lie in the continuous stages, and the loader rejects one in a
+// spun stage.
+TEST(TableImage, Sec22_SegmentStagesFollowTheSpinOptionIP9) {
+  for (int code : {1, 2, 3, 6, 7, 8, 4, 9}) EXPECT_TRUE(is_segment_stage(2, code)) << code;
+  for (int code : {0, 5, 10, 11}) EXPECT_FALSE(is_segment_stage(2, code)) << code;
+  for (int code = 1; code <= 10; ++code) EXPECT_TRUE(is_segment_stage(3, code)) << code;
+  for (int code : {0, 11}) EXPECT_FALSE(is_segment_stage(3, code)) << code;
+
+  GuidanceTable table = test::make_test_table();
+  ASSERT_LT(table.segment_count, kMaxLinearSegments);
+  GuidanceSegment& last = table.segments[table.segment_count++];
+  last = GuidanceSegment{4, 2.0, -0.3, -0.001};
+  table.spin_option = 1;
+  EXPECT_EQ(validate_guidance_table(table), Status::kSegmentStageInvalid);
+  table.spin_option = 2;
+  ASSERT_EQ(validate_guidance_table(table), Status::kOk);
+  const Image image = encode(table);
+  EXPECT_EQ(get_u16_le(image.data() + kOffsetSpinOption), 2u);
+  GuidanceTable decoded;
+  ASSERT_EQ(decode_table_image(image.data(), image.size(), &decoded), Status::kOk);
+  EXPECT_EQ(decoded.spin_option, 2);
+  EXPECT_EQ(decoded.segments[decoded.segment_count - 1].stage_code, 4);
+  table.spin_option = 4;
+  EXPECT_EQ(validate_guidance_table(table), Status::kValueOutOfRange);
 }
 
 TEST(Status, EveryTableStatusHasANameAndAMessage) {

@@ -148,8 +148,10 @@ TEST_F(TableLoader, RejectsBadMagicAndKeepsActiveTable) {
 }
 
 TEST_F(TableLoader, RejectsWrongVersionAndKeepsActiveTable) {
-  expect_rejected_keeping_active(patched([](std::uint8_t* b) { put_u16_le(b + kOffsetFormatVersion, 2); }),
-                                 Status::kTableImageUnsupportedVersion, "version 2");
+  expect_rejected_keeping_active(patched([](std::uint8_t* b) { put_u16_le(b + kOffsetFormatVersion, 1); }),
+                                 Status::kTableImageUnsupportedVersion, "version 1");
+  expect_rejected_keeping_active(patched([](std::uint8_t* b) { put_u16_le(b + kOffsetFormatVersion, 3); }),
+                                 Status::kTableImageUnsupportedVersion, "version 3");
   expect_rejected_keeping_active(patched([](std::uint8_t* b) { put_u16_le(b + kOffsetFormatVersion, 0); }),
                                  Status::kTableImageUnsupportedVersion, "version 0");
 }
@@ -264,7 +266,9 @@ TEST_F(TableLoader, RejectsOutOfRangeValuesAndBadStageCodesAndKeepsActiveTable) 
                                  Status::kValueOutOfRange, "stamp beyond year 9999");
   expect_rejected_keeping_active(
       patched([](std::uint8_t* b) { put_u16_le(b + kOffsetSegments + 7 * kTableSegmentRecordSize, 9); }),
-      Status::kSegmentStageInvalid, "segment in coast 9");
+      Status::kSegmentStageInvalid, "segment in coast 9 (spun under IP(9) = 1)");
+  expect_rejected_keeping_active(patched([](std::uint8_t* b) { put_u16_le(b + kOffsetSpinOption, 4); }),
+                                 Status::kValueOutOfRange, "IP(9) = 4");
 }
 
 TEST_F(TableLoader, AValidImageAfterRejectionsIsStillAccepted) {

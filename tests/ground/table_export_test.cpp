@@ -213,7 +213,7 @@ TEST(TableExport, Sec10_ExecutedTableFliesTheLinearizedTrajectoryAttitude) {
     if (p.time_s < c.mission->launch.liftoff_duration_s) continue;
     // The program commands stages 1-3 and coasts 6-8; the spun stages fly their attitude.
     const double commanded =
-        is_segment_stage(p.stage_code) ? c.run.linearization.workspace->program.theta_rad[i] : p.theta_rad;
+        is_segment_stage(c.mission->options.spin_stages_4_5(), p.stage_code) ? c.run.linearization.workspace->program.theta_rad[i] : p.theta_rad;
     if (!p.body_dynamics) EXPECT_EQ(commanded, p.theta_rad) << "point " << i;  // flown = commanded
     const double error_deg = std::fabs(theta[i] - commanded) * kRadToDeg;
     worst_deg = std::max(worst_deg, error_deg);
@@ -255,7 +255,7 @@ TEST(TableExport, InterimSegmentsReproduceTheBlock40ProgramAndTheFlownAttitude) 
   int compared_with_flight = 0;
   for (int i = 0; i < trajectory.point_count; ++i) {
     const TrajectoryPoint& p = trajectory.points[i];
-    if (is_segment_stage(p.stage_code) && p.time_s >= m.launch.liftoff_duration_s) {
+    if (is_segment_stage(m.options.spin_stages_4_5(), p.stage_code) && p.time_s >= m.launch.liftoff_duration_s) {
       EXPECT_NEAR(theta[i] * kRadToDeg, m.pitch_program_rad(p.time_s) * kRadToDeg, 1e-12) << "t " << p.time_s;
       ++compared_with_table;
     }
@@ -445,7 +445,7 @@ TEST(InspectCli, PrintsAValidImageInEngineeringUnits) {
   const CommandResult result = run_tolip_executable({"inspect", (scratch / "t.bin").string()});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   EXPECT_TRUE(result.err.empty()) << result.err;
-  for (const char* part : {"guidance table image: valid", "format version       1", "812 bytes",
+  for (const char* part : {"guidance table image: valid", "format version       2", "812 bytes",
                            "SCOUT-CLASS 4-STAGE, WALLOPS ISL", "1970-01-01T00:00:00Z", "lift-off duration    3.000000 s",
                            "max 5.000000 deg/s", "max deflection       10.000000 deg",
                            "theta -22.259653370 deg", "segments             10 of 15",

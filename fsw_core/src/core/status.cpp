@@ -34,6 +34,8 @@ const char* status_name(Status status) {
     case Status::kLiftoffNotPositive: return "kLiftoffNotPositive";
     case Status::kZeroLengthCoast: return "kZeroLengthCoast";
     case Status::kAdjustableCoastNotInSequence: return "kAdjustableCoastNotInSequence";
+    case Status::kAdjustableAttitudeNotSpun: return "kAdjustableAttitudeNotSpun";
+    case Status::kSpinOptionInconsistent: return "kSpinOptionInconsistent";
     case Status::kInitialConditionsInvalid: return "kInitialConditionsInvalid";
     case Status::kAtmosphereTableInvalid: return "kAtmosphereTableInvalid";
     case Status::kBodyDynamicsDataMissing: return "kBodyDynamicsDataMissing";
@@ -109,6 +111,8 @@ const char* status_message(Status status) {
     case Status::kLiftoffNotPositive: return "the closed-form lift-off DA5(1) must last more than 0 s: the integration starts from its end state, and at V = 0 the equations of motion are singular (flight-path angle and heading undefined)";
     case Status::kZeroLengthCoast: return "a coast of the stage sequence lasts 0 s: leave the coast out of the stage sequence (data block 5) instead, the powered stages around it then burn back to back with the jettison at the boundary";
     case Status::kAdjustableCoastNotInSequence: return "a coast length is an adjustable parameter (data block 6) but that coast is not in the stage sequence (data block 5)";
+    case Status::kAdjustableAttitudeNotSpun: return "a spun-stage attitude is an adjustable parameter (data block 6 codes 1, 2, 8, 9) but IP(9) does not spin that stage on its own attitudes";
+    case Status::kSpinOptionInconsistent: return "IP(9) does not fit the stage sequence: stage 4 flown needs 1, 2 or 3, and 3 (stages 4 and 5 continuous) needs stage 5";
     case Status::kInitialConditionsInvalid: return "initial conditions must have zero velocity and a 90 degree flight-path angle";
     case Status::kAtmosphereTableInvalid: return "the atmosphere table is inconsistent";
     case Status::kBodyDynamicsDataMissing: return "a 6D (body dynamics) trajectory needs data blocks 33-37 (gains, stations, reference length and area, the block 34-36 tables and the stage-1 c.g. history), which the case does not give completely";

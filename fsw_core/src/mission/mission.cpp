@@ -235,6 +235,24 @@ Status check_sequence(const Vehicle& vehicle, const Check& check) {
   return Status::kOk;
 }
 
+// ---- data block 4 against data block 5: IP(9) ------------------------------------------------
+// Sec. 22: "Set = 3 only when there are five stages. Otherwise, 1 or 2." A flown stage 4 needs the
+// option (0, this project's "no stage 4", would leave it neither spun nor declared continuous).
+Status check_spin_option(const Options& options, const Vehicle& vehicle, const Check& check) {
+  const int spin = options.spin_stages_4_5();
+  if (vehicle.stages[stage_index(4)].in_sequence && spin == 0) {
+    return check.fail(Status::kSpinOptionInconsistent, 4, 4, "ip", 9, spin, "", between(1, 3),
+                      "1 (stages 4 and 5 spun), 2 (stage 4 continuous, 5 spun) or 3 (both continuous) when "
+                      "stage 4 is in the sequence");
+  }
+  if (spin == 3 && !vehicle.stages[stage_index(5)].in_sequence) {
+    return check.fail(Status::kSpinOptionInconsistent, 4, 5, "ip", 9, spin, "", between(1, 2),
+                      "3 only with five stages (Sec. 22); a four-stage vehicle with a continuous stage 4 "
+                      "sets 2");
+  }
+  return Status::kOk;
+}
+
 // A word of a data block with its field name and unit, for the checks that every word of a block
 // is finite.
 struct NamedWord {
@@ -636,7 +654,8 @@ Status check_constraints(const ConstraintList& c, const Options& options, const 
 }
 
 // ---- data blocks 6, 27 --------------------------------------------------------------------------
-Status check_adjustable(const AdjustableParameters& a, const Vehicle& vehicle, const Check& check) {
+Status check_adjustable(const AdjustableParameters& a, const Options& options, const Vehicle& vehicle,
+                        const Check& check) {
   if (a.count > kMaxAdjustableParameters) {
     return check.fail(Status::kTooManyAdjustableParameters, 6, 0, "count");
   }
@@ -656,6 +675,24 @@ Status check_adjustable(const AdjustableParameters& a, const Vehicle& vehicle, c
     if (coast != 0 && !vehicle.stages[stage_index(coast)].in_sequence) {
       return check.fail(Status::kAdjustableCoastNotInSequence, 6, coast, "codes", i, code, "", ValueRange{},
                         "a coast-length code only for a coast of the stage sequence (data block 5)");
+    }
+    // A spun attitude (codes 1, 2: stage 4; 8, 9: stage 5) needs that stage flown on its own
+    // data block 17 attitudes: stage 4 spun (IP(9) = 1, which spins stage 5 on them too), stage 5
+    // spun apart from it (IP(9) = 2). A continuous stage's attitude is its pitch program.
+    AdjustableParameter parameter = AdjustableParameter::kStage4Theta;
+    decode_adjustable_parameter(code, &parameter);
+    const bool stage4_attitude = parameter == AdjustableParameter::kStage4Theta || parameter == AdjustableParameter::kStage4Chi;
+    const bool stage5_attitude = parameter == AdjustableParameter::kStage5Theta || parameter == AdjustableParameter::kStage5Chi;
+    if (stage4_attitude || stage5_attitude) {
+      const int stage = stage4_attitude ? 4 : 5;
+      const bool own = stage4_attitude ? options.stage_is_spun(4) : options.stage_is_spun(5) && !options.stage_is_spun(4);
+      if (!vehicle.stages[stage_index(stage)].in_sequence || !own) {
+        return check.fail(Status::kAdjustableAttitudeNotSpun, 6, stage, "codes", i, code, "", ValueRange{},
+                          stage4_attitude ? "codes 1, 2 (spun stage-4 attitudes) only with stage 4 flown and "
+                                            "IP(9) = 1"
+                                          : "codes 8, 9 (spun stage-5 attitudes) only with stage 5 flown and "
+                                            "IP(9) = 2 (with IP(9) = 1 stage 5 flies stage 4's attitudes: codes 1, 2)");
+      }
     }
     TOLIP_CHECK(check.range(a.weights[i], above(0.0), Status::kValueOutOfRange, 27, 0, "weights", "", i));
   }
@@ -695,6 +732,12 @@ Status check_linearization(const LinearizationData& l, const Options& options, c
       return check.fail(Status::kValueOutOfRange, 18, 0, "coded_start_times", i, coded, "", ValueRange{},
                         "100 n + t with n a powered stage of the sequence");
     }
+    // Segments belong to the stages that fly the pitch program (IP(9)): a spun stage holds its
+    // data block 17 attitudes.
+    if (!options.stage_is_steered(code)) {
+      return check.fail(Status::kValueOutOfRange, 18, code, "coded_start_times", i, coded, "", ValueRange{},
+                        "100 n + t with n a stage that flies the pitch program (IP(9) spins this one)");
+    }
     if (i > 0 && !(coded > l.coded_start_times[i - 1])) {
       return check.fail(Status::kTableNotMonotonic, 18, 0, "coded_start_times", i, coded, "",
                         above(l.coded_start_times[i - 1]), "strictly increasing");
@@ -712,9 +755,22 @@ Status check_linearization(const LinearizationData& l, const Options& options, c
       }
     }
   }
-  // IP(7) = 1 "requires input of times of beginning of each linear segment in Data Block 18".
+  // IP(7) = 1 "requires input of times of beginning of each linear segment in Data Block 18", and
+  // Sec. 22 "times ... at ignition and burnout of all non-spun powered stages": every stage that
+  // flies the pitch program (stages 4 and 5 too when IP(9) steers them) has its coded times, or
+  // the linearized trajectory would fly it at the last break's value.
   if (options.linearization()) {
     TOLIP_CHECK(check.range(l.segment_count, at_least(1), Status::kValueOutOfRange, 18, 0, "segment_count", ""));
+    for (int code = 1; code <= kMaxPoweredStages; ++code) {
+      if (!vehicle.stages[stage_index(code)].in_sequence || !options.stage_is_steered(code)) continue;
+      bool listed = false;
+      for (int i = 0; i < times; ++i) listed = listed || std::floor(l.coded_start_times[i] / 100.0) == code;
+      if (!listed) {
+        return check.fail(Status::kValueOutOfRange, 18, code, "coded_start_times", -1, 100.0 * code, "", ValueRange{},
+                          "coded times 100 n + t in every stage that flies the pitch program (its ignition "
+                          "100 n and burnout 100 n + duration), IP(9) counting stages 4 and 5 when continuous");
+      }
+    }
   }
   if (times != (l.segment_count > 0 ? l.segment_count + 1 : 0)) {
     return check.fail(Status::kValueOutOfRange, 18, 0, "segment_count", -1, l.segment_count, "",
@@ -815,6 +871,7 @@ Status validate_mission(const Mission& mission, MissionFault* fault) {
 
   TOLIP_CHECK(check_options(mission.options, check));
   TOLIP_CHECK(check_sequence(mission.vehicle, check));
+  TOLIP_CHECK(check_spin_option(mission.options, mission.vehicle, check));
   TOLIP_CHECK(check_constants(mission.constants, check));
   TOLIP_CHECK(check_atmosphere(mission.atmosphere, check));
   TOLIP_CHECK(check_vehicle(mission.vehicle, mission.constants, check));
@@ -823,7 +880,7 @@ Status validate_mission(const Mission& mission, MissionFault* fault) {
                             check));
   TOLIP_CHECK(check_misc(mission.misc, mission.adjustable, check));
   TOLIP_CHECK(check_constraints(mission.constraints, mission.options, mission.vehicle, check));
-  TOLIP_CHECK(check_adjustable(mission.adjustable, mission.vehicle, check));
+  TOLIP_CHECK(check_adjustable(mission.adjustable, mission.options, mission.vehicle, check));
   TOLIP_CHECK(check_linearization(mission.linearization, mission.options, mission.vehicle, check));
   TOLIP_CHECK(check_convergence(mission.convergence, check));
   TOLIP_CHECK(check_output(mission.output, check));

@@ -308,6 +308,17 @@ double segment_rate(const LinearProgram& p, int s) {
 // is possible. A repair fixes the rate of a segment's merge group, or merges two adjacent segments
 // (eliminating a break, as Sec. 10 does), and sets eta next to it to 0.01. A group whose rate is
 // already fixed is not repaired again; merging into such a group makes the other side fly its rate.
+// The long coast before a continuous stage 4 or 5 (coasts 8 and 9 as segments, IP(9) = 2, 3) is
+// exempt from the minimum rate and the minimum change of rate: Sec. 10 tests a coast's rate against
+// those two limits only after the repairs, for a message ("the coast stage 7 pitch rate is tested
+// ... A message is printed"), and a coast of hundreds of seconds merged into the fixed rate of
+// the stage before it would start the next stage degrees away from its optimum attitude (observed:
+// 10 deg and 6.5 % of payload on the Scout with IP(9) = 2). Coasts 6 and 7 keep this project's
+// repairs (docs/theory/linearization.md). Needs the segments' stage codes (update_rates_and_stages).
+bool exempt_from_minimum_rates(const LinearProgram& p, int s) {
+  return s >= 0 && s < p.segment_count && (p.stage_code[s] == 8 || p.stage_code[s] == 9);
+}
+
 bool repair_rate_limits(const Mission& mission, const LinearConstraints& c, double coast_rate_rad_s_after_last,
                         LinearProgram* p) {
   if (p->rate_repair_count >= kMaxRateRepairs) return false;
@@ -348,12 +359,13 @@ bool repair_rate_limits(const Mission& mission, const LinearConstraints& c, doub
   }
   for (int s = 0; s < k; ++s) {
     if (limits.min_pitch_rate_rad_s > 0.0 && std::fabs(rate(s)) < limits.min_pitch_rate_rad_s * (1.0 - 1e-9) &&
-        !merge_group(*p, s).rate_fixed && !determined(s)) {
+        !merge_group(*p, s).rate_fixed && !determined(s) && !exempt_from_minimum_rates(*p, s)) {
       return impose(s, false, (rate(s) > 0.0 ? 1.0 : -1.0) * limits.min_pitch_rate_rad_s);
     }
   }
   for (int s = 0; s + 1 < k; ++s) {
     if (!(limits.min_pitch_rate_change_rad_s > 0.0) || rate_continues_previous(*p, s + 1) ||
+        exempt_from_minimum_rates(*p, s) || exempt_from_minimum_rates(*p, s + 1) ||
         std::fabs(rate(s + 1) - rate(s)) >= limits.min_pitch_rate_change_rad_s * (1.0 - 1e-9)) {
       continue;
     }
@@ -369,9 +381,13 @@ bool meets_rate_limits(const Mission& mission, double coast_rate_after_last, con
   for (int s = 0; s < p.segment_count; ++s) {
     const double r = segment_rate(p, s);
     if (limits.max_pitch_rate_rad_s > 0.0 && std::fabs(r) > limits.max_pitch_rate_rad_s * (1.0 + 1e-6)) return false;
-    if (limits.min_pitch_rate_rad_s > 0.0 && std::fabs(r) < limits.min_pitch_rate_rad_s * (1.0 - 1e-6)) return false;
+    if (limits.min_pitch_rate_rad_s > 0.0 && std::fabs(r) < limits.min_pitch_rate_rad_s * (1.0 - 1e-6) &&
+        !exempt_from_minimum_rates(p, s)) {
+      return false;
+    }
     if (r > kPositiveRateRadS && !rate_continues_previous(p, s)) ++positives;
     if (s + 1 < p.segment_count && limits.min_pitch_rate_change_rad_s > 0.0 && !rate_continues_previous(p, s + 1) &&
+        !exempt_from_minimum_rates(p, s) && !exempt_from_minimum_rates(p, s + 1) &&
         std::fabs(segment_rate(p, s + 1) - r) < limits.min_pitch_rate_change_rad_s * (1.0 - 1e-6)) {
       return false;
     }
@@ -379,13 +395,20 @@ bool meets_rate_limits(const Mission& mission, double coast_rate_after_last, con
   return positives <= 1;
 }
 
-// Rate over the coast between stages 3 and 4: from the program's last value to the spun attitude.
+// Rate over the coast from the last stage that flies the pitch program into the first spun one
+// (coast 8 before a spun stage 4 under IP(9) = 1, coast 9 before a spun stage 5 under IP(9) = 2):
+// from the program's last value to the spun attitude. -1 (no positive rate) without such a coast.
 double coast_rate_after_program(const Mission& mission, const PreparedCase& prepared, const LinearProgram& p) {
-  for (int k = 0; k < prepared.stage_count; ++k) {
+  const Options& options = mission.options;
+  for (int k = 0; k + 1 < prepared.stage_count; ++k) {
     const StageTimeline& line = prepared.timeline[k];
-    if (line.code == 8 && mission.options.stage_is_spun(4) && line.duration_s > 0.0) {
-      return (mission.misc.stage4_theta_rad - p.theta_rad[p.segment_count]) / line.duration_s;
-    }
+    if (!is_coast_stage(line.code) || !(line.duration_s > 0.0)) continue;
+    const int next = line.code - 4;  // the powered stage after coast n + 5
+    if (!options.stage_is_steered(next - 1) || !options.stage_is_spun(next)) continue;
+    // IP(9) = 1 spins stage 5 on stage 4's attitudes.
+    const double spun_theta_rad =
+        (next == 4 || options.stage_is_spun(4)) ? mission.misc.stage4_theta_rad : mission.misc.stage5_theta_rad;
+    return (spun_theta_rad - p.theta_rad[p.segment_count]) / line.duration_s;
   }
   return -1.0;
 }
@@ -468,6 +491,7 @@ Status linearize_pitch_program(const OptimizerWorkspace& optimized, Linearizatio
   LinearProgram base;
   status = break_times(ws->mission, ws->prepared, optimum_trajectory, &base);
   if (!ok(status)) return out->status = status;
+  update_rates_and_stages(optimum_trajectory, &base);  // the stage codes the rate repairs read
 
   // Fixed break values: 90 deg at the end of lift-off; the end of a maximum-rate period after it
   // (the optimum's attitude there); alpha = 0 at stage-2 ignition (the optimum's attitude there).

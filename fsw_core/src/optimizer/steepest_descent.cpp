@@ -16,7 +16,7 @@ namespace {
 using SquareMatrix = Eigen::Matrix<double, kMaxConstraints, kMaxConstraints>;
 
 // The control measure's typical pitch change for the first payoff-improvement estimate (eq. 5-31):
-// 1 deg over the burn of the non-spun powered stages.
+// 1 deg over the burn of the non-spun powered stages (Options::stage_is_steered).
 constexpr double kTypicalPitchChangeRad = 1.0 * kDegToRad;
 // Guidance steps that make the constraint errors worse are retried at half size this many times.
 constexpr int kGuidanceStepHalvings = 3;
@@ -268,16 +268,26 @@ bool initial_payoff_improvement(const Problem& problem, const Steering& optimiza
 
 // ---- control constraints ------------------------------------------------------------------------
 
-// Which per-point pitch values the optimizer steers: points of stages 1-3 whose value enters a
-// kLinear step, except the end of lift-off (theta = 90 deg there) and the points whose attitude is
-// set in flight (end of the zero-alpha window, stage-2 ignition under IP(12)). Coasts 6 and 7 fly one linear segment each between the attitudes of the
-// stages around them (data block 18: "one segment each for intermediate coast stages"), so a lift
-// pulse in coast 6 cannot be bought with an attitude spike; spun stages have their own parameters.
+// Which per-point pitch values the optimizer steers: points of the stages that fly the pitch
+// program (stages 1-3, and 4 and 5 when IP(9) does not spin them: Options::stage_is_steered) whose
+// value enters a kLinear step, except the end of lift-off (theta = 90 deg there) and the points
+// whose attitude is set in flight (end of the zero-alpha window, stage-2 ignition under IP(12)).
+// The coasts between two steered stages (6 and 7; 8 and 9 too when IP(9) steers stages 4 and 5)
+// fly one linear segment each between the attitudes of the stages around them (data block 18:
+// "one segment each for intermediate coast stages"), so a lift pulse in coast 6 cannot be bought
+// with an attitude spike; spun stages have their own parameters.
 struct PointRoles {
   bool free[kMaxTrajectoryPoints] = {};
   bool intermediate_coast[kMaxTrajectoryPoints] = {};
-  int last_shaped = 0;  // last point of stage 3
+  int last_shaped = 0;  // last point of the last steered stage
 };
+
+// Coast n+5 lies between steered stages n and n+1 when stage n+1 is flown and steered (stage n
+// then is).
+bool is_intermediate_coast(const Mission& mission, int code) {
+  return is_coast_stage(code) && mission.options.stage_is_steered(code - 4) &&
+         mission.vehicle.stages[stage_index(code - 4)].in_sequence;
+}
 
 void classify_points(const Mission& mission, const Trajectory& t, PointRoles* roles) {
   for (int k = 0; k < t.point_count; ++k) {
@@ -289,13 +299,13 @@ void classify_points(const Mission& mission, const Trajectory& t, PointRoles* ro
     const StepRecord& step = t.steps[s];
     const StageEvent& stage = t.stages[step.stage_slot];
     const int code = stage.code;
-    if (code == 6 || code == 7) {
+    if (is_intermediate_coast(mission, code)) {
       roles->intermediate_coast[step.point] = true;
       roles->intermediate_coast[step.point + 1] = true;
       continue;
     }
-    if (code > 3) continue;
-    if (code == 3) roles->last_shaped = stage.last_point;
+    if (!mission.options.stage_is_steered(code)) continue;
+    roles->last_shaped = stage.last_point;
     if (step.command.mode != AttitudeMode::kLinear) continue;
     const bool liftoff_end = code == 1 && step.point == stage.first_point;
     const double stage_start = t.points[stage.first_point].time_s - t.points[stage.first_point].stage_time_s;
@@ -306,7 +316,7 @@ void classify_points(const Mission& mission, const Trajectory& t, PointRoles* ro
 }
 
 // Shapes a candidate program: the maximum pitch rate of data block 22 between consecutive shaped
-// points (projected forward from lift-off, back from the end of stage 3, and forward again;
+// points (projected forward from lift-off, back from the end of the last steered stage, and forward again;
 // points not steered anchor the projection at the attitude the nominal flew there), then the
 // intermediate coasts as straight lines between their neighbours. TOLIP imposed the maximum rate
 // only after lift-off; docs/theory/optimizer.md explains the projection.
@@ -334,10 +344,10 @@ void shape_program(const Mission& mission, const Trajectory& nominal, const Poin
       }
     }
   }
-  // Coasts 6 and 7: linear in time from the previous stage's end to the next stage's start.
+  // Intermediate coasts: linear in time from the previous stage's end to the next stage's start.
   for (int s = 0; s < nominal.stage_count; ++s) {
     const StageEvent& coast = nominal.stages[s];
-    if ((coast.code != 6 && coast.code != 7) || s == 0 || s + 1 >= nominal.stage_count) continue;
+    if (!is_intermediate_coast(mission, coast.code) || s == 0 || s + 1 >= nominal.stage_count) continue;
     const int before = nominal.stages[s - 1].last_point;
     const int after = nominal.stages[s + 1].first_point;
     const double t0 = nominal.points[before].time_s;
@@ -460,7 +470,7 @@ double Iteration::burn_time_s() const {
   double total = 0.0;
   for (int k = 0; k < ws_->prepared.stage_count; ++k) {
     const int code = ws_->prepared.timeline[k].code;
-    if (code >= 1 && code <= 3) total += ws_->prepared.timeline[k].duration_s;
+    if (ws_->mission.options.stage_is_steered(code)) total += ws_->prepared.timeline[k].duration_s;
   }
   return total;
 }

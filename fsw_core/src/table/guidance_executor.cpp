@@ -51,7 +51,9 @@ Status GuidanceExecutor::step(double t, GuidanceCommand* command) const {
   out.k_q_s = table->gains[stage - 1].k_q_s;
   out.max_deflection_rad = table->max_deflection_rad;
 
-  if (stage == 4 || stage == 9 || stage == 5 || stage == 10) {
+  // Spun stages (IP(9), the one rule of tolip::stage_is_spun) hold the table's attitudes; stages 4
+  // and 5 that IP(9) leaves continuous fly the segments like stages 1-3.
+  if (stage_is_spun(table->spin_option, stage)) {
     const bool fourth = stage == 4 || stage == 9;
     out.mode = GuidanceMode::kSpunHold;
     out.theta_rad = fourth ? table->stage4_theta_rad : table->stage5_theta_rad;

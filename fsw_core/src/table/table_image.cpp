@@ -103,8 +103,8 @@ void reseal_table_image(std::uint8_t* image) {
 
 // ---- stage codes ---------------------------------------------------------------------------------
 
-bool is_segment_stage(int stage_code) {
-  return (stage_code >= 1 && stage_code <= 3) || (stage_code >= 6 && stage_code <= 8);
+bool is_segment_stage(int spin_option, int stage_code) {
+  return stage_code >= 1 && stage_code <= kMaxStages && !stage_is_spun(spin_option, stage_code);
 }
 
 int flight_order_index(int stage_code) {
@@ -142,6 +142,7 @@ Status validate_guidance_table(const GuidanceTable& t) {
   }
 
   // Documented ranges.
+  if (t.spin_option < 0 || t.spin_option > 3) return Status::kValueOutOfRange;
   if (t.created_unix_s < 0 || t.created_unix_s > kTableMaxCreatedUnixS) return Status::kValueOutOfRange;
   if (!(t.liftoff_duration_s > 0.0 && t.liftoff_duration_s <= kTableMaxLiftoffDurationS)) {
     return Status::kValueOutOfRange;
@@ -167,7 +168,7 @@ Status validate_guidance_table(const GuidanceTable& t) {
   }
   for (int i = 0; i < t.segment_count; ++i) {
     const GuidanceSegment& s = t.segments[i];
-    if (!is_segment_stage(s.stage_code)) return Status::kSegmentStageInvalid;
+    if (!is_segment_stage(t.spin_option, s.stage_code)) return Status::kSegmentStageInvalid;
     if (!in_range(s.start_stage_time_s, 0.0, kTableMaxSegmentStartS) ||
         !in_range(s.theta_start_rad, -kTableMaxAttitudeRad, kTableMaxAttitudeRad)) {
       return Status::kValueOutOfRange;
@@ -210,6 +211,7 @@ Status encode_table_image(const GuidanceTable& t, std::uint8_t* image, std::size
   put_u16_le(image + kOffsetSegmentRecordSize, static_cast<std::uint16_t>(kTableSegmentRecordSize));
   put_u16_le(image + kOffsetSegmentCount, static_cast<std::uint16_t>(t.segment_count));
   put_u16_le(image + kOffsetStageGainCount, static_cast<std::uint16_t>(kTableStageGainCount));
+  put_u16_le(image + kOffsetSpinOption, static_cast<std::uint16_t>(t.spin_option));
   put_u64_le(image + kOffsetCreatedUnixS, static_cast<std::uint64_t>(t.created_unix_s));
   put_text(image + kOffsetMissionId, t.mission_id, kTableMissionIdBytes);
   put_text(image + kOffsetGeneratorVersion, t.generator_version, kTableGeneratorVersionBytes);
@@ -262,7 +264,7 @@ Status decode_table_image(const std::uint8_t* image, std::size_t size, GuidanceT
 
   const std::uint16_t count = get_u16_le(image + kOffsetSegmentCount);
   if (count > static_cast<std::uint16_t>(kMaxLinearSegments)) return Status::kTooManyLinearSegments;
-  if (!all_zero(image + kOffsetHeaderReserved1, 4) || !all_zero(image + kOffsetHeaderReserved2, 16)) {
+  if (!all_zero(image + kOffsetHeaderReserved1, 2) || !all_zero(image + kOffsetHeaderReserved2, 16)) {
     return Status::kTableImageReservedBytesSet;
   }
   for (std::size_t i = 0; i < static_cast<std::size_t>(kMaxLinearSegments); ++i) {
@@ -284,6 +286,7 @@ Status decode_table_image(const std::uint8_t* image, std::size_t size, GuidanceT
   GuidanceTable decoded;
   decoded.format_version = kTableFormatVersion;
   decoded.created_unix_s = static_cast<std::int64_t>(created);
+  decoded.spin_option = static_cast<int>(get_u16_le(image + kOffsetSpinOption));
   get_text(image + kOffsetMissionId, kTableMissionIdBytes, decoded.mission_id);
   get_text(image + kOffsetGeneratorVersion, kTableGeneratorVersionBytes, decoded.generator_version);
   decoded.liftoff_duration_s = get_f64_le(image + kOffsetLiftoffDuration);

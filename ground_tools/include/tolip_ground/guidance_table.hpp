@@ -4,12 +4,13 @@
 //
 // The segments come from the linearized pitch program (Sec. 6, 10) when one is given: each segment
 // as linearize_pitch_program left it (stage, start in stage time, theta at the start, rate), then a
-// hold segment (rate 0) at the program's end, which the linearization flies after it (coast 8
+// hold segment (rate 0) at the program's end, which the linearization flies after it (the coast
 // before the spun stages). Without one (a deck without IP(7)), the interim source is the data
-// block 40 pitch table of the deck. Every table interval that starts in a powered stage 1-3 or in one of
-// the coasts 6-8 after them becomes one segment (stage, start in stage time, theta at the start,
-// rate of the interval); a hold segment (rate 0) is appended at the last node when that node still
-// lies in stages 1-3 / coasts 6-8, and one is prepended at the end of the lift-off when the table
+// block 40 pitch table of the deck. Every table interval that starts in a stage that flies the pitch
+// program (stages 1-3 and coasts 6-8; stages 4, 5 and coasts 9, 10 unless IP(9) spins them:
+// is_segment_stage) becomes one segment (stage, start in stage time, theta at the start, rate of
+// the interval); a hold segment (rate 0) is appended at the last node when that node still lies in
+// such a stage, and one is prepended at the end of the lift-off when the table
 // starts after it. Intervals that end by the end of the lift-off are dropped (the executor holds
 // 90 deg there). docs/table-format.md, "Contents", gives every other source.
 #pragma once

@@ -13,7 +13,9 @@ std::vector<InputWarning> unused_inputs(const Mission& mission, const DeckExtras
   if (o.stage5_chi() != 0) {
     warn(4, "IP(10)", "options.stage5_chi",
          "the stage-5 yaw option = " + std::to_string(o.stage5_chi()) +
-             " has no effect: stage 5 holds the attitudes of data block 17 as IP(9) says");
+             (o.stage_is_spun(5) ? " has no effect: stage 5 holds the attitudes of data block 17 as IP(9) says"
+                                 : " has no effect: stage 5 flies the pitch program (IP(9) = " +
+                                       std::to_string(o.spin_stages_4_5()) + ")"));
   }
   if (o.memory_dump()) {
     warn(4, "IP(15)", "options.memory_dump", "the core-memory dump of the 1966 program has no counterpart: ignored");
@@ -46,6 +48,25 @@ std::vector<InputWarning> unused_inputs(const Mission& mission, const DeckExtras
   // Data block 10: CT1(13) has no use in the equations this version integrates.
   if (mission.constants.ct1_13 != 1.0) {
     warn(10, "CT1(13)", "constants.ct1_13", "has no effect in this version");
+  }
+  // Data block 17: the spun-stage attitudes only act on a stage IP(9) spins on them (IP(9) = 1 spins
+  // stage 5 on stage 4's words; 2 flies stage 4 on the pitch program; 3 both).
+  const std::string ip9 = "IP(9) = " + std::to_string(o.spin_stages_4_5());
+  const MiscellaneousData& misc = mission.misc;
+  const bool stage4_flown = mission.vehicle.stages[stage_index(4)].in_sequence;
+  const bool stage5_flown = mission.vehicle.stages[stage_index(5)].in_sequence;
+  if (!(stage4_flown && o.stage_is_spun(4)) && (misc.stage4_theta_rad != 0.0 || misc.stage4_chi_rad != 0.0)) {
+    warn(17, "DA2(5), DA2(6)", "misc.stage4_theta_deg/stage4_chi_deg",
+         "the spun stage-4 attitudes have no effect: " +
+             (stage4_flown ? "with " + ip9 + " stage 4 flies the pitch program" : std::string("stage 4 is not flown")));
+  }
+  const bool stage5_own_attitudes = stage5_flown && o.stage_is_spun(5) && !o.stage_is_spun(4);
+  if (!stage5_own_attitudes && (misc.stage5_theta_rad != 0.0 || misc.stage5_chi_rad != 0.0)) {
+    warn(17, "DA2(9), DA2(10)", "misc.stage5_theta_deg/stage5_chi_deg",
+         "the spun stage-5 attitudes have no effect: " +
+             (!stage5_flown           ? std::string("stage 5 is not flown")
+              : o.stage_is_spun(5)    ? "with " + ip9 + " stage 5 holds stage 4's attitudes"
+                                      : "with " + ip9 + " stage 5 flies the pitch program"));
   }
   // Data block 17: the platform frame is fixed at lift-off here (the launch matrices), not at uncage.
   if (mission.misc.gyro_uncage_s_before_launch != 0.0) {

@@ -26,13 +26,6 @@ const StageTimeline* stage_at(const PreparedCase& prepared, double t) {
   return nullptr;
 }
 
-bool in_sequence(const Mission& mission, int code) {
-  for (int i = 0; i < mission.vehicle.sequence.count; ++i) {
-    if (mission.vehicle.sequence.codes[i] == code) return true;
-  }
-  return false;
-}
-
 std::string degrees(double rad, int decimals) {
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "%.*f", decimals, rad * kRadToDeg);
@@ -119,26 +112,20 @@ bool build_guidance_table(const Mission& mission, const DeckExtras& extras, cons
                              ? extras.hardover.stage1_fin_vane_deflection_rad
                              : kDefaultMaxDeflectionRad;
 
-  // Data block 17 and IP(9): spun stages 4 and 5.
-  const int spin = mission.options.spin_stages_4_5();
-  const bool stage4_flown = in_sequence(mission, 4) || in_sequence(mission, 9);
-  const bool stage5_flown = in_sequence(mission, 5) || in_sequence(mission, 10);
-  if (stage4_flown && !mission.options.stage_is_spun(4)) {
-    return fail("data block 4, field options.spin_stages_4_5 (IP(9)) = " + std::to_string(spin) +
-                ": stage 4 flies continuous control, which the table image (segments in stages 1-3 and "
-                "coasts 6-8 only) cannot carry; IP(9) = 1 (stages 4 and 5 spun) is required");
-  }
-  if (stage5_flown && !mission.options.stage_is_spun(5)) {
-    return fail("data block 4, field options.spin_stages_4_5 (IP(9)) = " + std::to_string(spin) +
-                ": stage 5 flies continuous control, which the table image cannot carry");
-  }
-  t.stage4_theta_rad = mission.misc.stage4_theta_rad;
-  t.stage4_chi_rad = mission.misc.stage4_chi_rad;
-  t.stage5_theta_rad = spin == 1 ? mission.misc.stage4_theta_rad : mission.misc.stage5_theta_rad;
-  t.stage5_chi_rad = spin == 1 ? mission.misc.stage4_chi_rad : mission.misc.stage5_chi_rad;
+  // Data block 17 and IP(9): spun stages hold their attitudes (IP(9) = 1 spins stage 5 on stage 4's);
+  // stages 4 and 5 that IP(9) leaves continuous fly segments, and their attitude words are zero.
+  const Options& o = mission.options;
+  const int spin = o.spin_stages_4_5();
+  t.spin_option = spin;
+  t.stage4_theta_rad = o.stage_is_spun(4) ? mission.misc.stage4_theta_rad : 0.0;
+  t.stage4_chi_rad = o.stage_is_spun(4) ? mission.misc.stage4_chi_rad : 0.0;
+  t.stage5_theta_rad = !o.stage_is_spun(5) ? 0.0 : o.stage_is_spun(4) ? mission.misc.stage4_theta_rad : mission.misc.stage5_theta_rad;
+  t.stage5_chi_rad = !o.stage_is_spun(5) ? 0.0 : o.stage_is_spun(4) ? mission.misc.stage4_chi_rad : mission.misc.stage5_chi_rad;
 
   // Data block 33: autopilot gains of stages 1-3; the coasts 6-8 keep the gains of the stage
-  // before them; spun stages 4, 5 and coasts 9, 10 have none.
+  // before them; spun stages and the coasts after them have none. Data block 33 has no gains for
+  // stages 4 and 5 (the manual's vehicle spins them): a continuous stage 4 or 5, and the coast
+  // after it, takes stage 3's, the last stage the deck gives (our choice, docs/table-format.md).
   if (!extras.body_dynamics.present) {
     return fail("data block 33 ([body_dynamics], DA6D(1-6)) is required: it gives the autopilot gains K_theta "
                 "and K_q of stages 1-3 that the table image carries");
@@ -148,11 +135,16 @@ bool build_guidance_table(const Mission& mission, const DeckExtras& extras, cons
     t.gains[stage_index(k + 1)] = gains;
     t.gains[stage_index(k + 6)] = gains;
   }
+  for (int code : {4, 5}) {
+    if (o.stage_is_spun(code)) continue;
+    t.gains[stage_index(code)] = t.gains[stage_index(3)];
+    t.gains[stage_index(code + 5)] = t.gains[stage_index(3)];
+  }
 
   std::vector<GuidanceSegment> segments;
   auto add_segment = [&](double t_from_launch, double theta, double rate) {
     const StageTimeline* line = stage_at(prepared, t_from_launch);
-    if (line == nullptr || !is_segment_stage(line->code)) return;
+    if (line == nullptr || !is_segment_stage(spin, line->code)) return;
     segments.push_back(GuidanceSegment{line->code, t_from_launch - line->start_s, theta, rate});
   };
   const std::string source = linearized != nullptr ? "the linearized pitch program" : "data block 40";
@@ -181,7 +173,7 @@ bool build_guidance_table(const Mission& mission, const DeckExtras& extras, cons
 
   if (segments.size() > static_cast<std::size_t>(kMaxLinearSegments)) {
     return fail(source + " gives " + std::to_string(segments.size()) +
-                " segments in stages 1-3 and coasts 6-8; the table image holds at most " +
+                " segments in the stages that fly the pitch program; the table image holds at most " +
                 std::to_string(kMaxLinearSegments) + " (kTooManyLinearSegments)");
   }
   const double rate_limit = t.max_pitch_rate_rad_s * (1.0 + kTableRateLimitRelativeTolerance);
@@ -256,6 +248,9 @@ void write_table_listing(std::ostream& out, const GuidanceTable& t, std::uint32_
       << degrees(t.min_pitch_rate_rad_s, 6) << " deg/s, min change " << degrees(t.min_pitch_rate_change_rad_s, 6)
       << " deg/s\n";
   out << "  max deflection       " << degrees(t.max_deflection_rad, 6) << " deg\n";
+  const auto control = [&t](int code) { return stage_is_spun(t.spin_option, code) ? "spun" : "segments"; };
+  out << "  stages 4, 5 (IP(9))  " << t.spin_option << ": stage 4 and coast 9 " << control(4) << ", stage 5 and coast 10 "
+      << control(5) << "\n";
   out << "  spun stage 4         theta " << degrees(t.stage4_theta_rad, 9) << " deg, chi "
       << degrees(t.stage4_chi_rad, 9) << " deg\n";
   out << "  spun stage 5         theta " << degrees(t.stage5_theta_rad, 9) << " deg, chi "
@@ -308,6 +303,7 @@ nlohmann::ordered_json table_json(const GuidanceTable& t, std::uint32_t crc, std
       {"min_pitch_rate_deg_s", t.min_pitch_rate_rad_s * kRadToDeg},
       {"min_pitch_rate_change_deg_s", t.min_pitch_rate_change_rad_s * kRadToDeg},
       {"max_deflection_deg", t.max_deflection_rad * kRadToDeg},
+      {"spin_option_ip9", t.spin_option},
       {"stage4_theta_deg", t.stage4_theta_rad * kRadToDeg},
       {"stage4_chi_deg", t.stage4_chi_rad * kRadToDeg},
       {"stage5_theta_deg", t.stage5_theta_rad * kRadToDeg},

@@ -39,6 +39,8 @@ enum class Status : int {
   kLiftoffNotPositive,
   kZeroLengthCoast,
   kAdjustableCoastNotInSequence,
+  kAdjustableAttitudeNotSpun,
+  kSpinOptionInconsistent,
   kInitialConditionsInvalid,
   kAtmosphereTableInvalid,
   kBodyDynamicsDataMissing,

@@ -23,6 +23,23 @@ inline constexpr bool is_powered_stage(int code) { return code >= 1 && code <= 5
 inline constexpr bool is_coast_stage(int code) { return code >= 6 && code <= 10; }
 inline constexpr int stage_index(int code) { return code - 1; }
 
+// IP(9), the one rule of which stages are spun (Sec. 22: 1 stages 4 and 5 spun, theta_5 = theta_4;
+// 2 stage 4 continuous and stage 5 spun; 3 stages 4 and 5 continuous; 0, this project's "no stage
+// 4", spins nothing). A spun stage, and the coast after it (9, 10), holds the data block 17
+// attitudes; every other stage flies the pitch program. The trajectory, the backward run, the
+// optimizer, the linearization, the table builder and the flight-side executor all ask this.
+inline constexpr bool stage_is_spun(int spin_option, int stage_code) {
+  if (stage_code == 4 || stage_code == 9) return spin_option == 1;
+  if (stage_code == 5 || stage_code == 10) return spin_option == 1 || spin_option == 2;
+  return false;
+}
+
+// A powered stage whose pitch program is a control (Sec. 5: the steepest-descent perturbations,
+// Sec. 6: data block 18 segments): stages 1-3 always, 4 and 5 when IP(9) does not spin them.
+inline constexpr bool stage_is_steered(int spin_option, int stage_code) {
+  return is_powered_stage(stage_code) && !stage_is_spun(spin_option, stage_code);
+}
+
 // Data block 5 order: whether stage `code` may directly follow stage `previous` (0: the start).
 // The sequence starts with 1; after powered stage n comes the next powered stage n+1 or its coast
 // n+5; after coast n+5 comes stage n+1. So the codes keep the order 1 6 2 7 3 8 4 9 5 10, no
@@ -81,15 +98,9 @@ struct Options {
   bool hardover() const { return ip[22] == 1; }
   bool impact() const { return ip[23] == 1; }
   bool radar() const { return ip[24] == 1; }
-  // IP(9), the one rule of which stages are spun (Sec. 22: 1 stages 4 and 5 spun; 2 stage 4
-  // continuous and stage 5 spun; 3 both continuous): a spun stage, and the coast after it (9, 10),
-  // holds the data block 17 attitudes.
-  bool stage_is_spun(int stage_code) const {
-    const int spin = spin_stages_4_5();
-    if (stage_code == 4 || stage_code == 9) return spin == 1;
-    if (stage_code == 5 || stage_code == 10) return spin == 1 || spin == 2;
-    return false;
-  }
+  // IP(9) through the one rule above (tolip::stage_is_spun, tolip::stage_is_steered).
+  bool stage_is_spun(int stage_code) const { return tolip::stage_is_spun(spin_stages_4_5(), stage_code); }
+  bool stage_is_steered(int stage_code) const { return tolip::stage_is_steered(spin_stages_4_5(), stage_code); }
   // The linearization flies the optimized case without the in-flight attitudes (IP(11), IP(12)).
   void set_zero_alpha_window(bool on) { ip[11] = on ? 1 : 0; }
   void set_alpha_zero_at_stage2_ignition(bool on) { ip[12] = on ? 1 : 0; }

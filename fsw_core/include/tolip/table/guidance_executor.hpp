@@ -3,11 +3,13 @@
 // deflection limit in force, from the active table of a GuidanceTableService.
 //
 //   * From lift-off (t = 0) until the image's lift-off duration: theta = 90 deg (vertical rise).
-//   * Stages 1-3 and coasts 6-8: the linear segment in force, theta = theta_start + rate
-//     (t - segment start), the segment start being its stage's start time (from the stage event)
-//     plus its start in stage time. A segment stays in force across stage boundaries until the
-//     next one starts. Before the first segment starts, theta is held at 90 deg.
-//   * Stage 4 and coast 9: the spun stage-4 attitude; stage 5 and coast 10: the spun stage-5 one.
+//   * Stages 1-3, coasts 6-8, and stages 4, 5 and coasts 9, 10 when the table's IP(9) does not spin
+//     them: the linear segment in force, theta = theta_start + rate (t - segment start), the
+//     segment start being its stage's start time (from the stage event) plus its start in stage
+//     time. A segment stays in force across stage boundaries until the next one starts. Before the
+//     first segment starts, theta is held at 90 deg.
+//   * A spun stage 4 and coast 9 (IP(9) = 1): the spun stage-4 attitude; a spun stage 5 and coast 10
+//     (IP(9) = 1, 2): the spun stage-5 one.
 //
 // The stage in force comes from stage events (stage_event(code, t)): stage 1 starts at lift-off.
 // The executor is deterministic (+, -, * only on the command path) and its worst-case path is
@@ -27,7 +29,7 @@ enum class GuidanceMode : std::uint8_t {
   kLiftoffHold,         // theta = 90 deg during the vertical lift-off
   kHoldBeforeSegments,  // after lift-off, before the first segment starts: theta = 90 deg
   kSegment,             // a linear segment
-  kSpunHold,            // spun stage 4/5 (and coasts 9/10): attitude of the table
+  kSpunHold,            // spun stage 4/5 (and coasts 9/10, IP(9)): attitude of the table
 };
 
 struct GuidanceCommand {

@@ -13,12 +13,15 @@
 
 #include "tolip/core/capacity.hpp"
 #include "tolip/core/status.hpp"
+#include "tolip/mission/mission.hpp"
 
 namespace tolip {
 
 // ---- format constants (docs/table-format.md, "Layout") ------------------------------------------
 inline constexpr std::uint8_t kTableMagic[4] = {0x54, 0x4C, 0x47, 0x54};  // "TLGT"
-inline constexpr std::uint16_t kTableFormatVersion = 1;
+// Version 2 added the stage 4-5 control word (IP(9)) and pitch segments in stages 4, 5 and coasts
+// 9, 10 when IP(9) does not spin them (docs/table-format.md, "Versioning").
+inline constexpr std::uint16_t kTableFormatVersion = 2;
 inline constexpr std::size_t kTableHeaderSize = 96;
 inline constexpr std::size_t kTableMissionIdBytes = 32;
 inline constexpr std::size_t kTableGeneratorVersionBytes = 16;
@@ -35,7 +38,8 @@ inline constexpr std::size_t kOffsetSegmentCapacity = 12;
 inline constexpr std::size_t kOffsetSegmentRecordSize = 14;
 inline constexpr std::size_t kOffsetSegmentCount = 16;
 inline constexpr std::size_t kOffsetStageGainCount = 18;
-inline constexpr std::size_t kOffsetHeaderReserved1 = 20;  // 4 bytes, zero
+inline constexpr std::size_t kOffsetSpinOption = 20;       // u16: IP(9), which of stages 4, 5 are spun
+inline constexpr std::size_t kOffsetHeaderReserved1 = 22;  // 2 bytes, zero
 inline constexpr std::size_t kOffsetCreatedUnixS = 24;
 inline constexpr std::size_t kOffsetMissionId = 32;
 inline constexpr std::size_t kOffsetGeneratorVersion = 64;
@@ -83,7 +87,7 @@ inline constexpr double kTableRateLimitRelativeTolerance = 1e-9;
 // One linear pitch segment: theta(t) = theta_start + rate (t - start), t in the stage's own time,
 // from `start_stage_time_s` until the next segment takes over (across stage boundaries too).
 struct GuidanceSegment {
-  int stage_code = 0;               // 1, 2, 3 (powered) or 6, 7, 8 (the coasts after them)
+  int stage_code = 0;               // a stage that flies the pitch program: is_segment_stage()
   double start_stage_time_s = 0.0;  // s from the ignition (start) of that stage
   double theta_start_rad = 0.0;     // pitch attitude at the start, platform frame
   double rate_rad_s = 0.0;          // d theta / dt over the segment
@@ -98,6 +102,9 @@ struct GuidanceTable {
   // Header.
   std::uint16_t format_version = kTableFormatVersion;
   std::int64_t created_unix_s = 0;  // creation stamp, s since 1970-01-01T00:00:00Z
+  // IP(9) of the case (0-3): which of stages 4 and 5 (and coasts 9, 10) are spun, by the one rule
+  // tolip::stage_is_spun(); the others fly the segments. 1: both spun (format version 1's only case).
+  int spin_option = 1;
   char mission_id[kTableMissionIdBytes + 1] = {};                 // printable ASCII, NUL-terminated
   char generator_version[kTableGeneratorVersionBytes + 1] = {};   // printable ASCII, NUL-terminated
   // Body.
@@ -106,17 +113,19 @@ struct GuidanceTable {
   double min_pitch_rate_rad_s = 0.0;         // carried for the linearization (data block 22)
   double min_pitch_rate_change_rad_s = 0.0;  // carried for the linearization (data block 22)
   double max_deflection_rad = 0.0;           // control law deflection limit (+/-)
-  double stage4_theta_rad = 0.0;             // spun stage 4 (and coast 9) attitude
+  double stage4_theta_rad = 0.0;             // spun stage 4 (and coast 9) attitude (IP(9) = 1)
   double stage4_chi_rad = 0.0;
-  double stage5_theta_rad = 0.0;             // spun stage 5 (and coast 10) attitude
+  double stage5_theta_rad = 0.0;             // spun stage 5 (and coast 10) attitude (IP(9) = 1, 2)
   double stage5_chi_rad = 0.0;
   StageGains gains[kMaxStages];              // by stage_index(code), codes 1-10
   int segment_count = 0;
   GuidanceSegment segments[kMaxLinearSegments];
 };
 
-// True for the stage codes a pitch segment may belong to: 1, 2, 3, 6, 7, 8.
-bool is_segment_stage(int stage_code);
+// True for the stage codes a pitch segment may belong to: the stage codes 1-10 that IP(9)
+// (`spin_option`) does not spin: 1, 2, 3, 6, 7, 8 always; 4, 9 unless IP(9) = 1; 5, 10 when IP(9) = 3
+// (or 0).
+bool is_segment_stage(int spin_option, int stage_code);
 
 // Position of a stage code (1-10) in the flight order 1 6 2 7 3 8 4 9 5 10 (0-9); -1 otherwise.
 int flight_order_index(int stage_code);
