@@ -43,6 +43,8 @@ CORE_ISP_S = 300.0
 UPPER_THRUST_LBF = 23333.33     # 99 s
 UPPER_ISP_S = 330.0
 
+TABLE_STEP_S = 5.0
+
 PERIGEE_ALTITUDE_NMI = 80.0
 APOGEE_ALTITUDE_NMI = 500.0
 
@@ -64,9 +66,17 @@ def array(values, per_line=8):
 
 
 def thrust_profile(thrust_lbf, burn_s, ramp_up_s, tail_s):
-    """Stage time and vacuum thrust: a ramp to full thrust, constant, a linear tail-off."""
-    times = [0.0, ramp_up_s, burn_s - tail_s, burn_s]
-    thrust = [0.0, thrust_lbf, thrust_lbf, 0.0]
+    """Stage time and vacuum thrust: a ramp to full thrust, constant, a linear tail-off. The
+    constant part is tabulated every TABLE_STEP_S: Sec. 14's ideal-velocity quadrature (Simpson per
+    table interval of T/W, which is not linear) is then exact to 1e-7, so the re-tabulated thrust
+    is the input's and does not depend on the payload the case starts from."""
+    times = [0.0, ramp_up_s]
+    t = ramp_up_s
+    while t + TABLE_STEP_S < burn_s - tail_s - 1e-9:
+        t = round(t + TABLE_STEP_S, 6)
+        times.append(t)
+    times += [burn_s - tail_s, burn_s]
+    thrust = [0.0] + [thrust_lbf] * (len(times) - 2) + [0.0]
     return times, thrust
 
 
@@ -89,21 +99,22 @@ def stage_tables():
     s1_isp = s1_thrust / (b_flow + c_flow)
     t1, f1 = thrust_profile(s1_thrust, 60.0, 0.5, 1.0)
     # The boosters tail off in the last second; the core keeps full thrust into stage 2.
-    f1[3] = CORE_THRUST_LBF
-    isp1 = [s1_isp, s1_isp, (BOOSTER_THRUST_LBF * 2 + 2 * CORE_THRUST_LBF) /
-            (2 * BOOSTER_THRUST_LBF / BOOSTER_ISP_S + 2 * CORE_THRUST_LBF / CORE_ISP_S)]
+    f1[-1] = CORE_THRUST_LBF
+    tail_isp = (BOOSTER_THRUST_LBF * 2 + 2 * CORE_THRUST_LBF) / (
+        2 * BOOSTER_THRUST_LBF / BOOSTER_ISP_S + 2 * CORE_THRUST_LBF / CORE_ISP_S)
+    isp1 = [s1_isp] * (len(t1) - 2) + [tail_isp]
     # Propellant burned in stage 1 (boosters all, core 60 s of its 150), computed from the profile.
     burned1 = 0.0
-    for k in range(1, 4):
+    for k in range(1, len(t1)):
         burned1 += 0.5 * (f1[k - 1] + f1[k]) / isp1[k - 1] * (t1[k] - t1[k - 1])
     w1 = remaining_weight(t1, f1, isp1, burned1)
-    t2 = [0.0, 88.0, 90.0]
-    f2 = [CORE_THRUST_LBF, CORE_THRUST_LBF, 0.0]
-    burned2 = sum(0.5 * (f2[k - 1] + f2[k]) / CORE_ISP_S * (t2[k] - t2[k - 1]) for k in (1, 2))
-    w2 = remaining_weight(t2, f2, [CORE_ISP_S] * 2, burned2)
+    t2 = [float(t) for t in range(0, 90, 5)] + [88.0, 90.0]
+    f2 = [CORE_THRUST_LBF] * (len(t2) - 1) + [0.0]
+    burned2 = sum(0.5 * (f2[k - 1] + f2[k]) / CORE_ISP_S * (t2[k] - t2[k - 1]) for k in range(1, len(t2)))
+    w2 = remaining_weight(t2, f2, [CORE_ISP_S] * (len(t2) - 1), burned2)
     t3, f3 = thrust_profile(UPPER_THRUST_LBF, 99.0, 0.5, 2.0)
-    burned3 = sum(0.5 * (f3[k - 1] + f3[k]) / UPPER_ISP_S * (t3[k] - t3[k - 1]) for k in (1, 2, 3))
-    w3 = remaining_weight(t3, f3, [UPPER_ISP_S] * 3, burned3)
+    burned3 = sum(0.5 * (f3[k - 1] + f3[k]) / UPPER_ISP_S * (t3[k] - t3[k - 1]) for k in range(1, len(t3)))
+    w3 = remaining_weight(t3, f3, [UPPER_ISP_S] * (len(t3) - 1), burned3)
     return (t1, f1, w1, burned1), (t2, f2, w2, burned2), (t3, f3, w3, burned3)
 
 
@@ -224,9 +235,9 @@ def deck():
     w("flight_path_angle_deg = 90.0")
     w("heading_hold_until_s = 6.0")
     w("")
-    w("[control_constraints]  # data block 22")
-    w("zero_alpha_start_s = 12.0")
-    w("zero_alpha_end_s = 55.0")
+    w("[control_constraints]  # data block 22: the window starts and ends on integration points (4 s + k 1.4 s)")
+    w("zero_alpha_start_s = 12.4")
+    w("zero_alpha_end_s = 54.4")
     w("max_pitch_rate_deg_s = 3.0")
     w("min_pitch_rate_deg_s = 0.02")
     w("min_pitch_rate_change_deg_s = 0.02")
@@ -262,7 +273,7 @@ def deck():
     w("[linearization]  # data block 18: 100 x stage + s from ignition")
     w("# lift-off end, the zero-alpha window, the rest of stage 1, stage 2 in three, the coast (implicit), stage 3 in three.")
     w("# A break is coded 100 n + t, so a stage can have breaks in its first 99 s only: stage 3 burns 99 s.")
-    w("coded_times = [104.0, 112.0, 155.0, 200.0, 230.0, 260.0, 290.0, 300.0, 333.0, 366.0, 399.0]")
+    w("coded_times = [104.0, 112.4, 154.4, 200.0, 230.0, 260.0, 290.0, 300.0, 333.0, 366.0, 399.0]")
     w("")
     w("[convergence]  # data block 28 (lb)")
     w("initial_payoff_improvement = 75.0")
