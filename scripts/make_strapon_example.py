@@ -8,10 +8,10 @@ A vehicle unlike the Scout-class one (docs/user-guide.md "A second example: stra
 * two strap-on boosters burning in parallel with a liquid core, modelled as two powered stages
   back to back (stage 1 = boosters + core, stage 2 = the core alone after the boosters drop; no
   coast between them, the boosters' cases jettisoned at the boundary);
-* a short separation coast (7), then a steered upper stage (3) burning 99 s, nearly three times
-  the Scout's longest burn and the longest data block 18 can break into segments (a break is
+* a short separation coast (7), then a steered upper stage (3) burning 99 s, more than twice
+  the Scout's longest burn (45 s) and the longest data block 18 can break into segments (a break is
   coded 100 n + t, so only the first 99 s of a stage can hold one);
-* an elliptic target orbit given by three orbit elements: perigee radius (100 n.mi. perigee
+* an elliptic target orbit given by three orbit elements: perigee radius (80 n.mi. perigee
   altitude), twice the orbital energy (a 80 x 500 n.mi. orbit) and the inclination (40 deg from
   a 28.5 deg launch site, so the launch azimuth is adjusted);
 * a spherical Earth without J2 (inverse flattening 0, J2 0; rotating);
