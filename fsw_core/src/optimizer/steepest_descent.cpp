@@ -230,7 +230,8 @@ ConstraintVector payload_mass_column(const BackwardRun& backward, double g0) { r
 // measure rad^2 s), is what the controls can still do to constraint i alone. A constraint whose
 // pivot is near zero (the inclination of a launch due east at the target inclination: no control
 // changes it to first order) makes nu = M^-1 d psi huge in its direction: a tiny in-deadband error
-// then asks for an enormous pitch change and the next run crashes. The typical control change of
+// then asks for an enormous pitch change, and the next runs fail their deadbands or go below the
+// surface. The typical control change of
 // eq. 5-31, dP^2 = (1 deg)^2 x the burn time, moves constraint i by sqrt(p_i dP^2) deadbands with
 // the others held. Below kMinimumSteerableDeadbands a correction of one deadband would need a
 // pitch change of 1/kMinimumSteerableDeadbands deg RMS over the whole burn (50 deg): far outside
