@@ -13,13 +13,16 @@
 
 namespace {
 
+// `name` is a deck path under examples/: "scout/mission.toml", "scout/reference_optimum.toml",
+// "strapon/mission.toml".
 tolip::Mission& load(const char* name) {
-  static std::unique_ptr<tolip::Mission> missions[2];
-  const int slot = name[0] == 'm' ? 0 : 1;
+  static std::unique_ptr<tolip::Mission> missions[3];
+  const std::string deck(name);
+  const int slot = deck == "scout/mission.toml" ? 0 : deck == "scout/reference_optimum.toml" ? 1 : 2;
   if (!missions[slot]) {
     missions[slot] = tolip::ground::make_mission();
     tolip::ground::DeckError error;
-    const std::string path = std::string(TOLIP_EXAMPLES_DIR) + "/scout/" + name;
+    const std::string path = std::string(TOLIP_EXAMPLES_DIR) + "/" + name;
     if (!tolip::ground::load_toml_deck(path, missions[slot].get(), &error)) {
       std::fprintf(stderr, "%s\n", error.to_string().c_str());
       std::exit(1);
@@ -45,13 +48,19 @@ void optimize_repeatedly(benchmark::State& state, const tolip::Mission& mission)
   state.counters["payload_lb"] = result->payload_lb;
 }
 
-void BM_FullReferenceOptimization(benchmark::State& state) { optimize_repeatedly(state, load("mission.toml")); }
+void BM_FullReferenceOptimization(benchmark::State& state) { optimize_repeatedly(state, load("scout/mission.toml")); }
 BENCHMARK(BM_FullReferenceOptimization)->Unit(benchmark::kMillisecond);
+
+// The second example (examples/strapon): boosters and core back to back, an elliptic target by
+// orbit elements, a spherical Earth, the launch azimuth adjusted (two extra forward runs per
+// backward run), from its crude four-line program: about 70 forward runs.
+void BM_FullStrapOnOptimization(benchmark::State& state) { optimize_repeatedly(state, load("strapon/mission.toml")); }
+BENCHMARK(BM_FullStrapOnOptimization)->Unit(benchmark::kMillisecond);
 
 // The same case as a heritage deck flies it: no heading hold, so the first steps after the lift-off
 // are near-vertical steps in regular coordinates (forward and backward; issue 10).
 void BM_FullReferenceOptimizationWithoutHeadingHold(benchmark::State& state) {
-  static tolip::Mission mission = load("mission.toml");
+  static tolip::Mission mission = load("scout/mission.toml");
   mission.launch.heading_hold_until_s = 0.0;
   optimize_repeatedly(state, mission);
 }
@@ -60,7 +69,7 @@ BENCHMARK(BM_FullReferenceOptimizationWithoutHeadingHold)->Unit(benchmark::kMill
 // One backward run over the reference optimum with the mission's 4 constraints (payload, altitude,
 // gamma_I, V_I - V_circ), terminals given as unit partials.
 void BM_BackwardRun(benchmark::State& state) {
-  const tolip::Mission& mission = load("reference_optimum.toml");
+  const tolip::Mission& mission = load("scout/reference_optimum.toml");
   tolip::OptimizerWorkspace& ws = workspace();
   tolip::prepare_case(mission, &ws.prepared);
   tolip::fly_trajectory(mission, ws.prepared, &ws.nominal);
@@ -78,7 +87,7 @@ void BM_BackwardRun(benchmark::State& state) {
 BENCHMARK(BM_BackwardRun)->Unit(benchmark::kMicrosecond);
 
 void BM_ForwardRunWithProgram(benchmark::State& state) {
-  const tolip::Mission& mission = load("reference_optimum.toml");
+  const tolip::Mission& mission = load("scout/reference_optimum.toml");
   tolip::OptimizerWorkspace& ws = workspace();
   tolip::prepare_case(mission, &ws.prepared);
   tolip::fly_trajectory(mission, ws.prepared, &ws.nominal);

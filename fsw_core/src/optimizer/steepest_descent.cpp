@@ -20,6 +20,10 @@ using SquareMatrix = Eigen::Matrix<double, kMaxConstraints, kMaxConstraints>;
 constexpr double kTypicalPitchChangeRad = 1.0 * kDegToRad;
 // Guidance steps that make the constraint errors worse are retried at half size this many times.
 constexpr int kGuidanceStepHalvings = 3;
+// A step whose forward run fails is retried from the same nominal at half size up to this many
+// times: 1/1024 of the step is a run indistinguishable from the nominal, which flew, so a failure
+// that persists that far is not the step's size.
+constexpr int kCrashRecoveryHalvings = 10;
 
 // ---- the case's constraints and adjustable parameters -----------------------------------------
 
@@ -188,13 +192,32 @@ ConstraintVector parameter_column(const Problem& problem, const BackwardRun& bac
 
 struct Steering {
   int first = 0;  // 0 on optimization runs (payoff included), 1 on guidance runs
+  // Constraints left out of this steering (weak directions of the matrix, below): their rows and
+  // columns are the identity, their sensitivities and requested changes are zero.
+  bool held[kMaxConstraints] = {};
+  // The independent steerability of each constraint: sqrt(pivot dP^2), the deadbands the typical
+  // control change dP^2 moves it with the others held (0 for the payoff and inactive constraints).
+  double steerability_deadbands[kMaxConstraints] = {};
   SquareMatrix matrix = SquareMatrix::Identity();  // integral of Lambda Lambda^T + S Y^-1 S^T (scaled)
   Eigen::LLT<SquareMatrix> cholesky;
 };
 
-ConstraintVector scaled(const Problem& problem, const ConstraintVector& v, int first) {
+// Component i of a constraint-space vector scaled by the deadbands and without the constraints the
+// steering leaves out (the payoff on guidance runs, held constraints).
+ConstraintVector scaled(const Problem& problem, const ConstraintVector& v, const Steering& steering) {
   ConstraintVector out = ConstraintVector::Zero();
-  for (int i = first; i < problem.constraint_count; ++i) out(i) = v(i) / problem.scale[i];
+  for (int i = steering.first; i < problem.constraint_count; ++i) {
+    if (!steering.held[i]) out(i) = v(i) / problem.scale[i];
+  }
+  return out;
+}
+
+// A requested change without the components the steering leaves out.
+ConstraintVector steered_part(const Steering& steering, const ConstraintVector& dpsi) {
+  ConstraintVector out = dpsi;
+  for (int i = 0; i < kMaxConstraints; ++i) {
+    if (i < steering.first || steering.held[i]) out(i) = 0.0;
+  }
   return out;
 }
 
@@ -202,23 +225,76 @@ ConstraintVector scaled(const Problem& problem, const ConstraintVector& v, int f
 // dZ/d(payload mass, slug) = g0 dZ/d(payload weight, lb).
 ConstraintVector payload_mass_column(const BackwardRun& backward, double g0) { return g0 * backward.payload; }
 
+// Weak directions (issue 17). The matrix's pivot for constraint i given the constraints already
+// taken, p_i = M_ii - M_i,T M_T,T^-1 M_T,i (its Schur complement, deadbands^2 per unit of the control
+// measure rad^2 s), is what the controls can still do to constraint i alone. A constraint whose
+// pivot is near zero (the inclination of a launch due east at the target inclination: no control
+// changes it to first order) makes nu = M^-1 d psi huge in its direction: a tiny in-deadband error
+// then asks for an enormous pitch change, and the next runs fail their deadbands or go below the
+// surface. The typical control change of
+// eq. 5-31, dP^2 = (1 deg)^2 x the burn time, moves constraint i by sqrt(p_i dP^2) deadbands with
+// the others held. Below kMinimumSteerableDeadbands a correction of one deadband would need a
+// pitch change of 1/kMinimumSteerableDeadbands deg RMS over the whole burn (50 deg): far outside
+// the first-order theory the step is computed from, so the constraint is held instead: it leaves
+// the steering (row and column replaced by the identity) and is judged only by its deadband.
+constexpr double kMinimumSteerableDeadbands = 0.02;
+
+// Pivoted Cholesky over the constraints (the payoff last, always kept): the strongest remaining
+// pivot is taken first, so of several nearly dependent constraints the weakest is the one held.
+void hold_weak_directions(const Problem& problem, double dp2, SquareMatrix* m, Steering* steering) {
+  SquareMatrix schur = *m;
+  bool taken[kMaxConstraints] = {};
+  const int count = problem.constraint_count;
+  for (int round = 1; round < count; ++round) {
+    int best = -1;
+    for (int i = 1; i < count; ++i) {
+      if (!taken[i] && (best < 0 || schur(i, i) > schur(best, best))) best = i;
+    }
+    if (best < 0) break;
+    const double pivot = schur(best, best);
+    if (!(pivot * dp2 >= kMinimumSteerableDeadbands * kMinimumSteerableDeadbands)) break;
+    taken[best] = true;
+    steering->steerability_deadbands[best] = std::sqrt(pivot * dp2);
+    for (int j = 0; j < count; ++j) {
+      for (int k = 0; k < count; ++k) {
+        if (j != best && k != best) schur(j, k) -= schur(j, best) * schur(best, k) / pivot;
+      }
+    }
+    for (int j = 0; j < count; ++j) schur(j, best) = schur(best, j) = 0.0;
+  }
+  for (int i = 1; i < count; ++i) {
+    if (taken[i]) continue;
+    steering->held[i] = true;
+    const double pivot = schur(i, i);
+    steering->steerability_deadbands[i] = (pivot > 0.0) ? std::sqrt(pivot * dp2) : 0.0;
+    m->row(i).setZero();
+    m->col(i).setZero();
+    (*m)(i, i) = 1.0;
+  }
+}
+
 Status build_steering(const Problem& problem, const BackwardRun& backward, const LaunchColumns& launch,
-                      const bool* free_points, double g0_, int first, Steering* steering) {
+                      const bool* free_points, double g0_, int first, double dp2, Steering* steering) {
+  steering->first = first;
+  for (int i = 0; i < kMaxConstraints; ++i) {
+    steering->held[i] = false;
+    steering->steerability_deadbands[i] = 0.0;
+  }
   SquareMatrix m = SquareMatrix::Zero();
   for (int k = 0; k < backward.point_count; ++k) {
     const double w = backward.quadrature_weight_s[k];
     if (!(w > 0.0) || !free_points[k]) continue;
-    const ConstraintVector g = scaled(problem, backward.theta_gradient[k], first);
+    const ConstraintVector g = scaled(problem, backward.theta_gradient[k], *steering);
     m += g * g.transpose() / w;
   }
   for (int p = 0; p < problem.adjustable_count; ++p) {
     if (!problem.adjustable_active[p]) continue;
-    const ConstraintVector s = scaled(problem, parameter_column(problem, backward, launch, p), first);
+    const ConstraintVector s = scaled(problem, parameter_column(problem, backward, launch, p), *steering);
     m += s * s.transpose() / problem.adjustable_weight[p];
   }
   if (problem.payload_is_control) {
     // The payload enters as a mass in slug (the column of lambda_m at launch, Sec. 9).
-    const ConstraintVector s = scaled(problem, payload_mass_column(backward, g0_), first);
+    const ConstraintVector s = scaled(problem, payload_mass_column(backward, g0_), *steering);
     m += problem.payload_weight * s * s.transpose();
   }
   for (int i = 0; i < kMaxConstraints; ++i) {
@@ -227,7 +303,7 @@ Status build_steering(const Problem& problem, const BackwardRun& backward, const
     m.col(i).setZero();
     m(i, i) = 1.0;
   }
-  steering->first = first;
+  hold_weak_directions(problem, dp2, &m, steering);
   steering->matrix = m;
   steering->cholesky.compute(m);
   if (steering->cholesky.info() != Eigen::Success) return Status::kSteeringMatrixSingular;
@@ -373,7 +449,7 @@ class ClosedLoopSteering final : public PitchFeedback {
                      const Mission& mission, const Trajectory& nominal, const ControlProgram& nominal_program,
                      const Steering& steering, const ConstraintVector& dpsi, double mass_change_slug)
       : problem_(problem), backward_(backward), roles_(roles), mission_(mission), nominal_(nominal),
-        nominal_program_(nominal_program), first_(steering.first), dpsi_(dpsi),
+        nominal_program_(nominal_program), steering_(steering), dpsi_(steered_part(steering, dpsi)),
         mass_change_slug_(mass_change_slug), remaining_(steering.matrix) {
     // The closed-loop points: the first kMaxClosedLoopPoints step starts after lift-off.
     for (int s = 0, n = 0; s < nominal.step_count && n < kMaxClosedLoopPoints; ++s, ++n) {
@@ -387,7 +463,7 @@ class ClosedLoopSteering final : public PitchFeedback {
     for (int j = next_removed_; j < point; ++j) {
       const double w = backward_.quadrature_weight_s[j];
       if (!(w > 0.0) || !roles_.free[j]) continue;
-      const ConstraintVector g = scaled(problem_, backward_.theta_gradient[j], first_);
+      const ConstraintVector g = scaled(problem_, backward_.theta_gradient[j], steering_);
       remaining_ -= g * g.transpose() / w;
     }
     next_removed_ = point;
@@ -399,12 +475,14 @@ class ClosedLoopSteering final : public PitchFeedback {
     dx[6] = mass_change_slug_;
     ConstraintVector rhs = dpsi_;
     const AdjointMatrix& lambda = backward_.lambda[point];
-    for (int i = first_; i < problem_.constraint_count; ++i) rhs(i) -= lambda.col(i).dot(dx) / problem_.scale[i];
+    for (int i = steering_.first; i < problem_.constraint_count; ++i) {
+      if (!steering_.held[i]) rhs(i) -= lambda.col(i).dot(dx) / problem_.scale[i];
+    }
     const ConstraintVector nu = cholesky.solve(rhs);
     for (int j = point; j < backward_.point_count; ++j) {
       const double w = backward_.quadrature_weight_s[j];
       if (!(w > 0.0) || !roles_.free[j]) continue;
-      program->theta_rad[j] = nominal_program_.theta_rad[j] + scaled(problem_, backward_.theta_gradient[j], first_).dot(nu) / w;
+      program->theta_rad[j] = nominal_program_.theta_rad[j] + scaled(problem_, backward_.theta_gradient[j], steering_).dot(nu) / w;
     }
     shape_program(mission_, nominal_, roles_, program);
   }
@@ -416,7 +494,7 @@ class ClosedLoopSteering final : public PitchFeedback {
   const Mission& mission_;
   const Trajectory& nominal_;
   const ControlProgram& nominal_program_;
-  const int first_;
+  const Steering& steering_;  // outlives the forward run it steers
   const ConstraintVector dpsi_;
   const double mass_change_slug_;
   SquareMatrix remaining_;  // M over the controls not yet flown
@@ -443,6 +521,7 @@ class Iteration {
   ConstraintVector corrections(const double achieved[kMaxConstraints]) const;
   double corrected_payoff(const double achieved[kMaxConstraints]) const;
   double burn_time_s() const;
+  double typical_control_measure() const;
 
   Problem problem_;  // a copy: the heating constraint may join during the case
   OptimizerWorkspace* ws_;
@@ -475,6 +554,11 @@ double Iteration::burn_time_s() const {
   return total;
 }
 
+// Eq. 5-31's dP^2: the typical pitch change squared times the burn of the steered stages.
+double Iteration::typical_control_measure() const {
+  return kTypicalPitchChangeRad * kTypicalPitchChangeRad * burn_time_s();
+}
+
 // Records the forward run just made. Beyond the history's capacity the run is still told to the
 // observer and counted in iterations_dropped. A run that failed (run_status not kOk: it went below
 // the surface, say) has no payoff or constraint values of its own: they are NaN, flagged by its
@@ -498,6 +582,9 @@ void Iteration::record(RunKind kind, Status run_status, bool successful, double 
   for (int i = 1; i < problem_.constraint_count; ++i) {
     r.constraint_corrections[i] = flown ? correction(problem_, i, candidate_achieved_) : nan;
     r.payoff_partials[i] = partials_[i];
+    // The initial nominal follows no backward run: nothing was steered or held.
+    r.constraint_held[i] = kind != RunKind::kInitialNominal && result_->constraint_held[i];
+    if (r.constraint_held[i]) ++result_->held_runs[i];
   }
   if (ws_->observer != nullptr) ws_->observer->on_forward_run(r, *result_);
 }
@@ -556,27 +643,37 @@ Status Iteration::backward(int first, Steering* steering) {
   ++result_->backward_runs;
   status = launch_sensitivities();
   if (!ok(status)) return status;
-  // The payoff partials come from the optimization form of the matrix (eq. 9-22).
+  // The payoff partials come from the optimization form of the matrix (eq. 9-22). Both forms hold
+  // the same constraints: their pivots are taken before the payoff's.
+  const double dp2 = typical_control_measure();
   Steering optimization;
-  status = build_steering(problem_, ws_->backward, launch_columns_, roles_.free, ws_->mission.constants.g0_ft_s2, 0, &optimization);
+  status = build_steering(problem_, ws_->backward, launch_columns_, roles_.free, ws_->mission.constants.g0_ft_s2, 0,
+                          dp2, &optimization);
   if (ok(status)) payoff_partials(problem_, optimization.matrix, partials_);
   if (first == 0) {
     *steering = optimization;
-    return status;
+  } else {
+    const Status guidance = build_steering(problem_, ws_->backward, launch_columns_, roles_.free,
+                                           ws_->mission.constants.g0_ft_s2, first, dp2, steering);
+    if (ok(status)) status = guidance;
   }
-  return build_steering(problem_, ws_->backward, launch_columns_, roles_.free, ws_->mission.constants.g0_ft_s2, first, steering);
+  for (int i = 0; i < kMaxConstraints; ++i) {
+    result_->constraint_held[i] = steering->held[i];
+    result_->steerability_deadbands[i] = steering->steerability_deadbands[i];
+  }
+  return status;
 }
 
 // Eqs. 9-3, 9-4 (the open-loop law, K evaluated at launch with dx = 0): the change of every control
 // that yields the requested constraint changes d psi with the least control measure.
 Status Iteration::fly_candidate(const Steering& steering, const ConstraintVector& dpsi, double step_fraction) {
-  const ConstraintVector nu = step_fraction * steering.cholesky.solve(dpsi);
+  const ConstraintVector nu = step_fraction * steering.cholesky.solve(steered_part(steering, dpsi));
   const BackwardRun& b = ws_->backward;
   ws_->candidate_program = ws_->program;
   for (int k = 0; k < b.point_count; ++k) {
     const double w = b.quadrature_weight_s[k];
     if (!(w > 0.0) || !roles_.free[k]) continue;
-    ws_->candidate_program.theta_rad[k] += scaled(problem_, b.theta_gradient[k], steering.first).dot(nu) / w;
+    ws_->candidate_program.theta_rad[k] += scaled(problem_, b.theta_gradient[k], steering).dot(nu) / w;
   }
   shape_program(ws_->mission, ws_->nominal, roles_, &ws_->candidate_program);
   ws_->candidate_mission = ws_->mission;
@@ -585,7 +682,7 @@ Status Iteration::fly_candidate(const Steering& steering, const ConstraintVector
   bool launch_changed = false;
   for (int p = 0; p < problem_.adjustable_count; ++p) {
     if (!problem_.adjustable_active[p]) continue;
-    const double change = scaled(problem_, parameter_column(problem_, b, launch_columns_, p), steering.first).dot(nu) /
+    const double change = scaled(problem_, parameter_column(problem_, b, launch_columns_, p), steering).dot(nu) /
                           problem_.adjustable_weight[p];
     const AdjustableParameter parameter = problem_.adjustable[p];
     switch (parameter) {
@@ -613,17 +710,17 @@ Status Iteration::fly_candidate(const Steering& steering, const ConstraintVector
   if (problem_.payload_is_control) {
     const double g0 = m.constants.g0_ft_s2;
     const double mass_change_slug =
-        problem_.payload_weight * scaled(problem_, payload_mass_column(b, g0), steering.first).dot(nu);
+        problem_.payload_weight * scaled(problem_, payload_mass_column(b, g0), steering).dot(nu);
     m.vehicle.payload_lb += g0 * mass_change_slug;
     if (m.vehicle.payload_lb < 0.0) m.vehicle.payload_lb = 0.0;
   }
   ws_->candidate_prepared = ws_->prepared;
+  ++result_->forward_runs;  // counted before anything can fail, so a failed run has its own number
   if (timeline_changed) {
     const Status status = rebuild_timeline(m, &ws_->candidate_prepared);
     if (!ok(status)) return status;
   }
   if (launch_changed) prepare_launch_geometry(m, &ws_->candidate_prepared);
-  ++result_->forward_runs;
   const double mass_change_slug = (m.vehicle.payload_lb - ws_->mission.vehicle.payload_lb) / m.constants.g0_ft_s2;
   ClosedLoopSteering closed_loop(problem_, b, roles_, ws_->mission, ws_->nominal, ws_->program, steering,
                                  step_fraction * dpsi, mass_change_slug);
@@ -660,22 +757,33 @@ Status Iteration::run(const Mission& input) {
   const int budget = ws_->mission.convergence.max_forward_trajectories;
 
   // Guidance: every forward guidance run becomes the nominal (Sec. 22); a step that makes the
-  // errors worse is retried at half size first (our safeguard, docs/theory/optimizer.md).
+  // errors worse is retried at half size first, and a step whose run failed (below the surface, a
+  // non-finite state) is retried from the same nominal at half size until it flies or
+  // kCrashRecoveryHalvings are spent (our safeguards, docs/theory/optimizer.md "Failed runs"). A
+  // failed run never becomes the nominal; if no step flies, guidance ends there and the case
+  // reports kGuidanceDidNotConverge with the last good nominal.
   Steering steering;
-  while (!within_deadbands(problem_, nominal_achieved_) && result_->forward_runs < budget - 1) {
+  bool guidance_stuck = false;
+  while (!guidance_stuck && !within_deadbands(problem_, nominal_achieved_) && result_->forward_runs < budget - 1) {
     status = backward(1, &steering);
     if (!ok(status)) return status;
     const double before = error_norm(problem_, nominal_achieved_);
     double fraction = 1.0;
-    for (int attempt = 0; attempt <= kGuidanceStepHalvings; ++attempt, fraction *= 0.5) {
+    for (int attempt = 0;; ++attempt, fraction *= 0.5) {
       ++result_->guidance_runs;
       status = fly_candidate(steering, corrections(nominal_achieved_), fraction);
-      const bool better = ok(status) && error_norm(problem_, candidate_achieved_) < before;
+      const bool flown = ok(status);
+      if (!flown) ++result_->crashed_runs;
+      const bool better = flown && error_norm(problem_, candidate_achieved_) < before;
       record(RunKind::kGuidance, status, better && within_deadbands(problem_, candidate_achieved_), 0.0);
-      if (better || attempt == kGuidanceStepHalvings || result_->forward_runs >= budget - 1) break;
+      if (better || result_->forward_runs >= budget - 1) break;
+      if (flown ? attempt >= kGuidanceStepHalvings : attempt >= kCrashRecoveryHalvings) break;
     }
-    if (!ok(status)) return status;
-    accept_candidate();
+    if (ok(status)) {
+      accept_candidate();
+    } else {
+      guidance_stuck = true;
+    }
   }
 
   // Optimization: ask for payoff improvement, judged by the corrected payoff; halve on failure.
@@ -689,8 +797,8 @@ Status Iteration::run(const Mission& input) {
     best_corrected = corrected_payoff(nominal_achieved_);
     const ConstraintVector dphi = corrections(nominal_achieved_);
     if (first_attempt) {
-      const double dp2 = kTypicalPitchChangeRad * kTypicalPitchChangeRad * burn_time_s();
-      if (!initial_payoff_improvement(problem_, steering, dphi, dp2, &attempt_size)) {
+      if (!initial_payoff_improvement(problem_, steering, steered_part(steering, dphi), typical_control_measure(),
+                                      &attempt_size)) {
         attempt_size = ws_->mission.convergence.initial_payoff_improvement;
         result_->initial_improvement_from_da13_1 = true;
       }
@@ -703,6 +811,7 @@ Status Iteration::run(const Mission& input) {
       dpsi(0) = attempt_size;
       status = fly_candidate(steering, dpsi, 1.0);
       ++result_->optimization_runs;
+      if (!ok(status)) ++result_->crashed_runs;  // recovered like any failure: half the attempt
       improved = ok(status) && within_deadbands(problem_, candidate_achieved_) &&
                  corrected_payoff(candidate_achieved_) > best_corrected;
       record(RunKind::kOptimization, status, improved, attempt_size);
@@ -725,6 +834,7 @@ Status Iteration::run(const Mission& input) {
   status = backward(1, &steering);
   if (!ok(status)) return status;
   status = fly_candidate(steering, corrections(nominal_achieved_), 1.0);
+  if (!ok(status)) ++result_->crashed_runs;  // the feasible nominal stays the reported trajectory
   result_->final_guidance_met = ok(status) && within_deadbands(problem_, candidate_achieved_);
   const bool nominal_feasible = within_deadbands(problem_, nominal_achieved_);
   const bool final_accepted =
@@ -788,6 +898,12 @@ Status optimize_trajectory(const Mission& mission, OptimizerWorkspace* workspace
   result->final_guidance_met = false;
   result->initial_payoff_improvement = 0.0;
   result->initial_improvement_from_da13_1 = false;
+  result->crashed_runs = 0;
+  for (int i = 0; i < kMaxConstraints; ++i) {
+    result->constraint_held[i] = false;
+    result->steerability_deadbands[i] = 0.0;
+    result->held_runs[i] = 0;
+  }
   Problem problem;
   Status status = make_problem(mission, &problem);
   if (ok(status)) {

@@ -53,9 +53,11 @@ json iterations_json(const OptimizationReport& report, int rows) {
     const IterationRecord& r = result.iterations[k];
     json corrections = json::array();
     json partials = json::array();
+    json held = json::array();
     for (int i = 1; i <= rows && i < kMaxConstraints; ++i) {
       corrections.push_back(number(r.constraint_corrections[i]));
       partials.push_back(number(r.payoff_partials[i]));
+      held.push_back(r.constraint_held[i]);
     }
     array.push_back(json{
         {"forward_run", r.forward_run},
@@ -69,7 +71,26 @@ json iterations_json(const OptimizationReport& report, int rows) {
         {"payload_increment_lb", number(r.payload_increment_lb)},
         {"constraint_corrections", std::move(corrections)},
         {"payoff_partials", std::move(partials)},
+        {"constraints_held", std::move(held)},
     });
+  }
+  return array;
+}
+
+// Weak directions of the steering matrix (docs/theory/optimizer.md "Weak directions"): one object per
+// entry of `constraints`.
+json held_constraints_json(const OptimizerResult& result, int rows) {
+  json array = json::array();
+  for (int i = 1; i <= rows && i < kMaxConstraints; ++i) {
+    json entry = json{{"code", result.codes[i]},
+                      {"held_runs", result.held_runs[i]},
+                      {"held_at_end", result.constraint_held[i]},
+                      {"steerability_deadbands", number(result.steerability_deadbands[i])}};
+    if (result.held_runs[i] > 0) {
+      entry["message"] = "constraint " + std::to_string(i) + " (code " + std::to_string(result.codes[i]) +
+                         ") has no first-order effect: held by deadband";
+    }
+    array.push_back(std::move(entry));
   }
   return array;
 }
@@ -250,6 +271,8 @@ json optimization_json(const OptimizationReport& report) {
   additions["theta_history"] = theta_history_json(*report.final_trajectory.trajectory);
   additions["iterations"] = iterations_json(report, static_cast<int>(constraints.size()));
   additions["iterations_dropped"] = result.iterations_dropped;
+  additions["failed_runs_recovered"] = result.crashed_runs;
+  additions["held_constraints"] = held_constraints_json(result, static_cast<int>(constraints.size()));
   if (report.exchange_ratios_requested) additions["exchange_ratios"] = exchange_ratios_json(report);
   if (report.linearization_requested) additions["linearized"] = linearized_json(report);
   if (report.body_dynamics_option == 1 || report.body_dynamics_option == 2) {

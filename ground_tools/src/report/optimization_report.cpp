@@ -274,6 +274,13 @@ void write_iteration_table(Pager& pager, const OptimizationReport& report) {
             number_cell(r.corrected_payoff, 4, 18) + number_cell(r.payload_lb, 4, 16) +
             number_cell(r.payload_increment_lb, 4, 19);
     if (!ok(r.run_status)) line += std::string("  RUN FAILED: ") + status_name(r.run_status);
+    std::string held;
+    for (int i = 1; i < kMaxConstraints; ++i) {
+      if (!r.constraint_held[i]) continue;
+      if (!held.empty()) held += ',';
+      held += std::to_string(i);
+    }
+    if (!held.empty()) line += "  HELD: " + held;
     pager.emit(line);
   }
   if (result.iterations_dropped > 0) {
@@ -347,7 +354,7 @@ void write_summary(Pager& pager, const OptimizationReport& report,
     return text;
   };
 
-  pager.reserve(16);
+  pager.reserve(17);
   pager.emit(" OPTIMIZATION SUMMARY");
   pager.emit(labelled("STATUS", status_name(report.status), ""));
   pager.emit(labelled("CONVERGED", result.converged ? "YES" : "NO", ""));
@@ -358,6 +365,15 @@ void write_summary(Pager& pager, const OptimizationReport& report,
   pager.emit(labelled("OPTIMIZATION RUNS", std::to_string(result.optimization_runs) + " (" +
                       std::to_string(result.successful_optimization_runs) + " SUCCESSFUL)", ""));
   pager.emit(labelled("FINAL GUIDANCE RUN", result.final_guidance_met ? "MET EVERY DEADBAND" : "FAILED", ""));
+  pager.emit(labelled("FAILED RUNS RECOVERED", std::to_string(result.crashed_runs), ""));
+  // Weak directions of the steering matrix (docs/theory/optimizer.md "Weak directions").
+  for (int i = 1; i < std::min(result.constraint_count, kMaxConstraints); ++i) {
+    if (result.held_runs[i] == 0) continue;
+    pager.reserve(1);
+    pager.emit("   CONSTRAINT " + std::to_string(i) + " (CODE " + std::to_string(result.codes[i]) +
+               ") HAS NO FIRST-ORDER EFFECT: HELD BY DEADBAND ON " + std::to_string(result.held_runs[i]) + " OF " +
+               std::to_string(result.forward_runs) + " RUNS");
+  }
   pager.emit(labelled("CASE RESULT", ok(report.case_status) ? std::string("kOk")
                                                           : report.case_failed_step + ": " + status_name(report.case_status),
                       ""));

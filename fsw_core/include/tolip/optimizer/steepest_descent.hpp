@@ -40,6 +40,10 @@ struct IterationRecord {
   double constraint_corrections[kMaxConstraints] = {};
   // Partials of payoff with respect to each constraint (eq. 9-22) from the preceding backward run.
   double payoff_partials[kMaxConstraints] = {};
+  // Constraint i was left out of this run's steering: it has no first-order effect the controls
+  // can produce (its steerability was under kMinimumSteerableDeadbands), so it was held by its
+  // deadband instead of driving the step (docs/theory/optimizer.md "Weak directions").
+  bool constraint_held[kMaxConstraints] = {};
 };
 
 // Why the optimization phase ended (Sec. 22: "either until the attempted payoff improvement is
@@ -89,7 +93,17 @@ struct OptimizerResult {
   int iteration_count = 0;
   IterationRecord iterations[kMaxOptimizerIterations];
   int iterations_dropped = 0;  // forward runs after the first kMaxOptimizerIterations, not kept
-
+  // Weak directions of the steering matrix (docs/theory/optimizer.md "Weak directions"): from the
+  // last backward run, constraint i held (left out of the steering: no first-order effect) and its
+  // steerability, the deadbands the typical control change dP^2 of eq. 5-31 moves it with the
+  // other constraints held (0 for the payoff); and over the case, the forward runs on which
+  // constraint i was held.
+  bool constraint_held[kMaxConstraints] = {};
+  double steerability_deadbands[kMaxConstraints] = {};
+  int held_runs[kMaxConstraints] = {};
+  // Forward runs that failed (below the surface, a non-finite state, ...) and were recovered from:
+  // the next attempt started again from the last good nominal with a smaller step.
+  int crashed_runs = 0;
 };
 
 // Told of every forward run as it is recorded (a terminal progress display, a log). Called on the
