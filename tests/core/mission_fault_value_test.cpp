@@ -22,7 +22,7 @@ std::unique_ptr<Mission> reference() {
   return mission;
 }
 
-StageData& stage(Mission& mission, int code) { return mission.vehicle.stages[stage_index(code)]; }
+using test::stage;
 
 MissionFault fault_of(const Mission& mission, Status expected) {
   MissionFault fault;
