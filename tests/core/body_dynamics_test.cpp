@@ -671,7 +671,7 @@ TEST(BodyDynamics, Sec11_ValidationNamesTheFaultyBlock) {
   EXPECT_EQ(fault.data_block, 33);
   m = reference_case(test::ReferenceProgram::kOptimum).mission;
   m.body_dynamics.position_gain[0] = 0.0;
-  EXPECT_EQ(validate_body_dynamics(m, &fault), Status::kValueOutOfRange);
+  EXPECT_EQ(validate_body_dynamics(m, &fault), Status::kBodyDynamicsValueOutOfRange);
   m = reference_case(test::ReferenceProgram::kOptimum).mission;
   m.body_dynamics.pitching_moment_per_rad.clear();
   EXPECT_EQ(validate_body_dynamics(m, &fault), Status::kBodyDynamicsDataMissing);

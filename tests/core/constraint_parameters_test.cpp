@@ -28,11 +28,7 @@ namespace {
 constexpr double kTwoPi = 2.0 * kPi;
 using Vector7 = Eigen::Matrix<double, 7, 1>;
 
-StateVector state_from_json(const nlohmann::json& j) {
-  StateVector x;
-  for (int i = 0; i < 6; ++i) x(i) = j.at(static_cast<std::size_t>(i)).get<double>();
-  return x;
-}
+using test::state_from_json;
 
 StateVector oracle_state(std::size_t n) {
   return state_from_json(test::oracle_test_vectors().at("orbit_elements").at(n).at("state"));

@@ -22,7 +22,7 @@ std::unique_ptr<Mission> reference() {
   return mission;
 }
 
-StageData& stage(Mission& mission, int code) { return mission.vehicle.stages[stage_index(code)]; }
+using test::stage;
 
 MissionFault fault_of(const Mission& mission, Status expected) {
   MissionFault fault;
@@ -46,7 +46,7 @@ TEST(MissionFaultValue, NegativeThrustNamesThePointTheValueAndTheLowerBound) {
   auto mission = reference();
   stage(*mission, 2).vacuum_thrust_lbf.set_y(3, -5.0);
   ASSERT_EQ(stage(*mission, 2).vacuum_thrust_lbf.finalize(), Status::kOk);
-  const MissionFault fault = fault_of(*mission, Status::kValueOutOfRange);
+  const MissionFault fault = fault_of(*mission, Status::kNegativeThrust);
   expect_value(fault, 30, "vacuum_thrust_lbf", 3, -5.0);
   EXPECT_EQ(fault.stage_code, 2);
   EXPECT_TRUE(fault.range.has_low);
@@ -58,12 +58,12 @@ TEST(MissionFaultValue, NegativeThrustNamesThePointTheValueAndTheLowerBound) {
 TEST(MissionFaultValue, ZeroG0AndInverseFlatteningOneCarryTheirExclusiveLowerBound) {
   auto mission = reference();
   mission->constants.g0_ft_s2 = 0.0;
-  MissionFault fault = fault_of(*mission, Status::kValueOutOfRange);
+  MissionFault fault = fault_of(*mission, Status::kConstantOutOfRange);
   expect_value(fault, 10, "g0_ft_s2", -1, 0.0);
   EXPECT_FALSE(fault.range.low_inclusive);
   mission = reference();
   mission->constants.inverse_flattening = 1.0;
-  fault = fault_of(*mission, Status::kValueOutOfRange);
+  fault = fault_of(*mission, Status::kConstantOutOfRange);
   expect_value(fault, 10, "inverse_flattening", -1, 1.0);
   EXPECT_EQ(fault.range.low, 1.0);
   EXPECT_FALSE(fault.range.low_inclusive);
@@ -78,7 +78,7 @@ TEST(Sec4Earth, InverseFlatteningZeroIsAcceptedAsTheSphereAndOtherValuesAtOrBelo
   for (double bad : {1.0, 0.5, -298.3, 1e-300}) {
     mission = reference();
     mission->constants.inverse_flattening = bad;
-    const MissionFault fault = fault_of(*mission, Status::kValueOutOfRange);
+    const MissionFault fault = fault_of(*mission, Status::kConstantOutOfRange);
     expect_value(fault, 10, "inverse_flattening", -1, bad);
     EXPECT_EQ(fault.range.low, 1.0);
     EXPECT_FALSE(fault.range.low_inclusive);
@@ -92,7 +92,7 @@ TEST(Sec4Earth, InverseFlatteningZeroIsAcceptedAsTheSphereAndOtherValuesAtOrBelo
 TEST(MissionFaultValue, LatitudeBeyondNinetyDegreesCarriesPlusMinusHalfPi) {
   auto mission = reference();
   mission->launch.geocentric_latitude_rad = 95.0 * kDegToRad;
-  const MissionFault fault = fault_of(*mission, Status::kValueOutOfRange);
+  const MissionFault fault = fault_of(*mission, Status::kLaunchConditionOutOfRange);
   expect_value(fault, 21, "geocentric_latitude_rad", -1, 95.0 * kDegToRad);
   EXPECT_DOUBLE_EQ(fault.range.low, -0.5 * kPi);
   EXPECT_DOUBLE_EQ(fault.range.high, 0.5 * kPi);
@@ -102,14 +102,14 @@ TEST(MissionFaultValue, LatitudeBeyondNinetyDegreesCarriesPlusMinusHalfPi) {
 TEST(MissionFaultValue, AbsurdAnglesAreRejectedWithinOneTurn) {
   auto mission = reference();
   mission->launch.azimuth_rad = 1e20 * kDegToRad;
-  expect_value(fault_of(*mission, Status::kValueOutOfRange), 21, "azimuth_rad", -1, 1e20 * kDegToRad);
+  expect_value(fault_of(*mission, Status::kLaunchConditionOutOfRange), 21, "azimuth_rad", -1, 1e20 * kDegToRad);
   mission = reference();
   mission->misc.stage4_theta_rad = 1e10 * kDegToRad;
-  expect_value(fault_of(*mission, Status::kValueOutOfRange), 17, "stage4_theta_rad", -1, 1e10 * kDegToRad);
+  expect_value(fault_of(*mission, Status::kMiscellaneousDataOutOfRange), 17, "stage4_theta_rad", -1, 1e10 * kDegToRad);
   mission = reference();
   mission->pitch_program_rad.set_y(2, 1e308);
   ASSERT_EQ(mission->pitch_program_rad.finalize(), Status::kOk);
-  const MissionFault fault = fault_of(*mission, Status::kValueOutOfRange);
+  const MissionFault fault = fault_of(*mission, Status::kPitchAttitudeOutOfRange);
   expect_value(fault, 40, "pitch_program_rad", 2, 1e308);
   EXPECT_DOUBLE_EQ(fault.range.high, 2.0 * kPi);
 }
@@ -117,7 +117,7 @@ TEST(MissionFaultValue, AbsurdAnglesAreRejectedWithinOneTurn) {
 TEST(MissionFaultValue, LaunchAltitudeIsBetweenMinus1500FtAndAnAirLaunch) {
   auto mission = reference();
   mission->launch.altitude_ft = -1e7;
-  const MissionFault fault = fault_of(*mission, Status::kValueOutOfRange);
+  const MissionFault fault = fault_of(*mission, Status::kLaunchConditionOutOfRange);
   expect_value(fault, 21, "altitude_ft", -1, -1e7);
   EXPECT_EQ(fault.range.low, -1500.0);
   EXPECT_EQ(fault.range.high, 100000.0);
@@ -162,7 +162,7 @@ TEST(MissionFaultValue, ConsumableWeightIncreasingDuringTheBurnIsRejected) {
 TEST(MissionFaultValue, ZeroOptimizationDeadbandIsADeckFaultNotAnOptimizerOne) {
   auto mission = reference();
   mission->constraints.deadband_optimization[1] = 0.0;  // constraint entry 2
-  const MissionFault fault = fault_of(*mission, Status::kValueOutOfRange);
+  const MissionFault fault = fault_of(*mission, Status::kDeadbandNotPositive);
   expect_value(fault, 29, "deadband_optimization", 2, 0.0);
   EXPECT_FALSE(fault.range.low_inclusive);
 }
@@ -179,7 +179,7 @@ TEST(MissionFaultValue, StagePointConstraintOnAStageNotFlownIsAnUnknownCode) {
 TEST(MissionFaultValue, ZeroMaxForwardTrajectoriesAndNegativeLiftoffNameTheirBounds) {
   auto mission = reference();
   mission->convergence.max_forward_trajectories = 0;
-  MissionFault fault = fault_of(*mission, Status::kValueOutOfRange);
+  MissionFault fault = fault_of(*mission, Status::kConvergenceDataOutOfRange);
   expect_value(fault, 28, "max_forward_trajectories", -1, 0.0);
   EXPECT_EQ(fault.range.low, 1.0);
   mission = reference();
@@ -198,7 +198,7 @@ TEST(MissionFaultValue, ZeroAlphaWindowBeyondStage1CarriesTheWindow) {
   mission->options.ip[11] = 1;
   mission->control.zero_alpha_start_s = 15.0;
   mission->control.zero_alpha_end_s = 400.0;
-  const MissionFault fault = fault_of(*mission, Status::kValueOutOfRange);
+  const MissionFault fault = fault_of(*mission, Status::kZeroAlphaWindowInvalid);
   expect_value(fault, 22, "zero_alpha_end_s", -1, 400.0);
   EXPECT_EQ(fault.range.low, 15.0);
   EXPECT_DOUBLE_EQ(fault.range.high, stage(*mission, 1).duration_s + mission->constants.time_epsilon_s);
@@ -207,7 +207,7 @@ TEST(MissionFaultValue, ZeroAlphaWindowBeyondStage1CarriesTheWindow) {
 TEST(MissionFaultValue, EveryValueFaultOfTheseEditsHasARangeOrAnExpectation) {
   auto mission = reference();
   mission->output.initial[3] = 0;
-  MissionFault fault = fault_of(*mission, Status::kValueOutOfRange);
+  MissionFault fault = fault_of(*mission, Status::kOutputFrequencyNotPositive);
   EXPECT_TRUE(fault.has_value);
   EXPECT_TRUE(fault.range.has_low || *fault.expected != '\0');
   mission = reference();

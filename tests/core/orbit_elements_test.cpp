@@ -19,11 +19,7 @@ constexpr double kTwoPi = 2.0 * kPi;
 // The oracle's nautical mile: 1852 m rounded to 6076.11549 ft (its altitude keys reproduce this).
 constexpr double kFeetPerNauticalMile = 6076.11549;
 
-StateVector state_from_json(const nlohmann::json& j) {
-  StateVector x;
-  for (int i = 0; i < 6; ++i) x(i) = j.at(static_cast<std::size_t>(i)).get<double>();
-  return x;
-}
+using test::state_from_json;
 
 // Smallest difference of two angles, radians.
 double angle_diff(double a, double b) { return std::fabs(std::remainder(a - b, kTwoPi)); }

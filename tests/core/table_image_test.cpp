@@ -16,13 +16,8 @@
 namespace tolip {
 namespace {
 
-using Image = std::vector<std::uint8_t>;
-
-Image encode(const GuidanceTable& table) {
-  Image image(kTableImageSize);
-  EXPECT_EQ(encode_table_image(table, image.data(), image.size()), Status::kOk);
-  return image;
-}
+using test::encode;
+using test::Image;
 
 std::uint64_t bits(double value) { return std::bit_cast<std::uint64_t>(value); }
 

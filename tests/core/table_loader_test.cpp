@@ -19,13 +19,8 @@
 namespace tolip {
 namespace {
 
-using Image = std::vector<std::uint8_t>;
-
-Image encode(const GuidanceTable& table) {
-  Image image(kTableImageSize);
-  EXPECT_EQ(encode_table_image(table, image.data(), image.size()), Status::kOk);
-  return image;
-}
+using test::encode;
+using test::Image;
 
 // Commands of the active table over a whole flight timeline, as bit patterns.
 std::vector<std::uint64_t> command_trace(const GuidanceTableService& service) {

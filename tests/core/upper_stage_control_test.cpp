@@ -268,7 +268,7 @@ TEST(Sec22Validation, SpinOptionIP9MustFitTheSequenceTheSpunAttitudeCodesAndTheB
   m.linearization.coded_start_times[m.linearization.segment_count] = 0.0;
   m.linearization.coded_start_times[m.linearization.segment_count - 1] = 0.0;
   m.linearization.segment_count -= 2;
-  EXPECT_EQ(validate_mission(m, &fault), Status::kValueOutOfRange);
+  EXPECT_EQ(validate_mission(m, &fault), Status::kSteeredStageWithoutSegments);
   EXPECT_EQ(fault.data_block, 18);
   EXPECT_EQ(fault.stage_code, 4);
 
@@ -277,7 +277,7 @@ TEST(Sec22Validation, SpinOptionIP9MustFitTheSequenceTheSpunAttitudeCodesAndTheB
   l.coded_start_times[l.segment_count + 1] = 410.0;
   l.segment_weights[l.segment_count] = 1.0;
   l.segment_count += 1;
-  EXPECT_EQ(validate_mission(m, &fault), Status::kValueOutOfRange);
+  EXPECT_EQ(validate_mission(m, &fault), Status::kCodedTimeInSpunStage);
   EXPECT_EQ(fault.data_block, 18);
   EXPECT_EQ(fault.stage_code, 4);
 

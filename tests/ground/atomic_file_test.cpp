@@ -22,13 +22,6 @@ void write_plain(const std::filesystem::path& path, const std::string& text) {
   out << text;
 }
 
-bool has_temp_file(const ScratchDirectory& scratch) {
-  for (const std::string& name : scratch.entries()) {
-    if (name.find(".tmp.") != std::string::npos) return true;
-  }
-  return false;
-}
-
 // Fault injection at one step; the hook is a plain function pointer, so the step is global.
 AtomicWriteStep g_failing_step = AtomicWriteStep::kOpen;
 bool fail_at_selected_step(AtomicWriteStep step) { return step == g_failing_step; }
@@ -48,7 +41,7 @@ TEST(AtomicFile, WritesANewFile) {
   std::string error;
   ASSERT_TRUE(write_file_atomically(path.string(), "a,b\n1,2\n", &error)) << error;
   EXPECT_EQ(read_text_file(path), "a,b\n1,2\n");
-  EXPECT_FALSE(has_temp_file(scratch));
+  EXPECT_FALSE(scratch.has_temp_file());
 }
 
 TEST(AtomicFile, WritesAnEmptyFile) {
@@ -105,7 +98,7 @@ TEST(AtomicFile, InjectedFailureAtEveryStepLeavesTheOldFileAndNoTemp) {
     }
     EXPECT_FALSE(error.empty());
     EXPECT_EQ(read_text_file(path), "precious\n") << "step " << static_cast<int>(step);
-    EXPECT_FALSE(has_temp_file(scratch)) << "step " << static_cast<int>(step);
+    EXPECT_FALSE(scratch.has_temp_file()) << "step " << static_cast<int>(step);
     EXPECT_EQ(scratch.entries().size(), 1u);
   }
 }
@@ -132,7 +125,7 @@ TEST(AtomicFile, RealRenameFailureLeavesTargetAndNoTemp) {
   EXPECT_NE(error.find(target.string()), std::string::npos) << error;
   EXPECT_TRUE(std::filesystem::is_directory(target));
   EXPECT_EQ(read_text_file(target / "inside.txt"), "keep me\n");
-  EXPECT_FALSE(has_temp_file(scratch));
+  EXPECT_FALSE(scratch.has_temp_file());
 }
 
 TEST(AtomicFile, MissingDirectoryFailsNamingTheFile) {

@@ -17,6 +17,9 @@
 #include <utility>
 #include <vector>
 
+#include "support/reference_data.hpp"
+#include "support/text_match.hpp"
+
 namespace tolip::test {
 
 struct CommandResult {
@@ -72,6 +75,14 @@ class ScratchDirectory {
       names.push_back(entry.path().filename().string());
     }
     return names;
+  }
+
+  // Whether an atomic write left its temporary file (FILE.tmp.<pid>) behind.
+  bool has_temp_file() const {
+    for (const std::string& name : entries()) {
+      if (name.find(".tmp.") != std::string::npos) return true;
+    }
+    return false;
   }
 
  private:

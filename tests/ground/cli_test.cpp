@@ -11,9 +11,6 @@
 namespace tolip::test {
 namespace {
 
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
 
 TEST(TolipCli, HelpListsTheSubcommandsAndExitCodes) {
   const CommandResult result = run_tolip_executable({"--help"});

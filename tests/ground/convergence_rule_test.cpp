@@ -18,9 +18,7 @@
 namespace tolip::test {
 namespace {
 
-std::string mission_deck() { return std::string(TOLIP_EXAMPLES_DIR) + "/scout/mission.toml"; }
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 void expect_every_constraint_met(const nlohmann::json& document) {
   ASSERT_TRUE(document["constraints"].is_array());

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "support/reference_data.hpp"
+#include "support/text_match.hpp"
 #include "tolip_ground/deck.hpp"
 #include "tolip_ground/deck_extras.hpp"
 
@@ -60,11 +61,6 @@ inline ground::DeckError rejected(const std::string& text, const std::string& na
   const bool loaded = ground::parse_toml_deck(text, name, mission.get(), &error);
   EXPECT_FALSE(loaded) << "deck was accepted but should have been rejected";
   return error;
-}
-
-inline ::testing::AssertionResult contains(const std::string& haystack, const std::string& needle) {
-  if (haystack.find(needle) != std::string::npos) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "'" << haystack << "' does not contain '" << needle << "'";
 }
 
 }  // namespace tolip::test

@@ -13,9 +13,7 @@
 namespace tolip::test {
 namespace {
 
-std::string mission_deck() { return std::string(TOLIP_EXAMPLES_DIR) + "/scout/mission.toml"; }
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 TEST(ExchangeRatioReport, JsonListsEveryPoweredStageWithTheSignsIntuitionAsks) {
   const CommandResult run = run_tolip_executable({"optimize", mission_deck(), "--json"});

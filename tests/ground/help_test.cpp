@@ -11,7 +11,6 @@
 namespace tolip::test {
 namespace {
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 struct CommandHelp {
   const char* command;

@@ -22,9 +22,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
-std::string example(const std::string& name) { return std::string(TOLIP_EXAMPLES_DIR) + "/scout/" + name; }
 
 // A sparse file of `size` bytes (no disk space used).
 std::string sparse_file(const ScratchDirectory& scratch, const std::string& name, off_t size) {
@@ -68,7 +66,7 @@ TEST(InputLimits, OversizedDeckFilesOfBothFormatsAreRefusedBeforeReading) {
   // A TOML deck and a card deck, each a byte past the cap (sparse: NUL bytes beyond the text).
   for (const std::string& name : {std::string("big.toml"), std::string("big.dat")}) {
     const std::string path = (scratch / name).string();
-    fs::copy_file(example(name == "big.toml" ? "mission.toml" : "mission.dat"), path);
+    fs::copy_file(scout_example(name == "big.toml" ? "mission.toml" : "mission.dat"), path);
     ASSERT_EQ(::truncate(path.c_str(), static_cast<off_t>(tolip::ground::kMaxDeckFileBytes + 1)), 0);
     const CommandResult result = run_tolip_bounded({"simulate", path});
     EXPECT_EQ(result.exit_code, 2) << name;

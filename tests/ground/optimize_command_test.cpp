@@ -22,12 +22,7 @@
 namespace tolip::test {
 namespace {
 
-std::string mission_deck() { return std::string(TOLIP_EXAMPLES_DIR) + "/scout/mission.toml"; }
-std::string reference_deck() { return std::string(TOLIP_EXAMPLES_DIR) + "/scout/reference_optimum.toml"; }
 
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
 
 // One `optimize --json --csv FILE` run and one listing run of the example, shared by the tests.
 struct CachedRuns {

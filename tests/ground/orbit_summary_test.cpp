@@ -14,7 +14,6 @@
 namespace tolip::test {
 namespace {
 
-std::string example(const char* name) { return std::string(TOLIP_EXAMPLES_DIR) + "/scout/" + name; }
 
 // The oblate Earth (an ellipse of equatorial radius a and flattening f) at geocentric latitude,
 // written here from its definition: r = a (1 - f) / sqrt(1 - (2 f - f^2) cos^2(latitude)).
@@ -42,7 +41,7 @@ void expect_altitudes_from_the_elements(const nlohmann::json& orbit) {
 }
 
 TEST(OrbitSummary, TheOptimumIsAnOrbitNearThe300NmiTarget) {
-  const CommandResult run = run_tolip_executable({"optimize", example("mission.toml"), "--json"});
+  const CommandResult run = run_tolip_executable({"optimize", scout_example("mission.toml"), "--json"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const nlohmann::json orbit = nlohmann::json::parse(run.out)["orbit"];
   EXPECT_EQ(orbit["path"], "orbit");
@@ -53,14 +52,14 @@ TEST(OrbitSummary, TheOptimumIsAnOrbitNearThe300NmiTarget) {
   EXPECT_NEAR(orbit["perigee_altitude_nmi"].get<double>(), 300.0, 5.0);
   EXPECT_NEAR(orbit["apogee_altitude_nmi"].get<double>(), 300.0, 5.0);
 
-  const CommandResult listing = run_tolip_executable({"optimize", example("mission.toml")});
+  const CommandResult listing = run_tolip_executable({"optimize", scout_example("mission.toml")});
   EXPECT_TRUE(std::regex_search(listing.out, std::regex("\\n ORBIT SUMMARY\\n   PATH +=  +ORBIT\\n   PERIGEE ALTITUDE += +29[0-9]\\.[0-9]{3} N\\.MI\\. AT GEOC LAT")))
       << listing.out.substr(listing.out.find("ORBIT SUMMARY"), 300);
 }
 
 // The crude initial program: its perigee lies 104 n.mi. below the surface.
 TEST(OrbitSummary, TheCrudeProgramIsSuborbitalAndSimulateSaysWhichConstraintsItMisses) {
-  const CommandResult run = run_tolip_executable({"simulate", example("mission.toml"), "--json"});
+  const CommandResult run = run_tolip_executable({"simulate", scout_example("mission.toml"), "--json"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const nlohmann::json d = nlohmann::json::parse(run.out);
   EXPECT_EQ(d["orbit"]["path"], "suborbital");
@@ -75,14 +74,14 @@ TEST(OrbitSummary, TheCrudeProgramIsSuborbitalAndSimulateSaysWhichConstraintsItM
   EXPECT_EQ(altitude["tolerance"].get<double>(), 20000.0);
   for (const nlohmann::json& c : d["constraints"]) EXPECT_EQ(c["met"], false) << c["code"];
 
-  const CommandResult listing = run_tolip_executable({"simulate", example("mission.toml")});
+  const CommandResult listing = run_tolip_executable({"simulate", scout_example("mission.toml")});
   EXPECT_TRUE(std::regex_search(listing.out, std::regex("PATH += SUBORBITAL: PERIGEE BELOW THE SURFACE")));
   EXPECT_TRUE(std::regex_search(listing.out, std::regex(" CONSTRAINTS OF DATA BLOCK 8 ON THIS TRAJECTORY.*\\n.*\\n +1 +7  ALTITUDE +1822834\\.647 +2646107\\.938 .* NO\\n")));
 }
 
 // The reference optimum meets its own constraints in `simulate` too.
 TEST(OrbitSummary, SimulateOfTheReferenceOptimumMeetsItsConstraints) {
-  const CommandResult run = run_tolip_executable({"simulate", example("reference_optimum.toml"), "--json"});
+  const CommandResult run = run_tolip_executable({"simulate", scout_example("reference_optimum.toml"), "--json"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const nlohmann::json d = nlohmann::json::parse(run.out);
   EXPECT_EQ(d["orbit"]["path"], "orbit");

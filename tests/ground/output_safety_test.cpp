@@ -20,9 +20,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
-std::string example(const std::string& name) { return std::string(TOLIP_EXAMPLES_DIR) + "/scout/" + name; }
 
 bool is_named_pipe(const fs::path& path) {
   struct stat info {};
@@ -35,7 +33,7 @@ TEST(Outputs, ExportRefusesAHeaderNamingTheImageFile) {
   // The same file under two spellings.
   const std::string other_spelling = (scratch.path() / "." / "t.bin").string();
   const CommandResult result = run_tolip_bounded(
-      {"export", example("reference_optimum.toml"), "--out", image, "--c-header", other_spelling});
+      {"export", scout_example("reference_optimum.toml"), "--out", image, "--c-header", other_spelling});
   EXPECT_EQ(result.exit_code, 2) << result.err;
   EXPECT_EQ(result.err, "tolip: --out '" + image + "' and --c-header '" + other_spelling +
                             "' name the same file: the header would replace the image; name two different files\n");
@@ -45,7 +43,7 @@ TEST(Outputs, ExportRefusesAHeaderNamingTheImageFile) {
 TEST(Outputs, ExportRefusesAnOutputThatIsTheDeck) {
   ScratchDirectory scratch("hostile_export_deck");
   const std::string deck = (scratch / "deck.toml").string();
-  fs::copy_file(example("reference_optimum.toml"), deck);
+  fs::copy_file(scout_example("reference_optimum.toml"), deck);
   const std::string before = read_text_file(deck);
   const std::string link = (scratch / "link.toml").string();
   fs::create_symlink(deck, link);
@@ -63,7 +61,7 @@ TEST(Outputs, ExportRefusesAnOutputThatIsTheDeck) {
 TEST(Outputs, ConvertRefusesToWriteOverItsInput) {
   ScratchDirectory scratch("hostile_convert_self");
   const std::string deck = (scratch / "a.toml").string();
-  fs::copy_file(example("mission.toml"), deck);
+  fs::copy_file(scout_example("mission.toml"), deck);
   const std::string before = read_text_file(deck);
   const std::string hard_link = (scratch / "b.toml").string();
   fs::create_hard_link(deck, hard_link);
@@ -79,7 +77,7 @@ TEST(Outputs, ConvertRefusesToWriteOverItsInput) {
 TEST(Outputs, SimulateRefusesACsvFileThatIsTheDeck) {
   ScratchDirectory scratch("hostile_csv_deck");
   const std::string deck = (scratch / "deck.toml").string();
-  fs::copy_file(example("reference_optimum.toml"), deck);
+  fs::copy_file(scout_example("reference_optimum.toml"), deck);
   const std::string before = read_text_file(deck);
   const CommandResult result = run_tolip_bounded({"simulate", deck, "--csv", deck});
   EXPECT_EQ(result.exit_code, 2) << result.err;
@@ -103,7 +101,7 @@ TEST(Outputs, OutputsNeverReplaceAFifoASymlinkOrADirectory) {
     const char* kind;
   } outputs[] = {{fifo, "a FIFO (named pipe)"}, {link, "a symbolic link"}, {directory, "a directory"}};
   for (const auto& output : outputs) {
-    const CommandResult result = run_tolip_bounded({"convert", example("mission.toml"), "--to", output.path.string()});
+    const CommandResult result = run_tolip_bounded({"convert", scout_example("mission.toml"), "--to", output.path.string()});
     EXPECT_EQ(result.exit_code, 1) << output.kind;
     EXPECT_EQ(result.err, "tolip: refusing to replace '" + output.path.string() + "': it is " + output.kind +
                               "; tolip writes its outputs only as regular files (remove it or name another file)\n");

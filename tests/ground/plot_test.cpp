@@ -33,7 +33,6 @@ const std::vector<std::string> kTrajectoryFigures(kFigures.begin(), kFigures.end
 
 constexpr double kFeetPerNauticalMile = 1852.0 / 0.3048;
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 bool gnuplot_installed() { return std::system("command -v gnuplot >/dev/null 2>&1") == 0; }
 

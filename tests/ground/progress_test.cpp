@@ -19,7 +19,6 @@ using ground::OptimizerProgress;
 using ground::ProgressLine;
 using ground::ProgressMode;
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 // What is on screen after the carriage returns: the text after the last '\r' that is followed by
 // something, with trailing blanks trimmed.

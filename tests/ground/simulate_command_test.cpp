@@ -17,11 +17,7 @@
 namespace tolip::test {
 namespace {
 
-std::string reference_deck() { return std::string(TOLIP_EXAMPLES_DIR) + "/scout/reference_optimum.toml"; }
 
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
 
 std::vector<std::string> lines_of(const std::string& text) {
   std::vector<std::string> lines;
@@ -72,13 +68,6 @@ int listed_points(const std::string& listing) {
     if (numeric && count == 12) ++numeric_lines;
   }
   return numeric_lines / 2;
-}
-
-bool has_temp_file(const ScratchDirectory& scratch) {
-  for (const std::string& name : scratch.entries()) {
-    if (contains(name, ".tmp.")) return true;
-  }
-  return false;
 }
 
 TEST(SimulateCommand, JsonOfTheReferenceOptimum) {
@@ -144,7 +133,7 @@ TEST(SimulateCommand, CsvHasARowPerPointAndIsWrittenAtomically) {
   EXPECT_EQ(rows[0].rfind("time_s,stage,stage_time_s,velocity_ft_s,gamma_deg,", 0), 0u) << rows[0];
   EXPECT_EQ(rows.size(), 1 + document["trajectory"].size());
   EXPECT_EQ(rows.size(), 1 + document["point_count"].get<std::size_t>());
-  EXPECT_FALSE(has_temp_file(scratch));
+  EXPECT_FALSE(scratch.has_temp_file());
   EXPECT_EQ(scratch.entries().size(), 1u);
 }
 
@@ -163,7 +152,7 @@ TEST(SimulateCommand, CsvWriteFailureExitsOneAndLeavesTheTarget) {
   EXPECT_TRUE(contains(result.err, target.string())) << result.err;
   EXPECT_TRUE(std::filesystem::is_directory(target));
   EXPECT_EQ(read_text_file(target / "keep.txt"), "keep\n");
-  EXPECT_FALSE(has_temp_file(scratch));
+  EXPECT_FALSE(scratch.has_temp_file());
 }
 
 TEST(SimulateCommand, ListingShowsTrajectoryStagesAndTerminalConditions) {

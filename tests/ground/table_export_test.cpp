@@ -36,9 +36,7 @@ namespace {
 
 using Image = std::vector<std::uint8_t>;
 
-std::string reference_deck() { return std::string(TOLIP_EXAMPLES_DIR) + "/scout/reference_optimum.toml"; }
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 Image read_image(const std::filesystem::path& path) {
   const std::string text = read_text_file(path);

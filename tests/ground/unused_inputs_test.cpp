@@ -12,7 +12,6 @@
 namespace tolip::test {
 namespace {
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 int warning_count(const std::string& err) {
   int count = 0;

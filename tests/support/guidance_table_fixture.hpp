@@ -1,13 +1,25 @@
 // Hand-made guidance tables for the table-image, loader and executor tests (no deck involved).
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <cstdint>
 #include <cstring>
+#include <vector>
 
 #include "tolip/core/constants.hpp"
 #include "tolip/table/table_image.hpp"
 
 namespace tolip::test {
+
+// An encoded table image (the table-image and loader tests; not for the allocation-free paths).
+using Image = std::vector<std::uint8_t>;
+
+inline Image encode(const GuidanceTable& table) {
+  Image image(kTableImageSize);
+  EXPECT_EQ(encode_table_image(table, image.data(), image.size()), Status::kOk);
+  return image;
+}
 
 inline void set_text(char* field, std::size_t capacity, const char* text) {
   std::memset(field, 0, capacity + 1);

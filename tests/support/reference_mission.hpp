@@ -14,4 +14,7 @@ enum class ReferenceProgram {
 // Fills *mission (which must be default-constructed) and finalizes its tables.
 void build_reference_mission(ReferenceProgram program, Mission* mission);
 
+// The stage of stage code `code` (1-10), to edit a mission in a test.
+inline StageData& stage(Mission& mission, int code) { return mission.vehicle.stages[stage_index(code)]; }
+
 }  // namespace tolip::test

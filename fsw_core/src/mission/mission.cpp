@@ -186,7 +186,7 @@ int last_powered_stage(const StageSequence& sequence) {
 Status check_options(const Options& options, const Check& check) {
   const int* ip = options.ip;
   auto option = [&](int n, double low, double high) {
-    return check.range(ip[n], between(low, high), Status::kValueOutOfRange, 4, 0, "ip", "", n);
+    return check.range(ip[n], between(low, high), Status::kOptionOutOfRange, 4, 0, "ip", "", n);
   };
   // Options the manual marks "not used" must stay 0.
   const int unused[] = {4, 5, 8, 14, 16, 18, 19, 20};
@@ -199,7 +199,7 @@ Status check_options(const Options& options, const Check& check) {
   TOLIP_CHECK(option(10, 0, 2));
   // IP(6) = 1 (6D after linearization) requires IP(7) = 1.
   if (ip[6] == 1 && ip[7] != 1) {
-    return check.fail(Status::kValueOutOfRange, 4, 0, "ip", 7, ip[7], "", exactly(1),
+    return check.fail(Status::kBodyDynamicsRelinearizationWithoutLinearization, 4, 0, "ip", 7, ip[7], "", exactly(1),
                       "IP(7) = 1 (linearization) with IP(6) = 1");
   }
   return Status::kOk;
@@ -277,7 +277,7 @@ Status check_constants(const Constants& c, const Check& check) {
                         {c.inverse_flattening, "inverse_flattening", ""},
                         {c.ct1_13, "ct1_13", ""}};
   for (const NamedWord& word : words) TOLIP_CHECK(check.finite(word.value, 10, 0, word.field, word.unit));
-  const Status bad = Status::kValueOutOfRange;
+  const Status bad = Status::kConstantOutOfRange;
   TOLIP_CHECK(check.range(c.gravitational_parameter_ft3_s2, above(0.0), bad, 10, 0, "gravitational_parameter_ft3_s2",
                           "ft^3/s^2"));
   TOLIP_CHECK(check.range(c.earth_equatorial_radius_ft, above(0.0), bad, 10, 0, "earth_equatorial_radius_ft", "ft"));
@@ -342,14 +342,14 @@ Status check_stage(const StageData& stage, int code, double time_epsilon_s, cons
                           "integration_steps", ""));
   TOLIP_CHECK(check.range(stage.jettison_weight_lb, at_least(0.0), Status::kNegativeWeight, 39, code,
                           "jettison_weight_lb", "lb"));
-  TOLIP_CHECK(check.range(stage.reference_area_ft2, at_least(0.0), Status::kValueOutOfRange, 39, code,
+  TOLIP_CHECK(check.range(stage.reference_area_ft2, at_least(0.0), Status::kNegativeArea, 39, code,
                           "reference_area_ft2", "ft^2"));
-  TOLIP_CHECK(check.range(stage.nozzle_exit_area_ft2, at_least(0.0), Status::kValueOutOfRange, 39, code,
+  TOLIP_CHECK(check.range(stage.nozzle_exit_area_ft2, at_least(0.0), Status::kNegativeArea, 39, code,
                           "nozzle_exit_area_ft2", "ft^2"));
 
   TOLIP_CHECK(optional_table(stage.drag_coefficient, check, 31, code, "drag_mach", "", "drag_coefficient", ""));
   if (!stage.drag_coefficient.empty() && !(stage.reference_area_ft2 > 0.0)) {
-    return check.fail(Status::kValueOutOfRange, 39, code, "reference_area_ft2", -1, stage.reference_area_ft2, "ft^2",
+    return check.fail(Status::kReferenceAreaMissing, 39, code, "reference_area_ft2", -1, stage.reference_area_ft2, "ft^2",
                       above(0.0), "> 0 for a stage with a drag table (data block 31)");
   }
 
@@ -357,13 +357,13 @@ Status check_stage(const StageData& stage, int code, double time_epsilon_s, cons
     TOLIP_CHECK(check.range(stage.integration_steps, at_most(kMaxCoastSteps), Status::kTooManyCoastSteps, 16, code,
                             "integration_steps", ""));
     if (!stage.vacuum_thrust_lbf.empty()) {
-      return check.fail(Status::kValueOutOfRange, 30, code, "vacuum_thrust_lbf", -1, stage.vacuum_thrust_lbf.size(),
+      return check.fail(Status::kPropulsionInCoast, 30, code, "vacuum_thrust_lbf", -1, stage.vacuum_thrust_lbf.size(),
                         "points", exactly(0), "no thrust table in a coast");
     }
-    TOLIP_CHECK(check.range(stage.nozzle_exit_area_ft2, exactly(0.0), Status::kValueOutOfRange, 39, code,
+    TOLIP_CHECK(check.range(stage.nozzle_exit_area_ft2, exactly(0.0), Status::kPropulsionInCoast, 39, code,
                             "nozzle_exit_area_ft2", "ft^2"));
     if (!stage.consumable_weight_lb.empty()) {
-      return check.fail(Status::kValueOutOfRange, 38, code, "consumable_weight_lb", -1,
+      return check.fail(Status::kPropulsionInCoast, 38, code, "consumable_weight_lb", -1,
                         stage.consumable_weight_lb.size(), "points", exactly(0),
                         "no consumable weight table in a coast");
     }
@@ -381,12 +381,12 @@ Status check_stage(const StageData& stage, int code, double time_epsilon_s, cons
   if (!weight.finalized()) {
     return check.fail(Status::kMissingWeightTable, 38, code, "consumable_weight_lb");
   }
-  TOLIP_CHECK(check.range(thrust.first_x(), at_least(0.0), Status::kValueOutOfRange, 30, code, "vacuum_thrust_time_s",
+  TOLIP_CHECK(check.range(thrust.first_x(), at_least(0.0), Status::kTableTimeNegative, 30, code, "vacuum_thrust_time_s",
                           "s", 0));
-  TOLIP_CHECK(check.range(weight.first_x(), at_least(0.0), Status::kValueOutOfRange, 38, code,
+  TOLIP_CHECK(check.range(weight.first_x(), at_least(0.0), Status::kTableTimeNegative, 38, code,
                           "consumable_weight_time_s", "s", 0));
   for (int i = 0; i < thrust.size(); ++i) {
-    TOLIP_CHECK(check.range(thrust.y(i), at_least(0.0), Status::kValueOutOfRange, 30, code, "vacuum_thrust_lbf", "lbf",
+    TOLIP_CHECK(check.range(thrust.y(i), at_least(0.0), Status::kNegativeThrust, 30, code, "vacuum_thrust_lbf", "lbf",
                             i));
   }
   for (int i = 0; i < weight.size(); ++i) {
@@ -472,7 +472,7 @@ Status check_vehicle(const Vehicle& vehicle, const Constants& constants, const C
         return check.fail(Status::kTableEmpty, 32, i + 1, "lift_curve_slope_per_rad");
       }
       if (!(vehicle.stages[i].reference_area_ft2 > 0.0)) {
-        return check.fail(Status::kValueOutOfRange, 39, i + 1, "reference_area_ft2", -1,
+        return check.fail(Status::kReferenceAreaMissing, 39, i + 1, "reference_area_ft2", -1,
                           vehicle.stages[i].reference_area_ft2, "ft^2", above(0.0),
                           "> 0 for a stage using the lift table (data block 32)");
       }
@@ -499,7 +499,7 @@ Status check_launch(const LaunchConditions& l, const Vehicle& vehicle, const Che
   TOLIP_CHECK(check.finite(l.flight_path_angle_rad, 21, 0, "flight_path_angle_rad", "rad"));
   TOLIP_CHECK(check.finite(l.heading_hold_until_s, 21, 0, "heading_hold_until_s", "s"));
 
-  const Status bad = Status::kValueOutOfRange;
+  const Status bad = Status::kLaunchConditionOutOfRange;
   // The integration starts from the lift-off's end state: at V = 0 (no lift-off) the equations of
   // motion are singular, so the closed-form lift-off must last a while.
   TOLIP_CHECK(check.range(l.liftoff_duration_s, above(0.0), Status::kLiftoffNotPositive, 20, 0, "liftoff_duration_s",
@@ -529,7 +529,7 @@ Status check_control(const ControlConstraints& c, const Options& options, const 
   TOLIP_CHECK(check.finite(c.max_pitch_rate_rad_s, 22, 0, "max_pitch_rate_rad_s", "rad/s"));
   TOLIP_CHECK(check.finite(c.min_pitch_rate_rad_s, 22, 0, "min_pitch_rate_rad_s", "rad/s"));
   TOLIP_CHECK(check.finite(c.min_pitch_rate_change_rad_s, 22, 0, "min_pitch_rate_change_rad_s", "rad/s"));
-  const Status bad = Status::kValueOutOfRange;
+  const Status bad = Status::kPitchRateLimitNegative;
   TOLIP_CHECK(check.range(c.max_pitch_rate_rad_s, at_least(0.0), bad, 22, 0, "max_pitch_rate_rad_s", "rad/s"));
   TOLIP_CHECK(check.range(c.min_pitch_rate_rad_s, at_least(0.0), bad, 22, 0, "min_pitch_rate_rad_s", "rad/s"));
   TOLIP_CHECK(check.range(c.min_pitch_rate_change_rad_s, at_least(0.0), bad, 22, 0, "min_pitch_rate_change_rad_s",
@@ -537,12 +537,12 @@ Status check_control(const ControlConstraints& c, const Options& options, const 
   if (options.zero_alpha_window()) {
     // IP(11): the alpha = 0 window lies inside stage 1 (times from launch).
     const double stage1_end_s = vehicle.stages[stage_index(1)].duration_s + time_epsilon_s;
-    TOLIP_CHECK(check.range(c.zero_alpha_start_s, at_least(0.0), bad, 22, 0, "zero_alpha_start_s", "s"));
+    TOLIP_CHECK(check.range(c.zero_alpha_start_s, at_least(0.0), Status::kZeroAlphaWindowInvalid, 22, 0, "zero_alpha_start_s", "s"));
     if (!(c.zero_alpha_end_s > c.zero_alpha_start_s) || c.zero_alpha_end_s > stage1_end_s) {
       ValueRange window = above(c.zero_alpha_start_s);
       window.has_high = true;
       window.high = stage1_end_s;
-      return check.fail(bad, 22, 1, "zero_alpha_end_s", -1, c.zero_alpha_end_s, "s", window,
+      return check.fail(Status::kZeroAlphaWindowInvalid, 22, 1, "zero_alpha_end_s", -1, c.zero_alpha_end_s, "s", window,
                         "after zero_alpha_start_s, by the end of stage 1 within CT1(10)");
     }
   }
@@ -562,7 +562,7 @@ Status check_misc(const MiscellaneousData& m, const AdjustableParameters& adjust
                         {m.coast_change_limit_s, "coast_change_limit_s", "s"},
                         {m.minimum_coast_s, "minimum_coast_s", "s"}};
   for (const NamedWord& word : words) TOLIP_CHECK(check.finite(word.value, 17, 0, word.field, word.unit));
-  const Status bad = Status::kValueOutOfRange;
+  const Status bad = Status::kMiscellaneousDataOutOfRange;
   // The spun-stage attitudes are angles: within one turn either way.
   const int angles[] = {0, 1, 4, 5};
   for (int i : angles) {
@@ -576,7 +576,7 @@ Status check_misc(const MiscellaneousData& m, const AdjustableParameters& adjust
   // DA2(16) "must be input if any coast is used as an adjustable parameter".
   for (int i = 0; i < adjustable.count && i < kMaxAdjustableParameters; ++i) {
     if (coast_adjustable_code(adjustable.codes[i]) && !(m.coast_change_limit_s > 0.0)) {
-      return check.fail(bad, 17, 0, "coast_change_limit_s", -1, m.coast_change_limit_s, "s", above(0.0),
+      return check.fail(Status::kCoastChangeLimitMissing, 17, 0, "coast_change_limit_s", -1, m.coast_change_limit_s, "s", above(0.0),
                         "> 0 when a coast is an adjustable parameter (data block 6)");
     }
   }
@@ -589,7 +589,7 @@ Status check_misc(const MiscellaneousData& m, const AdjustableParameters& adjust
 Status check_constraints(const ConstraintList& c, const Options& options, const Vehicle& vehicle,
                          const Check& check) {
   if (c.count > kMaxConstraints) return check.fail(Status::kTooManyConstraints, 8, 0, "count");
-  TOLIP_CHECK(check.range(c.count, at_least(1), Status::kValueOutOfRange, 8, 0, "count", ""));
+  TOLIP_CHECK(check.range(c.count, at_least(1), Status::kNoPayoffConstraint, 8, 0, "count", ""));
   for (int i = 0; i < kMaxConstraints + 1; ++i) TOLIP_CHECK(check.finite(c.desired[i], 19, 0, "desired", "", i));
   for (int j = 0; j < kMaxConstraints; ++j) {
     TOLIP_CHECK(check.finite(c.deadband_optimization[j], 29, 0, "deadband_optimization", "", j + 1));
@@ -607,12 +607,12 @@ Status check_constraints(const ConstraintList& c, const Options& options, const 
                         ValueRange{}, kKnownCodes);
     }
     if (code == 0 && i != 0) {
-      return check.fail(Status::kValueOutOfRange, 8, 0, "codes", i, code, "", ValueRange{},
+      return check.fail(Status::kPayloadCodeNotFirst, 8, 0, "codes", i, code, "", ValueRange{},
                         "payload (code 0) only as the payoff, the first entry");
     }
     for (int j = 0; j < i; ++j) {
       if (c.codes[j] == code) {
-        return check.fail(Status::kValueOutOfRange, 8, 0, "codes", i, code, "", ValueRange{},
+        return check.fail(Status::kDuplicateConstraintCode, 8, 0, "codes", i, code, "", ValueRange{},
                           "each code once (it is listed twice)");
       }
     }
@@ -623,13 +623,13 @@ Status check_constraints(const ConstraintList& c, const Options& options, const 
                          (options.payoff() == 1 && (payoff == 1 || payoff == 5)) ||
                          (options.payoff() == 2 && payoff == 7);
   if (!payoff_ok) {
-    return check.fail(Status::kValueOutOfRange, 8, 0, "codes", 0, payoff, "", ValueRange{},
+    return check.fail(Status::kPayoffCodeMismatch, 8, 0, "codes", 0, payoff, "", ValueRange{},
                       "the payoff of IP(1): code 0 with payoff 0, 1 or 5 with payoff 1, 7 with payoff 2");
   }
   // The heating code 14 follows the counted list exactly when IP(2) = 1.
   const bool heating_listed = c.count < kMaxConstraints + 1 && c.codes[c.count] == 14;
   if (options.heating_constraint() != heating_listed) {
-    return check.fail(Status::kValueOutOfRange, 8, 0, "codes", c.count, c.codes[c.count], "", ValueRange{},
+    return check.fail(Status::kHeatingCodeMismatch, 8, 0, "codes", c.count, c.codes[c.count], "", ValueRange{},
                       "the heating code 14 after the counted constraints exactly when IP(2) = 1");
   }
   // The optimizer appends the heating constraint to the counted list when it activates (Sec. 13),
@@ -643,11 +643,11 @@ Status check_constraints(const ConstraintList& c, const Options& options, const 
   // linearization deadband.
   const int deadbands = c.count - 1 + (heating_listed ? 1 : 0);
   for (int j = 0; j < deadbands; ++j) {
-    TOLIP_CHECK(check.range(c.deadband_optimization[j], above(0.0), Status::kValueOutOfRange, 29, 0,
+    TOLIP_CHECK(check.range(c.deadband_optimization[j], above(0.0), Status::kDeadbandNotPositive, 29, 0,
                             "deadband_optimization", "", j + 1));
     const int code = c.codes[j + 1];
     const bool fitted = options.linearization() && j + 1 < c.count && code != 10 && code != 12;
-    TOLIP_CHECK(check.range(c.deadband_linearization[j], fitted ? above(0.0) : at_least(0.0), Status::kValueOutOfRange,
+    TOLIP_CHECK(check.range(c.deadband_linearization[j], fitted ? above(0.0) : at_least(0.0), Status::kDeadbandNotPositive,
                             29, 0, "deadband_linearization", "", j + 1));
   }
   return Status::kOk;
@@ -659,14 +659,14 @@ Status check_adjustable(const AdjustableParameters& a, const Options& options, c
   if (a.count > kMaxAdjustableParameters) {
     return check.fail(Status::kTooManyAdjustableParameters, 6, 0, "count");
   }
-  TOLIP_CHECK(check.range(a.count, at_least(0), Status::kValueOutOfRange, 6, 0, "count", ""));
+  TOLIP_CHECK(check.range(a.count, at_least(0), Status::kNegativeCount, 6, 0, "count", ""));
   for (int i = 0; i < kMaxAdjustableParameters; ++i) TOLIP_CHECK(check.finite(a.weights[i], 27, 0, "weights", "", i));
   for (int i = 0; i < a.count; ++i) {
     const int code = a.codes[i];
-    TOLIP_CHECK(check.range(code, between(1, 11), Status::kValueOutOfRange, 6, 0, "codes", "", i));
+    TOLIP_CHECK(check.range(code, between(1, 11), Status::kUnknownAdjustableParameterCode, 6, 0, "codes", "", i));
     for (int j = 0; j < i; ++j) {
       if (a.codes[j] == code) {
-        return check.fail(Status::kValueOutOfRange, 6, 0, "codes", i, code, "", ValueRange{},
+        return check.fail(Status::kDuplicateAdjustableParameterCode, 6, 0, "codes", i, code, "", ValueRange{},
                           "each code once (it is listed twice)");
       }
     }
@@ -694,7 +694,7 @@ Status check_adjustable(const AdjustableParameters& a, const Options& options, c
                                             "IP(9) = 2 (with IP(9) = 1 stage 5 flies stage 4's attitudes: codes 1, 2)");
       }
     }
-    TOLIP_CHECK(check.range(a.weights[i], above(0.0), Status::kValueOutOfRange, 27, 0, "weights", "", i));
+    TOLIP_CHECK(check.range(a.weights[i], above(0.0), Status::kWeightingFactorNotPositive, 27, 0, "weights", "", i));
   }
   return Status::kOk;
 }
@@ -711,7 +711,7 @@ Status check_linearization(const LinearizationData& l, const Options& options, c
   if (l.segment_count > kMaxLinearSegments) {
     return check.fail(Status::kTooManyLinearSegments, 18, 0, "segment_count");
   }
-  TOLIP_CHECK(check.range(l.segment_count, at_least(0), Status::kValueOutOfRange, 18, 0, "segment_count", ""));
+  TOLIP_CHECK(check.range(l.segment_count, at_least(0), Status::kNegativeCount, 18, 0, "segment_count", ""));
   for (int i = 0; i < kMaxLinearSegments + 1; ++i) {
     TOLIP_CHECK(check.finite(l.coded_start_times[i], 18, 0, "coded_start_times", "", i));
   }
@@ -720,7 +720,7 @@ Status check_linearization(const LinearizationData& l, const Options& options, c
   while (times < kMaxLinearSegments + 1 && l.coded_start_times[times] != 0.0) ++times;
   for (int i = times; i < kMaxLinearSegments + 1; ++i) {
     if (l.coded_start_times[i] != 0.0) {
-      return check.fail(Status::kValueOutOfRange, 18, 0, "coded_start_times", i, l.coded_start_times[i], "",
+      return check.fail(Status::kCodedTimeAfterUnusedEntry, 18, 0, "coded_start_times", i, l.coded_start_times[i], "",
                         exactly(0.0), "0 after the first unused entry");
     }
   }
@@ -729,13 +729,13 @@ Status check_linearization(const LinearizationData& l, const Options& options, c
     const double stage = std::floor(coded / 100.0);
     const int code = stage >= 1.0 && stage <= static_cast<double>(kMaxPoweredStages) ? static_cast<int>(stage) : 0;
     if (code == 0 || !vehicle.stages[stage_index(code)].in_sequence) {
-      return check.fail(Status::kValueOutOfRange, 18, 0, "coded_start_times", i, coded, "", ValueRange{},
+      return check.fail(Status::kCodedTimeStageInvalid, 18, 0, "coded_start_times", i, coded, "", ValueRange{},
                         "100 n + t with n a powered stage of the sequence");
     }
     // Segments belong to the stages that fly the pitch program (IP(9)): a spun stage holds its
     // data block 17 attitudes.
     if (!options.stage_is_steered(code)) {
-      return check.fail(Status::kValueOutOfRange, 18, code, "coded_start_times", i, coded, "", ValueRange{},
+      return check.fail(Status::kCodedTimeInSpunStage, 18, code, "coded_start_times", i, coded, "", ValueRange{},
                         "100 n + t with n a stage that flies the pitch program (IP(9) spins this one)");
     }
     if (i > 0 && !(coded > l.coded_start_times[i - 1])) {
@@ -760,24 +760,24 @@ Status check_linearization(const LinearizationData& l, const Options& options, c
   // flies the pitch program (stages 4 and 5 too when IP(9) steers them) has its coded times, or
   // the linearized trajectory would fly it at the last break's value.
   if (options.linearization()) {
-    TOLIP_CHECK(check.range(l.segment_count, at_least(1), Status::kValueOutOfRange, 18, 0, "segment_count", ""));
+    TOLIP_CHECK(check.range(l.segment_count, at_least(1), Status::kLinearizationWithoutSegments, 18, 0, "segment_count", ""));
     for (int code = 1; code <= kMaxPoweredStages; ++code) {
       if (!vehicle.stages[stage_index(code)].in_sequence || !options.stage_is_steered(code)) continue;
       bool listed = false;
       for (int i = 0; i < times; ++i) listed = listed || std::floor(l.coded_start_times[i] / 100.0) == code;
       if (!listed) {
-        return check.fail(Status::kValueOutOfRange, 18, code, "coded_start_times", -1, 100.0 * code, "", ValueRange{},
+        return check.fail(Status::kSteeredStageWithoutSegments, 18, code, "coded_start_times", -1, 100.0 * code, "", ValueRange{},
                           "coded times 100 n + t in every stage that flies the pitch program (its ignition "
                           "100 n and burnout 100 n + duration), IP(9) counting stages 4 and 5 when continuous");
       }
     }
   }
   if (times != (l.segment_count > 0 ? l.segment_count + 1 : 0)) {
-    return check.fail(Status::kValueOutOfRange, 18, 0, "segment_count", -1, l.segment_count, "",
+    return check.fail(Status::kSegmentCountMismatch, 18, 0, "segment_count", -1, l.segment_count, "",
                       exactly(times > 0 ? times - 1 : 0), "the number of coded times - 1");
   }
   for (int i = 0; i < l.segment_count; ++i) {
-    TOLIP_CHECK(check.range(l.segment_weights[i], above(0.0), Status::kValueOutOfRange, 26, 0, "segment_weights", "", i));
+    TOLIP_CHECK(check.range(l.segment_weights[i], above(0.0), Status::kWeightingFactorNotPositive, 26, 0, "segment_weights", "", i));
   }
   return Status::kOk;
 }
@@ -786,7 +786,7 @@ Status check_linearization(const LinearizationData& l, const Options& options, c
 Status check_convergence(const ConvergenceData& c, const Check& check) {
   TOLIP_CHECK(check.finite(c.initial_payoff_improvement, 28, 0, "initial_payoff_improvement", ""));
   TOLIP_CHECK(check.finite(c.stop_improvement, 28, 0, "stop_improvement", ""));
-  const Status bad = Status::kValueOutOfRange;
+  const Status bad = Status::kConvergenceDataOutOfRange;
   TOLIP_CHECK(check.range(c.initial_payoff_improvement, at_least(0.0), bad, 28, 0, "initial_payoff_improvement", ""));
   TOLIP_CHECK(check.range(c.stop_improvement, at_least(0.0), bad, 28, 0, "stop_improvement", ""));
   TOLIP_CHECK(check.range(c.max_forward_trajectories, at_least(1), bad, 28, 0, "max_forward_trajectories", ""));
@@ -796,7 +796,7 @@ Status check_convergence(const ConvergenceData& c, const Check& check) {
 
 // ---- data block 9 -------------------------------------------------------------------------------
 Status check_output(const OutputFrequency& o, const Check& check) {
-  const Status bad = Status::kValueOutOfRange;
+  const Status bad = Status::kOutputFrequencyNotPositive;
   for (int i = 0; i < kMaxStages; ++i) {
     TOLIP_CHECK(check.range(o.initial[i], at_least(1), bad, 9, i + 1, "initial", "", i));
     TOLIP_CHECK(check.range(o.intermediate[i], at_least(1), bad, 9, i + 1, "intermediate", "", i));
@@ -830,7 +830,7 @@ Status check_body_dynamics(const Mission& mission, const Check& check) {
   TOLIP_CHECK(check.finite(b.control_surfaces_per_plane, 33, 0, "control_surfaces_per_plane", ""));
   // Stage 1 (and the coast after it) is what a 6D run flies: a positive position gain (eq. 7-6
   // divides by K_theta M_delta - M_alpha, and K_theta = 0 means no autopilot), a rate gain >= 0.
-  const Status bad = Status::kValueOutOfRange;
+  const Status bad = Status::kBodyDynamicsValueOutOfRange;
   TOLIP_CHECK(check.range(b.position_gain[0], above(0.0), bad, 33, 1, "position_gain", "", 0));
   TOLIP_CHECK(check.range(b.rate_gain_s[0], at_least(0.0), bad, 33, 1, "rate_gain_s", "s", 0));
   TOLIP_CHECK(check.range(b.jet_vane_effectiveness_per_rad, at_least(0.0), bad, 33, 0, "jet_vane_effectiveness_per_rad",
@@ -890,7 +890,7 @@ Status validate_mission(const Mission& mission, MissionFault* fault) {
   if (pitch.empty()) return check.fail(Status::kTableEmpty, 40, 0, "pitch_program_rad");
   TOLIP_CHECK(optional_table(pitch, check, 40, 0, "pitch_program_time_s", "s", "pitch_program_rad", "rad"));
   for (int i = 0; i < pitch.size(); ++i) {
-    TOLIP_CHECK(check.range(pitch.y(i), between(-kFullTurn_rad, kFullTurn_rad), Status::kValueOutOfRange, 40, 0,
+    TOLIP_CHECK(check.range(pitch.y(i), between(-kFullTurn_rad, kFullTurn_rad), Status::kPitchAttitudeOutOfRange, 40, 0,
                             "pitch_program_rad", "rad", i));
   }
 

@@ -11,6 +11,9 @@
 namespace tolip::ground {
 namespace {
 
+// What parse_command_line() returns when a command is to run (exit codes are 0 to 2).
+constexpr int kRunCommand = -1;
+
 constexpr const char* kDescription =
     "TOLIP - Trajectory Optimization and Linearized Pitch (NASA CR-66515, 1966),\n"
     "a modern re-implementation for Scout-class launch vehicles.";
@@ -70,18 +73,8 @@ CLI::Validator not_blank(const std::string& expected) {
       "");
 }
 
-}  // namespace
-
-int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
-  CLI::App app{kDescription, "tolip"};
-  app.footer(kFooter);
-  app.set_version_flag("--version", std::string("tolip ") + version_string(),
-                       "Print the program version and exit");
-  app.require_subcommand(1);
-  app.fallthrough(false);
-
-  // ---- atmosphere ------------------------------------------------------------------------------
-  AtmosphereCommandOptions atmosphere_options;
+// tolip atmosphere: the 1962 ARDC atmosphere at one altitude.
+CLI::App* add_atmosphere_command(CLI::App& app, AtmosphereCommandOptions* options) {
   CLI::App* atmosphere = app.add_subcommand(
       "atmosphere",
       "Evaluate the 1962 ARDC standard atmosphere of manual\n"
@@ -97,19 +90,21 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
       "unparsable or non-finite altitude, or outside -16404 to 1000000 ft).\n"
       "Full reference: docs/cli.md, 'tolip atmosphere'.");
   atmosphere
-      ->add_option("--altitude-ft", atmosphere_options.altitude_ft,
+      ->add_option("--altitude-ft", options->altitude_ft,
                    "Geometric altitude, ft, -16404 (-5 km) to 1000000")
       ->required()
       ->check(not_blank("an altitude in ft"))
       ->type_name("FT");
-  atmosphere->add_flag("--json", atmosphere_options.json,
+  atmosphere->add_flag("--json", options->json,
                        "Print one JSON object instead of text (keys\n"
                        "altitude_ft, geopotential_altitude_ft, earth_radius_ft,\n"
                        "density_slug_ft3, pressure_lbf_ft2, speed_of_sound_ft_s,\n"
                        "temperature_R)");
+  return atmosphere;
+}
 
-  // ---- simulate --------------------------------------------------------------------------------
-  SimulateCommandOptions simulate_options;
+// tolip simulate: fly each case of a deck and report it.
+CLI::App* add_simulate_command(CLI::App& app, SimulateCommandOptions* options) {
   CLI::App* simulate = app.add_subcommand(
       "simulate",
       "Load a case deck (TOML, or a heritage card deck recognised by\n"
@@ -130,28 +125,30 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
       "any case (everything is still printed) or the CSV not written\n"
       "(nothing printed); 2 bad command line or deck.\n"
       "Full reference: docs/cli.md, 'tolip simulate'.");
-  simulate->add_option("DECK", simulate_options.deck_path,
+  simulate->add_option("DECK", options->deck_path,
                        "TOML deck or card deck of one or more cases, recognised\n"
                        "by content (docs/deck-format.md)")
       ->required()
       ->type_name("FILE");
   simulate
-      ->add_option("--csv", simulate_options.csv_path,
+      ->add_option("--csv", options->csv_path,
                    "Also write EVERY integration point (not thinned) to\n"
                    "FILE as CSV with a header row; for a deck of several\n"
                    "cases one file per case, FILE.caseN.csv. Written\n"
                    "atomically (FILE.tmp.<pid>, then rename): on failure an\n"
                    "existing FILE is left untouched and the exit code is 1")
       ->type_name("FILE");
-  simulate->add_flag("--json", simulate_options.json,
+  simulate->add_flag("--json", options->json,
                      "Print one JSON document (status, burnout state,\n"
                      "inertial velocity, orbit elements, stage events, every\n"
                      "point) instead of the listing; a JSON array of one per\n"
                      "case for a deck of several cases. Printed also when the\n"
                      "trajectory fails (then with exit code 1)");
+  return simulate;
+}
 
-  // ---- optimize --------------------------------------------------------------------------------
-  OptimizeCommandOptions optimize_options;
+// tolip optimize: optimize each case of a deck.
+CLI::App* add_optimize_command(CLI::App& app, OptimizeCommandOptions* options) {
   CLI::App* optimize = app.add_subcommand(
       "optimize",
       "Load a case deck (TOML, or a card deck of one or more\n"
@@ -182,20 +179,20 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
       "2 bad command line, deck, or a case the optimizer rejects\n"
       "(unsupported payoff, adjustable parameter or constraint code).\n"
       "Full reference: docs/cli.md, 'tolip optimize'.");
-  optimize->add_option("DECK", optimize_options.deck_path,
+  optimize->add_option("DECK", options->deck_path,
                        "TOML deck or card deck of one or more cases, recognised\n"
                        "by content (docs/deck-format.md)")
       ->required()
       ->type_name("FILE");
   optimize
-      ->add_option("--csv", optimize_options.csv_path,
+      ->add_option("--csv", options->csv_path,
                    "Also write EVERY integration point of the final\n"
                    "trajectory to FILE as CSV (the columns of simulate\n"
                    "--csv; FILE.caseN.csv per case of a several-case deck),\n"
                    "atomically; on a write failure an existing FILE is left\n"
                    "untouched, nothing is printed and the exit code is 1")
       ->type_name("FILE");
-  optimize->add_flag("--json", optimize_options.json,
+  optimize->add_flag("--json", options->json,
                      "Print one JSON document instead of the listing: the\n"
                      "simulate --json keys for the final trajectory plus\n"
                      "converged, forward_runs, backward_runs, payoff,\n"
@@ -203,18 +200,20 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
                      "theta_history, iterations (docs/cli.md); a JSON array\n"
                      "of one document per case for a deck of several cases");
   CLI::Option* progress_on = optimize->add_flag_callback(
-      "--progress", [&optimize_options] { optimize_options.progress = ProgressMode::kOn; },
+      "--progress", [options] { options->progress = ProgressMode::kOn; },
       "Show the one-line status of the forward runs on\n"
       "stderr ('forward run 7  payoff 301.2 lb  successful')\n"
       "even when stderr is not a terminal. Default: shown only\n"
       "on a terminal; it never reaches stdout");
   CLI::Option* progress_off = optimize->add_flag_callback(
-      "--no-progress", [&optimize_options] { optimize_options.progress = ProgressMode::kOff; },
+      "--no-progress", [options] { options->progress = ProgressMode::kOff; },
       "Never show the status line, not even on a terminal");
   progress_on->excludes(progress_off);
+  return optimize;
+}
 
-  // ---- plot ------------------------------------------------------------------------------------
-  PlotCommandOptions plot_options;
+// tolip plot: draw the figures of a JSON result with gnuplot.
+CLI::App* add_plot_command(CLI::App& app, PlotCommandOptions* options) {
   CLI::App* plot = app.add_subcommand(
       "plot",
       "Draw the figures of a result - the JSON printed by\n"
@@ -249,21 +248,23 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
       "larger than 64 MiB), or a result that is not valid JSON or lacks\n"
       "the fields (the message names the field).\n"
       "Full reference: docs/cli.md, 'tolip plot'.");
-  plot->add_option("RESULT", plot_options.result_path,
+  plot->add_option("RESULT", options->result_path,
                    "JSON result of simulate --json or optimize --json: one\n"
                    "document, or an array of one per case")
       ->required()
       ->type_name("FILE");
-  plot->add_option("--out", plot_options.out_dir, "Directory for the figures; made when missing")
+  plot->add_option("--out", options->out_dir, "Directory for the figures; made when missing")
       ->required()
       ->type_name("DIR");
-  plot->add_option("--gnuplot", plot_options.gnuplot,
+  plot->add_option("--gnuplot", options->gnuplot,
                    "The gnuplot program to run (default: $TOLIP_GNUPLOT,\n"
                    "else gnuplot on PATH; Debian package gnuplot-nox)")
       ->type_name("PROGRAM");
+  return plot;
+}
 
-  // ---- export / inspect (guidance table image, docs/table-format.md) ----------------------------
-  ExportCommandOptions export_options;
+// tolip export: write the guidance table image of a case (docs/table-format.md).
+CLI::App* add_export_command(CLI::App& app, ExportCommandOptions* options) {
   CLI::App* export_command = app.add_subcommand(
       "export",
       "Build the guidance-computer table image (docs/table-format.md)\n"
@@ -289,37 +290,40 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
       "naming one file, or the deck), deck, or a case the image cannot\n"
       "carry (the message names the data block).\n"
       "Full reference: docs/cli.md, 'tolip export'; docs/table-format.md.");
-  export_command->add_option("DECK", export_options.deck_path,
+  export_command->add_option("DECK", options->deck_path,
                              "TOML deck or card deck of one case\n"
                              "(docs/deck-format.md)")
       ->required()
       ->type_name("FILE");
-  export_command->add_option("--out", export_options.out_path, "The binary image (812 bytes)")
+  export_command->add_option("--out", options->out_path, "The binary image (812 bytes)")
       ->required()
       ->type_name("FILE");
-  export_command->add_option("--c-header", export_options.c_header_path,
+  export_command->add_option("--c-header", options->c_header_path,
                              "Also write the image as a C const array NAME in the\n"
                              "linker section .tolip_table, with the macros\n"
                              "TOLIP_TABLE_IMAGE_<SYMBOL>_H_SIZE (812u) and\n"
                              "TOLIP_TABLE_IMAGE_<SYMBOL>_H_CRC32, <SYMBOL> = NAME\n"
                              "upper-cased (include guard TOLIP_TABLE_IMAGE_<SYMBOL>_H)")
       ->type_name("FILE");
-  export_command->add_option("--symbol", export_options.symbol,
+  export_command->add_option("--symbol", options->symbol,
                              "C array name in the header, a C identifier\n"
                              "(default tolip_pitch_table)")
       ->type_name("NAME");
-  export_command->add_option("--mission-id", export_options.mission_id,
+  export_command->add_option("--mission-id", options->mission_id,
                              "Mission identifier, 1-32 printable ASCII characters\n"
                              "(default: the case title, data block 1)")
       ->check(not_blank("1-32 printable ASCII characters (leave the option out for the case title)"))
       ->type_name("TEXT");
-  export_command->add_option("--created-unix-s", export_options.created_unix_s,
+  export_command->add_option("--created-unix-s", options->created_unix_s,
                              "Creation stamp, s since 1970-01-01Z, 0-253402300799\n"
                              "(default: SOURCE_DATE_EPOCH, else the current time);\n"
                              "fix it for byte-identical repeated exports")
       ->type_name("N");
+  return export_command;
+}
 
-  InspectCommandOptions inspect_options;
+// tolip inspect: validate and print a guidance table image.
+CLI::App* add_inspect_command(CLI::App& app, InspectCommandOptions* options) {
   CLI::App* inspect = app.add_subcommand(
       "inspect",
       "Validate a guidance table image with the flight-side loader's\n"
@@ -336,15 +340,17 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
       "directory, or larger than an image: at most 812 bytes are read) or\n"
       "invalid image (stderr names the status, e.g. kTableImageCrcMismatch).\n"
       "Full reference: docs/cli.md, 'tolip inspect'.");
-  inspect->add_option("IMAGE", inspect_options.image_path, "Table image written by tolip export")
+  inspect->add_option("IMAGE", options->image_path, "Table image written by tolip export")
       ->required()
       ->type_name("FILE");
-  inspect->add_flag("--json", inspect_options.json,
+  inspect->add_flag("--json", options->json,
                     "Print the contents as one JSON document instead of the listing\n"
                     "(degrees, deg/s, s; keys in docs/cli.md)");
+  return inspect;
+}
 
-  // ---- convert ---------------------------------------------------------------------------------
-  ConvertCommandOptions convert_options;
+// tolip convert: card deck to TOML deck and back.
+CLI::App* add_convert_command(CLI::App& app, ConvertCommandOptions* options) {
   CLI::App* convert = app.add_subcommand(
       "convert",
       "Convert a deck between the heritage card format (80-column\n"
@@ -365,20 +371,35 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
       "format, a several-case deck to TOML without --case, or a value the\n"
       "cards cannot hold.\n"
       "Full reference: docs/cli.md, 'tolip convert'; docs/deck-format.md.");
-  convert->add_option("DECK", convert_options.deck_path, "Card deck or TOML deck")->required()->type_name("FILE");
-  convert->add_option("--to", convert_options.out_path,
+  convert->add_option("DECK", options->deck_path, "Card deck or TOML deck")->required()->type_name("FILE");
+  convert->add_option("--to", options->out_path,
                       "The converted deck; its format follows the name\n"
                       "(*.toml: TOML; *.dat, *.cards, *.crd: card deck)")
       ->required()
       ->type_name("FILE");
-  convert->add_option("--format", convert_options.format,
+  convert->add_option("--format", options->format,
                       "Output format regardless of the name: toml or cards")
       ->type_name("FORMAT");
-  convert->add_option("--case", convert_options.case_number,
+  convert->add_option("--case", options->case_number,
                       "Case of a several-case card deck to write as TOML\n"
                       "(1-based; a TOML deck holds one case)")
       ->type_name("N");
+  return convert;
+}
 
+// The program's own footer and version flag; exactly one command, whose options stay its own.
+void configure_program(CLI::App& app) {
+  app.footer(kFooter);
+  app.set_version_flag("--version", std::string("tolip ") + version_string(),
+                       "Print the program version and exit");
+  app.require_subcommand(1);
+  app.fallthrough(false);
+}
+
+// Parses the command line: kRunCommand when a command is to run, else the exit code (help or
+// version printed, or the parse error reported on err).
+int parse_command_line(CLI::App& app, int argc, const char* const* argv, std::ostream& out,
+                       std::ostream& err) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -399,7 +420,33 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
     err << "Run 'tolip --help' for more information.\n";
     return kExitBadInput;
   }
+  return kRunCommand;
+}
 
+}  // namespace
+
+int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+  CLI::App app{kDescription, "tolip"};
+  configure_program(app);
+  // The commands in the order of the help; the one parsed runs on the options its parse filled.
+  AtmosphereCommandOptions atmosphere_options;
+  SimulateCommandOptions simulate_options;
+  OptimizeCommandOptions optimize_options;
+  PlotCommandOptions plot_options;
+  ExportCommandOptions export_options;
+  InspectCommandOptions inspect_options;
+  ConvertCommandOptions convert_options;
+  CLI::App* atmosphere = add_atmosphere_command(app, &atmosphere_options);
+  CLI::App* simulate = add_simulate_command(app, &simulate_options);
+  CLI::App* optimize = add_optimize_command(app, &optimize_options);
+  CLI::App* plot = add_plot_command(app, &plot_options);
+  CLI::App* export_command = add_export_command(app, &export_options);
+  CLI::App* inspect = add_inspect_command(app, &inspect_options);
+  CLI::App* convert = add_convert_command(app, &convert_options);
+
+  if (const int exit_code = parse_command_line(app, argc, argv, out, err); exit_code != kRunCommand) {
+    return exit_code;
+  }
   if (atmosphere->parsed()) return run_atmosphere_command(atmosphere_options, out, err);
   if (simulate->parsed()) return run_simulate_command(simulate_options, out, err);
   if (optimize->parsed()) return run_optimize_command(optimize_options, out, err);

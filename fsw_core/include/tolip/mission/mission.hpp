@@ -7,6 +7,7 @@
 
 #include "tolip/core/capacity.hpp"
 #include "tolip/core/constants.hpp"
+#include "tolip/core/stage_codes.hpp"
 #include "tolip/core/status.hpp"
 #include "tolip/math/table.hpp"
 
@@ -17,28 +18,6 @@ using WeightTable = Table<kMaxWeightPoints>;      // stage time s -> consumable 
 using AeroTable = Table<kMaxAeroTablePoints>;     // Mach -> coefficient (blocks 31, 32)
 using PitchTable = Table<kMaxPitchTablePoints>;   // s from launch -> theta rad (block 40)
 using CgTable = Table<kMaxCgTablePoints>;         // stage time s -> c.g. body station ft (block 37)
-
-// Stage codes (manual KK2): 1-5 powered, 6-10 the coasts after stages 1-5.
-inline constexpr bool is_powered_stage(int code) { return code >= 1 && code <= 5; }
-inline constexpr bool is_coast_stage(int code) { return code >= 6 && code <= 10; }
-inline constexpr int stage_index(int code) { return code - 1; }
-
-// IP(9), the one rule of which stages are spun (Sec. 22: 1 stages 4 and 5 spun, theta_5 = theta_4;
-// 2 stage 4 continuous and stage 5 spun; 3 stages 4 and 5 continuous; 0, this project's "no stage
-// 4", spins nothing). A spun stage, and the coast after it (9, 10), holds the data block 17
-// attitudes; every other stage flies the pitch program. The trajectory, the backward run, the
-// optimizer, the linearization, the table builder and the flight-side executor all ask this.
-inline constexpr bool stage_is_spun(int spin_option, int stage_code) {
-  if (stage_code == 4 || stage_code == 9) return spin_option == 1;
-  if (stage_code == 5 || stage_code == 10) return spin_option == 1 || spin_option == 2;
-  return false;
-}
-
-// A powered stage whose pitch program is a control (Sec. 5: the steepest-descent perturbations,
-// Sec. 6: data block 18 segments): stages 1-3 always, 4 and 5 when IP(9) does not spin them.
-inline constexpr bool stage_is_steered(int spin_option, int stage_code) {
-  return is_powered_stage(stage_code) && !stage_is_spun(spin_option, stage_code);
-}
 
 // Data block 5 order: whether stage `code` may directly follow stage `previous` (0: the start).
 // The sequence starts with 1; after powered stage n comes the next powered stage n+1 or its coast

@@ -13,7 +13,7 @@
 
 #include "tolip/core/capacity.hpp"
 #include "tolip/core/status.hpp"
-#include "tolip/mission/mission.hpp"
+#include "tolip/core/stage_codes.hpp"
 
 namespace tolip {
 

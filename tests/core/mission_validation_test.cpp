@@ -1,4 +1,5 @@
-// validate_mission() and vehicle_weight_lb() (fsw_core/src/mission/mission.cpp) on the Scout decks.
+// validate_mission() and vehicle_weight_lb() (fsw_core/src/mission/mission.cpp) on the Scout
+// reference optimum deck, built without the deck reader (support/example_missions.hpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,17 +8,17 @@
 #include <memory>
 #include <string>
 
-#include "deck_test_support.hpp"
+#include "support/example_missions.hpp"
+#include "support/reference_data.hpp"
+#include "support/reference_mission.hpp"
 #include "tolip/mission/mission.hpp"
 
 namespace tolip::test {
 namespace {
 
 std::unique_ptr<Mission> optimum() {
-  auto mission = ground::make_mission();
-  ground::DeckError error;
-  EXPECT_TRUE(ground::load_toml_deck(example_path("scout/reference_optimum.toml"), mission.get(), &error))
-      << error.to_string();
+  auto mission = std::make_unique<Mission>();
+  EXPECT_EQ(flight::build_reference_optimum_deck(mission.get()), Status::kOk);
   return mission;
 }
 
@@ -39,8 +40,6 @@ void expect_fault(const Mission& mission, Status status, int block, int stage, c
   EXPECT_EQ(outcome.fault.stage_code, stage);
   EXPECT_STREQ(outcome.fault.field, field);
 }
-
-StageData& stage(Mission& mission, int code) { return mission.vehicle.stages[stage_index(code)]; }
 
 TEST(MissionValidation, ReferenceOptimumIsValidAndFaultIsCleared) {
   auto mission = optimum();
