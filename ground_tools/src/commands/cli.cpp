@@ -195,6 +195,13 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
                    "atomically; on a write failure an existing FILE is left\n"
                    "untouched, nothing is printed and the exit code is 1")
       ->type_name("FILE");
+  optimize
+      ->add_option("--dispersions-csv", optimize_options.dispersions_csv_path,
+                   "With IP(21) = 1: also write the dispersion analysis\n"
+                   "(every dispersed trajectory's staging-point values and\n"
+                   "dispersions, orbit elements, max q-bar alpha) to FILE as\n"
+                   "CSV (FILE.caseN.csv per case of a several-case deck)")
+      ->type_name("FILE");
   optimize->add_flag("--json", optimize_options.json,
                      "Print one JSON document instead of the listing: the\n"
                      "simulate --json keys for the final trajectory plus\n"

@@ -83,6 +83,14 @@ int run_simulate_command(const SimulateCommandOptions& options, std::ostream& ou
   }
   // Inputs read but not acted on are named, never dropped (tolip_ground/unused_inputs.hpp).
   print_deck_input_warnings(err, options.deck_path, deck);
+  // IP(21): the dispersions are taken about the final nominal, which only `optimize` produces.
+  for (const DeckCase& deck_case : deck.cases) {
+    if (!deck_case.mission->options.dispersions()) continue;
+    print_input_warnings(err, options.deck_path, deck_case.number, static_cast<int>(deck.cases.size()),
+                         {InputWarning{4, "IP(21)", "options.dispersions",
+                                       "the dispersions (Sec. 15) are computed about the final nominal by "
+                                       "`tolip optimize`; simulate flies the deck's program only"}});
+  }
 
   // Everything goes to stdout at the end, so a CSV failure leaves stdout empty.
   std::ostringstream listing;
