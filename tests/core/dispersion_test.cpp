@@ -224,7 +224,7 @@ TEST(Sec15Dispersions, SignsOfEveryFamilyOnTheReferenceData) {
     const DispersionSource& source = f->data.sources[code - 1];
     ASSERT_EQ(build_dispersed_case(nominal_of(*f, true), f->hand_prepared, source, &ws), Status::kOk);
     FlightInputs inputs;
-    inputs.program = &ws.program;
+    inputs.program = ws.program_mapped ? &ws.program : &f->program;
     inputs.body_dynamics = true;
     inputs.perturbation = &ws.perturbation;
     ASSERT_EQ(fly_trajectory(ws.mission, ws.prepared, inputs, &f->hand), Status::kOk);

@@ -284,11 +284,22 @@ Status build_dispersed_case(const DispersionNominal& nominal, const PreparedCase
       return Status::kDispersionCodeInvalid;
   }
 
-  const Status prepared = prepare_case(m, &ws->prepared);
-  if (!ok(prepared)) return prepared;
-  if (nominal.program != nullptr) {
+  // Only thrust and weight (Sec. 14's ideal velocities) and the launch azimuth (the launch matrices)
+  // enter prepare_case; every other code's prepared case is the nominal's, exactly what
+  // prepare_case would rebuild.
+  const bool prepares = info.kind == Kind::kVacuumThrust || info.kind == Kind::kWeightIncrement ||
+                        info.kind == Kind::kLaunchAzimuth;
+  if (prepares) {
+    const Status prepared = prepare_case(m, &ws->prepared);
+    if (!ok(prepared)) return prepared;
+  } else {
+    ws->prepared = nominal_prepared;
+  }
+  ws->program_mapped = false;
+  if (nominal.program != nullptr && info.kind == Kind::kVacuumThrust) {
     if (trajectory_point_count(ws->prepared) != nominal.program->point_count) return Status::kControlProgramSizeMismatch;
     map_program(nominal_prepared, *nominal.program, ws->prepared, &ws->program);
+    ws->program_mapped = true;
   }
   return Status::kOk;
 }
@@ -463,7 +474,7 @@ Status run_dispersions(const DispersionNominal& nominal, const DispersionData& d
     Status code_status = build_dispersed_case(nominal, ws->nominal_prepared, source, ws);
     if (ok(code_status)) {
       FlightInputs dispersed;
-      dispersed.program = (nominal.program != nullptr) ? &ws->program : nullptr;
+      dispersed.program = ws->program_mapped ? &ws->program : nominal.program;
       dispersed.body_dynamics = nominal.body_dynamics;
       dispersed.perturbation = &ws->perturbation;
       code_status = fly_trajectory(ws->mission, ws->prepared, dispersed, &ws->dispersed);

@@ -153,7 +153,8 @@ struct DispersionWorkspace {
   PreparedCase nominal_prepared;
   Mission mission;
   PreparedCase prepared;
-  ControlProgram program;
+  ControlProgram program;      // the nominal program on a changed timeline (codes 1-8)
+  bool program_mapped = false;  // `program` is to be flown (else the nominal's)
   FlightPerturbation perturbation;
   Trajectory nominal;
   Trajectory dispersed;
@@ -164,9 +165,9 @@ struct DispersionWorkspace {
 // (kValueOutOfRange, kTableEmpty, ...), with *fault_code the code at fault.
 Status validate_dispersion_data(const DispersionData& data, int* fault_code);
 
-// Builds the dispersed case of one source about the nominal: *mission, *prepared, *program and
-// *perturbation ready for fly_trajectory (inputs.program = program unless the nominal flies the
-// block 40 table). A code that cannot be flown returns its named status.
+// Builds the dispersed case of one source about the nominal: *mission, *prepared and *perturbation
+// ready for fly_trajectory, with inputs.program = &workspace->program when program_mapped, else the
+// nominal's program. A code that cannot be flown returns its named status.
 // `nominal_prepared` is the nominal's prepare_case() result (its timeline maps the program onto a
 // dispersed timeline: a thrust code changes the burn time, and the program is flown in stage time).
 Status build_dispersed_case(const DispersionNominal& nominal, const PreparedCase& nominal_prepared,
