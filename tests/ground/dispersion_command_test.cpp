@@ -154,5 +154,31 @@ TEST(Sec15DispersionCommand, WindTableLongerThanTheCoreHoldsIsBadInputNamingTheB
   EXPECT_NE(run.err.find("40 points; the core holds at most 32"), std::string::npos) << run.err;
 }
 
+// IP(7) = 0: the dispersions are about the optimum (point mass); the codes that act through the
+// body dynamics are named, not skipped.
+TEST(Sec15DispersionCommand, OptimumIsTheNominalWithoutLinearization) {
+  ScratchDirectory scratch("dispersions_optimum");
+  const std::string deck = edited_example_deck(
+      scratch, "optimum.toml",
+      {{"linearization = true ", "linearization = false "}, {"body_dynamics_6d = 1 ", "body_dynamics_6d = 0 "}});
+  ASSERT_FALSE(deck.empty());
+  const CommandResult run = run_tolip_executable({"optimize", deck, "--json"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const nlohmann::json document = nlohmann::json::parse(run.out, nullptr, false);
+  const nlohmann::json& d = document["dispersions"];
+  EXPECT_EQ(d["status"], "kOk");
+  EXPECT_EQ(d["nominal_kind"], "optimum");
+  for (const nlohmann::json& t : d["trajectories"]) {
+    const int code = t["code"].get<int>();
+    EXPECT_EQ(t["status"], (code >= 19 && code <= 23) ? "kDispersionNeedsBodyDynamics" : "kOk") << code;
+  }
+  // The nominal against the optimizer's final trajectory (docs/theory/dispersions.md).
+  const nlohmann::json& last = document["trajectory"].back();
+  EXPECT_LT(std::fabs(d["nominal"]["values"][3]["altitude_ft"].get<double>() - last["altitude_ft"].get<double>()), 50.0);
+  EXPECT_LT(std::fabs(d["nominal"]["values"][3]["velocity_ft_s"].get<double>() - last["velocity_ft_s"].get<double>()), 1.0);
+  // The three-sigma groups leave the codes that did not fly out.
+  EXPECT_EQ(d["three_sigma"]["high"]["codes"].size() + d["three_sigma"]["low"]["codes"].size(), 26u);
+}
+
 }  // namespace
 }  // namespace tolip::test
