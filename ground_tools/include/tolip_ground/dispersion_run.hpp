@@ -34,6 +34,11 @@ struct DispersionStep {
   std::unique_ptr<DispersionResult> result;
 };
 
+// The final nominal of the job (the linearized program under IP(7) = 1, else the optimum): false
+// with *why when the optimization did not converge or the linearization did not finish.
+bool final_dispersion_nominal(const Mission& mission, const OptimizationRun& run, DispersionNominal* nominal,
+                              std::string* kind, Status* why);
+
 // Runs the analysis about the job's final nominal when the case asks for it (IP(21) = 1). Skipped
 // (with the failing step's status) when the optimization did not converge, or, under IP(7) = 1,
 // when the linearization did not finish. `data` must already be filled (fill_dispersion_data).

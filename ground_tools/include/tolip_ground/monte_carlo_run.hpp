@@ -5,7 +5,10 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "tolip/dispersion/monte_carlo.hpp"
 
@@ -33,5 +36,9 @@ struct MonteCarloStatistic {
 // Statistics of one staging variable's dispersion at one column, over the samples that flew, summed
 // in sample order.
 MonteCarloStatistic monte_carlo_statistic(const MonteCarloSamples& samples, int column, StagingVariable variable);
+
+// {"seed", "samples", "flown", "nominal_kind", "final_point": {variable: {mean, standard_deviation,
+// p00135, p50, p99865}}}: the final-point dispersions (ft, ft/s, deg, n.mi.), for any driver.
+nlohmann::ordered_json monte_carlo_json(const MonteCarloSamples& samples, std::uint64_t seed, const std::string& kind);
 
 }  // namespace tolip::ground

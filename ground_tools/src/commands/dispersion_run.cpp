@@ -68,35 +68,44 @@ bool fill_dispersion_data(const std::vector<DispersionCase>& deck, DispersionDat
   return true;
 }
 
-void run_dispersion_step(const Mission& mission, const OptimizationRun& run, std::unique_ptr<DispersionData> data,
-                         DispersionStep* step) {
-  if (!mission.options.dispersions()) return;
-  step->data = std::move(data);
+bool final_dispersion_nominal(const Mission& mission, const OptimizationRun& run, DispersionNominal* nominal,
+                              std::string* kind, Status* why) {
   const bool converged = ok(run.optimizer_status) && run.result != nullptr && run.result->converged;
   if (!converged) {
-    step->outcome = StepOutcome::kSkipped;
-    step->status = ok(run.optimizer_status) ? Status::kOptimizationNotStarted : run.optimizer_status;
-    return;
+    *why = ok(run.optimizer_status) ? Status::kOptimizationNotStarted : run.optimizer_status;
+    return false;
   }
-  DispersionNominal nominal;
   if (mission.options.linearization()) {
     // The manual's D4/TTH storage: dispersions about the linearized program (with body dynamics in
     // stage 1 when the 6D re-linearization ran).
     const LinearizationStep& lin = run.linearization;
     if (lin.outcome != StepOutcome::kRun || lin.result == nullptr || !lin.result->finished) {
-      step->outcome = StepOutcome::kSkipped;
-      step->status = (lin.outcome == StepOutcome::kRun && !ok(lin.status)) ? lin.status : Status::kNotPrepared;
-      return;
+      *why = (lin.outcome == StepOutcome::kRun && !ok(lin.status)) ? lin.status : Status::kNotPrepared;
+      return false;
     }
-    nominal.mission = &lin.workspace->mission;
-    nominal.program = &lin.workspace->program;
-    nominal.body_dynamics = lin.result->body_dynamics;
-    step->nominal_kind = "linearized program";
+    nominal->mission = &lin.workspace->mission;
+    nominal->program = &lin.workspace->program;
+    nominal->body_dynamics = lin.result->body_dynamics;
+    *kind = "linearized program";
   } else {
-    nominal.mission = &run.workspace->mission;
-    nominal.program = &run.workspace->program;
-    nominal.body_dynamics = false;
-    step->nominal_kind = "optimum";
+    nominal->mission = &run.workspace->mission;
+    nominal->program = &run.workspace->program;
+    nominal->body_dynamics = false;
+    *kind = "optimum";
+  }
+  return true;
+}
+
+void run_dispersion_step(const Mission& mission, const OptimizationRun& run, std::unique_ptr<DispersionData> data,
+                         DispersionStep* step) {
+  if (!mission.options.dispersions()) return;
+  step->data = std::move(data);
+  DispersionNominal nominal;
+  Status why = Status::kOk;
+  if (!final_dispersion_nominal(mission, run, &nominal, &step->nominal_kind, &why)) {
+    step->outcome = StepOutcome::kSkipped;
+    step->status = why;
+    return;
   }
   step->outcome = StepOutcome::kRun;
   step->workspace = std::make_unique<DispersionWorkspace>();

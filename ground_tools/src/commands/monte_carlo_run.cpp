@@ -6,6 +6,8 @@
 #include <memory>
 #include <thread>
 
+#include "tolip/core/constants.hpp"
+
 namespace tolip::ground {
 
 Status run_monte_carlo(const DispersionNominal& nominal, const DispersionData& data, std::uint64_t seed, int count,
@@ -63,6 +65,41 @@ MonteCarloStatistic monte_carlo_statistic(const MonteCarloSamples& samples, int 
   s.p50 = rank(0.5);
   s.p99865 = rank(0.99865);
   return s;
+}
+
+nlohmann::ordered_json monte_carlo_json(const MonteCarloSamples& samples, std::uint64_t seed, const std::string& kind) {
+  struct Variable {
+    StagingVariable variable;
+    const char* key;
+    double scale;
+  };
+  const Variable variables[] = {{StagingVariable::kAltitude, "altitude_ft", 1.0},
+                                {StagingVariable::kVelocity, "velocity_ft_s", 1.0},
+                                {StagingVariable::kFlightPathAngle, "flight_path_angle_deg", 180.0 / kPi},
+                                {StagingVariable::kDownrange, "downrange_nmi", 1.0},
+                                {StagingVariable::kCrossrange, "crossrange_nmi", 1.0}};
+  int final_column = 0;
+  for (int j = 0; j < kMaxStagingPoints; ++j) {
+    if (samples.nominal.values[j][0] != 0.0) final_column = j;  // the last column flown
+  }
+  nlohmann::ordered_json out = nlohmann::ordered_json::object();
+  out["seed"] = seed;
+  out["samples"] = samples.samples.size();
+  nlohmann::ordered_json final_point = nlohmann::ordered_json::object();
+  int flown = 0;
+  for (const Variable& v : variables) {
+    const MonteCarloStatistic s = monte_carlo_statistic(samples, final_column, v.variable);
+    flown = s.count;
+    final_point[v.key] = {{"mean", s.mean * v.scale},
+                          {"standard_deviation", s.standard_deviation * v.scale},
+                          {"p00135", s.p00135 * v.scale},
+                          {"p50", s.p50 * v.scale},
+                          {"p99865", s.p99865 * v.scale}};
+  }
+  out["flown"] = flown;
+  out["nominal_kind"] = kind;
+  out["final_point"] = std::move(final_point);
+  return out;
 }
 
 }  // namespace tolip::ground
