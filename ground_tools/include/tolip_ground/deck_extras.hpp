@@ -117,7 +117,15 @@ struct DispersionCase {
   DeckTable wind_azimuth_rad;              // codes 36-38, block 54: altitude ft -> azimuth of the wind vector
 };
 
+// How the deck lays out the printed listing (data block 10 words 8 and 9): listing concerns, kept
+// beside the core's Mission and never in it.
+struct DeckListingOptions {
+  double lines_per_page = 54.0;               // CT1(8); the pager accepts 20-1000 (else 54)
+  double deg_to_rad_as_printed = 0.017453292;  // CT1(9), echoed only: the core uses the exact pi/180
+};
+
 struct DeckExtras {
+  DeckListingOptions listing;
   BodyDynamicsData body_dynamics;
   std::vector<RadarStation> radar_stations;
   ImpactData impact;

@@ -132,11 +132,23 @@ std::string fault_path(const MissionFault& fault, const Mission& mission) {
   const std::string stage = "stage." + std::to_string(fault.stage_code);
   const bool staged = fault.stage_code > 0;
   const int index = fault.index;
+  // A described field (field_description.hpp): its core member name leads to its deck key.
+  for (const deck_detail::FieldDescription& described : deck_detail::field_descriptions()) {
+    const std::string core_name = described.core_name;
+    const std::size_t dot = core_name.rfind('.');
+    if (deck_detail::message_block(described) != fault.data_block || dot == std::string::npos) continue;
+    std::string member = core_name.substr(dot + 1);
+    if (const std::size_t bracket = member.find('['); bracket != std::string::npos) member.resize(bracket);
+    const bool ip_word = fault.data_block == 4 && described.word == index;
+    if (member != field && !ip_word) continue;
+    const int code = described.stage_coding == deck_detail::StageCoding::kNone ? 0 : fault.stage_code;
+    if (code != 0 && !deck_detail::applies_to_stage(described, code)) continue;
+    if (described.stage_coding != deck_detail::StageCoding::kNone && code == 0) continue;
+    const std::string path = deck_detail::section_of(described, code) + "." + described.key;
+    return described.count > 1 ? element(path, index) : path;
+  }
   switch (fault.data_block) {
-    case 4: {
-      const char* key = card_detail::option_key(index);  // the one IP(n) -> key mapping
-      return *key != '\0' ? "options." + std::string(key) : "options";
-    }
+    case 4: return "options";  // an IP(n) without a key (the described ones are found above)
     case 5: return field == "sequence" ? element("vehicle.sequence", index) : "vehicle.sequence";
     case 6: return index >= 0 ? "adjustable_parameter[" + std::to_string(index) + "].code" : "adjustable_parameter";
     case 27: return index >= 0 ? "adjustable_parameter[" + std::to_string(index) + "].weight" : "adjustable_parameter";
@@ -398,7 +410,7 @@ bool parse_deck(const std::string& text, const std::string& path, Mission* missi
     auto parsed = std::make_unique<Mission>();
     auto parsed_extras = std::make_unique<DeckExtras>();
     Section top(&reader, &root, "", 0);
-    deck_detail::read_mission_sections(top, parsed.get());
+    deck_detail::read_mission_sections(top, parsed.get(), parsed_extras.get());
     deck_detail::read_extras_sections(top, *parsed, parsed_extras.get());
     top.finish();
     // Data blocks 33-37 into the core's Mission (stations in -> ft), so 6D runs can use them.
