@@ -368,36 +368,23 @@ class FromToml {
       d.title = title[BlockKey{46, 0}];
       BlockSet* set_ptr = &d.blocks;
       const int code = d.code;
-      auto value = [&](int block, int stage, int word, const char* key) {
-        if (const toml::node* found = entry->get(key)) set(set_ptr, block, stage, word, number_of(found));
-      };
-      if (code >= 1 && code <= 8) {
-        const int stage = (code + 1) / 2;
-        table(set_ptr, 30, stage, table_of(entry->get("thrust")), "time_s", "vacuum_thrust_lbf");
-        table(set_ptr, 38, stage, table_of(entry->get("consumable_weight")), "time_s", "remaining_lb");
-        const std::vector<double> durations = numbers_of(entry->get("stage_durations_s"));
-        for (std::size_t w = 0; w < durations.size() && w < 2; ++w) set(set_ptr, 55, 0, static_cast<int>(w) + 1, durations[w]);
-      } else if (code >= 9 && code <= 16) {
-        value(47, (code - 7) / 2, 1, "weight_increment_lb");
-      } else if (code == 17 || code == 18) {
-        value(48, 0, 1, "drag_variation_fraction");
-      } else if (code == 19 || code == 20) {
-        table(set_ptr, 35, 0, table_of(entry->get("pitching_moment")), "mach", "cm_alpha_per_rad");
-      } else if (code >= 21 && code <= 23) {
-        value(49, 1, 1, "misalignment_deg");
-        value(49, 1, 2, "thrust_station_in");
-      } else if (code >= 24 && code <= 29) {
-        value(50, code <= 26 ? 2 : 3, 1, "deadband_deg");
-      } else if (code >= 30 && code <= 32) {
-        const int stage = entry->get("stage") != nullptr ? static_cast<int>(number_of(entry->get("stage"))) : 4;
-        value(51, stage, 1, "tipoff_deg");
-      } else if (code == 33) {
-        value(52, 0, 1, "launch_azimuth_change_deg");
-      } else if (code == 34 || code == 35) {
-        value(52, 0, 1, "launch_attitude_change_deg");
-      } else if (code >= 36 && code <= 38) {
-        table(set_ptr, 53, 0, table_of(entry->get("wind_speed")), "altitude_ft", "speed_ft_s");
-        table(set_ptr, 54, 0, table_of(entry->get("wind_azimuth")), "altitude_ft", "azimuth_deg");
+      const deck_detail::DispersionCodes* codes = deck_detail::find_dispersion(code);
+      if (codes != nullptr) {
+        int stage = codes->stage_of(code);
+        if (stage < 0) {  // the tip-off: stage 4 unless the deck says 5
+          stage = entry->get("stage") != nullptr ? static_cast<int>(number_of(entry->get("stage"))) : 4;
+        }
+        for (const deck_detail::DispersionItem& item : codes->items) {
+          const int item_stage = deck_detail::dispersion_stage(code, item.block) == 0 ? 0 : stage;
+          if (item.word == 0) {
+            table(set_ptr, item.block, item_stage, table_of(entry->get(item.key)), item.x_key, item.y_key);
+            continue;
+          }
+          const std::vector<double> values = numbers_of(entry->get(item.key));
+          for (std::size_t w = 0; w < values.size() && w < static_cast<std::size_t>(item.count); ++w) {
+            set(set_ptr, item.block, item_stage, item.word + static_cast<int>(w), values[w]);
+          }
+        }
       }
       result_.dispersions.push_back(std::move(d));
     }

@@ -245,18 +245,25 @@ void read_dispersion(Section& entry, int code, DispersionCase* out) {
   const std::string label = "code " + str(code) + " (" + dispersion_name(code) + ")";
   const DispersionCodes& codes = *find_dispersion(code);  // the code was checked by the caller
   const int card_stage = codes.stage_of(code);
+  // The TOML keys of the code's data (dispersion_codes()); every block asked for is one of its items.
+  const auto item = [&codes](int block, int word = 1) -> const DispersionItem& {
+    for (const DispersionItem& candidate : codes.items) {
+      if (candidate.block == block && (candidate.word == 0 || candidate.word == word)) return candidate;
+    }
+    return codes.items.front();
+  };
   switch (codes.kind) {
     case DispersionKind::kThrust: {
       out->stage = card_stage;
       const std::string stage = "stage " + str(out->stage);
-      out->vacuum_thrust_lbf = read_table(entry, "thrust", 30, "time_s", "vacuum_thrust_lbf", "stage time in s",
+      out->vacuum_thrust_lbf = read_table(entry, item(30).key, 30, item(30).x_key, item(30).y_key, "stage time in s",
                                           "vacuum thrust in lbf", 1.0,
                                           "data block 30 replacement thrust table of " + stage + " for " + label);
-      out->consumable_weight_lb = read_table(entry, "consumable_weight", 38, "time_s", "remaining_lb",
+      out->consumable_weight_lb = read_table(entry, item(38).key, 38, item(38).x_key, item(38).y_key,
                                              "stage time in s", "consumable weight remaining in lb", 1.0,
                                              "data block 38 replacement weight table of " + stage + " for " + label);
       if (dispersion_takes(code, 55)) {
-        if (auto durations = entry.optional_numbers("stage_durations_s", 55, "stage 4 and 5 durations, s", 2)) {
+        if (auto durations = entry.optional_numbers(item(55).key, 55, "stage 4 and 5 durations, s", 2)) {
           out->has_stage_durations = true;
           out->stage4_5_durations_s = {(*durations)[0], (*durations)[1]};
         }
@@ -265,49 +272,49 @@ void read_dispersion(Section& entry, int code, DispersionCase* out) {
     }
     case DispersionKind::kWeightIncrement:
       out->stage = card_stage;
-      out->weight_increment_lb = entry.number("weight_increment_lb", 47, "jettison weight increment (signed), lb");
+      out->weight_increment_lb = entry.number(item(47).key, 47, "jettison weight increment (signed), lb");
       break;
     case DispersionKind::kDrag:
       out->drag_variation_fraction =
-          entry.number("drag_variation_fraction", 48, "drag variation as a signed fraction (0.xxxx)");
+          entry.number(item(48).key, 48, "drag variation as a signed fraction (0.xxxx)");
       if (std::abs(out->drag_variation_fraction) >= 1.0) {
-        entry.fail_at("drag_variation_fraction", 48, "expected a fraction 0.xxxx (|value| < 1)");
+        entry.fail_at(item(48).key, 48, "expected a fraction 0.xxxx (|value| < 1)");
       }
       break;
     case DispersionKind::kPitchingMoment:
       out->stage = 1;  // block 35 is stage 1's (no stage code on the card)
-      out->pitching_moment_per_rad = read_table(entry, "pitching_moment", 35, "mach", "cm_alpha_per_rad", "Mach number",
+      out->pitching_moment_per_rad = read_table(entry, item(35).key, 35, item(35).x_key, item(35).y_key, "Mach number",
                                                 "C_M per radian of alpha about X_FS", 1.0,
                                                 "the complete data block 35 table for " + label);
       break;
     case DispersionKind::kMisalignment:
       out->stage = card_stage;
-      out->misalignment_rad = entry.number("misalignment_deg", 49, "thrust misalignment angle (signed), deg") * kDegToRad;
-      out->thrust_station_in = entry.number("thrust_station_in", 49, "thrust application station, in");
+      out->misalignment_rad = entry.number(item(49).key, 49, "thrust misalignment angle (signed), deg") * kDegToRad;
+      out->thrust_station_in = entry.number(item(49, 2).key, 49, "thrust application station, in");
       break;
     case DispersionKind::kDeadband:
       out->stage = card_stage;
-      out->deadband_rad = entry.number("deadband_deg", 50, "control system deadband angle (signed), deg") * kDegToRad;
+      out->deadband_rad = entry.number(item(50).key, 50, "control system deadband angle (signed), deg") * kDegToRad;
       break;
     case DispersionKind::kTipoff:
       out->stage = entry.optional_integer("stage", 51, "spun stage of the tip-off, 4 or 5").value_or(4);
       if (out->stage != 4 && out->stage != 5) entry.fail_at("stage", 51, "tip-off applies to stage 4 or 5");
-      out->tipoff_rad = entry.number("tipoff_deg", 51, "effective attitude change from tip-off (signed), deg") * kDegToRad;
+      out->tipoff_rad = entry.number(item(51).key, 51, "effective attitude change from tip-off (signed), deg") * kDegToRad;
       break;
     case DispersionKind::kLaunchAzimuth:
       out->stage = 1;  // a launch condition: stage 1 flies it
       out->launch_change_rad =
-          entry.number("launch_azimuth_change_deg", 52, "launch azimuth change (signed), deg") * kDegToRad;
+          entry.number(item(52).key, 52, "launch azimuth change (signed), deg") * kDegToRad;
       break;
     case DispersionKind::kLaunchAttitude:
       out->stage = 1;
       out->launch_change_rad =
-          entry.number("launch_attitude_change_deg", 52, "launch attitude change (signed), deg") * kDegToRad;
+          entry.number(item(52).key, 52, "launch attitude change (signed), deg") * kDegToRad;
       break;
     case DispersionKind::kWinds:
-      out->wind_speed_ft_s = read_table(entry, "wind_speed", 53, "altitude_ft", "speed_ft_s", "altitude in ft",
+      out->wind_speed_ft_s = read_table(entry, item(53).key, 53, item(53).x_key, item(53).y_key, "altitude in ft",
                                         "wind speed in ft/s", 1.0, "data block 53 WINDVL table for " + label);
-      out->wind_azimuth_rad = read_table(entry, "wind_azimuth", 54, "altitude_ft", "azimuth_deg", "altitude in ft",
+      out->wind_azimuth_rad = read_table(entry, item(54).key, 54, item(54).x_key, item(54).y_key, "altitude in ft",
                                          "azimuth of the wind vector in deg from north", kDegToRad,
                                          "data block 54 WINDAZ table for " + label);
       break;
