@@ -590,7 +590,6 @@ bool applies_to_stage(const FieldDescription& field, int code) {
   switch (field.stages) {
     case StageSet::kAll: return is_powered_stage(code) || is_coast_stage(code);
     case StageSet::kPowered: return is_powered_stage(code);
-    case StageSet::kCoasts: return is_coast_stage(code);
   }
   return false;
 }

@@ -65,7 +65,7 @@ enum class Range {
 };
 
 // Stages a stage-coded field exists for.
-enum class StageSet { kAll, kPowered, kCoasts };
+enum class StageSet { kAll, kPowered };
 
 struct FieldDescription {
   int block = 0;             // manual data block on the cards
@@ -89,7 +89,6 @@ struct FieldDescription {
   Range range = Range::kAny;
   int low = 0;               // kChoice
   int high = 0;
-  const char* choices = "";  // kChoice: the meaning of each value, for messages
   // C++ member path in the Mission for the source emitter ("constants.haero_ft";
   // "vehicle.stages[{i}].duration_s"); "" when the value does not live in the Mission.
   const char* core_name = "";
