@@ -36,9 +36,27 @@ std::optional<DeckTable> read_optional_table(Section& parent, std::string_view k
 }
 
 // ---- data blocks 33-37 --------------------------------------------------------------------------
-void read_body_dynamics(Section& root, const Mission& mission, const FieldTarget& target) {
-  const Options& options = mission.options;
-  BodyDynamicsData* body = &target.extras->body_dynamics;
+constexpr double kFtPerInch = 1.0 / 12.0;
+
+// A table the deck gave, into the core's fixed-capacity table (y scaled to core units).
+template <int N>
+void fill_core_table(Section& section, const DeckTable& deck, double y_scale, int block, const std::string& field,
+                     const std::string& what, Table<N>* table) {
+  table->clear();
+  if (deck.empty()) return;
+  if (deck.size() > N) {
+    section.fail(block, field, what + " has " + std::to_string(deck.size()) + " points; the core holds at most " +
+                                   std::to_string(N));
+  }
+  for (int i = 0; i < deck.size(); ++i) {
+    const std::size_t at = static_cast<std::size_t>(i);
+    (void)table->append(deck.x[at], deck.y[at] * y_scale);  // fits; finite and increasing (read_table)
+  }
+  (void)table->finalize();
+}
+
+void read_body_dynamics(Section& root, Mission* mission, const FieldTarget& target) {
+  const Options& options = mission->options;
   std::optional<Section> section = root.optional_table("body_dynamics", 33);
   const bool six_d = options.body_dynamics_6d() >= 1 || options.dispersions();
   const bool hardover = options.hardover();
@@ -53,24 +71,31 @@ void read_body_dynamics(Section& root, const Mission& mission, const FieldTarget
     }
     return;
   }
-  body->present = true;
+  BodyDynamicsBlocks& body = mission->body_dynamics;
+  body = BodyDynamicsBlocks{};
+  body.present = true;
+  target.extras->body_dynamics.present = true;
   const bool all = six_d;
-  read_fields(*section, "body_dynamics", target, mission);
-  auto table = [&](std::string_view key, int block, std::string_view y_key, const std::string& y_what,
-                   double scale, bool required, DeckTable* out) {
+  read_fields(*section, "body_dynamics", target, *mission);
+  // S of Sec. 11: DA6D has no word for the area blocks 34-36 are referred to; stage 1's SG1(2).
+  body.reference_area_ft2 = mission->vehicle.stages[stage_index(1)].reference_area_ft2;
+  auto table = [&](std::string_view key, int block, std::string_view y_key, const std::string& y_what, bool required,
+                   const std::string& what, AeroTable* out) {
+    DeckTable read;
     if (required) {
-      *out = read_table(*section, key, block, "mach", y_key, "Mach number", y_what, scale,
+      read = read_table(*section, key, block, "mach", y_key, "Mach number", y_what, 1.0,
                         "data block " + str(block) + ": mach and " + std::string(y_key) + " arrays");
-    } else if (auto read = read_optional_table(*section, key, block, "mach", y_key, "Mach number", y_what, scale)) {
-      *out = *read;
+    } else if (auto optional = read_optional_table(*section, key, block, "mach", y_key, "Mach number", y_what, 1.0)) {
+      read = *optional;
     }
+    fill_core_table(*section, read, 1.0, block, "body_dynamics." + std::string(key), what, out);
   };
-  table("fin_normal_force", 34, "cn_delta_per_rad_per_fin", "C_N per radian per fin", 1.0, all,
-        &body->fin_normal_force_per_rad_per_fin);
-  table("pitching_moment", 35, "cm_alpha_per_rad", "C_M per radian of alpha about X_FS", 1.0, all,
-        &body->pitching_moment_per_rad);
-  table("fin_pitching_moment", 36, "cm_delta_per_rad_per_fin", "C_M per radian per fin about X_FS", 1.0, all,
-        &body->fin_pitching_moment_per_rad_per_fin);
+  table("fin_normal_force", 34, "cn_delta_per_rad_per_fin", "C_N per radian per fin", all,
+        "the C_N_delta table (data block 34)", &body.fin_normal_force_per_rad);
+  table("pitching_moment", 35, "cm_alpha_per_rad", "C_M per radian of alpha about X_FS", all,
+        "the C_M_alpha table (data block 35)", &body.pitching_moment_per_rad);
+  table("fin_pitching_moment", 36, "cm_delta_per_rad_per_fin", "C_M per radian per fin about X_FS", all,
+        "the C_M_delta table (data block 36)", &body.fin_pitching_moment_per_rad);
 
   std::optional<Section> cg = section->optional_table("cg", 37);
   if (cg) {
@@ -80,10 +105,12 @@ void read_body_dynamics(Section& root, const Mission& mission, const FieldTarget
         cg->fail_at(name, 37, "unknown stage '" + name + "': data block 37 has c.g. tables for stages 1-4 ([body_dynamics.cg.N])");
       }
     }
-    for (int stage = 1; stage <= 4; ++stage) {
+    for (int stage = 1; stage <= kCgTableStages; ++stage) {
       if (auto read = read_optional_table(*cg, str(stage), 37, "stage_time_s", "station_in", "stage time in s",
                                           "c.g. body station in inches", 1.0)) {
-        body->cg_station_in[static_cast<std::size_t>(stage - 1)] = *read;
+        // The deck's inches become the core's ft here, at the edge.
+        fill_core_table(*section, *read, kFtPerInch, 37, "body_dynamics.cg." + str(stage),
+                        "the stage " + str(stage) + " c.g. history (data block 37)", &body.cg_station_ft[stage - 1]);
       }
     }
     cg->finish();
@@ -92,7 +119,7 @@ void read_body_dynamics(Section& root, const Mission& mission, const FieldTarget
   // 33 and 37") and hardover turns ("#37 all of data").
   const int needed = (options.dispersions() || hardover) ? 3 : (options.body_dynamics_6d() >= 1 ? 1 : 0);
   for (int stage = 1; stage <= needed; ++stage) {
-    if (body->cg_station_in[static_cast<std::size_t>(stage - 1)].empty()) {
+    if (body.cg_station_ft[stage - 1].size() == 0) {
       section->fail(37, section->key_path("cg." + str(stage)),
                     "missing [body_dynamics.cg." + str(stage) + "]: data block 37 c.g. history of stage " + str(stage) +
                         " (stage_time_s, station_in) is required by the selected options");
@@ -350,10 +377,12 @@ void read_dispersions(Section& root, const Options& options, std::vector<Dispers
 
 }  // namespace
 
-void read_extras_sections(Section& root, const Mission& mission, DeckExtras* extras) {
+void read_extras_sections(Section& root, Mission* mission_data, DeckExtras* extras) {
   FieldTarget target;
-  target.extras = extras;  // the described fields of blocks 33 and 45 live ground side
-  read_body_dynamics(root, mission, target);
+  target.mission = mission_data;  // blocks 33-37, in core units
+  target.extras = extras;         // block 33's words the core does not hold, block 45
+  read_body_dynamics(root, mission_data, target);
+  const Mission& mission = *mission_data;
   read_radar(root, mission.options, &extras->radar_stations);
   read_impact(root, mission, &extras->impact);
   read_hardover(root, mission, target);

@@ -9,6 +9,8 @@
 namespace tolip::ground::deck_detail {
 namespace {
 
+constexpr double kFtPerInch = 1.0 / 12.0;
+
 FieldSlot slot_of(double* value) { return FieldSlot{value, nullptr}; }
 FieldSlot slot_of(int* value) { return FieldSlot{nullptr, value}; }
 
@@ -368,62 +370,81 @@ std::vector<FieldDescription> make_fields() {
                            "DA13(4) maximum linearization iterations", "convergence.max_linearization_iterations",
                            &in_mission<kV, &V::max_linearization_iterations>)));
 
-  // ---- data block 33: DA6D (ground side: DeckExtras::body_dynamics, stations in inches) ----------
-  using B = BodyDynamicsData;
-  constexpr auto kB = &DeckExtras::body_dynamics;
+  // ---- data block 33: DA6D (the core's Mission::body_dynamics, stations in ft; DA6D(12-15) and
+  // (17-19), which the core does not hold, ground side in DeckExtras::body_dynamics) ----------------
+  using B = BodyDynamicsBlocks;
+  constexpr auto kB = &Mission::body_dynamics;
+  using BX = BodyDynamicsData;
+  constexpr auto kBX = &DeckExtras::body_dynamics;
   f.push_back(array(with_default(required_when(real(33, 1, "body_dynamics", "position_gain_deg_per_deg",
                                                     "K THETA POSITION GAIN, STAGE {i}",
-                                                    "DA6D(1-3) K_theta position gain of stages 1-3, deg/deg", "",
-                                                    &in_extras_array<kB, &B::position_gain>),
+                                                    "DA6D(1-3) K_theta position gain of stages 1-3, deg/deg",
+                                                    "body_dynamics.position_gain[{x}]",
+                                                    &in_mission_array<kB, &B::position_gain>),
                                                &six_d),
                                  0.0),
                     3));
   f.push_back(array(with_default(required_when(real(33, 4, "body_dynamics", "rate_gain_s", "K THETA-DOT RATE GAIN, S, STAGE {i}",
-                                                    "DA6D(4-6) K_theta-dot rate gain of stages 1-3, s", "",
-                                                    &in_extras_array<kB, &B::rate_gain_s>),
+                                                    "DA6D(4-6) K_theta-dot rate gain of stages 1-3, s",
+                                                    "body_dynamics.rate_gain_s[{x}]",
+                                                    &in_mission_array<kB, &B::rate_gain_s>),
                                                &six_d),
                                  0.0),
                     3));
-  f.push_back(array(with_default(required_when(real(33, 7, "body_dynamics", "control_station_in", "CONTROL STATION, IN, STAGE {i}",
-                                                    "DA6D(7-9) body station of the stage-1 jet vanes and fins and of the "
-                                                    "stage 2-3 control jets, in",
-                                                    "", &in_extras_array<kB, &B::control_station_in>),
-                                               &six_d_or_hardover),
-                                 0.0),
-                    3));
+  {
+    FieldDescription x = array(with_default(required_when(real(33, 7, "body_dynamics", "control_station_in",
+                                                               "CONTROL STATION, IN, STAGE {i}",
+                                                               "DA6D(7-9) body station of the stage-1 jet vanes and "
+                                                               "fins and of the stage 2-3 control jets, in",
+                                                               "body_dynamics.control_station_ft[{x}]",
+                                                               &in_mission_array<kB, &B::control_station_ft>),
+                                                          &six_d_or_hardover),
+                                            0.0),
+                               3);
+    x.conversion = C::kInchToFt;
+    f.push_back(x);
+  }
   {
     FieldDescription k = with_default(
         required_when(real(33, 10, "body_dynamics", "jet_vane_effectiveness_per_deg_per_vane", "JET VANE EFFECT., /DEG/VANE",
-                           "DA6D(10) jet vane effectiveness, lb per lb vacuum thrust per deg per vane", "",
-                           &in_extras<kB, &B::jet_vane_effectiveness_per_rad_per_vane>),
+                           "DA6D(10) jet vane effectiveness, lb per lb vacuum thrust per deg per vane",
+                           "body_dynamics.jet_vane_effectiveness_per_rad",
+                           &in_mission<kB, &B::jet_vane_effectiveness_per_rad>),
                       &six_d_or_hardover),
         0.0);
     k.conversion = C::kPerDegToPerRad;
     f.push_back(k);
   }
-  f.push_back(with_default(required_when(real(33, 11, "body_dynamics", "moment_reference_station_in",
-                                              "X FS MOMENT REF. STATION, IN",
-                                              "DA6D(11) X_FS, body station reference of the moment coefficients, in", "",
-                                              &in_extras<kB, &B::moment_reference_station_in>),
-                                         &six_d_or_hardover),
-                           0.0));
+  {
+    FieldDescription x = with_default(required_when(real(33, 11, "body_dynamics", "moment_reference_station_in",
+                                                         "X FS MOMENT REF. STATION, IN",
+                                                         "DA6D(11) X_FS, body station reference of the moment "
+                                                         "coefficients, in",
+                                                         "body_dynamics.moment_reference_station_ft",
+                                                         &in_mission<kB, &B::moment_reference_station_ft>),
+                                                    &six_d_or_hardover),
+                                      0.0);
+    x.conversion = C::kInchToFt;
+    f.push_back(x);
+  }
   f.push_back(ranged(array(with_default(real(33, 12, "body_dynamics", "integration_frequency_multiplier",
                                              "6D INTEGRATION MULTIPLIER, STAGE {i}",
                                              "DA6D(12-15) 6D integration frequency multipliers of stages 1-4", "",
-                                             &in_extras_array<kB, &B::integration_frequency_multiplier>),
+                                             &in_extras_array<kBX, &BX::integration_frequency_multiplier>),
                                         1.0),
                            4),
                      R::kAtLeastOne));
   f.push_back(with_default(required_when(real(33, 16, "body_dynamics", "reference_length_ft", "REFERENCE LENGTH, FT",
-                                              "DA6D(16) reference length of the aerodynamic moment data, ft", "",
-                                              &in_extras<kB, &B::reference_length_ft>),
+                                              "DA6D(16) reference length of the aerodynamic moment data, ft",
+                                              "body_dynamics.reference_length_ft",
+                                              &in_mission<kB, &B::reference_length_ft>),
                                          &six_d_or_hardover),
                            0.0));
   f.push_back(ranged(integer(array(with_default(required_when(real(33, 17, "body_dynamics", "impact_every_nth_step",
                                                                    "IMPACT EVERY N-TH STEP, STAGE {i}",
                                                                    "DA6D(17-19) impact computed from every n-th step "
                                                                    "of stages 1-3",
-                                                                   "", &in_extras_array<kB, &B::impact_every_nth_step>),
+                                                                   "", &in_extras_array<kBX, &BX::impact_every_nth_step>),
                                                               &impact),
                                                 1.0),
                                    3)),
@@ -567,6 +588,7 @@ double to_core(Conversion conversion, double deck_value) {
     case Conversion::kNone: return deck_value;
     case Conversion::kDegToRad: return deck_value * kDegToRad;
     case Conversion::kPerDegToPerRad: return deck_value / kDegToRad;
+    case Conversion::kInchToFt: return deck_value * kFtPerInch;
   }
   return deck_value;
 }
@@ -576,6 +598,7 @@ double to_deck(Conversion conversion, double core_value) {
     case Conversion::kNone: return core_value;
     case Conversion::kDegToRad: return core_value * kRadToDeg;
     case Conversion::kPerDegToPerRad: return core_value * kDegToRad;
+    case Conversion::kInchToFt: return core_value / kFtPerInch;
   }
   return core_value;
 }

@@ -38,6 +38,7 @@ enum class Conversion {
   kNone,
   kDegToRad,        // deck degrees (or deg/s) -> rad (rad/s)
   kPerDegToPerRad,  // deck "per degree" -> "per radian"
+  kInchToFt,        // deck body stations in inches -> ft
 };
 double to_core(Conversion conversion, double deck_value);
 double to_deck(Conversion conversion, double core_value);

@@ -194,13 +194,8 @@ std::string fault_path(const MissionFault& fault, const Mission& mission) {
       if (index >= 0) return element("pitch_program.theta_deg", index);
       return "pitch_program";
     case 33:
-      // Core field names (mission.hpp BodyDynamicsBlocks) -> deck keys (docs/deck-format.md).
+      // The described DA6D words are found above; the area S is stage 1's block 39 area.
       if (field == "body_dynamics") return "body_dynamics";
-      if (field == "position_gain") return element("body_dynamics.position_gain_deg_per_deg", index);
-      if (field == "rate_gain_s") return element("body_dynamics.rate_gain_s", index);
-      if (field == "control_station_ft") return element("body_dynamics.control_station_in", index);
-      if (field == "moment_reference_station_ft") return "body_dynamics.moment_reference_station_in";
-      if (field == "jet_vane_effectiveness_per_rad") return "body_dynamics.jet_vane_effectiveness_per_deg_per_vane";
       if (field == "reference_area_ft2") return "stage.1.reference_area_ft2";
       return "body_dynamics." + field;
     case 34: return "body_dynamics.fin_normal_force";
@@ -411,13 +406,8 @@ bool parse_deck(const std::string& text, const std::string& path, Mission* missi
     auto parsed_extras = std::make_unique<DeckExtras>();
     Section top(&reader, &root, "", 0);
     deck_detail::read_mission_sections(top, parsed.get(), parsed_extras.get());
-    deck_detail::read_extras_sections(top, *parsed, parsed_extras.get());
+    deck_detail::read_extras_sections(top, parsed.get(), parsed_extras.get());
     top.finish();
-    // Data blocks 33-37 into the core's Mission (stations in -> ft), so 6D runs can use them.
-    BodyDynamicsMappingFault body_fault;
-    if (!fill_mission_body_dynamics(parsed_extras->body_dynamics, parsed.get(), &body_fault)) {
-      top.fail(body_fault.data_block, body_fault.field, body_fault.message);
-    }
 
     MissionFault fault;
     const Status status = validate_mission(*parsed, &fault);

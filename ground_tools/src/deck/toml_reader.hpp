@@ -137,6 +137,6 @@ void read_fields(Section& section, const std::string& section_path, const FieldT
 
 // Readers of the deck sections (mission_sections.cpp, extras_sections.cpp).
 void read_mission_sections(Section& root, Mission* mission, DeckExtras* extras);
-void read_extras_sections(Section& root, const Mission& mission, DeckExtras* extras);
+void read_extras_sections(Section& root, Mission* mission, DeckExtras* extras);
 
 }  // namespace tolip::ground::deck_detail

@@ -104,7 +104,7 @@ void write_prologue(std::ostringstream& out, const std::string& function_name, c
 }
 
 // Every field of the deck's field description that lives in the Mission (data blocks 4, 10-14,
-// 16, 17, 20-22, 28, 39, the heading hold), every element, the defaults included.
+// 16, 17, 20-22, 28, 33, 39, the heading hold), every element, the defaults included.
 void write_described_fields(std::ostringstream& out, Writer& w, const Mission& s) {
   out << "  // The described fields (ground_tools/src/deck/field_description.cpp).\n";
   for (const deck_detail::FieldDescription& field : deck_detail::field_descriptions()) {
@@ -177,15 +177,9 @@ void write_pitch_and_body(std::ostringstream& out, Writer& w, const Mission& s) 
   out << "  // Data block 40.\n";
   w.table("pitch_program_rad", s.pitch_program_rad);
 
-  out << "  // Data blocks 33-37 (body dynamics; stations in ft).\n";
+  out << "  // Data blocks 34-37 (body dynamics; stations in ft).\n";
   const BodyDynamicsBlocks& b = s.body_dynamics;
-  w.flag("body_dynamics.present", b.present);
-  w.numbers("body_dynamics.position_gain", b.position_gain);
-  w.numbers("body_dynamics.rate_gain_s", b.rate_gain_s);
-  w.numbers("body_dynamics.control_station_ft", b.control_station_ft);
-  w.number("body_dynamics.jet_vane_effectiveness_per_rad", b.jet_vane_effectiveness_per_rad);
-  w.number("body_dynamics.moment_reference_station_ft", b.moment_reference_station_ft);
-  w.number("body_dynamics.reference_length_ft", b.reference_length_ft);
+  w.flag("body_dynamics.present", b.present);  // the gains and stations are described fields
   w.number("body_dynamics.reference_area_ft2", b.reference_area_ft2);
   w.number("body_dynamics.control_surfaces_per_plane", b.control_surfaces_per_plane);
   w.table("body_dynamics.fin_normal_force_per_rad", b.fin_normal_force_per_rad);
