@@ -95,6 +95,7 @@ int optimize_case(const Deck& deck, const DeckCase& deck_case, OptimizerObserver
   report.initial_mission = mission;
   report.result = result;
   report.final_trajectory.mission = &workspace->mission;
+  report.final_trajectory.listing = &deck_case.extras.listing;
   report.final_trajectory.trajectory = &trajectory;
   report.final_trajectory.deck_path = deck.path;
 
