@@ -16,6 +16,9 @@ TOLIP_DEBIAN_PACKAGES=(
   # tolip plot: PNG and SVG figures are drawn by gnuplot (docs/cli.md "tolip plot"); the -nox
   # build has the pngcairo and svg terminals without pulling in X11.
   gnuplot-nox
+  # The Monte Carlo dispersions under MPI (optional at build time: tolip_montecarlo_mpi is built
+  # when CMake finds MPI; docs/theory/dispersions.md).
+  libopenmpi-dev openmpi-bin
   # The bare-metal Cortex-M7 target (CMakePresets.json preset cortex-m7, docs/target.md): the
   # cross compiler, newlib and libstdc++ for arm-none-eabi, and QEMU to run the image.
   gcc-arm-none-eabi

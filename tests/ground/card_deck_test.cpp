@@ -377,9 +377,14 @@ TEST(CardDeck, HardoverGroupWithBlocks44And45) {
   EXPECT_EQ(x.hardover.upper_max_steps_per_turn, 100);
   EXPECT_EQ(x.hardover.stage3_every_nth_step, 3);
   ASSERT_TRUE(x.body_dynamics.present);
-  EXPECT_EQ(x.body_dynamics.control_station_in, (std::array<double, 3>{842.0, 548.0, 296.0}));
-  EXPECT_EQ(x.body_dynamics.reference_length_ft, 3.33333);
-  EXPECT_EQ(x.body_dynamics.cg_station_in[2].y, (std::vector<double>{190.0, 175.0}));
+  const BodyDynamicsBlocks& body = parsed.deck.cases[0].mission->body_dynamics;  // stations in ft
+  EXPECT_DOUBLE_EQ(body.control_station_ft[0], 842.0 / 12.0);
+  EXPECT_DOUBLE_EQ(body.control_station_ft[1], 548.0 / 12.0);
+  EXPECT_DOUBLE_EQ(body.control_station_ft[2], 296.0 / 12.0);
+  EXPECT_EQ(body.reference_length_ft, 3.33333);
+  ASSERT_EQ(body.cg_station_ft[2].size(), 2);
+  EXPECT_DOUBLE_EQ(body.cg_station_ft[2].y(0), 190.0 / 12.0);
+  EXPECT_DOUBLE_EQ(body.cg_station_ft[2].y(1), 175.0 / 12.0);
 }
 
 TEST(CardDeck, DispersionGroupEntriesStartWithBlock46) {
@@ -413,8 +418,13 @@ TEST(CardDeck, DispersionGroupEntriesStartWithBlock46) {
   EXPECT_EQ(x.dispersions[2].wind_azimuth_rad.y[1], deg(280.0));
   EXPECT_EQ(x.dispersions[3].code, 40);
   EXPECT_EQ(x.dispersions[3].title, "NOMINAL TRAJ");
-  EXPECT_EQ(x.body_dynamics.position_gain, (std::array<double, 3>{1.2, 1.0, 1.0}));
-  EXPECT_EQ(x.body_dynamics.pitching_moment_per_rad.y, (std::vector<double>{-8.0, -2.6}));
+  const BodyDynamicsBlocks& body = parsed.deck.cases[0].mission->body_dynamics;
+  EXPECT_EQ(body.position_gain[0], 1.2);
+  EXPECT_EQ(body.position_gain[1], 1.0);
+  EXPECT_EQ(body.position_gain[2], 1.0);
+  ASSERT_EQ(body.pitching_moment_per_rad.size(), 2);
+  EXPECT_EQ(body.pitching_moment_per_rad.y(0), -8.0);
+  EXPECT_EQ(body.pitching_moment_per_rad.y(1), -2.6);
 }
 
 TEST(CardDeck, GroupsAreReadInTheManualsOrderAndAfreshPerCase) {
@@ -653,21 +663,14 @@ void expect_same_table(const ground::DeckTable& a, const ground::DeckTable& b, c
 }
 
 void expect_same_extras(const DeckExtras& a, const DeckExtras& b) {
+  // Blocks 33-37 are the Mission's (compared with fields_of); DA6D(12-19) are kept here.
   const ground::BodyDynamicsData& p = a.body_dynamics;
   const ground::BodyDynamicsData& q = b.body_dynamics;
   EXPECT_EQ(p.present, q.present);
-  EXPECT_EQ(p.position_gain, q.position_gain);
-  EXPECT_EQ(p.rate_gain_s, q.rate_gain_s);
-  EXPECT_EQ(p.control_station_in, q.control_station_in);
-  EXPECT_EQ(p.jet_vane_effectiveness_per_rad_per_vane, q.jet_vane_effectiveness_per_rad_per_vane);
-  EXPECT_EQ(p.moment_reference_station_in, q.moment_reference_station_in);
   EXPECT_EQ(p.integration_frequency_multiplier, q.integration_frequency_multiplier);
-  EXPECT_EQ(p.reference_length_ft, q.reference_length_ft);
   EXPECT_EQ(p.impact_every_nth_step, q.impact_every_nth_step);
-  expect_same_table(p.fin_normal_force_per_rad_per_fin, q.fin_normal_force_per_rad_per_fin, "block 34");
-  expect_same_table(p.pitching_moment_per_rad, q.pitching_moment_per_rad, "block 35");
-  expect_same_table(p.fin_pitching_moment_per_rad_per_fin, q.fin_pitching_moment_per_rad_per_fin, "block 36");
-  for (std::size_t i = 0; i < 4; ++i) expect_same_table(p.cg_station_in[i], q.cg_station_in[i], "block 37");
+  EXPECT_EQ(a.listing.lines_per_page, b.listing.lines_per_page);
+  EXPECT_EQ(a.listing.deg_to_rad_as_printed, b.listing.deg_to_rad_as_printed);
   ASSERT_EQ(a.radar_stations.size(), b.radar_stations.size());
   for (std::size_t i = 0; i < a.radar_stations.size(); ++i) {
     EXPECT_EQ(a.radar_stations[i].id, b.radar_stations[i].id);

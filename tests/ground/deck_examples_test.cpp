@@ -231,21 +231,23 @@ TEST(Sec22Deck, ExampleExtrasCarryTheOptionalComputationData) {
   Loaded loaded = load_example("scout/mission.toml");
   const DeckExtras& x = loaded.extras;
 
-  // Blocks 33-37.
+  // Blocks 33-37: in the core's Mission (stations in ft), DA6D(12-19) ground side.
   const nlohmann::json& da6d = ref["body_dynamics_6D"]["block33_DA6D"];
+  const BodyDynamicsBlocks& b = loaded.mission->body_dynamics;
   ASSERT_TRUE(x.body_dynamics.present);
-  EXPECT_EQ(x.body_dynamics.position_gain[0], 1.2);
-  EXPECT_EQ(x.body_dynamics.control_station_in[2], 296.0);
-  EXPECT_DOUBLE_EQ(x.body_dynamics.jet_vane_effectiveness_per_rad_per_vane,
+  ASSERT_TRUE(b.present);
+  EXPECT_EQ(b.position_gain[0], 1.2);
+  EXPECT_DOUBLE_EQ(b.control_station_ft[2], 296.0 / 12.0);
+  EXPECT_DOUBLE_EQ(b.jet_vane_effectiveness_per_rad,
                    da6d["jet_vane_effectiveness_lb_per_lb_vacuum_thrust_per_deg_per_vane"].get<double>() / kDegToRad);
-  EXPECT_EQ(x.body_dynamics.reference_length_ft, da6d["reference_length_ft"].get<double>());
+  EXPECT_EQ(b.reference_length_ft, da6d["reference_length_ft"].get<double>());
   EXPECT_EQ(x.body_dynamics.impact_every_nth_step[1], 2);
-  EXPECT_EQ(x.body_dynamics.pitching_moment_per_rad.size(), 10);
-  EXPECT_EQ(x.body_dynamics.pitching_moment_per_rad.y[2], -9.165);
-  EXPECT_EQ(x.body_dynamics.fin_normal_force_per_rad_per_fin.size(), 9);
-  EXPECT_EQ(x.body_dynamics.fin_pitching_moment_per_rad_per_fin.y[0], -1.815);
-  EXPECT_EQ(x.body_dynamics.cg_station_in[0].y.front(), 515.0);
-  EXPECT_EQ(x.body_dynamics.cg_station_in[3].x.back(), 28.0);
+  EXPECT_EQ(b.pitching_moment_per_rad.size(), 10);
+  EXPECT_EQ(b.pitching_moment_per_rad.y(2), -9.165);
+  EXPECT_EQ(b.fin_normal_force_per_rad.size(), 9);
+  EXPECT_EQ(b.fin_pitching_moment_per_rad.y(0), -1.815);
+  EXPECT_DOUBLE_EQ(b.cg_station_ft[0].y(0), 515.0 / 12.0);
+  EXPECT_EQ(b.cg_station_ft[3].x(b.cg_station_ft[3].size() - 1), 28.0);
 
   // Block 41.
   ASSERT_EQ(x.radar_stations.size(), 6u);

@@ -276,8 +276,8 @@ TEST(TableExport, ReferenceDeckGivesTheDocumentedInterimContents) {
   EXPECT_DOUBLE_EQ(t.max_deflection_rad * kRadToDeg, 10.0);   // block 45 word 11
   EXPECT_EQ(t.stage4_theta_rad, c.mission->misc.stage4_theta_rad);
   EXPECT_EQ(t.stage5_theta_rad, c.mission->misc.stage4_theta_rad);  // IP(9) = 1: theta_5 = theta_4
-  EXPECT_EQ(t.gains[0].k_theta, c.extras->body_dynamics.position_gain[0]);
-  EXPECT_EQ(t.gains[1].k_q_s, c.extras->body_dynamics.rate_gain_s[1]);
+  EXPECT_EQ(t.gains[0].k_theta, c.mission->body_dynamics.position_gain[0]);
+  EXPECT_EQ(t.gains[1].k_q_s, c.mission->body_dynamics.rate_gain_s[1]);
   EXPECT_EQ(t.gains[5].k_theta, t.gains[0].k_theta);  // coast 6 keeps stage 1's gains
   EXPECT_EQ(t.gains[3].k_theta, 0.0);                 // spun stage 4: no autopilot
   EXPECT_EQ(t.segments[0].stage_code, 1);

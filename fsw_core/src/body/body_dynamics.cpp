@@ -70,10 +70,15 @@ Status steady_state_attitude(const AutopilotGains& gains, const UnitMoments& mom
     status = Status::kBodyDynamicsNotTrimmable;
   }
   if (!follow) {
-    out->theta_rad = (k_m_delta * command.theta_rad - q_m_delta * command.theta_rate_rad_s -
-                      m_alpha * velocity.gamma_w_rad) / denominator;
-    out->chi_rad = (k_m_delta * command.chi_rad - q_m_delta * command.chi_rate_rad_s -
-                    m_alpha * velocity.azimuth_w_rad) / denominator;
+    double pitch_numerator =
+        k_m_delta * command.theta_rad - q_m_delta * command.theta_rate_rad_s - m_alpha * velocity.gamma_w_rad;
+    double yaw_numerator =
+        k_m_delta * command.chi_rad - q_m_delta * command.chi_rate_rad_s - m_alpha * velocity.azimuth_w_rad;
+    // Sec. 15's misalignment term; added only when present so a nominal run is bit for bit unchanged.
+    if (command.pitch_disturbance_lbf_ft != 0.0) pitch_numerator += command.pitch_disturbance_lbf_ft;
+    if (command.yaw_disturbance_lbf_ft != 0.0) yaw_numerator += command.yaw_disturbance_lbf_ft;
+    out->theta_rad = pitch_numerator / denominator;
+    out->chi_rad = yaw_numerator / denominator;
     follow = !std::isfinite(out->theta_rad) || !std::isfinite(out->chi_rad);
   }
   out->follows_command = follow;
@@ -136,10 +141,28 @@ Status evaluate_body_dynamics(const BodyDynamicsBlocks& data, const BodyDynamics
   AutopilotGains gains;
   gains.position_gain = data.position_gain[k];
   gains.rate_gain_s = data.rate_gain_s[k];
-  const Status status = steady_state_attitude(gains, out->moments, in.command, out->velocity, &out->attitude);
-  out->angles = body_angles_of_attack(out->attitude.theta_rad, out->attitude.chi_rad, in.platform_to_local);
+  const bool misaligned = in.misalignment_pitch_rad != 0.0 || in.misalignment_yaw_rad != 0.0;
+  AutopilotCommand command = in.command;
+  const double thrust_lever_ft = in.thrust_station_ft - out->moments.cg_station_ft;  // X_T - XCGL
+  if (misaligned) {
+    const double unit_moment = in.net_thrust_lbf * thrust_lever_ft;  // M_alpha_T
+    command.pitch_disturbance_lbf_ft += unit_moment * in.misalignment_pitch_rad;
+    command.yaw_disturbance_lbf_ft += unit_moment * in.misalignment_yaw_rad;
+  }
+  const Status status = steady_state_attitude(gains, out->moments, command, out->velocity, &out->attitude);
+  const Matrix3& angle_frame = (in.air_platform_to_local != nullptr) ? *in.air_platform_to_local : in.platform_to_local;
+  out->angles = body_angles_of_attack(out->attitude.theta_rad, out->attitude.chi_rad, angle_frame);
   out->forces = body_forces(out->moments, out->angles, in.normal_force_lbf_per_rad, out->attitude.theta_rad,
                             out->attitude.chi_rad, in.platform_to_local);
+  if (misaligned && std::fabs(out->moments.control_lever_ft) >= kMinimumLeverFt) {
+    // The misalignment force and the control force that trims its moment (Sec. 15).
+    const double factor = 1.0 - thrust_lever_ft / out->moments.control_lever_ft;
+    out->forces.missile_z_lbf += -in.net_thrust_lbf * in.misalignment_pitch_rad * factor;
+    out->forces.missile_x_lbf += -in.net_thrust_lbf * in.misalignment_yaw_rad * factor;
+    const MissileAxes axes = missile_axes_platform(out->attitude.theta_rad, out->attitude.chi_rad);
+    out->forces.platform_lbf = out->forces.missile_x_lbf * axes.x + out->forces.missile_z_lbf * axes.z;
+    out->forces.local_lbf = in.platform_to_local * out->forces.platform_lbf;
+  }
   return status;
 }
 

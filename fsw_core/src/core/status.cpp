@@ -109,6 +109,11 @@ const char* status_name(Status status) {
     case Status::kTableNotValidated: return "kTableNotValidated";
     case Status::kNoActiveTable: return "kNoActiveTable";
     case Status::kStageEventOutOfOrder: return "kStageEventOutOfOrder";
+    case Status::kDispersionNotImplemented: return "kDispersionNotImplemented";
+    case Status::kDispersionNeedsBodyDynamics: return "kDispersionNeedsBodyDynamics";
+    case Status::kDispersionStageNotInSequence: return "kDispersionStageNotInSequence";
+    case Status::kDispersionStageNotSpun: return "kDispersionStageNotSpun";
+    case Status::kDispersionCodeInvalid: return "kDispersionCodeInvalid";
   }
   return "kUnknownStatus";
 }
@@ -219,6 +224,11 @@ const char* status_message(Status status) {
     case Status::kTableNotValidated: return "the staged table image has not passed validation";
     case Status::kNoActiveTable: return "no guidance table is active";
     case Status::kStageEventOutOfOrder: return "a stage event is earlier in time or in the flight order than the stage in force";
+    case Status::kDispersionNotImplemented: return "this dispersion code is not computed by this version";
+    case Status::kDispersionNeedsBodyDynamics: return "this dispersion acts through the body dynamics (Sec. 7, 15): the nominal must fly stage 1 with body dynamics (IP(6) = 1 with IP(7) = 1) and data blocks 33-37";
+    case Status::kDispersionStageNotInSequence: return "the dispersion's stage is not in the stage sequence (data block 5)";
+    case Status::kDispersionStageNotSpun: return "tip-off dispersions apply to a spin-stabilized stage 4 or 5 (IP(9))";
+    case Status::kDispersionCodeInvalid: return "dispersion codes must be 1-38 or 40, in increasing order, each with the data its code needs (Sec. 22, data block 46)";
   }
   return "unknown status";
 }

@@ -270,8 +270,6 @@ Status check_constants(const Constants& c, const Check& check) {
                         {c.g0_ft_s2, "g0_ft_s2", "ft/s^2"},
                         {c.sea_level_pressure_lbf_ft2, "sea_level_pressure_lbf_ft2", "lbf/ft^2"},
                         {c.haero_ft, "haero_ft", "ft"},
-                        {c.lines_per_page, "lines_per_page", ""},
-                        {c.deg_to_rad_as_printed, "deg_to_rad_as_printed", ""},
                         {c.time_epsilon_s, "time_epsilon_s", "s"},
                         {c.j2, "j2", ""},
                         {c.inverse_flattening, "inverse_flattening", ""},

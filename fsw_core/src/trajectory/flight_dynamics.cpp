@@ -84,9 +84,26 @@ void evaluate_flight(const Mission& mission, const PreparedCase& prepared, const
   }
   out->theta_command_rad = out->theta_rad;
 
+  // Sec. 15 winds: the air-relative velocity takes V's place in q-bar, Mach, the angles of attack
+  // and the direction of the drag (a dispersed trajectory's; still air otherwise).
+  const FlightPerturbation* perturbation = stage.perturbation;
+  bool windy = false;
+  double air_speed = v;
+  Matrix3 local_to_air = Matrix3::Identity();
+  if (perturbation != nullptr && perturbation->wind != nullptr && density > 0.0) {
+    const double wind_speed = perturbation->wind->speed_ft_s(out->altitude_ft);
+    if (wind_speed != 0.0) {
+      const Vector3 air = air_relative_velocity_local(state, trig, wind_speed,
+                                                      perturbation->wind->azimuth_rad(out->altitude_ft));
+      air_speed = air.norm();
+      windy = air_speed > 0.0;
+      if (windy) local_to_air = local_to_air_frame(air);
+    }
+  }
+
   out->density_slug_ft3 = density;
-  out->dynamic_pressure_lbf_ft2 = 0.5 * density * v * v;
-  out->mach = (speed_of_sound > 0.0) ? v / speed_of_sound : 0.0;
+  out->dynamic_pressure_lbf_ft2 = 0.5 * density * air_speed * air_speed;
+  out->mach = (speed_of_sound > 0.0) ? air_speed / speed_of_sound : 0.0;
   out->control_deflection_rad = 0.0;
   out->body_status = Status::kOk;
   Vector3 body_force_local = Vector3::Zero();
@@ -113,6 +130,17 @@ void evaluate_flight(const Mission& mission, const PreparedCase& prepared, const
     body.normal_force_lbf_per_rad =
         (aero && data.uses_lift_table) ? out->dynamic_pressure_lbf_ft2 * data.reference_area_ft2 * c_n_alpha : 0.0;
     body.platform_to_local = platform_to_local;
+    Matrix3 air_platform_to_local;
+    if (windy) {
+      air_platform_to_local = local_to_air * platform_to_local;
+      body.air_platform_to_local = &air_platform_to_local;
+    }
+    if (perturbation != nullptr && stage.code == 1) {
+      body.misalignment_pitch_rad = perturbation->misalignment_pitch_rad;
+      body.misalignment_yaw_rad = perturbation->misalignment_yaw_rad;
+      body.thrust_station_ft = perturbation->thrust_station_ft;
+      body.net_thrust_lbf = out->net_thrust_lbf;
+    }
     BodyDynamicsResult result;
     out->body_status = evaluate_body_dynamics(mission.body_dynamics, body, &result);
     out->theta_rad = result.attitude.theta_rad;
@@ -124,13 +152,21 @@ void evaluate_flight(const Mission& mission, const PreparedCase& prepared, const
 
   out->drag_lbf = 0.0;
   out->lift_lbf = 0.0;
+  Vector3 wind_force_local = Vector3::Zero();  // drag and lift along the air frame (winds only)
   if (density > 0.0) {
     const double q_s = out->dynamic_pressure_lbf_ft2 * data.reference_area_ft2;
     if (!data.drag_coefficient.empty()) out->drag_lbf = q_s * data.drag_coefficient(out->mach);
     if (!command.body_dynamics && data.uses_lift_table && !mission.vehicle.lift_curve_slope_per_rad.empty()) {
       // Alpha (an atan2) is needed on the integration path only where there is lift.
-      out->lift_lbf = q_s * mission.vehicle.lift_curve_slope_per_rad(out->mach) *
-                      angle_of_attack_rad(out->thrust_axis_local);
+      const double alpha = windy ? air_angle_of_attack_rad(local_to_air, out->thrust_axis_local)
+                                 : angle_of_attack_rad(out->thrust_axis_local);
+      out->lift_lbf = q_s * mission.vehicle.lift_curve_slope_per_rad(out->mach) * alpha;
+    }
+    if (windy) {
+      // Drag against the air-relative velocity, lift along a_z: given to the equations as local
+      // force components (the manual's F_j increment, then D = 0).
+      wind_force_local = -out->drag_lbf * local_to_air.row(1).transpose() +
+                         out->lift_lbf * local_to_air.row(2).transpose();
     }
   }
 
@@ -146,6 +182,11 @@ void evaluate_flight(const Mission& mission, const PreparedCase& prepared, const
     forces.thrust_local_lbf += body_force_local;
     forces.lift_lbf = 0.0;
     out->lift_lbf = body_force_local.z();
+  }
+  if (windy) {
+    forces.thrust_local_lbf += wind_force_local;
+    forces.drag_lbf = 0.0;
+    forces.lift_lbf = 0.0;
   }
   forces.heading_hold = command.heading_hold;
   out->derivative = state_derivative(constants, state, trig, forces);

@@ -43,6 +43,7 @@ class Flight {
   void latch_segments(const StageContext& stage, double t, const StateVector& state);
   StepCommand command_at(const StageContext& stage, int point, double t, double step_s,
                          const StateVector& state);
+  void perturb_command(const StageContext& stage, double t, StepCommand* command) const;
   double program_theta(int point, double t) const;
   Status record(const StageContext& stage, double t, const StateVector& state,
                 const StepCommand& command, const Evaluation& eval);
@@ -138,6 +139,18 @@ StepCommand Flight::command_at(const StageContext& stage, int point, double t, d
                                 : program_theta(point, t);
   command.theta_end_rad = program_theta(point + 1, t + step_s);
   return command;
+}
+
+// A dispersed trajectory's attitude offsets (FlightPerturbation) on the step's command: not during
+// the vertical lift-off nor the zero-alpha window, whose attitudes the flight itself fixes.
+void Flight::perturb_command(const StageContext& stage, double t, StepCommand* command) const {
+  const FlightPerturbation* perturbation = inputs_.perturbation;
+  if (perturbation == nullptr || command->mode == AttitudeMode::kZeroAlpha) return;
+  if (t + 0.5 * mission_.constants.time_epsilon_s < mission_.launch.liftoff_duration_s) return;
+  const int slot = stage_index(stage.code);
+  command->theta_start_rad += perturbation->theta_offset_rad[slot];
+  command->theta_end_rad += perturbation->theta_offset_rad[slot];
+  command->chi_rad += perturbation->chi_offset_rad[slot];
 }
 
 Status Flight::record(const StageContext& stage, double t, const StateVector& state,
@@ -245,7 +258,8 @@ Status Flight::record_pad_point() {
 
 Status Flight::fly_stage(int slot, StateVector* state) {
   const StageTimeline& line = prepared_.timeline[slot];
-  const StageContext stage = make_stage_context(mission_, prepared_, line);
+  StageContext stage = make_stage_context(mission_, prepared_, line);
+  stage.perturbation = inputs_.perturbation;
   const bool powered = stage.thrust != nullptr;
 
   StageEvent& event = trajectory_->stages[trajectory_->stage_count];
@@ -265,6 +279,7 @@ Status Flight::fly_stage(int slot, StateVector* state) {
     if (point == inputs_.injection_point) *state += inputs_.injection;
     if (inputs_.feedback != nullptr) inputs_.feedback->at_point(point, *state, inputs_.live_program);
     StepCommand command = command_at(stage, point, t, line.step_s, *state);
+    perturb_command(stage, t, &command);
     command.body_dynamics = body_dynamics;
     evaluate_flight(mission_, prepared_, stage, command, t, *state, 0.0, &eval);
     if (!eval.derivative.allFinite()) return Status::kNonFiniteState;  // nothing NaN is stored
@@ -315,6 +330,7 @@ Status Flight::fly_stage(int slot, StateVector* state) {
   // With body dynamics the end point keeps the rate of the last step flown, so its steady-state
   // attitude is the one the last step ended with.
   StepCommand command = command_at(stage, trajectory_->point_count, t_end, line.step_s, *state);
+  perturb_command(stage, t_end, &command);
   if (command.mode == AttitudeMode::kLinear) {
     command.theta_end_rad = body_dynamics ? command.theta_start_rad + last_theta_step_rad : command.theta_start_rad;
   }

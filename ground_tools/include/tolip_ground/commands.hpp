@@ -43,6 +43,8 @@ int run_simulate_command(const SimulateCommandOptions& options, std::ostream& ou
 struct OptimizeCommandOptions {
   std::string deck_path;
   std::string csv_path;  // empty: no CSV (of the final trajectory; FILE.caseN per case of several)
+  // IP(21) = 1: the dispersion analysis as CSV (dispersion_report.hpp); empty: none.
+  std::string dispersions_csv_path;
   bool json = false;
   ProgressMode progress = ProgressMode::kAuto;  // the forward-run status line on stderr
 };

@@ -4,9 +4,9 @@
 // turns) and 46-55 (dispersions) are read from the TOML deck (docs/deck-format.md), checked for
 // shape (finite numbers, strictly increasing table abscissae, counts, option requirements) and
 // kept here, ground side, until the modules that use them land in the core. Units are the core's:
-// angles in rad (the deck gives degrees); body stations stay in inches as in the manual (the
-// field names say so); "per degree" coefficients are converted to "per radian". Blocks 33-37 also
-// fill the core's Mission::body_dynamics (fill_mission_body_dynamics below, stations in ft).
+// angles in rad (the deck gives degrees); body stations of blocks 44-55 stay in inches as in the
+// manual (the field names say so). Blocks 33-37 fill the core's Mission::body_dynamics (stations
+// in ft); only the block 33 words the core does not hold are kept here.
 #pragma once
 
 #include <array>
@@ -26,21 +26,13 @@ struct DeckTable {
   int size() const { return static_cast<int>(x.size()); }
 };
 
-// Data blocks 33-37 (DA6D, CNDELTA, CMALPHA, CMDELTA, XCG1-XCG4).
+// Data block 33's words the core's Mission does not hold. Everything else of blocks 33-37 (gains,
+// stations, the moment data and the c.g. histories) lives once, in core units, in
+// Mission::body_dynamics; the deck reader converts the deck's inches and per-degree values there.
 struct BodyDynamicsData {
   bool present = false;                                   // [body_dynamics] given
-  std::array<double, 3> position_gain = {};               // DA6D(1-3) K_theta, deg/deg (= rad/rad), stages 1-3
-  std::array<double, 3> rate_gain_s = {};                 // DA6D(4-6) K_theta-dot, s, stages 1-3
-  std::array<double, 3> control_station_in = {};          // DA6D(7-9) X_delta: stage 1 vanes and fins, stages 2-3 jets
-  double jet_vane_effectiveness_per_rad_per_vane = 0.0;   // DA6D(10) K_TV-delta, lb per lb vacuum thrust per rad per vane
-  double moment_reference_station_in = 0.0;               // DA6D(11) X_FS
   std::array<double, 4> integration_frequency_multiplier = {1.0, 1.0, 1.0, 1.0};  // DA6D(12-15), stages 1-4
-  double reference_length_ft = 0.0;                       // DA6D(16)
   std::array<int, 3> impact_every_nth_step = {1, 1, 1};   // DA6D(17-19), stages 1-3
-  DeckTable fin_normal_force_per_rad_per_fin;             // block 34: Mach -> C_N_delta
-  DeckTable pitching_moment_per_rad;                      // block 35: Mach -> C_M_alpha about X_FS
-  DeckTable fin_pitching_moment_per_rad_per_fin;          // block 36: Mach -> C_M_delta about X_FS
-  std::array<DeckTable, 4> cg_station_in;                 // block 37: stage time s -> c.g. station, stages 1-4
 };
 
 // Data block 41: one card per station.
@@ -117,28 +109,21 @@ struct DispersionCase {
   DeckTable wind_azimuth_rad;              // codes 36-38, block 54: altitude ft -> azimuth of the wind vector
 };
 
+// How the deck lays out the printed listing (data block 10 words 8 and 9): listing concerns, kept
+// beside the core's Mission and never in it.
+struct DeckListingOptions {
+  double lines_per_page = 54.0;               // CT1(8); the pager accepts 20-1000 (else 54)
+  double deg_to_rad_as_printed = 0.017453292;  // CT1(9), echoed only: the core uses the exact pi/180
+};
+
 struct DeckExtras {
+  DeckListingOptions listing;
   BodyDynamicsData body_dynamics;
   std::vector<RadarStation> radar_stations;
   ImpactData impact;
   HardoverData hardover;
   std::vector<DispersionCase> dispersions;  // in increasing code order
 };
-
-// Where fill_mission_body_dynamics() found data the core cannot hold.
-struct BodyDynamicsMappingFault {
-  int data_block = 0;
-  int stage_code = 0;   // block 37: the c.g. table's stage
-  std::string field;    // deck key path, e.g. "body_dynamics.cg.1"
-  std::string message;
-};
-
-// Fills mission->body_dynamics (the core's data blocks 33-37, manual Sec. 7 and 11) from the deck's
-// data: body stations inches -> ft, K_TV already per radian, the 6D reference area S from stage 1's
-// block 39 area SG1(2) (DA6D has no word for it), tables finalized. Nothing is filled when the deck
-// gave no [body_dynamics]. Returns false with *fault when a table is longer than the core's
-// capacity (blocks 34-36: 20 points; block 37: 10 points per stage).
-bool fill_mission_body_dynamics(const BodyDynamicsData& deck, Mission* mission, BodyDynamicsMappingFault* fault);
 
 // load_toml_deck()/parse_toml_deck() that also return the optional-computation data. On failure
 // neither *mission nor *extras is changed.

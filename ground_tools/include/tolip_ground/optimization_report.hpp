@@ -19,6 +19,10 @@
 #include "tolip_ground/report.hpp"
 
 namespace tolip::ground {
+struct DispersionStep;
+}
+
+namespace tolip::ground {
 
 // What `optimize` computed.
 struct OptimizationReport {
@@ -60,6 +64,8 @@ struct OptimizationReport {
   const Trajectory* initial_nominal_point_mass = nullptr;
   const Trajectory* initial_nominal_6d = nullptr;
   Status initial_nominal_6d_status = Status::kNotPrepared;
+  // The dispersion analysis (IP(21) = 1, Sec. 15; dispersion_report.hpp): null unless asked for.
+  const DispersionStep* dispersions = nullptr;
 };
 
 

@@ -20,6 +20,8 @@
 
 namespace tolip::ground {
 
+struct DeckListingOptions;  // tolip_ground/deck_extras.hpp
+
 // One constraint of data blocks 8/19/29 after the payoff, in the units of data block 19 (ft, rad,
 // ft/s, n.mi., ft^2/s^2, Btu/ft^2, lbf/ft^2).
 struct ConstraintSummary {
@@ -43,6 +45,8 @@ struct ConstraintSummary {
 // flown up to the failure. The orbit elements exist only when the trajectory completed.
 struct SimulationReport {
   const Mission* mission = nullptr;         // required
+  // Data block 10 words 8-9 (the deck's DeckExtras::listing); null: the nominal page layout.
+  const DeckListingOptions* listing = nullptr;
   const Trajectory* trajectory = nullptr;   // required (point_count 0 when prepare_case failed)
   Status status = Status::kNotPrepared;     // first failure of prepare/fly/orbit, or kOk
   bool has_orbit = false;

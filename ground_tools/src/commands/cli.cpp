@@ -192,6 +192,13 @@ CLI::App* add_optimize_command(CLI::App& app, OptimizeCommandOptions* options) {
                    "atomically; on a write failure an existing FILE is left\n"
                    "untouched, nothing is printed and the exit code is 1")
       ->type_name("FILE");
+  optimize
+      ->add_option("--dispersions-csv", options->dispersions_csv_path,
+                   "With IP(21) = 1: also write the dispersion analysis\n"
+                   "(every dispersed trajectory's staging-point values and\n"
+                   "dispersions, orbit elements, max q-bar alpha) to FILE as\n"
+                   "CSV (FILE.caseN.csv per case of a several-case deck)")
+      ->type_name("FILE");
   optimize->add_flag("--json", options->json,
                      "Print one JSON document instead of the listing: the\n"
                      "simulate --json keys for the final trajectory plus\n"

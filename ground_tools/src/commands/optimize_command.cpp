@@ -18,6 +18,8 @@
 #include "tolip_ground/card_deck.hpp"
 #include "tolip_ground/commands.hpp"
 #include "tolip_ground/deck.hpp"
+#include "tolip_ground/dispersion_report.hpp"
+#include "tolip_ground/dispersion_run.hpp"
 #include "tolip_ground/input_echo.hpp"
 #include "tolip_ground/optimization_report.hpp"
 #include "tolip_ground/optimization_run.hpp"
@@ -43,6 +45,7 @@ bool rejects_problem(Status status) {
 // stdout stays empty when a later case stops the command (a CSV failure, a rejected case).
 struct CaseOutput {
   std::string csv_path;       // empty: no CSV
+  std::string dispersions_csv_path;  // empty: no dispersion CSV
   bool json = false;
   std::string prefix;         // before the case's diagnostics ("case N: " in a several-case deck)
   std::ostream* listing = nullptr;
@@ -56,6 +59,20 @@ struct CaseOutput {
 int optimize_case(const Deck& deck, const DeckCase& deck_case, OptimizerObserver* observer,
                   ProgressLine& progress, CaseOutput* output, std::ostream& err) {
   const Mission* const mission = deck_case.mission.get();
+
+  // Data blocks 46-55 into the core's fixed storage first: a table too long for it is bad input,
+  // reported before anything runs (IP(21) = 1, Sec. 15).
+  std::unique_ptr<DispersionData> dispersion_data;
+  if (mission->options.dispersions()) {
+    dispersion_data = std::make_unique<DispersionData>();
+    DispersionMappingFault fault;
+    if (!fill_dispersion_data(deck_case.extras.dispersions, dispersion_data.get(), &fault)) {
+      err << "tolip: " << output->prefix << deck.path << ": data block " << fault.data_block << ", dispersion code "
+          << fault.code << ", " << fault.field << ": " << fault.message << '\n';
+      output->stop = true;
+      return kExitBadInput;
+    }
+  }
 
   // The optimization, then the linearization and exchange ratios the deck asks for
   // (tolip_ground/optimization_run.hpp); the workspaces are large and live on the heap.
@@ -78,6 +95,7 @@ int optimize_case(const Deck& deck, const DeckCase& deck_case, OptimizerObserver
   report.initial_mission = mission;
   report.result = result;
   report.final_trajectory.mission = &workspace->mission;
+  report.final_trajectory.listing = &deck_case.extras.listing;
   report.final_trajectory.trajectory = &trajectory;
   report.final_trajectory.deck_path = deck.path;
 
@@ -118,11 +136,20 @@ int optimize_case(const Deck& deck, const DeckCase& deck_case, OptimizerObserver
     report.initial_nominal_6d = run.initial_nominal_6d.body_dynamics.get();
   }
   if (run.linearization.outcome == StepOutcome::kRun) report.linearization = run.linearization.result.get();
+  // The dispersion analysis about the final nominal (IP(21) = 1, Sec. 15; dispersion_run.hpp).
+  DispersionStep dispersions;
+  if (mission->options.dispersions()) {
+    run_dispersion_step(*mission, run, std::move(dispersion_data), &dispersions);
+    report.dispersions = &dispersions;
+  }
 
   // The one rule of a case's success (optimization_job_verdict, shared with export): a trajectory or
   // orbit failure, else the first computation the deck asks for that did not succeed.
   JobVerdict verdict = optimization_job_verdict(run);
   if (ok(optimizer_status) && !ok(report.status)) verdict = {report.status, "final trajectory"};
+  if (ok(verdict.status) && dispersions.outcome == StepOutcome::kRun && !ok(dispersions.status)) {
+    verdict = {dispersions.status, "dispersions"};
+  }
   report.case_status = verdict.status;
   report.case_failed_step = verdict.failed_step;
 
@@ -132,6 +159,22 @@ int optimize_case(const Deck& deck, const DeckCase& deck_case, OptimizerObserver
         output->csv_path,
         [&report](std::ostream& csv) {
           write_trajectory_csv(csv, report.final_trajectory);
+          return static_cast<bool>(csv);
+        },
+        &write_error);
+    if (!written) {
+      err << "tolip: " << write_error << '\n';
+      output->stop = true;
+      return kExitFailure;
+    }
+  }
+
+  if (!output->dispersions_csv_path.empty() && mission->options.dispersions()) {
+    std::string write_error;
+    const bool written = write_file_atomically(
+        output->dispersions_csv_path,
+        [&dispersions](std::ostream& csv) {
+          write_dispersion_csv(csv, dispersions);
           return static_cast<bool>(csv);
         },
         &write_error);
@@ -168,9 +211,11 @@ int run_optimize_command(const OptimizeCommandOptions& options, std::ostream& ou
     return kExitBadInput;
   }
   const std::size_t cases = deck.cases.size();
-  if (std::string csv_error; !csv_spares_the_deck(options.csv_path, options.deck_path, cases, &csv_error)) {
-    err << "tolip: " << csv_error << '\n';
-    return kExitBadInput;
+  for (const std::string& csv : {options.csv_path, options.dispersions_csv_path}) {
+    if (std::string csv_error; !csv_spares_the_deck(csv, options.deck_path, cases, &csv_error)) {
+      err << "tolip: " << csv_error << '\n';
+      return kExitBadInput;
+    }
   }
   // Inputs read but not acted on are named, never dropped (tolip_ground/unused_inputs.hpp).
   print_deck_input_warnings(err, options.deck_path, deck);
@@ -185,6 +230,9 @@ int run_optimize_command(const OptimizeCommandOptions& options, std::ostream& ou
     OptimizerProgress observer(progress, *deck_case.mission);
     CaseOutput output;
     output.csv_path = options.csv_path.empty() ? "" : case_file_path(options.csv_path, deck_case.number, cases);
+    output.dispersions_csv_path = options.dispersions_csv_path.empty()
+                                      ? ""
+                                      : case_file_path(options.dispersions_csv_path, deck_case.number, cases);
     output.json = options.json;
     output.prefix = case_message_prefix(deck_case.number, cases);
     output.listing = &listing;

@@ -33,11 +33,13 @@ struct SimulatedCase {
   SimulationReport report;
 };
 
-void simulate_case(const Mission& mission, const std::string& deck_path, SimulatedCase* run) {
+void simulate_case(const Mission& mission, const DeckListingOptions& listing, const std::string& deck_path,
+                   SimulatedCase* run) {
   // PreparedCase and Trajectory are large fixed-capacity structures: kept on the heap.
   SimulationReport& report = run->report;
   Trajectory* trajectory = run->trajectory.get();
   report.mission = &mission;
+  report.listing = &listing;
   report.trajectory = trajectory;
   report.deck_path = deck_path;
 
@@ -83,6 +85,14 @@ int run_simulate_command(const SimulateCommandOptions& options, std::ostream& ou
   }
   // Inputs read but not acted on are named, never dropped (tolip_ground/unused_inputs.hpp).
   print_deck_input_warnings(err, options.deck_path, deck);
+  // IP(21): the dispersions are taken about the final nominal, which only `optimize` produces.
+  for (const DeckCase& deck_case : deck.cases) {
+    if (!deck_case.mission->options.dispersions()) continue;
+    print_input_warnings(err, options.deck_path, deck_case.number, static_cast<int>(deck.cases.size()),
+                         {InputWarning{4, "IP(21)", "options.dispersions",
+                                       "the dispersions (Sec. 15) are computed about the final nominal by "
+                                       "`tolip optimize`; simulate flies the deck's program only"}});
+  }
 
   // Everything goes to stdout at the end, so a CSV failure leaves stdout empty.
   std::ostringstream listing;
@@ -90,7 +100,7 @@ int run_simulate_command(const SimulateCommandOptions& options, std::ostream& ou
   std::vector<std::string> failures;
   for (const DeckCase& deck_case : deck.cases) {
     SimulatedCase run;
-    simulate_case(*deck_case.mission, options.deck_path, &run);
+    simulate_case(*deck_case.mission, deck_case.extras.listing, options.deck_path, &run);
 
     // Every point flown goes to the CSV, also after a failure (it shows where the run stopped).
     if (!options.csv_path.empty()) {

@@ -8,6 +8,7 @@
 
 #include "card_internal.hpp"
 #include "card_model.hpp"
+#include "field_description.hpp"
 
 namespace tolip::ground::card_detail {
 namespace {
@@ -95,98 +96,6 @@ std::vector<BlockSpec> make_blocks() {
       {55, "STAGE 4 AND 5 DURATIONS", F::kReal, 2, S::kWords, kDispersionGroup, 0, "", "", false},
   };
 }
-
-const char* const kOptions[25] = {
-    "",
-    "PAYOFF: 0 PAYLOAD, 1 VELOCITY, 2 ALT.",
-    "HEATING CONSTRAINT",
-    "EXCHANGE RATIOS",
-    "",
-    "",
-    "6D: 1 AFTER LINEARIZATION, 2 NOMINAL",
-    "PITCH PROGRAM LINEARIZATION",
-    "",
-    "STAGES 4-5: 1 SPUN, 2 4 CONT., 3 CONT.",
-    "STAGE 5 CHI: 1 = CHI 4, 2 INDEPENDENT",
-    "ZERO ALPHA IN STAGE 1 (BLOCK 22 TIMES)",
-    "ALPHA = 0 AT STAGE 2 IGNITION",
-    "QBAR CONSTRAINT: 1 INEQUALITY",
-    "",
-    "MEMORY DUMP",
-    "",
-    "OUTPUT OF INPUT DATA",
-    "",
-    "",
-    "",
-    "DISPERSED TRAJECTORIES",
-    "HARDOVER TURNS",
-    "IMPACT LOCUS",
-    "RADAR TRACKING",
-};
-
-const char* const kConstants[16] = {
-    "",
-    "OMEGA, EARTH RATE, RAD/S",
-    "MU, FT3/S2",
-    "EQUATORIAL RADIUS, FT",
-    "GAS CONSTANT, FT2/S2/DEG R",
-    "G0, WEIGHT TO MASS, FT/S2",
-    "SEA LEVEL PRESSURE, LB/FT2",
-    "HAERO, AERO BYPASS ALT., FT",
-    "LINES PER PAGE",
-    "DEG TO RAD (ECHO ONLY)",
-    "TIMEP, TIME EPSILON, S",
-    "J2",
-    "INVERSE FLATTENING",
-    "CT1(13)",
-    "",
-    "",
-};
-
-const char* const kMisc[21] = {
-    "", "", "", "", "",
-    "STAGE 4 THETA, DEG",
-    "STAGE 4 CHI, DEG",
-    "NOSE RADIUS, FT",
-    "GYRO UNCAGE BEFORE LAUNCH, S",
-    "STAGE 5 THETA, DEG",
-    "STAGE 5 CHI, DEG",
-    "", "", "", "",
-    "PAYLOAD WEIGHTING FACTOR",
-    "COAST CHANGE LIMIT, S",
-    "MINIMUM COAST DURATION, S",
-    "", "", "",
-};
-
-const char* const kHardover[27] = {
-    "",
-    "STAGE 1 TURN EVERY N-TH STEP",
-    "(QBAR ALPHA)MAX, LB DEG/FT2",
-    "STAGE 1 MAX THETA STEP, DEG",
-    "STAGE 1 MAX STEP, S",
-    "STAGE 1 MIN STEP, S",
-    "STAGE 1 MAX STEPS PER TURN",
-    "STAGE 1 MISALIGNMENT, DEG",
-    "STAGE 2 MISALIGNMENT, DEG",
-    "STAGE 3 MISALIGNMENT, DEG",
-    "STAGE 1 THRUST STATION, IN",
-    "STAGE 1 FIN/VANE DEFLECTION, DEG",
-    "MODE B STAGE 2 JET FORCE, LB",
-    "MODE B STAGE 3 JET FORCE, LB",
-    "MODE C STAGE 2 JET FORCE, LB",
-    "MODE C STAGE 3 JET FORCE, LB",
-    "STAGE 2 THRUST STATION, IN",
-    "STAGE 3 THRUST STATION, IN",
-    "STAGE 2 JET STATION, IN",
-    "STAGE 3 JET STATION, IN",
-    "OUTPUT INTERVAL, S",
-    "STAGE 2 TURN EVERY N-TH STEP",
-    "STAGE 3 TURN EVERY N-TH STEP",
-    "UPPER MAX THETA STEP, DEG",
-    "UPPER MAX STEP, S",
-    "UPPER MIN STEP, S",
-    "UPPER MAX STEPS PER TURN",
-};
 
 std::string numbered(const char* text, int n) { return std::string(text) + " " + std::to_string(n); }
 
@@ -281,10 +190,14 @@ std::string word_description(int block, int stage, int word) {
     return word % 2 == 0 ? std::string(spec->x_name) + " (OR 1.0E10 END)" : spec->y_name;
   }
   if (spec->shape == Shape::kPairs) return word % 2 == 1 ? spec->x_name : spec->y_name;
+  int index = 0;
+  int code = 0;
+  if (const deck_detail::FieldDescription* field = deck_detail::find_field(block, stage, word, &index, &code)) {
+    return deck_detail::card_text_of(*field, code, index);
+  }
   switch (block) {
     case 1: case 2: case 3: case 46:
       return "CHARACTERS " + std::to_string(6 * word - 5) + "-" + std::to_string(6 * word);
-    case 4: return kOptions[word];
     case 5: return numbered("STAGE CODE (0 ENDS), FLIGHT POSITION", word);
     case 6: return word == 1 ? "NUMBER OF ADJUSTABLE PARAMETERS" : numbered("ADJUSTABLE PARAMETER CODE", word - 1);
     case 8:
@@ -296,32 +209,9 @@ std::string word_description(int block, int stage, int word) {
                                            "FINAL: EVERY N-TH POINT", "STAGE CODE"};
       return std::string(kKinds[(word - 1) % 4]) + ", GROUP " + std::to_string(group);
     }
-    case 10: return kConstants[word];
-    case 11: return numbered("BASE GEOPOTENTIAL ALT., FT, LAYER", word);
-    case 12: return numbered("BASE MOLECULAR TEMP., DEG R, LAYER", word);
-    case 13: return numbered("LAPSE RATE, DEG R/FT, LAYER", word);
-    case 14: return numbered("BASE DENSITY, SLUG/FT3, LAYER", word);
-    case 15: {
-      static const char* const kWords[] = {"PAYLOAD, LB (EXTENSION)", "HEADING HOLD UNTIL, S (EXTENSION)",
-                                           "LIFT TABLE STAGES 0/1/6/16 (EXT.)"};
-      return kWords[word - 1];
-    }
-    case 16: return numbered(word % 2 == 1 ? "DURATION, S, STAGE" : "INTEGRATION STEPS, STAGE", (word + 1) / 2);
-    case 17: return kMisc[word];
+    case 15: return word == 1 ? "PAYLOAD, LB (EXTENSION)" : word == 3 ? "LIFT TABLE STAGES 0/1/6/16 (EXT.)" : "";
     case 18: return word == 1 ? "NUMBER OF LINEAR SEGMENTS" : numbered("CODED TIME 100N+T, BOUNDARY", word - 1);
     case 19: return numbered("DESIRED VALUE (FT,RAD,NMI), CONSTR.", word);
-    case 20: return word == 1 ? "VERTICAL LIFT-OFF DURATION, S" : "LAUNCH DATE, SPACE AGE DAYS";
-    case 21: {
-      static const char* const kWords[] = {"ALTITUDE, FT", "LONGITUDE, DEG EAST", "GEOCENTRIC LATITUDE, DEG",
-                                           "VELOCITY, FT/S (0)", "AZIMUTH, DEG EAST OF NORTH",
-                                           "FLIGHT PATH ANGLE, DEG (90)"};
-      return kWords[word - 1];
-    }
-    case 22: {
-      static const char* const kWords[] = {"START OF ALPHA = 0, S", "END OF ALPHA = 0, S", "MAX PITCH RATE, DEG/S",
-                                           "MIN PITCH RATE, DEG/S", "MIN CHANGE IN PITCH RATE, DEG/S", ""};
-      return kWords[word - 1];
-    }
     case 23: {
       static const char* const kWords[] = {"FAILURE DRAG REF. AREA, FT2 (EXT.)", "CASING DRAG REF. AREA, FT2 (EXT.)",
                                            "CASING WEIGHT, LB (EXTENSION)"};
@@ -329,35 +219,15 @@ std::string word_description(int block, int stage, int word) {
     }
     case 26: return numbered("WEIGHT OF LINEAR SEGMENT", word);
     case 27: return numbered("WEIGHT OF ADJUSTABLE PARAMETER CODE", word);
-    case 28: {
-      static const char* const kWords[] = {"INITIAL PAYOFF IMPROVEMENT", "STOP IMPROVEMENT", "MAX FORWARD TRAJECTORIES",
-                                           "MAX LINEARIZATION ITERATIONS", "", ""};
-      return kWords[word - 1];
-    }
     case 29:
       if (word == 13 || word == 26) return "";
       return word < 13 ? numbered("OPTIMIZATION DEADBAND, CONSTRAINT", word + 1)
                        : numbered("LINEARIZATION DEADBAND, CONSTRAINT", word - 12);
-    case 33:
-      if (word <= 3) return numbered("K THETA POSITION GAIN, STAGE", word);
-      if (word <= 6) return numbered("K THETA-DOT RATE GAIN, S, STAGE", word - 3);
-      if (word <= 9) return numbered("CONTROL STATION, IN, STAGE", word - 6);
-      if (word == 10) return "JET VANE EFFECT., /DEG/VANE";
-      if (word == 11) return "X FS MOMENT REF. STATION, IN";
-      if (word <= 15) return numbered("6D INTEGRATION MULTIPLIER, STAGE", word - 11);
-      if (word == 16) return "REFERENCE LENGTH, FT";
-      if (word <= 19) return numbered("IMPACT EVERY N-TH STEP, STAGE", word - 16);
-      return "";
-    case 39: {
-      static const char* const kWords[] = {"JETTISON WEIGHT, LB", "REFERENCE AREA, FT2", "NOZZLE EXIT AREA, FT2"};
-      return kWords[word - 1];
-    }
     case 41: {
       static const char* const kWords[] = {"STATION IDENTIFICATION", "GEODETIC LATITUDE, DEG", "LONGITUDE, DEG EAST",
                                            "ALTITUDE, FT", "DESCRIPTION (EXTENSION)"};
       return kWords[word - 1];
     }
-    case 45: return kHardover[word];
     case 47: return "JETTISON WEIGHT INCREMENT, LB";
     case 48: return "DRAG VARIATION FRACTION 0.XXXX";
     case 49: return word == 1 ? "MISALIGNMENT ANGLE, DEG" : "THRUST APPLICATION STATION, IN";
@@ -587,115 +457,6 @@ std::string format_real_field(double value, int width, bool* exact) {
   }
   if (exact != nullptr) *exact = false;
   return best.empty() ? render(value, 1) : best;
-}
-
-// ---- TOML keys of the scalar words --------------------------------------------------------------
-
-const std::vector<ScalarKey>& scalar_keys() {
-  static const std::vector<ScalarKey> keys = {
-      {10, 1, "constants", "earth_rotation_rate_rad_s", false},
-      {10, 2, "constants", "gravitational_parameter_ft3_s2", false},
-      {10, 3, "constants", "earth_equatorial_radius_ft", false},
-      {10, 4, "constants", "gas_constant_ft2_s2_R", false},
-      {10, 5, "constants", "g0_ft_s2", false},
-      {10, 6, "constants", "sea_level_pressure_lbf_ft2", false},
-      {10, 7, "constants", "haero_ft", false},
-      {10, 8, "constants", "lines_per_page", false},
-      {10, 9, "constants", "deg_to_rad_as_printed", false},
-      {10, 10, "constants", "time_epsilon_s", false},
-      {10, 11, "constants", "j2", false},
-      {10, 12, "constants", "inverse_flattening", false},
-      {10, 13, "constants", "ct1_13", false},
-      {20, 1, "launch", "liftoff_duration_s", false},
-      {20, 2, "launch", "space_age_date_days", false},
-      {21, 1, "launch", "altitude_ft", false},
-      {21, 2, "launch", "longitude_deg", false},
-      {21, 3, "launch", "geocentric_latitude_deg", false},
-      {21, 4, "launch", "velocity_ft_s", false},
-      {21, 5, "launch", "azimuth_deg", false},
-      {21, 6, "launch", "flight_path_angle_deg", false},
-      {15, 2, "launch", "heading_hold_until_s", false},
-      {22, 1, "control_constraints", "zero_alpha_start_s", false},
-      {22, 2, "control_constraints", "zero_alpha_end_s", false},
-      {22, 3, "control_constraints", "max_pitch_rate_deg_s", false},
-      {22, 4, "control_constraints", "min_pitch_rate_deg_s", false},
-      {22, 5, "control_constraints", "min_pitch_rate_change_deg_s", false},
-      {17, 5, "misc", "stage4_theta_deg", false},
-      {17, 6, "misc", "stage4_chi_deg", false},
-      {17, 7, "misc", "nose_radius_ft", false},
-      {17, 8, "misc", "gyro_uncage_s_before_launch", false},
-      {17, 9, "misc", "stage5_theta_deg", false},
-      {17, 10, "misc", "stage5_chi_deg", false},
-      {17, 15, "misc", "payload_weighting_factor", false},
-      {17, 16, "misc", "coast_change_limit_s", false},
-      {17, 17, "misc", "minimum_coast_s", false},
-      {28, 1, "convergence", "initial_payoff_improvement", false},
-      {28, 2, "convergence", "stop_improvement", false},
-      {28, 3, "convergence", "max_forward_trajectories", true},
-      {28, 4, "convergence", "max_linearization_iterations", true},
-      {33, 10, "body_dynamics", "jet_vane_effectiveness_per_deg_per_vane", false},
-      {33, 11, "body_dynamics", "moment_reference_station_in", false},
-      {33, 16, "body_dynamics", "reference_length_ft", false},
-      {45, 1, "hardover.parameters", "stage1_every_nth_step", true},
-      {45, 2, "hardover.parameters", "max_qbar_alpha_lb_deg_ft2", false},
-      {45, 3, "hardover.parameters", "stage1_max_attitude_step_deg", false},
-      {45, 4, "hardover.parameters", "stage1_max_step_s", false},
-      {45, 5, "hardover.parameters", "stage1_min_step_s", false},
-      {45, 6, "hardover.parameters", "stage1_max_steps_per_turn", true},
-      {45, 7, "hardover.parameters", "stage1_thrust_misalignment_deg", false},
-      {45, 8, "hardover.parameters", "stage2_thrust_misalignment_deg", false},
-      {45, 9, "hardover.parameters", "stage3_thrust_misalignment_deg", false},
-      {45, 10, "hardover.parameters", "stage1_thrust_station_in", false},
-      {45, 11, "hardover.parameters", "stage1_fin_vane_deflection_deg", false},
-      {45, 12, "hardover.parameters", "mode_b_stage2_jet_force_lb", false},
-      {45, 13, "hardover.parameters", "mode_b_stage3_jet_force_lb", false},
-      {45, 14, "hardover.parameters", "mode_c_stage2_jet_force_lb", false},
-      {45, 15, "hardover.parameters", "mode_c_stage3_jet_force_lb", false},
-      {45, 16, "hardover.parameters", "stage2_thrust_station_in", false},
-      {45, 17, "hardover.parameters", "stage3_thrust_station_in", false},
-      {45, 18, "hardover.parameters", "stage2_control_jet_station_in", false},
-      {45, 19, "hardover.parameters", "stage3_control_jet_station_in", false},
-      {45, 20, "hardover.parameters", "output_interval_s", false},
-      {45, 21, "hardover.parameters", "stage2_every_nth_step", true},
-      {45, 22, "hardover.parameters", "stage3_every_nth_step", true},
-      {45, 23, "hardover.parameters", "upper_max_attitude_step_deg", false},
-      {45, 24, "hardover.parameters", "upper_max_step_s", false},
-      {45, 25, "hardover.parameters", "upper_min_step_s", false},
-      {45, 26, "hardover.parameters", "upper_max_steps_per_turn", true},
-  };
-  return keys;
-}
-
-const char* option_key(int ip) {
-  switch (ip) {
-    case 1: return "payoff";
-    case 2: return "heating_constraint";
-    case 3: return "exchange_ratios";
-    case 6: return "body_dynamics_6d";
-    case 7: return "linearization";
-    case 9: return "spin_stages_4_5";
-    case 10: return "stage5_chi";
-    case 11: return "zero_alpha_window";
-    case 12: return "alpha_zero_at_stage2_ignition";
-    case 13: return "qbar_constraint_type";
-    case 15: return "memory_dump";
-    case 17: return "print_input";
-    case 21: return "dispersions";
-    case 22: return "hardover";
-    case 23: return "impact";
-    case 24: return "radar";
-    default: return "";
-  }
-}
-
-const char* atmosphere_key(int block) {
-  switch (block) {
-    case 11: return "base_geopotential_altitude_ft";
-    case 12: return "base_molecular_temperature_R";
-    case 13: return "lapse_rate_R_per_ft";
-    case 14: return "base_density_slug_ft3";
-    default: return "";
-  }
 }
 
 }  // namespace tolip::ground::card_detail

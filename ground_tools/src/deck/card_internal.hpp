@@ -39,21 +39,6 @@ struct TomlDeck {
 // value per line (for messages); otherwise the TOML is laid out for people (tolip convert).
 TomlDeck card_case_to_toml(const CardCase& card_case, const std::string& path, bool located);
 
-// A scalar word with a TOML key of its own.
-struct ScalarKey {
-  int block;
-  int word;
-  const char* section;  // TOML table ("launch", "hardover.parameters")
-  const char* key;
-  bool integer;         // the TOML reader wants an integer
-};
-const std::vector<ScalarKey>& scalar_keys();
-
-// The TOML keys of IP(n) (empty for the options the manual does not use).
-const char* option_key(int ip);
-// The TOML keys of the atmosphere blocks 11-14.
-const char* atmosphere_key(int block);
-
 // The words of a (checked) TOML deck. Throws CardFailure when a value has no card form.
 CardCase card_case_from_toml(const toml::table& root);
 

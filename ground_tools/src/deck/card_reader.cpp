@@ -14,6 +14,7 @@
 #include "card_model.hpp"
 #include "card_internal.hpp"
 #include "deck_common.hpp"
+#include "field_description.hpp"
 
 namespace tolip::ground::card_detail {
 namespace {
@@ -326,51 +327,6 @@ class CardReader {
     return station;
   }
 
-  // Which data blocks a dispersion code takes, and the stage code each needs (0: none).
-  bool dispersion_accepts(int code, int block, int* stage) const {
-    *stage = 0;
-    if (code >= 1 && code <= 8) {
-      *stage = (code + 1) / 2;
-      if (block == 55) *stage = 0;
-      return block == 30 || block == 38 || (block == 55 && code >= 7);
-    }
-    if (code >= 9 && code <= 16) {
-      *stage = (code - 7) / 2;
-      return block == 47;
-    }
-    if (code == 17 || code == 18) return block == 48;
-    if (code == 19 || code == 20) return block == 35;
-    if (code >= 21 && code <= 23) {
-      *stage = 1;
-      return block == 49;
-    }
-    if (code >= 24 && code <= 29) {
-      *stage = code <= 26 ? 2 : 3;
-      return block == 50;
-    }
-    if (code >= 30 && code <= 32) {
-      *stage = -1;  // 4 or 5
-      return block == 51;
-    }
-    if (code >= 33 && code <= 35) return block == 52;
-    if (code >= 36 && code <= 38) return block == 53 || block == 54;
-    return false;
-  }
-
-  std::string dispersion_blocks(int code) const {
-    if (code >= 1 && code <= 6) return "data blocks 30 and 38 (stage code " + std::to_string((code + 1) / 2) + ")";
-    if (code == 7 || code == 8) return "data blocks 30 and 38 (stage code 4) and, five-stage, 55";
-    if (code >= 9 && code <= 16) return "data block 47 (stage code " + std::to_string((code - 7) / 2) + ")";
-    if (code == 17 || code == 18) return "data block 48";
-    if (code == 19 || code == 20) return "data block 35 (complete)";
-    if (code >= 21 && code <= 23) return "data block 49 (stage code 1)";
-    if (code >= 24 && code <= 29) return "data block 50 (stage code " + std::to_string(code <= 26 ? 2 : 3) + ")";
-    if (code >= 30 && code <= 32) return "data block 51 (stage code 4 or 5)";
-    if (code >= 33 && code <= 35) return "data block 52";
-    if (code >= 36 && code <= 38) return "data blocks 53 and 54";
-    return "no data (only the block 46 title)";
-  }
-
   void read_optimization_block(const Header& header, const BlockSpec& spec, BlockSet* state) {
     BlockData& data = (*state)[BlockKey{header.block, spec.stages != 0 ? header.stage : 0}];
     read_words(header, spec, &data);
@@ -434,13 +390,13 @@ void CardReader::read_group(unsigned group, int option, CardCase* result) {
                  " before the first data block 46: each dispersed trajectory starts with a block 46 header (its code "
                  "in columns 10-12) and its title card, followed by its data");
       }
-      int stage = 0;
-      if (!dispersion_accepts(current->code, header.block, &stage)) {
+      const int stage = deck_detail::dispersion_stage(current->code, header.block);  // -1: stage 4 or 5
+      if (!deck_detail::dispersion_takes(current->code, header.block)) {
         fail(number, 1, 3, header.block, header.stage, 0,
              "data block " + std::to_string(header.block) + " is not data of dispersion code " +
                  std::to_string(current->code) + " (" + deck_detail::dispersion_name(current->code) +
                  ", block 46 on card " + std::to_string(current->header.card) + "): expected " +
-                 dispersion_blocks(current->code));
+                 deck_detail::dispersion_blocks(current->code));
       }
       if (stage > 0 && header.stage != stage) {
         fail(number, 10, 12, header.block, header.stage, 0,

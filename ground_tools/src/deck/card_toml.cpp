@@ -358,23 +358,29 @@ class Builder {
     numbers(path, y_key, table.y, table.y_refs, block_ref);
   }
 
-  // The scalar words of a TOML section (scalar_keys), when any of them is punched.
+  // The described fields (field_description.hpp) of a TOML section, not stage-coded.
+  static std::vector<const deck_detail::FieldDescription*> fields_of(const std::string& section) {
+    std::vector<const deck_detail::FieldDescription*> fields;
+    for (const deck_detail::FieldDescription& field : deck_detail::field_descriptions()) {
+      if (field.stage_coding == deck_detail::StageCoding::kNone && section == field.section) fields.push_back(&field);
+    }
+    return fields;
+  }
+
+  // The words of a TOML section's described fields, when any of them is punched.
   void scalar_section(const std::string& section, const BlockSet& set, bool always = false) {
     bool any = always;
-    for (const ScalarKey& key : scalar_keys()) {
-      if (section == key.section && given(set, key.block, 0, key.word) != nullptr) any = true;
-    }
     WordRef section_ref;
-    for (const ScalarKey& key : scalar_keys()) {
-      if (section != key.section) continue;
-      if (section_ref.block == 0 || (!section_ref.header.known() && block_given(set, key.block))) {
-        section_ref = ref_in(set, key.block, 0, 0);
+    for (const deck_detail::FieldDescription* field : fields_of(section)) {
+      for (int i = 0; i < field->count; ++i) any = any || given(set, field->block, 0, field->word + i) != nullptr;
+      if (section_ref.block == 0 || (!section_ref.header.known() && block_given(set, field->block))) {
+        section_ref = ref_in(set, field->block, 0, 0);
       }
     }
     if (!any) {
       remember(section, section_ref);
-      for (const ScalarKey& key : scalar_keys()) {
-        if (section == key.section) remember(section + "." + key.key, ref_in(set, key.block, 0, key.word));
+      for (const deck_detail::FieldDescription* field : fields_of(section)) {
+        remember(section + "." + field->key, ref_in(set, field->block, 0, field->word));
       }
       return;
     }
@@ -382,16 +388,39 @@ class Builder {
     scalar_words(section, set);
   }
 
-  void scalar_words(const std::string& section, const BlockSet& set) {
-    for (const ScalarKey& key : scalar_keys()) {
-      if (section != key.section) continue;
-      const WordRef ref = ref_in(set, key.block, 0, key.word);
-      if (const Word* word = given(set, key.block, 0, key.word)) {
-        scalar(section, key.key, key.integer ? toml_integer(word->number) : toml_number(word->number), ref);
+  // One described field of stage `code` (0: not stage-coded): a scalar, or an array whose words
+  // not punched take their default; nothing (the key path remembered) when no word is punched.
+  void field_words(const std::string& section, const deck_detail::FieldDescription& field, const BlockSet& set,
+                   int code) {
+    const int stage = deck_detail::card_stage(field, code);
+    const int first = deck_detail::card_word(field, code);
+    const WordRef key_ref = ref_in(set, field.block, stage, first);
+    if (field.count == 1) {
+      if (const Word* word = given(set, field.block, stage, first)) {
+        scalar(section, field.key, field.integer ? toml_integer(word->number) : toml_number(word->number), key_ref);
       } else {
-        remember(section + "." + key.key, ref);
+        remember(section + "." + field.key, key_ref);
       }
+      return;
     }
+    bool punched = false;
+    std::vector<double> values;
+    std::vector<WordRef> refs;
+    for (int i = 0; i < field.count; ++i) {
+      const Word* word = given(set, field.block, stage, first + i);
+      punched = punched || word != nullptr;
+      values.push_back(word != nullptr ? word->number : deck_detail::default_deck_value(field, code, i));
+      refs.push_back(ref_in(set, field.block, stage, first + i));
+    }
+    if (punched) {
+      numbers(section, field.key, values, refs, key_ref, field.integer);
+    } else {
+      remember(section + "." + field.key, key_ref);
+    }
+  }
+
+  void scalar_words(const std::string& section, const BlockSet& set) {
+    for (const deck_detail::FieldDescription* field : fields_of(section)) field_words(section, *field, set, 0);
   }
 
   // ---- data blocks 1-40 -------------------------------------------------------------------------
@@ -412,16 +441,7 @@ class Builder {
       return;
     }
     table_header("options", ref_in(opt(), 4, 0, 0));
-    for (int ip = 1; ip <= 24; ++ip) {
-      const WordRef ref = ref_in(opt(), 4, 0, ip);
-      const std::string key = option_key(ip);
-      if (key.empty()) continue;
-      if (const Word* word = given(opt(), 4, 0, ip)) {
-        scalar("options", key, toml_integer(word->number), ref);
-      } else {
-        remember("options." + key, ref);
-      }
-    }
+    scalar_words("options", opt());
   }
 
   void atmosphere_section() {
@@ -429,20 +449,13 @@ class Builder {
     for (int block = 11; block <= 14; ++block) any = any || block_given(opt(), block);
     if (!any) return;
     table_header("atmosphere", ref_in(opt(), 11, 0, 0), false, "blocks 11-14");
-    const AtmosphereTable nominal;
-    const double* defaults[4] = {nominal.base_geopotential_altitude_ft, nominal.base_molecular_temperature_R,
-                                 nominal.lapse_rate_R_per_ft, nominal.base_density_slug_ft3};
-    for (int block = 11; block <= 14; ++block) {
-      if (!block_given(opt(), block)) continue;
-      std::vector<double> values;
-      std::vector<WordRef> refs;
-      for (int w = 1; w <= kAtmosphereLayers; ++w) {
-        const Word* word = given(opt(), block, 0, w);
-        values.push_back(word != nullptr ? word->number : defaults[block - 11][w - 1]);
-        refs.push_back(ref_in(opt(), block, 0, w));
+    for (const deck_detail::FieldDescription* field : fields_of("atmosphere")) {
+      if (!block_given(opt(), field->block)) continue;
+      if (!located_) {
+        comment("block " + str(field->block) + " (" + find_block(field->block)->title +
+                "); words not punched keep the nominal value");
       }
-      if (!located_) comment("block " + str(block) + " (" + find_block(block)->title + "); words not punched keep the nominal value");
-      numbers("atmosphere", atmosphere_key(block), values, refs, ref_in(opt(), block, 0, 0));
+      field_words("atmosphere", *field, opt(), 0);
     }
   }
 
@@ -508,25 +521,9 @@ class Builder {
       table_header(path, ref_in(opt(), 16, 0, 0), false,
                    (powered ? "powered stage " : "coast ") + str(code) + ": blocks 16, 39" +
                        (powered ? ", 30, 38" : "") + (block_given(opt(), 31, code) ? ", 31" : ""));
-      const struct {
-        int block;
-        int stage;
-        int word;
-        const char* key;
-        bool integer;
-      } keys[] = {{16, 0, 2 * code - 1, "duration_s", false},
-                  {16, 0, 2 * code, "integration_steps", true},
-                  {39, code, 1, "jettison_weight_lb", false},
-                  {39, code, 2, "reference_area_ft2", false},
-                  {39, code, 3, "nozzle_exit_area_ft2", false}};
-      for (const auto& key : keys) {
-        if (!powered && key.block == 39 && key.word == 3) continue;
-        const WordRef ref = ref_in(opt(), key.block, key.stage, key.word);
-        if (const Word* word = given(opt(), key.block, key.stage, key.word)) {
-          scalar(path, key.key, key.integer ? toml_integer(word->number) : toml_number(word->number), ref);
-        } else {
-          remember(path + "." + key.key, ref);
-        }
+      for (const deck_detail::FieldDescription& field : deck_detail::field_descriptions()) {
+        if (field.stage_coding == deck_detail::StageCoding::kNone || !deck_detail::applies_to_stage(field, code)) continue;
+        field_words(path, field, opt(), code);
       }
       if (powered) {
         table_section(path + ".thrust", opt(), 30, code, "time_s", "vacuum_thrust_lbf");
@@ -730,33 +727,6 @@ class Builder {
     remember("body_dynamics", ref_in(body, 33, 0, 0));
     if (!any) return;
     table_header("body_dynamics", ref_in(body, 33, 0, 0), false, "blocks 33-37 (6D), DA6D");
-    const struct {
-      int first;
-      int count;
-      const char* key;
-      double fallback;
-      bool integer;
-    } arrays[] = {{1, 3, "position_gain_deg_per_deg", 0.0, false},
-                  {4, 3, "rate_gain_s", 0.0, false},
-                  {7, 3, "control_station_in", 0.0, false},
-                  {12, 4, "integration_frequency_multiplier", 1.0, false},
-                  {17, 3, "impact_every_nth_step", 1.0, true}};
-    for (const auto& entry : arrays) {
-      bool punched = false;
-      std::vector<double> values;
-      std::vector<WordRef> refs;
-      for (int w = entry.first; w < entry.first + entry.count; ++w) {
-        const Word* word = given(body, 33, 0, w);
-        punched = punched || word != nullptr;
-        values.push_back(word != nullptr ? word->number : entry.fallback);
-        refs.push_back(ref_in(body, 33, 0, w));
-      }
-      if (punched) {
-        numbers("body_dynamics", entry.key, values, refs, ref_in(body, 33, 0, entry.first), entry.integer);
-      } else {
-        remember(std::string("body_dynamics.") + entry.key, ref_in(body, 33, 0, entry.first));
-      }
-    }
     scalar_words("body_dynamics", body);
     table_section("body_dynamics.fin_normal_force", body, 34, 0, "mach", "cn_delta_per_rad_per_fin");
     table_section("body_dynamics.pitching_moment", body, 35, 0, "mach", "cm_alpha_per_rad");
@@ -882,47 +852,38 @@ class Builder {
         numbers(sub, y_key, table.y, table.y_refs, block_ref);
       };
       const int code = d.code;
-      if (code >= 1 && code <= 8) {
-        const int stage = (code + 1) / 2;
-        if (block_given(set, 55)) {
-          std::vector<double> values;
-          std::vector<WordRef> refs;
-          for (int w = 1; w <= 2; ++w) {
-            values.push_back(value_of(given(set, 55, 0, w)));
-            refs.push_back(ref(55, 0, w));
-          }
-          numbers(path, "stage_durations_s", values, refs, ref(55, 0, 1));
-        }
-        sub_table("thrust", 30, stage, "time_s", "vacuum_thrust_lbf");
-        sub_table("consumable_weight", 38, stage, "time_s", "remaining_lb");
-      } else if (code >= 9 && code <= 16) {
-        value(47, (code - 7) / 2, 1, "weight_increment_lb");
-      } else if (code == 17 || code == 18) {
-        value(48, 0, 1, "drag_variation_fraction");
-      } else if (code == 19 || code == 20) {
-        sub_table("pitching_moment", 35, 0, "mach", "cm_alpha_per_rad");
-      } else if (code >= 21 && code <= 23) {
-        value(49, 1, 1, "misalignment_deg");
-        value(49, 1, 2, "thrust_station_in");
-      } else if (code >= 24 && code <= 29) {
-        value(50, code <= 26 ? 2 : 3, 1, "deadband_deg");
-      } else if (code >= 30 && code <= 32) {
+      const deck_detail::DispersionCodes* codes = deck_detail::find_dispersion(code);
+      if (codes == nullptr) continue;  // the TOML reader names the unknown code
+      int stage = codes->stage_of(code);
+      if (stage < 0) {  // the tip-off: stage 4 or 5, as the cards give it
         const bool four = block_given(set, 51, 4);
         const bool five = block_given(set, 51, 5);
         if (four && five) {
           fail(ref(51, 5, 0), "dispersion code " + str(code) +
                                   ": data block 51 given for stage codes 4 and 5; expected one tip-off stage");
         }
-        const int stage = five ? 5 : 4;
+        stage = five ? 5 : 4;
         if (four || five) scalar(path, "stage", str(stage), ref(51, stage, 0));
-        value(51, stage, 1, "tipoff_deg");
-      } else if (code == 33) {
-        value(52, 0, 1, "launch_azimuth_change_deg");
-      } else if (code == 34 || code == 35) {
-        value(52, 0, 1, "launch_attitude_change_deg");
-      } else if (code >= 36 && code <= 38) {
-        sub_table("wind_speed", 53, 0, "altitude_ft", "speed_ft_s");
-        sub_table("wind_azimuth", 54, 0, "altitude_ft", "azimuth_deg");
+      }
+      // The words first: after a sub-table header a TOML key would belong to the sub-table.
+      for (const deck_detail::DispersionItem& item : codes->items) {
+        const int item_stage = deck_detail::dispersion_stage(code, item.block) == 0 ? 0 : stage;
+        if (item.word == 0) continue;
+        if (item.count == 1) {
+          value(item.block, item_stage, item.word, item.key);
+        } else if (block_given(set, item.block)) {
+          std::vector<double> values;
+          std::vector<WordRef> refs;
+          for (int w = item.word; w < item.word + item.count; ++w) {
+            values.push_back(value_of(given(set, item.block, item_stage, w)));
+            refs.push_back(ref(item.block, item_stage, w));
+          }
+          numbers(path, item.key, values, refs, ref(item.block, item_stage, item.word));
+        }
+      }
+      for (const deck_detail::DispersionItem& item : codes->items) {
+        const int item_stage = deck_detail::dispersion_stage(code, item.block) == 0 ? 0 : stage;
+        if (item.word == 0) sub_table(item.key, item.block, item_stage, item.x_key, item.y_key);
       }
     }
   }

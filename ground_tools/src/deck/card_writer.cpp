@@ -67,7 +67,6 @@ class FromToml {
     case_words();
     options();
     scalars();
-    atmosphere();
     vehicle();
     stages();
     constraints();
@@ -143,30 +142,32 @@ class FromToml {
     if (section != nullptr && section->get("date") != nullptr) set_text(opt(), 3, 0, 1, 2, text_of(section, "date"));
   }
 
+  // Every described field of one TOML table (field_description.hpp) into its words; stage
+  // fields with their stage code.
+  void fields(BlockSet* target, const toml::table* section, const std::string& section_path, int code = 0) {
+    if (section == nullptr) return;
+    for (const deck_detail::FieldDescription& field : deck_detail::field_descriptions()) {
+      if ((field.stage_coding == deck_detail::StageCoding::kNone) != (code == 0)) continue;
+      if (!deck_detail::applies_to_stage(field, code) || deck_detail::section_of(field, code) != section_path) continue;
+      const std::vector<double> values = numbers_of(section->get(field.key));
+      for (std::size_t i = 0; i < values.size() && i < static_cast<std::size_t>(field.count); ++i) {
+        const int index = static_cast<int>(i);
+        set(target, field.block, deck_detail::card_stage(field, code), deck_detail::card_word(field, code, index),
+            values[i]);
+      }
+    }
+  }
+
   void options() {
     const toml::table* section = find_table(root_, "options");
     if (section == nullptr) return;
-    for (int ip = 1; ip <= 24; ++ip) {
-      const std::string key = option_key(ip);
-      set(opt(), 4, 0, ip, key.empty() ? 0.0 : number_of(section->get(key)));
-    }
+    for (int ip = 1; ip <= 24; ++ip) set(opt(), 4, 0, ip, 0.0);  // block 4 is punched whole: unused IP words 0
+    fields(opt(), section, "options");
   }
 
   void scalars() {
-    for (const ScalarKey& key : scalar_keys()) {
-      if (key.block == 33 || key.block == 45) continue;  // body_dynamics(), hardover()
-      const toml::table* section = find_table(root_, key.section);
-      if (section == nullptr) continue;
-      if (const toml::node* node = section->get(key.key)) set(opt(), key.block, 0, key.word, number_of(node));
-    }
-  }
-
-  void atmosphere() {
-    const toml::table* section = find_table(root_, "atmosphere");
-    if (section == nullptr) return;
-    for (int block = 11; block <= 14; ++block) {
-      const std::vector<double> values = numbers_of(section->get(atmosphere_key(block)));
-      for (std::size_t i = 0; i < values.size(); ++i) set(opt(), block, 0, static_cast<int>(i) + 1, values[i]);
+    for (const char* name : {"constants", "atmosphere", "launch", "control_constraints", "misc", "convergence"}) {
+      fields(opt(), find_table(root_, name), name);
     }
   }
 
@@ -199,12 +200,7 @@ class FromToml {
     for (int code = 1; code <= kMaxStages; ++code) {
       const toml::table* stage = table_of(section->get(str(code)));
       if (stage == nullptr) continue;
-      if (const toml::node* node = stage->get("duration_s")) set(opt(), 16, 0, 2 * code - 1, number_of(node));
-      if (const toml::node* node = stage->get("integration_steps")) set(opt(), 16, 0, 2 * code, number_of(node));
-      const char* const keys[3] = {"jettison_weight_lb", "reference_area_ft2", "nozzle_exit_area_ft2"};
-      for (int w = 1; w <= 3; ++w) {
-        if (const toml::node* node = stage->get(keys[w - 1])) set(opt(), 39, code, w, number_of(node));
-      }
+      fields(opt(), stage, "stage." + str(code), code);
       table(opt(), 30, code, table_of(stage->get("thrust")), "time_s", "vacuum_thrust_lbf");
       table(opt(), 38, code, table_of(stage->get("consumable_weight")), "time_s", "remaining_lb");
       table(opt(), 31, code, table_of(stage->get("drag")), "mach", "cd");
@@ -292,19 +288,7 @@ class FromToml {
   void body_dynamics() {
     const toml::table* section = find_table(root_, "body_dynamics");
     if (section == nullptr) return;
-    const struct {
-      int first;
-      const char* key;
-    } arrays[] = {{1, "position_gain_deg_per_deg"}, {4, "rate_gain_s"}, {7, "control_station_in"},
-                  {12, "integration_frequency_multiplier"}, {17, "impact_every_nth_step"}};
-    for (const auto& entry : arrays) {
-      const std::vector<double> values = numbers_of(section->get(entry.key));
-      for (std::size_t i = 0; i < values.size(); ++i) set(opt(), 33, 0, entry.first + static_cast<int>(i), values[i]);
-    }
-    for (const ScalarKey& key : scalar_keys()) {
-      if (key.block != 33) continue;
-      if (const toml::node* node = section->get(key.key)) set(opt(), 33, 0, key.word, number_of(node));
-    }
+    fields(opt(), section, "body_dynamics");
     if (find_data(result_.optimization, 33) == nullptr) result_.optimization[BlockKey{33, 0}].words.resize(20);
     table(opt(), 34, 0, table_of(section->get("fin_normal_force")), "mach", "cn_delta_per_rad_per_fin");
     table(opt(), 35, 0, table_of(section->get("pitching_moment")), "mach", "cm_alpha_per_rad");
@@ -367,12 +351,7 @@ class FromToml {
       }
     }
     table(&result_.hardover, 44, 4, table_of(section->get("pitch_damping")), "mach", "cmq_per_rad");
-    if (const toml::table* parameters = table_of(section->get("parameters"))) {
-      for (const ScalarKey& key : scalar_keys()) {
-        if (key.block != 45) continue;
-        if (const toml::node* node = parameters->get(key.key)) set(&result_.hardover, 45, 0, key.word, number_of(node));
-      }
-    }
+    fields(&result_.hardover, table_of(section->get("parameters")), "hardover.parameters");
   }
 
   void dispersions() {
@@ -389,36 +368,23 @@ class FromToml {
       d.title = title[BlockKey{46, 0}];
       BlockSet* set_ptr = &d.blocks;
       const int code = d.code;
-      auto value = [&](int block, int stage, int word, const char* key) {
-        if (const toml::node* found = entry->get(key)) set(set_ptr, block, stage, word, number_of(found));
-      };
-      if (code >= 1 && code <= 8) {
-        const int stage = (code + 1) / 2;
-        table(set_ptr, 30, stage, table_of(entry->get("thrust")), "time_s", "vacuum_thrust_lbf");
-        table(set_ptr, 38, stage, table_of(entry->get("consumable_weight")), "time_s", "remaining_lb");
-        const std::vector<double> durations = numbers_of(entry->get("stage_durations_s"));
-        for (std::size_t w = 0; w < durations.size() && w < 2; ++w) set(set_ptr, 55, 0, static_cast<int>(w) + 1, durations[w]);
-      } else if (code >= 9 && code <= 16) {
-        value(47, (code - 7) / 2, 1, "weight_increment_lb");
-      } else if (code == 17 || code == 18) {
-        value(48, 0, 1, "drag_variation_fraction");
-      } else if (code == 19 || code == 20) {
-        table(set_ptr, 35, 0, table_of(entry->get("pitching_moment")), "mach", "cm_alpha_per_rad");
-      } else if (code >= 21 && code <= 23) {
-        value(49, 1, 1, "misalignment_deg");
-        value(49, 1, 2, "thrust_station_in");
-      } else if (code >= 24 && code <= 29) {
-        value(50, code <= 26 ? 2 : 3, 1, "deadband_deg");
-      } else if (code >= 30 && code <= 32) {
-        const int stage = entry->get("stage") != nullptr ? static_cast<int>(number_of(entry->get("stage"))) : 4;
-        value(51, stage, 1, "tipoff_deg");
-      } else if (code == 33) {
-        value(52, 0, 1, "launch_azimuth_change_deg");
-      } else if (code == 34 || code == 35) {
-        value(52, 0, 1, "launch_attitude_change_deg");
-      } else if (code >= 36 && code <= 38) {
-        table(set_ptr, 53, 0, table_of(entry->get("wind_speed")), "altitude_ft", "speed_ft_s");
-        table(set_ptr, 54, 0, table_of(entry->get("wind_azimuth")), "altitude_ft", "azimuth_deg");
+      const deck_detail::DispersionCodes* codes = deck_detail::find_dispersion(code);
+      if (codes != nullptr) {
+        int stage = codes->stage_of(code);
+        if (stage < 0) {  // the tip-off: stage 4 unless the deck says 5
+          stage = entry->get("stage") != nullptr ? static_cast<int>(number_of(entry->get("stage"))) : 4;
+        }
+        for (const deck_detail::DispersionItem& item : codes->items) {
+          const int item_stage = deck_detail::dispersion_stage(code, item.block) == 0 ? 0 : stage;
+          if (item.word == 0) {
+            table(set_ptr, item.block, item_stage, table_of(entry->get(item.key)), item.x_key, item.y_key);
+            continue;
+          }
+          const std::vector<double> values = numbers_of(entry->get(item.key));
+          for (std::size_t w = 0; w < values.size() && w < static_cast<std::size_t>(item.count); ++w) {
+            set(set_ptr, item.block, item_stage, item.word + static_cast<int>(w), values[w]);
+          }
+        }
       }
       result_.dispersions.push_back(std::move(d));
     }

@@ -3,6 +3,7 @@
 
 #include "tolip/core/constants.hpp"
 #include "tolip_ground/capped_read.hpp"
+#include "field_description.hpp"
 
 namespace tolip::ground::deck_detail {
 
@@ -52,18 +53,8 @@ bool constraint_unit(int code, ConstraintUnit* unit) {
 }
 
 const char* dispersion_name(int code) {
-  if (code >= 1 && code <= 8) return "vacuum thrust variation";
-  if (code >= 9 && code <= 16) return "weight increment";
-  if (code == 17 || code == 18) return "drag variation";
-  if (code == 19 || code == 20) return "C_M_alpha variation";
-  if (code >= 21 && code <= 23) return "stage 1 thrust misalignment";
-  if (code >= 24 && code <= 29) return "control system deadband";
-  if (code >= 30 && code <= 32) return "stage 4/5 tip-off";
-  if (code == 33) return "launch azimuth";
-  if (code == 34 || code == 35) return "launch attitude";
-  if (code >= 36 && code <= 38) return "winds";
-  if (code == 40) return "three-sigma summary";
-  return nullptr;
+  const DispersionCodes* codes = find_dispersion(code);  // the one code -> data mapping
+  return codes != nullptr ? codes->name : nullptr;
 }
 
 bool read_deck_file(const std::string& path, std::string* text, DeckError* error) {

@@ -1,6 +1,7 @@
 // Deck vocabulary shared by the TOML reader and the card-deck reader/writer (ground_tools/src/deck/):
 // the units of the constraint codes (data blocks 8, 19, 29) and the names of the dispersion codes
-// (data block 46). One table each, so both deck formats agree.
+// (data block 46, from dispersion_codes() in field_description.hpp). One table each, so both deck
+// formats agree.
 #pragma once
 
 #include <string>

@@ -35,26 +35,28 @@ std::optional<DeckTable> read_optional_table(Section& parent, std::string_view k
   return to_deck_table(read, y_scale);
 }
 
-template <std::size_t N>
-std::array<double, N> fixed_numbers(Section& section, std::string_view key, int block, const std::string& what,
-                                    bool required, std::array<double, N> fallback, double scale = 1.0) {
-  std::optional<std::vector<double>> values =
-      required ? std::optional<std::vector<double>>(section.numbers(key, block, what, static_cast<int>(N)))
-               : section.optional_numbers(key, block, what, static_cast<int>(N));
-  if (!values) return fallback;
-  std::array<double, N> out{};
-  for (std::size_t i = 0; i < N; ++i) out[i] = (*values)[i] * scale;
-  return out;
-}
-
-int positive_integer(Section& section, std::string_view key, int block, const std::string& what) {
-  const int value = section.integer(key, block, what);
-  if (value < 1) section.fail_at(key, block, "expected a positive integer (" + what + "), got " + str(value));
-  return value;
-}
-
 // ---- data blocks 33-37 --------------------------------------------------------------------------
-void read_body_dynamics(Section& root, const Options& options, BodyDynamicsData* body) {
+constexpr double kFtPerInch = 1.0 / 12.0;
+
+// A table the deck gave, into the core's fixed-capacity table (y scaled to core units).
+template <int N>
+void fill_core_table(Section& section, const DeckTable& deck, double y_scale, int block, const std::string& field,
+                     const std::string& what, Table<N>* table) {
+  table->clear();
+  if (deck.empty()) return;
+  if (deck.size() > N) {
+    section.fail(block, field, what + " has " + std::to_string(deck.size()) + " points; the core holds at most " +
+                                   std::to_string(N));
+  }
+  for (int i = 0; i < deck.size(); ++i) {
+    const std::size_t at = static_cast<std::size_t>(i);
+    (void)table->append(deck.x[at], deck.y[at] * y_scale);  // fits; finite and increasing (read_table)
+  }
+  (void)table->finalize();
+}
+
+void read_body_dynamics(Section& root, Mission* mission, const FieldTarget& target) {
+  const Options& options = mission->options;
   std::optional<Section> section = root.optional_table("body_dynamics", 33);
   const bool six_d = options.body_dynamics_6d() >= 1 || options.dispersions();
   const bool hardover = options.hardover();
@@ -69,61 +71,31 @@ void read_body_dynamics(Section& root, const Options& options, BodyDynamicsData*
     }
     return;
   }
-  body->present = true;
+  BodyDynamicsBlocks& body = mission->body_dynamics;
+  body = BodyDynamicsBlocks{};
+  body.present = true;
+  target.extras->body_dynamics.present = true;
   const bool all = six_d;
-  body->position_gain = fixed_numbers<3>(*section, "position_gain_deg_per_deg", 33,
-                                         "DA6D(1-3) K_theta position gain of stages 1-3, deg/deg", all, {});
-  body->rate_gain_s = fixed_numbers<3>(*section, "rate_gain_s", 33, "DA6D(4-6) K_theta-dot rate gain of stages 1-3, s",
-                                       all, {});
-  body->control_station_in = fixed_numbers<3>(
-      *section, "control_station_in", 33,
-      "DA6D(7-9) body station of the stage-1 jet vanes and fins and of the stage 2-3 control jets, in", all || hardover, {});
-  const std::string effectiveness_what =
-      "DA6D(10) jet vane effectiveness, lb per lb vacuum thrust per deg per vane";
-  body->jet_vane_effectiveness_per_rad_per_vane =
-      ((all || hardover) ? section->number("jet_vane_effectiveness_per_deg_per_vane", 33, effectiveness_what)
-                         : section->number_or("jet_vane_effectiveness_per_deg_per_vane", 33, effectiveness_what, 0.0)) /
-      kDegToRad;
-  const std::string station_what = "DA6D(11) X_FS, body station reference of the moment coefficients, in";
-  body->moment_reference_station_in = (all || hardover)
-                                          ? section->number("moment_reference_station_in", 33, station_what)
-                                          : section->number_or("moment_reference_station_in", 33, station_what, 0.0);
-  body->integration_frequency_multiplier =
-      fixed_numbers<4>(*section, "integration_frequency_multiplier", 33,
-                       "DA6D(12-15) 6D integration frequency multipliers of stages 1-4", false, {1.0, 1.0, 1.0, 1.0});
-  for (std::size_t i = 0; i < 4; ++i) {
-    if (!(body->integration_frequency_multiplier[i] >= 1.0)) {
-      section->fail_at("integration_frequency_multiplier", 33, "multipliers must be at least 1");
-    }
-  }
-  const std::string length_what = "DA6D(16) reference length of the aerodynamic moment data, ft";
-  body->reference_length_ft = (all || hardover) ? section->number("reference_length_ft", 33, length_what)
-                                                : section->number_or("reference_length_ft", 33, length_what, 0.0);
-  if (section->has("impact_every_nth_step") || impact) {
-    const std::vector<int> nth =
-        section->integers("impact_every_nth_step", 33, "DA6D(17-19) impact computed from every n-th step of stages 1-3");
-    if (nth.size() != 3) section->fail_at("impact_every_nth_step", 33, "expected 3 integers (stages 1-3), got " + str(static_cast<int>(nth.size())));
-    for (std::size_t i = 0; i < 3; ++i) {
-      if (nth[i] < 1) section->fail_at("impact_every_nth_step", 33, "every n-th step needs n >= 1");
-      body->impact_every_nth_step[i] = nth[i];
-    }
-  }
-
-  auto table = [&](std::string_view key, int block, std::string_view y_key, const std::string& y_what,
-                   double scale, bool required, DeckTable* out) {
+  read_fields(*section, "body_dynamics", target, *mission);
+  // S of Sec. 11: DA6D has no word for the area blocks 34-36 are referred to; stage 1's SG1(2).
+  body.reference_area_ft2 = mission->vehicle.stages[stage_index(1)].reference_area_ft2;
+  auto table = [&](std::string_view key, int block, std::string_view y_key, const std::string& y_what, bool required,
+                   const std::string& what, AeroTable* out) {
+    DeckTable read;
     if (required) {
-      *out = read_table(*section, key, block, "mach", y_key, "Mach number", y_what, scale,
+      read = read_table(*section, key, block, "mach", y_key, "Mach number", y_what, 1.0,
                         "data block " + str(block) + ": mach and " + std::string(y_key) + " arrays");
-    } else if (auto read = read_optional_table(*section, key, block, "mach", y_key, "Mach number", y_what, scale)) {
-      *out = *read;
+    } else if (auto optional = read_optional_table(*section, key, block, "mach", y_key, "Mach number", y_what, 1.0)) {
+      read = *optional;
     }
+    fill_core_table(*section, read, 1.0, block, "body_dynamics." + std::string(key), what, out);
   };
-  table("fin_normal_force", 34, "cn_delta_per_rad_per_fin", "C_N per radian per fin", 1.0, all,
-        &body->fin_normal_force_per_rad_per_fin);
-  table("pitching_moment", 35, "cm_alpha_per_rad", "C_M per radian of alpha about X_FS", 1.0, all,
-        &body->pitching_moment_per_rad);
-  table("fin_pitching_moment", 36, "cm_delta_per_rad_per_fin", "C_M per radian per fin about X_FS", 1.0, all,
-        &body->fin_pitching_moment_per_rad_per_fin);
+  table("fin_normal_force", 34, "cn_delta_per_rad_per_fin", "C_N per radian per fin", all,
+        "the C_N_delta table (data block 34)", &body.fin_normal_force_per_rad);
+  table("pitching_moment", 35, "cm_alpha_per_rad", "C_M per radian of alpha about X_FS", all,
+        "the C_M_alpha table (data block 35)", &body.pitching_moment_per_rad);
+  table("fin_pitching_moment", 36, "cm_delta_per_rad_per_fin", "C_M per radian per fin about X_FS", all,
+        "the C_M_delta table (data block 36)", &body.fin_pitching_moment_per_rad);
 
   std::optional<Section> cg = section->optional_table("cg", 37);
   if (cg) {
@@ -133,10 +105,12 @@ void read_body_dynamics(Section& root, const Options& options, BodyDynamicsData*
         cg->fail_at(name, 37, "unknown stage '" + name + "': data block 37 has c.g. tables for stages 1-4 ([body_dynamics.cg.N])");
       }
     }
-    for (int stage = 1; stage <= 4; ++stage) {
+    for (int stage = 1; stage <= kCgTableStages; ++stage) {
       if (auto read = read_optional_table(*cg, str(stage), 37, "stage_time_s", "station_in", "stage time in s",
                                           "c.g. body station in inches", 1.0)) {
-        body->cg_station_in[static_cast<std::size_t>(stage - 1)] = *read;
+        // The deck's inches become the core's ft here, at the edge.
+        fill_core_table(*section, *read, kFtPerInch, 37, "body_dynamics.cg." + str(stage),
+                        "the stage " + str(stage) + " c.g. history (data block 37)", &body.cg_station_ft[stage - 1]);
       }
     }
     cg->finish();
@@ -145,7 +119,7 @@ void read_body_dynamics(Section& root, const Options& options, BodyDynamicsData*
   // 33 and 37") and hardover turns ("#37 all of data").
   const int needed = (options.dispersions() || hardover) ? 3 : (options.body_dynamics_6d() >= 1 ? 1 : 0);
   for (int stage = 1; stage <= needed; ++stage) {
-    if (body->cg_station_in[static_cast<std::size_t>(stage - 1)].empty()) {
+    if (body.cg_station_ft[stage - 1].size() == 0) {
       section->fail(37, section->key_path("cg." + str(stage)),
                     "missing [body_dynamics.cg." + str(stage) + "]: data block 37 c.g. history of stage " + str(stage) +
                         " (stage_time_s, station_in) is required by the selected options");
@@ -245,7 +219,8 @@ void read_impact(Section& root, const Mission& mission, ImpactData* impact) {
 }
 
 // ---- data blocks 44-45 --------------------------------------------------------------------------
-void read_hardover(Section& root, const Mission& mission, HardoverData* hardover) {
+void read_hardover(Section& root, const Mission& mission, const FieldTarget& target) {
+  HardoverData* hardover = &target.extras->hardover;
   std::optional<Section> section = root.optional_table("hardover", 44);
   if (!section) {
     if (mission.options.hardover()) {
@@ -281,49 +256,7 @@ void read_hardover(Section& root, const Mission& mission, HardoverData* hardover
                  "data block 44 (stage code 4): stage 1 pitch damping, mach and cmq_per_rad arrays");
 
   Section p = section->table("parameters", 45, "data block 45: the 26 hardover words");
-  auto nth = [&p](const char* key, const std::string& what) { return positive_integer(p, key, 45, what); };
-  auto positive = [&p](const char* key, const std::string& what, double scale) {
-    const double value = p.number(key, 45, what);
-    if (!(value > 0.0)) p.fail_at(key, 45, "expected a positive value (" + what + "), got " + format_number(value));
-    return value * scale;
-  };
-  auto any = [&p](const char* key, const std::string& what, double scale) { return p.number(key, 45, what) * scale; };
-  hardover->stage1_every_nth_step = nth("stage1_every_nth_step", "word 1: stage 1 turns every n-th integration step");
-  hardover->max_qbar_alpha_lb_rad_ft2 =
-      positive("max_qbar_alpha_lb_deg_ft2", "word 2: (q alpha)max, lb deg/ft^2", kDegToRad);
-  hardover->stage1_max_attitude_step_rad =
-      positive("stage1_max_attitude_step_deg", "word 3: maximum pitch change per step, deg", kDegToRad);
-  hardover->stage1_max_step_s = positive("stage1_max_step_s", "word 4: maximum integration step, s", 1.0);
-  hardover->stage1_min_step_s = positive("stage1_min_step_s", "word 5: minimum integration step, s", 1.0);
-  hardover->stage1_max_steps_per_turn = nth("stage1_max_steps_per_turn", "word 6: maximum integration steps per turn");
-  hardover->thrust_misalignment_rad[0] =
-      any("stage1_thrust_misalignment_deg", "word 7: stage 1 thrust misalignment, deg", kDegToRad);
-  hardover->thrust_misalignment_rad[1] =
-      any("stage2_thrust_misalignment_deg", "word 8: stage 2 thrust misalignment, deg", kDegToRad);
-  hardover->thrust_misalignment_rad[2] =
-      any("stage3_thrust_misalignment_deg", "word 9: stage 3 thrust misalignment, deg", kDegToRad);
-  hardover->stage1_thrust_station_in = any("stage1_thrust_station_in", "word 10: stage 1 thrust application station, in", 1.0);
-  hardover->stage1_fin_vane_deflection_rad =
-      any("stage1_fin_vane_deflection_deg", "word 11: stage 1 fin and vane deflection, deg", kDegToRad);
-  hardover->mode_b_jet_force_lb[0] = any("mode_b_stage2_jet_force_lb", "word 12: mode B stage 2 control jet force, lb", 1.0);
-  hardover->mode_b_jet_force_lb[1] = any("mode_b_stage3_jet_force_lb", "word 13: mode B stage 3 control jet force, lb", 1.0);
-  hardover->mode_c_jet_force_lb[0] = any("mode_c_stage2_jet_force_lb", "word 14: mode C stage 2 control jet force, lb", 1.0);
-  hardover->mode_c_jet_force_lb[1] = any("mode_c_stage3_jet_force_lb", "word 15: mode C stage 3 control jet force, lb", 1.0);
-  hardover->thrust_station_in[0] = any("stage2_thrust_station_in", "word 16: stage 2 thrust application station, in", 1.0);
-  hardover->thrust_station_in[1] = any("stage3_thrust_station_in", "word 17: stage 3 thrust application station, in", 1.0);
-  hardover->control_jet_station_in[0] =
-      any("stage2_control_jet_station_in", "word 18: stage 2 control jet application station, in", 1.0);
-  hardover->control_jet_station_in[1] =
-      any("stage3_control_jet_station_in", "word 19: stage 3 control jet application station, in", 1.0);
-  hardover->output_interval_s = positive("output_interval_s", "word 20: output interval, s", 1.0);
-  hardover->stage2_every_nth_step = nth("stage2_every_nth_step", "word 21: stage 2 turns every n-th integration step");
-  hardover->stage3_every_nth_step = nth("stage3_every_nth_step", "word 22: stage 3 turns every n-th integration step");
-  hardover->upper_max_attitude_step_rad =
-      positive("upper_max_attitude_step_deg", "word 23: upper stages maximum pitch change per step, deg", kDegToRad);
-  hardover->upper_max_step_s = positive("upper_max_step_s", "word 24: upper stages maximum integration step, s", 1.0);
-  hardover->upper_min_step_s = positive("upper_min_step_s", "word 25: upper stages minimum integration step, s", 1.0);
-  hardover->upper_max_steps_per_turn =
-      nth("upper_max_steps_per_turn", "word 26: upper stages maximum integration steps per turn");
+  read_fields(p, "hardover.parameters", target, mission);
   if (hardover->stage1_min_step_s > hardover->stage1_max_step_s) {
     p.fail_at("stage1_min_step_s", 45, "minimum step (word 5) exceeds the maximum step (word 4)");
   }
@@ -337,59 +270,83 @@ void read_hardover(Section& root, const Mission& mission, HardoverData* hardover
 // ---- data blocks 46-55 --------------------------------------------------------------------------
 void read_dispersion(Section& entry, int code, DispersionCase* out) {
   const std::string label = "code " + str(code) + " (" + dispersion_name(code) + ")";
-  if (code >= 1 && code <= 8) {
-    out->stage = (code + 1) / 2;
-    const std::string stage = "stage " + str(out->stage);
-    out->vacuum_thrust_lbf = read_table(entry, "thrust", 30, "time_s", "vacuum_thrust_lbf", "stage time in s",
-                                        "vacuum thrust in lbf", 1.0,
-                                        "data block 30 replacement thrust table of " + stage + " for " + label);
-    out->consumable_weight_lb = read_table(entry, "consumable_weight", 38, "time_s", "remaining_lb", "stage time in s",
-                                           "consumable weight remaining in lb", 1.0,
-                                           "data block 38 replacement weight table of " + stage + " for " + label);
-    if (code >= 7) {
-      if (auto durations = entry.optional_numbers("stage_durations_s", 55, "stage 4 and 5 durations, s", 2)) {
-        out->has_stage_durations = true;
-        out->stage4_5_durations_s = {(*durations)[0], (*durations)[1]};
+  const DispersionCodes& codes = *find_dispersion(code);  // the code was checked by the caller
+  const int card_stage = codes.stage_of(code);
+  // The TOML keys of the code's data (dispersion_codes()); every block asked for is one of its items.
+  const auto item = [&codes](int block, int word = 1) -> const DispersionItem& {
+    for (const DispersionItem& candidate : codes.items) {
+      if (candidate.block == block && (candidate.word == 0 || candidate.word == word)) return candidate;
+    }
+    return codes.items.front();
+  };
+  switch (codes.kind) {
+    case DispersionKind::kThrust: {
+      out->stage = card_stage;
+      const std::string stage = "stage " + str(out->stage);
+      out->vacuum_thrust_lbf = read_table(entry, item(30).key, 30, item(30).x_key, item(30).y_key, "stage time in s",
+                                          "vacuum thrust in lbf", 1.0,
+                                          "data block 30 replacement thrust table of " + stage + " for " + label);
+      out->consumable_weight_lb = read_table(entry, item(38).key, 38, item(38).x_key, item(38).y_key,
+                                             "stage time in s", "consumable weight remaining in lb", 1.0,
+                                             "data block 38 replacement weight table of " + stage + " for " + label);
+      if (dispersion_takes(code, 55)) {
+        if (auto durations = entry.optional_numbers(item(55).key, 55, "stage 4 and 5 durations, s", 2)) {
+          out->has_stage_durations = true;
+          out->stage4_5_durations_s = {(*durations)[0], (*durations)[1]};
+        }
       }
+      break;
     }
-  } else if (code >= 9 && code <= 16) {
-    out->stage = (code - 7) / 2;
-    out->weight_increment_lb = entry.number("weight_increment_lb", 47, "jettison weight increment (signed), lb");
-  } else if (code == 17 || code == 18) {
-    out->drag_variation_fraction =
-        entry.number("drag_variation_fraction", 48, "drag variation as a signed fraction (0.xxxx)");
-    if (std::abs(out->drag_variation_fraction) >= 1.0) {
-      entry.fail_at("drag_variation_fraction", 48, "expected a fraction 0.xxxx (|value| < 1)");
-    }
-  } else if (code == 19 || code == 20) {
-    out->stage = 1;
-    out->pitching_moment_per_rad = read_table(entry, "pitching_moment", 35, "mach", "cm_alpha_per_rad", "Mach number",
-                                              "C_M per radian of alpha about X_FS", 1.0,
-                                              "the complete data block 35 table for " + label);
-  } else if (code >= 21 && code <= 23) {
-    out->stage = 1;
-    out->misalignment_rad = entry.number("misalignment_deg", 49, "thrust misalignment angle (signed), deg") * kDegToRad;
-    out->thrust_station_in = entry.number("thrust_station_in", 49, "thrust application station, in");
-  } else if (code >= 24 && code <= 29) {
-    out->stage = code <= 26 ? 2 : 3;
-    out->deadband_rad = entry.number("deadband_deg", 50, "control system deadband angle (signed), deg") * kDegToRad;
-  } else if (code >= 30 && code <= 32) {
-    out->stage = entry.optional_integer("stage", 51, "spun stage of the tip-off, 4 or 5").value_or(4);
-    if (out->stage != 4 && out->stage != 5) entry.fail_at("stage", 51, "tip-off applies to stage 4 or 5");
-    out->tipoff_rad = entry.number("tipoff_deg", 51, "effective attitude change from tip-off (signed), deg") * kDegToRad;
-  } else if (code == 33) {
-    out->stage = 1;
-    out->launch_change_rad = entry.number("launch_azimuth_change_deg", 52, "launch azimuth change (signed), deg") * kDegToRad;
-  } else if (code == 34 || code == 35) {
-    out->stage = 1;
-    out->launch_change_rad =
-        entry.number("launch_attitude_change_deg", 52, "launch attitude change (signed), deg") * kDegToRad;
-  } else if (code >= 36 && code <= 38) {
-    out->wind_speed_ft_s = read_table(entry, "wind_speed", 53, "altitude_ft", "speed_ft_s", "altitude in ft",
-                                      "wind speed in ft/s", 1.0, "data block 53 WINDVL table for " + label);
-    out->wind_azimuth_rad = read_table(entry, "wind_azimuth", 54, "altitude_ft", "azimuth_deg", "altitude in ft",
-                                       "azimuth of the wind vector in deg from north", kDegToRad,
-                                       "data block 54 WINDAZ table for " + label);
+    case DispersionKind::kWeightIncrement:
+      out->stage = card_stage;
+      out->weight_increment_lb = entry.number(item(47).key, 47, "jettison weight increment (signed), lb");
+      break;
+    case DispersionKind::kDrag:
+      out->drag_variation_fraction =
+          entry.number(item(48).key, 48, "drag variation as a signed fraction (0.xxxx)");
+      if (std::abs(out->drag_variation_fraction) >= 1.0) {
+        entry.fail_at(item(48).key, 48, "expected a fraction 0.xxxx (|value| < 1)");
+      }
+      break;
+    case DispersionKind::kPitchingMoment:
+      out->stage = 1;  // block 35 is stage 1's (no stage code on the card)
+      out->pitching_moment_per_rad = read_table(entry, item(35).key, 35, item(35).x_key, item(35).y_key, "Mach number",
+                                                "C_M per radian of alpha about X_FS", 1.0,
+                                                "the complete data block 35 table for " + label);
+      break;
+    case DispersionKind::kMisalignment:
+      out->stage = card_stage;
+      out->misalignment_rad = entry.number(item(49).key, 49, "thrust misalignment angle (signed), deg") * kDegToRad;
+      out->thrust_station_in = entry.number(item(49, 2).key, 49, "thrust application station, in");
+      break;
+    case DispersionKind::kDeadband:
+      out->stage = card_stage;
+      out->deadband_rad = entry.number(item(50).key, 50, "control system deadband angle (signed), deg") * kDegToRad;
+      break;
+    case DispersionKind::kTipoff:
+      out->stage = entry.optional_integer("stage", 51, "spun stage of the tip-off, 4 or 5").value_or(4);
+      if (out->stage != 4 && out->stage != 5) entry.fail_at("stage", 51, "tip-off applies to stage 4 or 5");
+      out->tipoff_rad = entry.number(item(51).key, 51, "effective attitude change from tip-off (signed), deg") * kDegToRad;
+      break;
+    case DispersionKind::kLaunchAzimuth:
+      out->stage = 1;  // a launch condition: stage 1 flies it
+      out->launch_change_rad =
+          entry.number(item(52).key, 52, "launch azimuth change (signed), deg") * kDegToRad;
+      break;
+    case DispersionKind::kLaunchAttitude:
+      out->stage = 1;
+      out->launch_change_rad =
+          entry.number(item(52).key, 52, "launch attitude change (signed), deg") * kDegToRad;
+      break;
+    case DispersionKind::kWinds:
+      out->wind_speed_ft_s = read_table(entry, item(53).key, 53, item(53).x_key, item(53).y_key, "altitude in ft",
+                                        "wind speed in ft/s", 1.0, "data block 53 WINDVL table for " + label);
+      out->wind_azimuth_rad = read_table(entry, item(54).key, 54, item(54).x_key, item(54).y_key, "altitude in ft",
+                                         "azimuth of the wind vector in deg from north", kDegToRad,
+                                         "data block 54 WINDAZ table for " + label);
+      break;
+    case DispersionKind::kSummary:
+      break;
   }
 }
 
@@ -420,11 +377,15 @@ void read_dispersions(Section& root, const Options& options, std::vector<Dispers
 
 }  // namespace
 
-void read_extras_sections(Section& root, const Mission& mission, DeckExtras* extras) {
-  read_body_dynamics(root, mission.options, &extras->body_dynamics);
+void read_extras_sections(Section& root, Mission* mission_data, DeckExtras* extras) {
+  FieldTarget target;
+  target.mission = mission_data;  // blocks 33-37, in core units
+  target.extras = extras;         // block 33's words the core does not hold, block 45
+  read_body_dynamics(root, mission_data, target);
+  const Mission& mission = *mission_data;
   read_radar(root, mission.options, &extras->radar_stations);
   read_impact(root, mission, &extras->impact);
-  read_hardover(root, mission, &extras->hardover);
+  read_hardover(root, mission, target);
   read_dispersions(root, mission.options, &extras->dispersions);
 }
 

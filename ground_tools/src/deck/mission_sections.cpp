@@ -55,119 +55,23 @@ void read_case(Section& root, Mission* mission) {
 }
 
 // ---- data block 4 -------------------------------------------------------------------------------
-void read_options(Section& root, Options* options) {
+void read_options(Section& root, const FieldTarget& target) {
   std::optional<Section> section = root.optional_table("options", 4);
   if (!section) return;
-  struct Flag {
-    const char* key;
-    int ip;
-    const char* what;
-  };
-  static const Flag kFlags[] = {
-      {"heating_constraint", 2, "IP(2) heating inequality constraint"},
-      {"exchange_ratios", 3, "IP(3) performance exchange ratios"},
-      {"linearization", 7, "IP(7) pitch-program linearization after optimization"},
-      {"zero_alpha_window", 11, "IP(11) zero-alpha constraint in stage 1 (block 22 times)"},
-      {"alpha_zero_at_stage2_ignition", 12, "IP(12) alpha = 0 at stage 2 ignition"},
-      {"memory_dump", 15, "IP(15) memory dump"},
-      {"print_input", 17, "IP(17) output of the input data"},
-      {"dispersions", 21, "IP(21) dispersed trajectories"},
-      {"hardover", 22, "IP(22) failure-mode hardover turns"},
-      {"impact", 23, "IP(23) nominal impact locus"},
-      {"radar", 24, "IP(24) radar tracking coordinates"},
-  };
-  struct Choice {
-    const char* key;
-    int ip;
-    int low;
-    int high;
-    const char* what;
-  };
-  static const Choice kChoices[] = {
-      {"payoff", 1, 0, 2, "IP(1) payoff: 0 payload, 1 velocity, 2 altitude"},
-      {"body_dynamics_6d", 6, 0, 2, "IP(6) 6D: 0 none, 1 after successful linearization, 2 on the initial nominal"},
-      {"spin_stages_4_5", 9, 0, 3, "IP(9) stages 4 and 5: 1 both spun, 2 stage 4 continuous and 5 spun, 3 both continuous (0: no stage 4)"},
-      {"stage5_chi", 10, 0, 2, "IP(10) stage 5 chi: 0 fewer than 5 stages, 1 chi5 = chi4, 2 independent"},
-      {"qbar_constraint_type", 13, 0, 1, "IP(13) q-bar constraint at stage 2 ignition: 0 none or equality, 1 inequality"},
-  };
-  for (const Flag& flag : kFlags) {
-    if (const std::optional<int> value = section->optional_flag(flag.key, 4, flag.what)) {
-      options->ip[flag.ip] = *value;
-    }
-  }
-  for (const Choice& choice : kChoices) {
-    if (const std::optional<int> value = section->optional_integer(choice.key, 4, choice.what)) {
-      if (*value < choice.low || *value > choice.high) {
-        section->fail_at(choice.key, 4, "value " + str(*value) + " out of range: expected " +
-                                            str(choice.low) + "-" + str(choice.high) + " (" + choice.what + ")");
-      }
-      options->ip[choice.ip] = *value;
-    }
-  }
+  read_fields(*section, "options", target, *target.mission);
   section->finish();
-  if (options->ip[6] == 1 && options->ip[7] != 1) {
+  const Options& options = target.mission->options;
+  if (options.ip[6] == 1 && options.ip[7] != 1) {
     section->fail_at("body_dynamics_6d", 4,
                      "IP(6) = 1 (6D after successful linearization) requires linearization = true (IP(7) = 1)");
   }
 }
 
-// ---- data block 10 ------------------------------------------------------------------------------
-void read_constants(Section& root, Constants* constants) {
-  std::optional<Section> section = root.optional_table("constants", 10);
+// A table of scalar fields (field_description.hpp), optional in the deck.
+void read_field_section(Section& root, const char* name, int data_block, const FieldTarget& target) {
+  std::optional<Section> section = root.optional_table(name, data_block);
   if (!section) return;
-  struct Entry {
-    const char* key;
-    double Constants::*field;
-    const char* what;
-  };
-  static const Entry kEntries[] = {
-      {"earth_rotation_rate_rad_s", &Constants::earth_rotation_rate_rad_s, "CT1(1) Earth rotation rate, rad/s"},
-      {"gravitational_parameter_ft3_s2", &Constants::gravitational_parameter_ft3_s2, "CT1(2) mu, ft^3/s^2"},
-      {"earth_equatorial_radius_ft", &Constants::earth_equatorial_radius_ft, "CT1(3) equatorial radius, ft"},
-      {"gas_constant_ft2_s2_R", &Constants::gas_constant_ft2_s2_R, "CT1(4) gas constant, ft^2/(s^2 R)"},
-      {"g0_ft_s2", &Constants::g0_ft_s2, "CT1(5) weight-to-mass factor g0, ft/s^2"},
-      {"sea_level_pressure_lbf_ft2", &Constants::sea_level_pressure_lbf_ft2, "CT1(6) sea-level pressure, lbf/ft^2"},
-      {"haero_ft", &Constants::haero_ft, "CT1(7) HAERO, ft"},
-      {"lines_per_page", &Constants::lines_per_page, "CT1(8) lines per page"},
-      {"deg_to_rad_as_printed", &Constants::deg_to_rad_as_printed, "CT1(9) degrees to radians (echo only)"},
-      {"time_epsilon_s", &Constants::time_epsilon_s, "CT1(10) TIMEP, s"},
-      {"j2", &Constants::j2, "CT1(11) J2"},
-      {"inverse_flattening", &Constants::inverse_flattening, "CT1(12) inverse flattening"},
-      {"ct1_13", &Constants::ct1_13, "CT1(13)"},
-  };
-  for (const Entry& entry : kEntries) {
-    if (const std::optional<double> value = section->optional_number(entry.key, 10, entry.what)) {
-      constants->*entry.field = *value;
-    }
-  }
-  section->finish();
-}
-
-// ---- data blocks 11-14 --------------------------------------------------------------------------
-void read_atmosphere(Section& root, AtmosphereTable* atmosphere) {
-  std::optional<Section> section = root.optional_table("atmosphere", 11);
-  if (!section) return;
-  struct Entry {
-    const char* key;
-    int block;
-    double* values;
-    const char* what;
-  };
-  const Entry entries[] = {
-      {"base_geopotential_altitude_ft", 11, atmosphere->base_geopotential_altitude_ft,
-       "CT2, base geopotential altitude of the 8 layers, ft'"},
-      {"base_molecular_temperature_R", 12, atmosphere->base_molecular_temperature_R,
-       "CT3, base molecular-scale temperature of the 8 layers, deg R"},
-      {"lapse_rate_R_per_ft", 13, atmosphere->lapse_rate_R_per_ft,
-       "CT4, lapse rate of the 8 layers, deg R per geopotential ft"},
-      {"base_density_slug_ft3", 14, atmosphere->base_density_slug_ft3,
-       "CT5, base density of the 8 layers, slug/ft^3"},
-  };
-  for (const Entry& entry : entries) {
-    if (const auto values = section->optional_numbers(entry.key, entry.block, entry.what, kAtmosphereLayers)) {
-      for (int i = 0; i < kAtmosphereLayers; ++i) entry.values[i] = (*values)[static_cast<std::size_t>(i)];
-    }
-  }
+  read_fields(*section, name, target, *target.mission);
   section->finish();
 }
 
@@ -242,25 +146,26 @@ void read_vehicle(Section& root, Vehicle* vehicle) {
 }
 
 // ---- data blocks 16, 30, 31, 38, 39 -------------------------------------------------------------
-void read_stage(Section& section, int code, StageData* stage) {
+// The description of a stage field (data blocks 16, 39).
+const FieldDescription& stage_field(const char* key) {
+  const FieldDescription* field = find_field("stage.1", key);
+  return *field;  // every key asked for here is described (field_description.cpp)
+}
+
+void read_stage(Section& section, int code, const FieldTarget& target, StageData* stage) {
   const bool powered = is_powered_stage(code);
   const std::string kind = powered ? "powered stage " + str(code) : "coast " + str(code);
+  const Mission& options = *target.mission;
   section.optional_text("name", 16, "description of the stage (not a manual word)", 200);
-  stage->integration_steps = section.integer(
-      "integration_steps", 16, "data block 16 DA1(" + str(2 * code) + "): integration steps of " + kind);
-
-  const std::string sg = "data block 39 SG" + str(code);
+  read_field(section, stage_field("integration_steps"), target, options, code);
+  read_field(section, stage_field("jettison_weight_lb"), target, options, code);
   if (powered) {
-    stage->jettison_weight_lb = section.number("jettison_weight_lb", 39, sg + "(1) jettison weight, lb");
-    stage->nozzle_exit_area_ft2 = section.number_or("nozzle_exit_area_ft2", 39, sg + "(3) nozzle exit area, ft^2", 0.0);
-  } else {
-    stage->jettison_weight_lb = section.number_or("jettison_weight_lb", 39, sg + "(1) jettison weight, lb", 0.0);
-    if (section.has("nozzle_exit_area_ft2")) {
-      section.fail_at("nozzle_exit_area_ft2", 39,
-                      "a coast has no nozzle: data block 39 gives coasts only the jettison weight and the reference area");
-    }
+    read_field(section, stage_field("nozzle_exit_area_ft2"), target, options, code);
+  } else if (section.has("nozzle_exit_area_ft2")) {
+    section.fail_at("nozzle_exit_area_ft2", 39,
+                    "a coast has no nozzle: data block 39 gives coasts only the jettison weight and the reference area");
   }
-  stage->reference_area_ft2 = section.number_or("reference_area_ft2", 39, sg + "(2) aerodynamic reference area, ft^2", 0.0);
+  read_field(section, stage_field("reference_area_ft2"), target, options, code);
 
   if (powered) {
     Section thrust = section.table("thrust", 30, "data block 30: time_s and vacuum_thrust_lbf arrays of " + kind);
@@ -277,8 +182,9 @@ void read_stage(Section& section, int code, StageData* stage) {
                &stage->consumable_weight_lb);
     weight.finish();
 
-    stage->duration_s = section.number_or("duration_s", 16,
-                                          "data block 16 DA1(" + str(2 * code - 1) + "): duration of " + kind + " in s",
+    // A powered stage burns to the end of its thrust table unless the deck says otherwise.
+    const FieldDescription& duration = stage_field("duration_s");
+    stage->duration_s = section.number_or(duration.key, duration.block, what_of(duration, code),
                                           stage->vacuum_thrust_lbf.last_x());
   } else {
     for (const char* key : {"thrust", "consumable_weight"}) {
@@ -287,8 +193,8 @@ void read_stage(Section& section, int code, StageData* stage) {
                         "a coast has no thrust or consumable-weight table (data blocks 30 and 38 are for powered stages 1-5)");
       }
     }
-    stage->duration_s = section.number("duration_s", 16,
-                                       "data block 16 DA1(" + str(2 * code - 1) + "): duration of " + kind + " in s");
+    const FieldDescription& duration = stage_field("duration_s");  // a coast has no table to end it
+    stage->duration_s = section.number(duration.key, duration.block, what_of(duration, code));
   }
 
   // Data block 31: the manual stores drag tables for stages 1, 6 and 2 only (TD1, TD6, TD2, a
@@ -302,7 +208,8 @@ void read_stage(Section& section, int code, StageData* stage) {
   section.finish();
 }
 
-void read_stages(Section& root, Vehicle* vehicle) {
+void read_stages(Section& root, const FieldTarget& target) {
+  Vehicle* vehicle = &target.mission->vehicle;
   Section stages = root.table("stage", 16,
                               "one [stage.N] table for every stage code N of the sequence (data blocks 16, 30, 31, 38, 39)");
   for (auto&& [key, value] : stages.table()) {
@@ -321,7 +228,7 @@ void read_stages(Section& root, Vehicle* vehicle) {
     StageData* stage = &vehicle->stages[stage_index(code)];
     std::optional<Section> section = stages.optional_table(str(code), 16);
     if (section) {
-      read_stage(*section, code, stage);
+      read_stage(*section, code, target, stage);
     } else if (stage->in_sequence) {
       stages.fail(16, stages.key_path(str(code)),
                   "stage " + str(code) + " is in the sequence (data block 5) but [stage." + str(code) +
@@ -334,70 +241,22 @@ void read_stages(Section& root, Vehicle* vehicle) {
 }
 
 // ---- data blocks 20, 21 -------------------------------------------------------------------------
-bool read_launch(Section& root, LaunchConditions* launch) {
+bool read_launch(Section& root, const FieldTarget& target) {
   Section section = root.table("launch", 20, "data blocks 20-21: lift-off time, launch date and initial conditions");
-  launch->liftoff_duration_s = section.number("liftoff_duration_s", 20, "DA5(1) vertical lift-off duration, s");
-  const std::optional<double> date = section.optional_number(
-      "space_age_date_days", 20, "DA5(2) launch time, days from 0 h 1 January 1960 (Julian date - 2436934.5)");
-  launch->launch_space_age_date_days = date.value_or(0.0);
-  launch->altitude_ft = section.number("altitude_ft", 21, "DA6(1) launch altitude, ft");
-  launch->longitude_rad = section.number("longitude_deg", 21, "DA6(2) longitude, deg east of Greenwich") * kDegToRad;
-  launch->geocentric_latitude_rad =
-      section.number("geocentric_latitude_deg", 21, "DA6(3) geocentric latitude, deg") * kDegToRad;
-  launch->velocity_ft_s = section.number_or("velocity_ft_s", 21, "DA6(4) initial velocity, ft/s (must be 0)", 0.0);
-  launch->azimuth_rad = section.number("azimuth_deg", 21, "DA6(5) launch azimuth, deg east of north") * kDegToRad;
-  launch->flight_path_angle_rad =
-      section.number_or("flight_path_angle_deg", 21, "DA6(6) flight-path angle, deg (must be 90)", 90.0) * kDegToRad;
-  launch->heading_hold_until_s = section.number_or(
-      "heading_hold_until_s", 21, "heading hold (extension): dpsi/dt = 0 on steps starting before this time, s", 0.0);
+  read_fields(section, "launch", target, *target.mission);
+  const bool has_date = section.has("space_age_date_days");
   section.finish();
-  return date.has_value();
+  return has_date;
 }
 
 // ---- data block 22 ------------------------------------------------------------------------------
-void read_control(Section& root, const Options& options, ControlConstraints* control) {
-  std::optional<Section> section = root.optional_table("control_constraints", 22);
-  if (!section) {
-    if (options.zero_alpha_window()) {
-      root.fail(22, "control_constraints",
-                "option zero_alpha_window (IP(11)) needs [control_constraints] with zero_alpha_start_s and "
-                "zero_alpha_end_s (data block 22)");
-    }
-    return;
+void read_control(Section& root, const FieldTarget& target) {
+  if (target.mission->options.zero_alpha_window() && !root.has("control_constraints")) {
+    root.fail(22, "control_constraints",
+              "option zero_alpha_window (IP(11)) needs [control_constraints] with zero_alpha_start_s and "
+              "zero_alpha_end_s (data block 22)");
   }
-  if (options.zero_alpha_window()) {
-    control->zero_alpha_start_s = section->number("zero_alpha_start_s", 22, "DA7(1) start of alpha = 0, s from launch");
-    control->zero_alpha_end_s = section->number("zero_alpha_end_s", 22, "DA7(2) end of alpha = 0, s from launch");
-  } else {
-    control->zero_alpha_start_s = section->number_or("zero_alpha_start_s", 22, "DA7(1) start of alpha = 0, s from launch", 0.0);
-    control->zero_alpha_end_s = section->number_or("zero_alpha_end_s", 22, "DA7(2) end of alpha = 0, s from launch", 0.0);
-  }
-  control->max_pitch_rate_rad_s =
-      section->number_or("max_pitch_rate_deg_s", 22, "DA7(3) maximum pitch rate, deg/s", 0.0) * kDegToRad;
-  control->min_pitch_rate_rad_s =
-      section->number_or("min_pitch_rate_deg_s", 22, "DA7(4) minimum pitch rate, deg/s", 0.0) * kDegToRad;
-  control->min_pitch_rate_change_rad_s =
-      section->number_or("min_pitch_rate_change_deg_s", 22, "DA7(5) minimum change in pitch rate, deg/s", 0.0) * kDegToRad;
-  section->finish();
-}
-
-// ---- data block 17 ------------------------------------------------------------------------------
-void read_misc(Section& root, MiscellaneousData* misc) {
-  std::optional<Section> section = root.optional_table("misc", 17);
-  if (!section) return;
-  misc->stage4_theta_rad = section->number_or("stage4_theta_deg", 17, "DA2(5) stage 4 theta, deg", 0.0) * kDegToRad;
-  misc->stage4_chi_rad = section->number_or("stage4_chi_deg", 17, "DA2(6) stage 4 chi, deg", 0.0) * kDegToRad;
-  misc->nose_radius_ft = section->number_or("nose_radius_ft", 17, "DA2(7) nose radius, ft", 0.0);
-  misc->gyro_uncage_s_before_launch =
-      section->number_or("gyro_uncage_s_before_launch", 17, "DA2(8) gyro uncage time before launch, s", 0.0);
-  misc->stage5_theta_rad = section->number_or("stage5_theta_deg", 17, "DA2(9) stage 5 theta, deg", 0.0) * kDegToRad;
-  misc->stage5_chi_rad = section->number_or("stage5_chi_deg", 17, "DA2(10) stage 5 chi, deg", 0.0) * kDegToRad;
-  misc->payload_weighting_factor =
-      section->number_or("payload_weighting_factor", 17, "DA2(15) payload weighting factor", 1.0);
-  misc->coast_change_limit_s =
-      section->number_or("coast_change_limit_s", 17, "DA2(16) limit on coast change per iteration, s", 0.0);
-  misc->minimum_coast_s = section->number_or("minimum_coast_s", 17, "DA2(17) minimum coast duration, s", 0.0);
-  section->finish();
+  read_field_section(root, "control_constraints", 22, target);
 }
 
 // ---- data blocks 8, 19, 29 ----------------------------------------------------------------------
@@ -594,24 +453,6 @@ void read_linearization(Section& root, const Mission& mission, LinearizationData
   section->finish();
 }
 
-// ---- data block 28 ------------------------------------------------------------------------------
-void read_convergence(Section& root, ConvergenceData* convergence) {
-  std::optional<Section> section = root.optional_table("convergence", 28);
-  if (!section) return;
-  convergence->initial_payoff_improvement = section->number_or(
-      "initial_payoff_improvement", 28, "DA13(1) initial payoff improvement, payoff units", convergence->initial_payoff_improvement);
-  convergence->stop_improvement = section->number_or(
-      "stop_improvement", 28, "DA13(2) attempted improvement below which optimization stops, payoff units",
-      convergence->stop_improvement);
-  convergence->max_forward_trajectories =
-      section->optional_integer("max_forward_trajectories", 28, "DA13(3) maximum forward trajectories")
-          .value_or(convergence->max_forward_trajectories);
-  convergence->max_linearization_iterations =
-      section->optional_integer("max_linearization_iterations", 28, "DA13(4) maximum linearization iterations")
-          .value_or(convergence->max_linearization_iterations);
-  section->finish();
-}
-
 // ---- data block 9 -------------------------------------------------------------------------------
 void read_output_frequency(Section& root, OutputFrequency* output) {
   std::optional<Section> section = root.optional_table("output_frequency", 9);
@@ -660,16 +501,19 @@ void read_pitch_program(Section& root, PitchTable* pitch) {
 
 }  // namespace
 
-void read_mission_sections(Section& root, Mission* mission) {
+void read_mission_sections(Section& root, Mission* mission, DeckExtras* extras) {
+  FieldTarget target;
+  target.mission = mission;
+  target.extras = extras;
   read_case(root, mission);
-  read_options(root, &mission->options);
-  read_constants(root, &mission->constants);
-  read_atmosphere(root, &mission->atmosphere);
+  read_options(root, target);
+  read_field_section(root, "constants", 10, target);
+  read_field_section(root, "atmosphere", 11, target);
   read_vehicle(root, &mission->vehicle);
-  read_stages(root, &mission->vehicle);
-  const bool has_date = read_launch(root, &mission->launch);
-  read_control(root, mission->options, &mission->control);
-  read_misc(root, &mission->misc);
+  read_stages(root, target);
+  const bool has_date = read_launch(root, target);
+  read_control(root, target);
+  read_field_section(root, "misc", 17, target);
   const bool needs_date = read_constraints(root, mission->options, mission->vehicle, &mission->constraints);
   if (needs_date && !has_date) {
     root.fail(20, "launch.space_age_date_days",
@@ -678,7 +522,7 @@ void read_mission_sections(Section& root, Mission* mission) {
   }
   read_adjustable(root, &mission->adjustable);
   read_linearization(root, *mission, &mission->linearization);
-  read_convergence(root, &mission->convergence);
+  read_field_section(root, "convergence", 28, target);
   read_output_frequency(root, &mission->output);
   read_pitch_program(root, &mission->pitch_program_rad);
 }

@@ -132,11 +132,23 @@ std::string fault_path(const MissionFault& fault, const Mission& mission) {
   const std::string stage = "stage." + std::to_string(fault.stage_code);
   const bool staged = fault.stage_code > 0;
   const int index = fault.index;
+  // A described field (field_description.hpp): its core member name leads to its deck key.
+  for (const deck_detail::FieldDescription& described : deck_detail::field_descriptions()) {
+    const std::string core_name = described.core_name;
+    const std::size_t dot = core_name.rfind('.');
+    if (deck_detail::message_block(described) != fault.data_block || dot == std::string::npos) continue;
+    std::string member = core_name.substr(dot + 1);
+    if (const std::size_t bracket = member.find('['); bracket != std::string::npos) member.resize(bracket);
+    const bool ip_word = fault.data_block == 4 && described.word == index;
+    if (member != field && !ip_word) continue;
+    const int code = described.stage_coding == deck_detail::StageCoding::kNone ? 0 : fault.stage_code;
+    if (code != 0 && !deck_detail::applies_to_stage(described, code)) continue;
+    if (described.stage_coding != deck_detail::StageCoding::kNone && code == 0) continue;
+    const std::string path = deck_detail::section_of(described, code) + "." + described.key;
+    return described.count > 1 ? element(path, index) : path;
+  }
   switch (fault.data_block) {
-    case 4: {
-      const char* key = card_detail::option_key(index);  // the one IP(n) -> key mapping
-      return *key != '\0' ? "options." + std::string(key) : "options";
-    }
+    case 4: return "options";  // an IP(n) without a key (the described ones are found above)
     case 5: return field == "sequence" ? element("vehicle.sequence", index) : "vehicle.sequence";
     case 6: return index >= 0 ? "adjustable_parameter[" + std::to_string(index) + "].code" : "adjustable_parameter";
     case 27: return index >= 0 ? "adjustable_parameter[" + std::to_string(index) + "].weight" : "adjustable_parameter";
@@ -182,13 +194,8 @@ std::string fault_path(const MissionFault& fault, const Mission& mission) {
       if (index >= 0) return element("pitch_program.theta_deg", index);
       return "pitch_program";
     case 33:
-      // Core field names (mission.hpp BodyDynamicsBlocks) -> deck keys (docs/deck-format.md).
+      // The described DA6D words are found above; the area S is stage 1's block 39 area.
       if (field == "body_dynamics") return "body_dynamics";
-      if (field == "position_gain") return element("body_dynamics.position_gain_deg_per_deg", index);
-      if (field == "rate_gain_s") return element("body_dynamics.rate_gain_s", index);
-      if (field == "control_station_ft") return element("body_dynamics.control_station_in", index);
-      if (field == "moment_reference_station_ft") return "body_dynamics.moment_reference_station_in";
-      if (field == "jet_vane_effectiveness_per_rad") return "body_dynamics.jet_vane_effectiveness_per_deg_per_vane";
       if (field == "reference_area_ft2") return "stage.1.reference_area_ft2";
       return "body_dynamics." + field;
     case 34: return "body_dynamics.fin_normal_force";
@@ -398,14 +405,9 @@ bool parse_deck(const std::string& text, const std::string& path, Mission* missi
     auto parsed = std::make_unique<Mission>();
     auto parsed_extras = std::make_unique<DeckExtras>();
     Section top(&reader, &root, "", 0);
-    deck_detail::read_mission_sections(top, parsed.get());
-    deck_detail::read_extras_sections(top, *parsed, parsed_extras.get());
+    deck_detail::read_mission_sections(top, parsed.get(), parsed_extras.get());
+    deck_detail::read_extras_sections(top, parsed.get(), parsed_extras.get());
     top.finish();
-    // Data blocks 33-37 into the core's Mission (stations in -> ft), so 6D runs can use them.
-    BodyDynamicsMappingFault body_fault;
-    if (!fill_mission_body_dynamics(parsed_extras->body_dynamics, parsed.get(), &body_fault)) {
-      top.fail(body_fault.data_block, body_fault.field, body_fault.message);
-    }
 
     MissionFault fault;
     const Status status = validate_mission(*parsed, &fault);

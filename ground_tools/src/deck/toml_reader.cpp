@@ -6,6 +6,9 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
+#include <string>
+#include <vector>
 
 namespace tolip::ground::deck_detail {
 
@@ -400,6 +403,92 @@ DeckTable to_deck_table(const ReadTable& table, double y_scale) {
   out.y.reserve(table.y.size());
   for (double y : table.y) out.y.push_back(y * y_scale);
   return out;
+}
+
+// ---- described fields ---------------------------------------------------------------------------
+
+namespace {
+
+void check_range(Section& section, const FieldDescription& field, const std::string& what, double value) {
+  const std::string key = field.key;
+  const int block = message_block(field);
+  switch (field.range) {
+    case Range::kAny:
+    case Range::kFlag:
+      return;
+    case Range::kPositive:
+      if (!(value > 0.0)) {
+        section.fail_at(key, block, "expected a positive value (" + what + "), got " + format_number(value));
+      }
+      return;
+    case Range::kAtLeastOne:
+      if (!(value >= 1.0)) {
+        if (field.count > 1) section.fail_at(key, block, "every value must be at least 1 (" + what + ")");
+        section.fail_at(key, block, "expected a positive integer (" + what + "), got " + format_number(value));
+      }
+      return;
+    case Range::kChoice:
+      if (value < field.low || value > field.high) {
+        section.fail_at(key, block, "value " + format_number(value) + " out of range: expected " +
+                                        std::to_string(field.low) + "-" + std::to_string(field.high) + " (" + what + ")");
+      }
+      return;
+  }
+}
+
+}  // namespace
+
+void read_field(Section& section, const FieldDescription& field, const FieldTarget& target, const Mission& options_of,
+                int code) {
+  const std::string what = what_of(field, code);
+  const std::string key = field.key;
+  const int block = message_block(field);
+  const bool required = field.presence == Presence::kRequired ||
+                        (field.presence == Presence::kRequiredWhen && field.required_when(options_of)) ||
+                        (field.presence == Presence::kRequiredForPowered && is_powered_stage(code));
+  std::vector<double> values;
+  if (field.count == 1) {
+    std::optional<double> value;
+    if (field.range == Range::kFlag) {
+      if (const std::optional<int> flag = section.optional_flag(key, block, what)) value = *flag;
+    } else if (field.integer) {
+      if (required) value = section.integer(key, block, what);
+      else if (const std::optional<int> read = section.optional_integer(key, block, what)) value = *read;
+    } else {
+      value = required ? std::optional<double>(section.number(key, block, what)) : section.optional_number(key, block, what);
+    }
+    if (value) values.push_back(*value);
+  } else if (required || section.has(key)) {
+    if (field.integer) {
+      const std::vector<int> read = section.integers(key, block, what);
+      if (static_cast<int>(read.size()) != field.count) {
+        section.fail_at(key, block, "expected " + std::to_string(field.count) + " integers (" + what + "), got " +
+                                        std::to_string(static_cast<int>(read.size())));
+      }
+      values.assign(read.begin(), read.end());
+    } else {
+      values = section.numbers(key, block, what, field.count);
+    }
+  }
+  if (values.empty()) {
+    if (!field.has_default) return;  // the target keeps its value (the core's nominal one)
+    values.assign(static_cast<std::size_t>(field.count), field.default_value);
+  } else {
+    for (double value : values) check_range(section, field, what, value);
+  }
+  for (int i = 0; i < field.count; ++i) {
+    set_field_value(field, target, code, i, to_core(field.conversion, values[static_cast<std::size_t>(i)]));
+  }
+}
+
+void read_fields(Section& section, const std::string& section_path, const FieldTarget& target, const Mission& options_of,
+                 int code) {
+  for (const FieldDescription& field : field_descriptions()) {
+    if (applies_to_stage(field, code) && section_of(field, code) == section_path &&
+        (field.stage_coding == StageCoding::kNone) == (code == 0)) {
+      read_field(section, field, target, options_of, code);
+    }
+  }
 }
 
 }  // namespace tolip::ground::deck_detail

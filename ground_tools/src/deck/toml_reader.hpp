@@ -17,6 +17,7 @@
 
 #include "tolip_ground/deck.hpp"
 #include "tolip_ground/deck_extras.hpp"
+#include "field_description.hpp"
 
 namespace tolip::ground::deck_detail {
 
@@ -125,8 +126,17 @@ class Section {
 // Table helpers shared by the mission and extras readers.
 DeckTable to_deck_table(const ReadTable& table, double y_scale = 1.0);
 
+// Reads one described field (field_description.hpp) for stage `code` (0 when not stage-coded) from
+// `section` into `target`: present or not as its Presence says (required_when asks `options_of`),
+// its range, its conversion to core units, its default when absent.
+void read_field(Section& section, const FieldDescription& field, const FieldTarget& target,
+                const Mission& options_of, int code = 0);
+// Every described field of the TOML table `section_path` ("stage.{n}" fields with their code).
+void read_fields(Section& section, const std::string& section_path, const FieldTarget& target,
+                 const Mission& options_of, int code = 0);
+
 // Readers of the deck sections (mission_sections.cpp, extras_sections.cpp).
-void read_mission_sections(Section& root, Mission* mission);
-void read_extras_sections(Section& root, const Mission& mission, DeckExtras* extras);
+void read_mission_sections(Section& root, Mission* mission, DeckExtras* extras);
+void read_extras_sections(Section& root, Mission* mission, DeckExtras* extras);
 
 }  // namespace tolip::ground::deck_detail

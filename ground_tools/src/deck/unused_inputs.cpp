@@ -26,7 +26,6 @@ std::vector<InputWarning> unused_inputs(const Mission& mission, const DeckExtras
     const char* field;
     const char* what;
   } analyses[] = {
-      {o.dispersions(), "IP(21)", "options.dispersions", "dispersions (Sec. 15, data blocks 46-55)"},
       {o.hardover(), "IP(22)", "options.hardover", "hardover turns (Sec. 16, data blocks 44-45)"},
       {o.impact(), "IP(23)", "options.impact", "the impact locus (Sec. 17, data blocks 42-43)"},
       {o.radar(), "IP(24)", "options.radar", "radar tracking (Sec. 18, data block 41)"},

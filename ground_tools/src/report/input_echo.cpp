@@ -8,6 +8,7 @@
 #include "../deck/card_internal.hpp"
 #include "../deck/card_model.hpp"
 #include "../deck/deck_common.hpp"
+#include "../deck/field_description.hpp"
 #include "listing_pager.hpp"
 
 namespace tolip::ground {
@@ -103,22 +104,12 @@ class Echo {
     }
   }
 
+  // The value a word of blocks 10-14 has when the deck does not punch it (the field description's).
   static bool nominal(int block, int word, double* value) {
-    if (block == 10) {
-      const Constants c;
-      const double values[] = {c.earth_rotation_rate_rad_s, c.gravitational_parameter_ft3_s2, c.earth_equatorial_radius_ft,
-                               c.gas_constant_ft2_s2_R, c.g0_ft_s2, c.sea_level_pressure_lbf_ft2, c.haero_ft,
-                               c.lines_per_page, c.deg_to_rad_as_printed, c.time_epsilon_s, c.j2, c.inverse_flattening,
-                               c.ct1_13};
-      if (word < 1 || word > 13) return false;
-      *value = values[word - 1];
-      return true;
-    }
-    const AtmosphereTable a;
-    if (word < 1 || word > kAtmosphereLayers) return false;
-    const double* arrays[4] = {a.base_geopotential_altitude_ft, a.base_molecular_temperature_R, a.lapse_rate_R_per_ft,
-                               a.base_density_slug_ft3};
-    *value = arrays[block - 11][word - 1];
+    int index = 0;
+    const deck_detail::FieldDescription* field = deck_detail::find_field(block, 0, word, &index);
+    if (field == nullptr) return false;
+    *value = deck_detail::default_deck_value(*field, 0, index);
     return true;
   }
 
@@ -161,7 +152,7 @@ class Echo {
 
 void write_input_echo(std::ostream& out, const Deck& deck, const DeckCase& deck_case) {
   if (!deck_case.mission) return;
-  Pager pager(out, *deck_case.mission);
+  Pager pager(out, *deck_case.mission, &deck_case.extras.listing);
   pager.new_page("INPUT DATA", false);
   pager.emit(" INPUT DATA OF CASE " + std::to_string(deck_case.number) + " (OPTION IP(17)), " +
              deck_format_name(deck.format));

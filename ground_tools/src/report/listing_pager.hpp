@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "tolip/mission/mission.hpp"
+#include "tolip_ground/deck_extras.hpp"
 #include "tolip_ground/report.hpp"
 
 namespace tolip::ground::report_detail {
@@ -17,7 +18,8 @@ namespace tolip::ground::report_detail {
 // when one is full.
 class Pager {
  public:
-  Pager(std::ostream& out, const Mission& mission);
+  // `listing`: the deck's page layout (data block 10 word 8); null: the nominal 54 lines.
+  Pager(std::ostream& out, const Mission& mission, const DeckListingOptions* listing);
 
   // Starts a page of the given kind; `columns` adds the trajectory column headings.
   void new_page(const std::string& section, bool columns);

@@ -10,6 +10,7 @@
 #include "tolip/core/constants.hpp"
 #include "tolip/core/state.hpp"
 #include "tolip_ground/optimization_report.hpp"
+#include "tolip_ground/dispersion_report.hpp"
 
 namespace tolip::ground {
 namespace {
@@ -278,6 +279,7 @@ json optimization_json(const OptimizationReport& report) {
   if (report.body_dynamics_option == 1 || report.body_dynamics_option == 2) {
     additions["body_dynamics"] = body_dynamics_json(report);
   }
+  if (report.dispersions != nullptr) additions["dispersions"] = dispersion_json(*report.dispersions);
 
   // The simulate document of the final trajectory, with the run's status and the additions placed
   // before the (long) point array.

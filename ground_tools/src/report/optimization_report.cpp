@@ -17,6 +17,7 @@
 #include "tolip/mission/adjustable_parameter.hpp"
 #include "tolip/optimizer/constraint_parameters.hpp"
 #include "tolip_ground/optimization_report.hpp"
+#include "tolip_ground/dispersion_report.hpp"
 
 namespace tolip::ground {
 namespace {
@@ -717,7 +718,7 @@ std::vector<AdjustableSummary> adjustable_summaries(const OptimizationReport& re
 void write_optimization_listing(std::ostream& out, const OptimizationReport& report) {
   const std::vector<ConstraintSummary> constraints = constraint_summaries(report);
   const std::vector<AdjustableSummary> adjustable = adjustable_summaries(report);
-  Pager pager(out, *report.final_trajectory.mission);
+  Pager pager(out, *report.final_trajectory.mission, report.final_trajectory.listing);
   pager.new_page("OPTIMIZATION HISTORY", false);
   write_problem(pager, report, constraints, adjustable);
   write_iteration_table(pager, report);
@@ -727,6 +728,7 @@ void write_optimization_listing(std::ostream& out, const OptimizationReport& rep
   write_summary(pager, report, constraints, adjustable);
   write_exchange_ratios(pager, report);
   write_linearized_program(pager, report);
+  if (report.dispersions != nullptr) report_detail::write_dispersion_pages(pager, *report.dispersions);
 }
 
 }  // namespace tolip::ground

@@ -108,8 +108,8 @@ std::string format(const char* pattern, double value) {
 
 namespace report_detail {
 
-Pager::Pager(std::ostream& out, const Mission& mission) : out_(out) {
-  const double lines = mission.constants.lines_per_page;
+Pager::Pager(std::ostream& out, const Mission& mission, const DeckListingOptions* listing) : out_(out) {
+  const double lines = listing != nullptr ? listing->lines_per_page : DeckListingOptions{}.lines_per_page;
   lines_per_page_ = (std::isfinite(lines) && lines >= 20.0 && lines <= 1000.0)
                         ? static_cast<int>(lines)
                         : kDefaultLinesPerPage;
@@ -370,7 +370,7 @@ void report_detail::write_trajectory_pages(Pager& pager, const SimulationReport&
 }
 
 void write_trajectory_listing(std::ostream& out, const SimulationReport& report) {
-  Pager pager(out, *report.mission);
+  Pager pager(out, *report.mission, report.listing);
   report_detail::write_trajectory_pages(pager, report);
 }
 

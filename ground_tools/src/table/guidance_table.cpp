@@ -126,12 +126,12 @@ bool build_guidance_table(const Mission& mission, const DeckExtras& extras, cons
   // before them; spun stages and the coasts after them have none. Data block 33 has no gains for
   // stages 4 and 5 (the manual's vehicle spins them): a continuous stage 4 or 5, and the coast
   // after it, takes stage 3's, the last stage the deck gives (our choice, docs/table-format.md).
-  if (!extras.body_dynamics.present) {
+  if (!mission.body_dynamics.present) {
     return fail("data block 33 ([body_dynamics], DA6D(1-6)) is required: it gives the autopilot gains K_theta "
                 "and K_q of stages 1-3 that the table image carries");
   }
   for (int k = 0; k < 3; ++k) {
-    const StageGains gains{extras.body_dynamics.position_gain[k], extras.body_dynamics.rate_gain_s[k]};
+    const StageGains gains{mission.body_dynamics.position_gain[k], mission.body_dynamics.rate_gain_s[k]};
     t.gains[stage_index(k + 1)] = gains;
     t.gains[stage_index(k + 6)] = gains;
   }

@@ -63,6 +63,10 @@ struct AutopilotCommand {
   double theta_rate_rad_s = 0.0;
   double chi_rad = 0.0;
   double chi_rate_rad_s = 0.0;
+  // Sec. 15 thrust misalignment: M_alpha_T alpha_T added to the numerator of eq. 7-6 (pitch) or
+  // 7-7 (yaw), lbf ft; 0 on every nominal run.
+  double pitch_disturbance_lbf_ft = 0.0;
+  double yaw_disturbance_lbf_ft = 0.0;
 };
 
 struct SteadyAttitude {
@@ -122,6 +126,16 @@ struct BodyDynamicsInputs {
   AutopilotCommand command;
   double normal_force_lbf_per_rad = 0.0;  // F_alpha = q S C_N_alpha
   Matrix3 platform_to_local = Matrix3::Identity();  // [C]
+  // Dispersed trajectories only (Sec. 15, SIXD-D). Winds: alpha and beta come from the air-relative
+  // velocity, whose direction is the i_y row of this matrix (null: from V, the nominal).
+  const Matrix3* air_platform_to_local = nullptr;
+  // Stage-1 thrust misalignment alpha_T (pitch plane for high/low codes, yaw for the yaw code),
+  // applied at body station `thrust_station_ft` with the net thrust T: M_alpha_T = T (X_T - X_CG)
+  // in eq. 7-6/7-7 and the force -T alpha_T {1 - (X_T - X_CG) / (X_delta - X_CG)} on F_mz (F_mx).
+  double misalignment_pitch_rad = 0.0;
+  double misalignment_yaw_rad = 0.0;
+  double thrust_station_ft = 0.0;
+  double net_thrust_lbf = 0.0;
 };
 
 struct BodyDynamicsResult {

@@ -29,6 +29,8 @@ inline constexpr int kCgTableStages = 4;         // block 37: c.g. histories of 
 // Our choices where the manual sets no limit (docs/architecture.md, "Capacities").
 inline constexpr int kMinStage1Steps = 25;              // data block 16: "at least 25 steps in stage 1"
 inline constexpr int kMaxCoastSteps = 100;              // per coast; the manual asks for 10-15 s steps
+// Blocks 53-54 (32E12.8) hold 15 pairs; the reference wind profile has 18 points, so a little more.
+inline constexpr int kMaxWindTablePoints = 32;
 // Every integration point of one trajectory: the start of every step of every stage, the end point
 // of every stage (kept separately from the next stage's first point, so the burnout values of the
 // stage are listed), and the pad point at t = 0.

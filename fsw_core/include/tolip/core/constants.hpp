@@ -7,7 +7,7 @@
 namespace tolip {
 
 inline constexpr double kPi = 3.14159265358979323846;
-inline constexpr double kDegToRad = kPi / 180.0;  // exact; CT1(9) is kept only for echo
+inline constexpr double kDegToRad = kPi / 180.0;  // exact; the deck's CT1(9) is only echoed
 inline constexpr double kRadToDeg = 180.0 / kPi;
 
 // Data block 10, CT1(1..13).
@@ -20,8 +20,8 @@ struct Constants {
   double g0_ft_s2 = 32.174;                                 // CT1(5) weight-to-mass factor
   double sea_level_pressure_lbf_ft2 = 2116.2;               // CT1(6)
   double haero_ft = 250000.0;                               // CT1(7) aerodynamics bypassed above
-  double lines_per_page = 54.0;                             // CT1(8)
-  double deg_to_rad_as_printed = 0.017453292;               // CT1(9) (echo only; exact pi/180 used)
+  // CT1(8) lines per page and CT1(9) the printed degree-to-radian factor lay out the listing: the
+  // ground tools keep them (DeckListingOptions), the core never reads them.
   double time_epsilon_s = 0.02;                             // CT1(10) TIMEP
   double j2 = 1.0827e-3;                                    // CT1(11)
   double inverse_flattening = 298.3;                        // CT1(12) f

@@ -120,6 +120,12 @@ enum class Status : int {
   kTableNotValidated,
   kNoActiveTable,
   kStageEventOutOfOrder,
+  // Dispersion analysis (dispersion/dispersion.hpp, manual Sec. 15)
+  kDispersionNotImplemented,
+  kDispersionNeedsBodyDynamics,
+  kDispersionStageNotInSequence,
+  kDispersionStageNotSpun,
+  kDispersionCodeInvalid,
 };
 
 const char* status_name(Status status);

@@ -7,9 +7,27 @@
 #include "tolip/core/state.hpp"
 #include "tolip/core/status.hpp"
 #include "tolip/mission/mission.hpp"
+#include "tolip/trajectory/wind.hpp"
 #include "tolip/vehicle/prepared_case.hpp"
 
 namespace tolip {
+
+// What a dispersed trajectory (manual Sec. 15; tolip/dispersion/dispersion.hpp) changes in the
+// flight besides the Mission's data: attitude offsets per stage (control deadbands, tip-off,
+// launch attitude), a wind profile, and the stage-1 thrust misalignment of the body dynamics.
+// Absent (null in FlightInputs / StageContext) on every nominal run, which is then unchanged bit
+// for bit.
+struct FlightPerturbation {
+  // Added to the commanded theta / chi of every step of the stage (by stage_index(code)), except
+  // during the vertical lift-off and the zero-alpha window, whose attitudes are fixed by the flight.
+  double theta_offset_rad[kMaxStages] = {};
+  double chi_offset_rad[kMaxStages] = {};
+  const WindProfile* wind = nullptr;  // blocks 53-54; null: still air
+  // Block 49: stage 1 only, with body dynamics (BodyDynamicsInputs).
+  double misalignment_pitch_rad = 0.0;
+  double misalignment_yaw_rad = 0.0;
+  double thrust_station_ft = 0.0;
+};
 
 // The stage being flown.
 struct StageContext {
@@ -20,6 +38,7 @@ struct StageContext {
   // Jettison weights of this and later stages, payload and later stages' consumables: the vehicle
   // weight is this plus the stage's own consumable weight remaining.
   double weight_above_consumable_lb = 0.0;
+  const FlightPerturbation* perturbation = nullptr;  // dispersed trajectories only
 };
 
 StageContext make_stage_context(const Mission& mission, const PreparedCase& prepared,

@@ -127,6 +127,8 @@ struct FlightInputs {
   // the work before the stage (the exchange ratios' runs). Not with feedback or an injection.
   const Trajectory* resume_from = nullptr;
   int resume_stage_slot = 0;
+  // A dispersed trajectory's changes to the flight (Sec. 15; flight_dynamics.hpp). Null: none.
+  const FlightPerturbation* perturbation = nullptr;
 };
 
 Status fly_trajectory(const Mission& mission, const PreparedCase& prepared, const FlightInputs& inputs,

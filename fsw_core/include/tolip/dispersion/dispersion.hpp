@@ -1,0 +1,196 @@
+// Dispersion analysis of the final nominal (manual Sec. 15, Sec. 22 data blocks 46-55 and the
+// DISPERSION TRAJECTORY CODES table; docs/theory/dispersions.md).
+//
+// For each dispersion code given (1-38; code 40 asks for the three-sigma summary) the final
+// nominal - the linearized program (IP(7) = 1) or the optimum, flown from its payload - is changed
+// as the code says and flown again with the same trajectory code (fly_trajectory: the same
+// integrator, atmosphere and Earth), and the staging-point variables, the orbit elements and the
+// maximum q-bar alpha are recorded with their dispersions (dispersed - nominal; the manual's GIANT
+// array, plane 40 the nominal). The three-sigma groups (SUM) follow from those by sum and by
+// root-sum-square. Everything lives in the caller's fixed storage; nothing allocates.
+#pragma once
+
+#include "tolip/core/capacity.hpp"
+#include "tolip/core/status.hpp"
+#include "tolip/mission/mission.hpp"
+#include "tolip/orbit/orbit_elements.hpp"
+#include "tolip/trajectory/trajectory.hpp"
+#include "tolip/trajectory/wind.hpp"
+#include "tolip/vehicle/prepared_case.hpp"
+
+namespace tolip {
+
+inline constexpr int kNominalDispersionCode = 40;   // block 46 code 40: "nominal traj.", three sigma
+inline constexpr int kMaxDispersionCode = 38;       // codes 1-38 are dispersed trajectories
+inline constexpr int kMaxDispersionSources = kMaxDispersionCode + 1;  // 1-38 and 40
+// Staging points (the manual's AA(i, j), j = 1-4 on a four-stage vehicle): the ignition of every
+// powered stage after the first, then the final point. A five-stage vehicle gets a fifth column
+// (stage 5 ignition) instead of the manual's squeeze of five stages into four.
+inline constexpr int kMaxStagingPoints = kMaxPoweredStages;
+inline constexpr int kStagingVariables = 5;   // AA(i, j), i = 1-5
+inline constexpr int kOrbitDispersionElements = 6;  // AA(i, 5), i = 1-6
+
+// What a code disperses (the "Type" column of the code table).
+enum class DispersionKind : int {
+  kVacuumThrust,      // 1-8   blocks 30 and 38 replacement tables of one stage (55: five stages)
+  kWeightIncrement,   // 9-16  block 47: jettison weight increment of one stage
+  kDrag,              // 17-18 block 48: fractional drag change in stages 1, 6, 2
+  kPitchingMoment,    // 19-20 block 35: the complete C_M_alpha table (body dynamics)
+  kThrustMisalignment,// 21-23 block 49: stage-1 misalignment angle and thrust station (body dynamics)
+  kControlDeadband,   // 24-29 block 50: attitude offset of stage 2 or 3
+  kTipoff,            // 30-32 block 51: effective attitude change of spun stage 4 or 5
+  kLaunchAzimuth,     // 33    block 52: launch azimuth change
+  kLaunchAttitude,    // 34-35 block 52: launch attitude (pitch reference) change
+  kWind,              // 36-38 blocks 53-54: wind speed and azimuth vs altitude
+  kNominal,           // 40    the nominal and the three-sigma summary
+};
+
+// The plane of a code (data block 46 designates the groups): high/low codes are pitch-plane
+// dispersions (IDSP = +1), yaw codes are yaw-plane (IDSP = -1).
+enum class DispersionPlane : int { kHighLow, kYaw, kNone };
+
+struct DispersionCodeInfo {
+  int code = 0;
+  DispersionKind kind = DispersionKind::kNominal;
+  DispersionPlane plane = DispersionPlane::kNone;
+  int stage = 0;          // the stage the code table names (0: none, or given by the deck: 30-32)
+  bool high = false;      // "High" / "Forward" in the table (documentation; grouping uses the sign rule)
+  const char* name = "";  // e.g. "vacuum thrust high, stage 1"
+};
+
+// The code table of Sec. 22. False for codes outside 1-38 and 40.
+bool dispersion_code_info(int code, DispersionCodeInfo* info);
+
+// One block 46 card with its data, in core units (angles rad, stations ft).
+struct DispersionSource {
+  int code = 0;
+  int stage = 0;                    // codes 30-32: spun stage 4 or 5; otherwise the table's stage
+  char title[13] = {};              // block 46 title, 2A6
+  ThrustTable vacuum_thrust_lbf;    // codes 1-8: block 30 replacement table (stage time)
+  WeightTable consumable_weight_lb; // codes 1-8: block 38 replacement table
+  // Codes 7-8 with block 55: the manual's five-stage squeeze (stages 4 and 5 stacked in the stage-4
+  // tables). Not flown (kDispersionNotImplemented): here stage 4's tables are stage 4's alone.
+  bool stacked_stage4_5_tables = false;
+  double weight_increment_lb = 0.0;       // codes 9-16, signed
+  double drag_variation_fraction = 0.0;   // codes 17-18, signed (0.xxxx)
+  AeroTable pitching_moment_per_rad;      // codes 19-20: Mach -> C_M_alpha about X_FS
+  double misalignment_rad = 0.0;          // codes 21-23, signed (+: nose up / yaw right moment)
+  double thrust_station_ft = 0.0;         // codes 21-23
+  double deadband_rad = 0.0;              // codes 24-29, signed
+  double tipoff_rad = 0.0;                // codes 30-32, signed
+  double launch_change_rad = 0.0;         // codes 33-35, signed
+  WindProfile wind;                       // codes 36-38
+};
+
+// Data blocks 46-55 of a case, in increasing code order.
+struct DispersionData {
+  int count = 0;
+  DispersionSource sources[kMaxDispersionSources];
+};
+
+// The final nominal the dispersions are taken about: the case (optimized payload, coasts, spun
+// attitudes), the per-point pitch program flown (null: the data block 40 table) and whether stage 1
+// flew with body dynamics. The analysis prepares the case itself (prepare_case: the Sec. 14 tables
+// at the case's own payload), for the nominal and for every dispersed case alike, so a dispersion
+// is the change its code makes and nothing else. Pointers must outlive the analysis.
+struct DispersionNominal {
+  const Mission* mission = nullptr;
+  const ControlProgram* program = nullptr;
+  bool body_dynamics = false;
+};
+
+// AA(i, j) / GIANT(i, j, JILL), i = 1-5.
+enum class StagingVariable : int { kAltitude, kVelocity, kFlightPathAngle, kDownrange, kCrossrange };
+
+// One GIANT plane: a dispersed trajectory (or the nominal, code 40).
+struct DispersedTrajectory {
+  int code = 0;
+  // kOk: flown and recorded. Otherwise why not, by name: kDispersionNotImplemented,
+  // kDispersionNeedsBodyDynamics, kDispersionStageNotInSequence, kDispersionStageNotSpun, or the
+  // failure of the dispersed flight itself (kAltitudeBelowSurface, ...). Only kOk entries are grouped.
+  Status status = Status::kNotPrepared;
+  char title[13] = {};
+  // Staging variables as flown (ft, ft/s, rad, n.mi., n.mi.) and minus the nominal's.
+  double values[kMaxStagingPoints][kStagingVariables] = {};
+  double dispersions[kMaxStagingPoints][kStagingVariables] = {};
+  // TWOE (ft^2/s^2), EH (ft^2/s), RP (ft), EYE, BETAP, OMEGAE (rad) at the final point, and their
+  // dispersions (angles wrapped into (-pi, pi]).
+  double orbit[kOrbitDispersionElements] = {};
+  double orbit_dispersions[kOrbitDispersionElements] = {};
+  double max_qbar_alpha_lbf_rad_ft2 = 0.0;  // max |q-bar alpha| (air-relative alpha under winds)
+  double max_qbar_alpha_time_s = 0.0;       // TIMCT of the maximum
+};
+
+// SUM(i, j, k): one three-sigma group.
+struct ThreeSigmaGroup {
+  int member_count = 0;
+  int members[kMaxDispersionSources] = {};  // codes, increasing
+  double sum[kMaxStagingPoints][kStagingVariables] = {};  // sum of the dispersions
+  double rss[kMaxStagingPoints][kStagingVariables] = {};  // root sum of their squares
+};
+
+struct ThreeSigmaSummary {
+  bool computed = false;            // code 40 was given
+  ThreeSigmaGroup yaw;              // every yaw code, winds included (computed first, Sec. 15)
+  ThreeSigmaGroup high;             // high/low codes without winds, final altitude dispersion > 0
+  ThreeSigmaGroup low;              //   ... < 0 (velocity decides when the altitude dispersion is 0)
+  ThreeSigmaGroup high_with_winds;  // the same with the high/low wind codes added
+  ThreeSigmaGroup low_with_winds;
+};
+
+struct DispersionResult {
+  Status status = Status::kNotPrepared;  // kOk when the nominal flew; per-code statuses below
+  int staging_count = 0;                 // columns: ignitions of stages 2.., then the final point
+  int staging_stage_code[kMaxStagingPoints] = {};  // powered stage code at ignition; 0: final point
+  DispersedTrajectory nominal;           // GIANT plane 40
+  int count = 0;                         // dispersed trajectories, in the data's code order
+  DispersedTrajectory trajectories[kMaxDispersionSources];
+  ThreeSigmaSummary three_sigma;
+};
+
+// Scratch of the analysis (large: keep it static or on the heap).
+struct DispersionWorkspace {
+  PreparedCase nominal_prepared;
+  Mission mission;
+  PreparedCase prepared;
+  ControlProgram program;      // the nominal program on a changed timeline (codes 1-8)
+  bool program_mapped = false;  // `program` is to be flown (else the nominal's)
+  FlightPerturbation perturbation;
+  Trajectory nominal;
+  Trajectory dispersed;
+};
+
+// Checks the data against the nominal before anything flies: known codes in increasing order,
+// the tables finalized, tables of codes 1-8 within the capacities. kOk or the first fault
+// (kValueOutOfRange, kTableEmpty, ...), with *fault_code the code at fault.
+Status validate_dispersion_data(const DispersionData& data, int* fault_code);
+
+// Builds the dispersed case of one source about the nominal: *mission, *prepared and *perturbation
+// ready for fly_trajectory, with inputs.program = &workspace->program when program_mapped, else the
+// nominal's program. A code that cannot be flown returns its named status.
+// `nominal_prepared` is the nominal's prepare_case() result (its timeline maps the program onto a
+// dispersed timeline: a thrust code changes the burn time, and the program is flown in stage time).
+Status build_dispersed_case(const DispersionNominal& nominal, const PreparedCase& nominal_prepared,
+                            const DispersionSource& source, DispersionWorkspace* workspace);
+
+// Records the staging variables, orbit elements and max q-bar alpha of `flown` into *out (values
+// only; dispersions are filled by run_dispersions). `reference` is the nominal trajectory (its
+// staging points define the columns and the crossrange planes); `wind` may be null.
+Status record_dispersed_trajectory(const Mission& mission, const PreparedCase& prepared,
+                                   const Trajectory& reference, const Trajectory& flown,
+                                   const WindProfile* wind, DispersedTrajectory* out);
+
+// The whole analysis: flies the nominal (code 40 plane), every source, and the three-sigma groups
+// when code 40 is among the sources. Returns the nominal's status (a dispersed trajectory that
+// fails is recorded with its status and left out of the groups).
+Status run_dispersions(const DispersionNominal& nominal, const DispersionData& data,
+                       DispersionWorkspace* workspace, DispersionResult* result);
+
+// The Sec. 15 groupings of result->trajectories into result->three_sigma.
+void compute_three_sigma(DispersionResult* result);
+
+// The one sign rule of the high/low groups (Sec. 15, 22): the final-point altitude dispersion,
+// the velocity dispersion when that is zero; true for "high".
+bool is_high_dispersion(const DispersedTrajectory& trajectory, int final_column);
+
+}  // namespace tolip

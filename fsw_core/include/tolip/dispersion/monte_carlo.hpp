@@ -1,0 +1,40 @@
+// Monte Carlo dispersions, the core's per-sample part (issue 11 "Beyond the manual", in part;
+// docs/theory/dispersions.md "Monte Carlo"). Every sampled source of data blocks 46-55 is drawn at
+// once per sample from a counter-based generator keyed by (seed, sample index, source), so sample
+// i is the same whatever the number of threads or ranks and the order they run in. The dispersed
+// case is flown like the deterministic codes (dispersion.hpp). No heap.
+#pragma once
+
+#include <cstdint>
+
+#include "tolip/dispersion/dispersion.hpp"
+
+namespace tolip {
+
+// A uniform draw in (0, 1) from the counter (seed, sample, stream): the SplitMix64 finalizer of the
+// three words combined (no state, so any draw can be made in any order).
+double counter_uniform(std::uint64_t seed, std::uint64_t sample, std::uint32_t stream);
+
+// A standard normal draw: Box-Muller on the uniforms of streams 2 stream and 2 stream + 1.
+double counter_normal(std::uint64_t seed, std::uint64_t sample, std::uint32_t stream);
+
+// Builds sample `sample` about the nominal into *workspace: every scalar source of `data` at once,
+// normal with 1 sigma = the deck's (three-sigma) value / 3, one draw per high/low pair (keyed by its
+// high code) and one per yaw code: weight increments (9-16), drag (17-18), misalignment (21-23,
+// with body dynamics), deadbands (24-29), tip-off (30-32, spun stages), launch azimuth (33) and
+// attitude (34-35). Not sampled in this version: thrust tables (1-8), C_M_alpha tables (19-20),
+// winds (36-38). `nominal_prepared` is the nominal's prepare_case().
+Status build_monte_carlo_case(const DispersionNominal& nominal, const PreparedCase& nominal_prepared,
+                              const DispersionData& data, std::uint64_t seed, std::uint64_t sample,
+                              DispersionWorkspace* workspace);
+
+// Prepares and flies the nominal into workspace->nominal_prepared / ->nominal (once per workspace).
+Status prepare_monte_carlo(const DispersionNominal& nominal, DispersionWorkspace* workspace);
+
+// Builds and flies sample `sample`, recording it into *out (values and dispersions about
+// workspace->nominal, which prepare_monte_carlo() flew; `nominal_values` its record).
+Status fly_monte_carlo_sample(const DispersionNominal& nominal, const DispersionData& data, std::uint64_t seed,
+                              std::uint64_t sample, const DispersedTrajectory& nominal_values,
+                              DispersionWorkspace* workspace, DispersedTrajectory* out);
+
+}  // namespace tolip

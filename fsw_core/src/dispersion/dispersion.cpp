@@ -1,0 +1,500 @@
+// Dispersion analysis (manual Sec. 15, Sec. 22 blocks 46-55; docs/theory/dispersions.md).
+#include "tolip/dispersion/dispersion.hpp"
+
+#include <cmath>
+
+#include "tolip/frames/frames.hpp"
+
+namespace tolip {
+namespace {
+
+using Kind = DispersionKind;
+using Plane = DispersionPlane;
+
+// The DISPERSION TRAJECTORY CODES table of Sec. 22.
+struct CodeRow {
+  int code;
+  Kind kind;
+  Plane plane;
+  int stage;
+  bool high;
+  const char* name;
+};
+
+constexpr CodeRow kCodeTable[] = {
+    {1, Kind::kVacuumThrust, Plane::kHighLow, 1, true, "vacuum thrust high, stage 1"},
+    {2, Kind::kVacuumThrust, Plane::kHighLow, 1, false, "vacuum thrust low, stage 1"},
+    {3, Kind::kVacuumThrust, Plane::kHighLow, 2, true, "vacuum thrust high, stage 2"},
+    {4, Kind::kVacuumThrust, Plane::kHighLow, 2, false, "vacuum thrust low, stage 2"},
+    {5, Kind::kVacuumThrust, Plane::kHighLow, 3, true, "vacuum thrust high, stage 3"},
+    {6, Kind::kVacuumThrust, Plane::kHighLow, 3, false, "vacuum thrust low, stage 3"},
+    {7, Kind::kVacuumThrust, Plane::kHighLow, 4, true, "vacuum thrust high, stage 4"},
+    {8, Kind::kVacuumThrust, Plane::kHighLow, 4, false, "vacuum thrust low, stage 4"},
+    {9, Kind::kWeightIncrement, Plane::kHighLow, 1, true, "weight increment high, stage 1"},
+    {10, Kind::kWeightIncrement, Plane::kHighLow, 1, false, "weight increment low, stage 1"},
+    {11, Kind::kWeightIncrement, Plane::kHighLow, 2, true, "weight increment high, stage 2"},
+    {12, Kind::kWeightIncrement, Plane::kHighLow, 2, false, "weight increment low, stage 2"},
+    {13, Kind::kWeightIncrement, Plane::kHighLow, 3, true, "weight increment high, stage 3"},
+    {14, Kind::kWeightIncrement, Plane::kHighLow, 3, false, "weight increment low, stage 3"},
+    {15, Kind::kWeightIncrement, Plane::kHighLow, 4, true, "weight increment high, stage 4"},
+    {16, Kind::kWeightIncrement, Plane::kHighLow, 4, false, "weight increment low, stage 4"},
+    {17, Kind::kDrag, Plane::kHighLow, 0, true, "drag variation high, stages 1, 6, 2"},
+    {18, Kind::kDrag, Plane::kHighLow, 0, false, "drag variation low, stages 1, 6, 2"},
+    {19, Kind::kPitchingMoment, Plane::kHighLow, 1, true, "C_M_alpha variation forward, stage 1"},
+    {20, Kind::kPitchingMoment, Plane::kHighLow, 1, false, "C_M_alpha variation aft, stage 1"},
+    {21, Kind::kThrustMisalignment, Plane::kHighLow, 1, true, "thrust misalignment high, stage 1"},
+    {22, Kind::kThrustMisalignment, Plane::kHighLow, 1, false, "thrust misalignment low, stage 1"},
+    {23, Kind::kThrustMisalignment, Plane::kYaw, 1, false, "thrust misalignment yaw, stage 1"},
+    {24, Kind::kControlDeadband, Plane::kHighLow, 2, true, "control system deadband high, stage 2"},
+    {25, Kind::kControlDeadband, Plane::kHighLow, 2, false, "control system deadband low, stage 2"},
+    {26, Kind::kControlDeadband, Plane::kYaw, 2, false, "control system deadband yaw, stage 2"},
+    {27, Kind::kControlDeadband, Plane::kHighLow, 3, true, "control system deadband high, stage 3"},
+    {28, Kind::kControlDeadband, Plane::kHighLow, 3, false, "control system deadband low, stage 3"},
+    {29, Kind::kControlDeadband, Plane::kYaw, 3, false, "control system deadband yaw, stage 3"},
+    {30, Kind::kTipoff, Plane::kHighLow, 4, true, "4th and/or 5th stage tip-off high"},
+    {31, Kind::kTipoff, Plane::kHighLow, 4, false, "4th and/or 5th stage tip-off low"},
+    {32, Kind::kTipoff, Plane::kYaw, 4, false, "4th and/or 5th stage tip-off yaw"},
+    {33, Kind::kLaunchAzimuth, Plane::kYaw, 1, false, "launch azimuth, yaw"},
+    {34, Kind::kLaunchAttitude, Plane::kHighLow, 1, true, "launch attitude high"},
+    {35, Kind::kLaunchAttitude, Plane::kHighLow, 1, false, "launch attitude low"},
+    {36, Kind::kWind, Plane::kHighLow, 0, true, "winds high"},
+    {37, Kind::kWind, Plane::kHighLow, 0, false, "winds low"},
+    {38, Kind::kWind, Plane::kYaw, 0, false, "winds yaw"},
+    {40, Kind::kNominal, Plane::kNone, 0, false, "nominal trajectory, three-sigma variations"},
+};
+
+bool in_sequence(const Mission& mission, int code) {
+  const StageSequence& sequence = mission.vehicle.sequence;
+  for (int k = 0; k < sequence.count; ++k) {
+    if (sequence.codes[k] == code) return true;
+  }
+  return false;
+}
+
+// Stage time of the i-th point of a stage's points (the step starts, then the end point).
+double point_stage_time_s(const StageTimeline& line, int i) {
+  return (i < line.steps) ? line.first_step_stage_time_s + i * line.step_s : line.duration_s;
+}
+
+bool same_grid(const StageTimeline& a, const StageTimeline& b) {
+  return a.steps == b.steps && a.step_s == b.step_s && a.duration_s == b.duration_s &&
+         a.first_step_stage_time_s == b.first_step_stage_time_s;
+}
+
+// The nominal per-point program carried onto a dispersed timeline: a stage whose grid is the
+// nominal's keeps its values; one whose burn time changed (codes 1-8) flies the nominal program
+// as a function of stage time (the guidance programmer's clock starts at each ignition), linear
+// between the nominal points and continued at the last step's rate past the nominal burnout.
+void map_program(const PreparedCase& nominal, const ControlProgram& program, const PreparedCase& dispersed,
+                 ControlProgram* out) {
+  out->point_count = program.point_count;
+  out->theta_rad[0] = program.theta_rad[0];
+  int first = 1;
+  for (int slot = 0; slot < dispersed.stage_count; ++slot) {
+    const StageTimeline& from = nominal.timeline[slot];
+    const StageTimeline& to = dispersed.timeline[slot];
+    const int n = to.steps + 1;
+    if (same_grid(from, to)) {
+      for (int i = 0; i < n; ++i) out->theta_rad[first + i] = program.theta_rad[first + i];
+    } else {
+      for (int i = 0; i < n; ++i) {
+        const double tau = point_stage_time_s(to, i);
+        int j = 0;  // the nominal interval [j, j + 1] holding tau (the last one past the end)
+        while (j + 2 < n && point_stage_time_s(from, j + 1) <= tau) ++j;
+        const double t0 = point_stage_time_s(from, j);
+        const double t1 = point_stage_time_s(from, j + 1);
+        const double y0 = program.theta_rad[first + j];
+        const double y1 = program.theta_rad[first + j + 1];
+        out->theta_rad[first + i] = (t1 > t0) ? y0 + (y1 - y0) * (tau - t0) / (t1 - t0) : y0;
+      }
+    }
+    first += n;
+  }
+}
+
+double wrap_angle_rad(double angle) { return std::remainder(angle, 2.0 * kPi); }
+
+void copy_title(const char* from, char* to) {
+  int i = 0;
+  for (; i < 12 && from[i] != '\0'; ++i) to[i] = from[i];
+  to[i] = '\0';
+}
+
+void accumulate(const DispersedTrajectory& t, int columns, ThreeSigmaGroup* group) {
+  if (group->member_count >= kMaxDispersionSources) return;
+  group->members[group->member_count++] = t.code;
+  for (int j = 0; j < columns; ++j) {
+    for (int i = 0; i < kStagingVariables; ++i) {
+      group->sum[j][i] += t.dispersions[j][i];
+      group->rss[j][i] += t.dispersions[j][i] * t.dispersions[j][i];  // squares until finish()
+    }
+  }
+}
+
+void finish(int columns, ThreeSigmaGroup* group) {
+  for (int j = 0; j < columns; ++j) {
+    for (int i = 0; i < kStagingVariables; ++i) group->rss[j][i] = std::sqrt(group->rss[j][i]);
+  }
+}
+
+}  // namespace
+
+bool dispersion_code_info(int code, DispersionCodeInfo* info) {
+  for (const CodeRow& row : kCodeTable) {
+    if (row.code != code) continue;
+    info->code = row.code;
+    info->kind = row.kind;
+    info->plane = row.plane;
+    info->stage = row.stage;
+    info->high = row.high;
+    info->name = row.name;
+    return true;
+  }
+  return false;
+}
+
+Status validate_dispersion_data(const DispersionData& data, int* fault_code) {
+  *fault_code = 0;
+  if (data.count < 0 || data.count > kMaxDispersionSources) return Status::kDispersionCodeInvalid;
+  int previous = 0;
+  for (int k = 0; k < data.count; ++k) {
+    const DispersionSource& s = data.sources[k];
+    *fault_code = s.code;
+    DispersionCodeInfo info;
+    if (!dispersion_code_info(s.code, &info) || s.code <= previous) return Status::kDispersionCodeInvalid;
+    previous = s.code;
+    switch (info.kind) {
+      case Kind::kVacuumThrust:
+        if (s.vacuum_thrust_lbf.empty() || s.consumable_weight_lb.empty()) return Status::kTableEmpty;
+        if (!s.vacuum_thrust_lbf.finalized() || !s.consumable_weight_lb.finalized()) return Status::kTableNotMonotonic;
+        // As data blocks 30 and 38 (validate_mission): from stage time 0, on the same times, the
+        // thrust not negative, the consumable weight not increasing and not negative.
+        if (s.vacuum_thrust_lbf.size() != s.consumable_weight_lb.size()) return Status::kThrustWeightTimesDiffer;
+        if (s.vacuum_thrust_lbf.first_x() != 0.0 || !(s.vacuum_thrust_lbf.last_x() > 0.0)) return Status::kValueOutOfRange;
+        for (int i = 0; i < s.vacuum_thrust_lbf.size(); ++i) {
+          if (s.vacuum_thrust_lbf.x(i) != s.consumable_weight_lb.x(i)) return Status::kThrustWeightTimesDiffer;
+          if (s.vacuum_thrust_lbf.y(i) < 0.0) return Status::kValueOutOfRange;
+          if (s.consumable_weight_lb.y(i) < 0.0) return Status::kNegativeWeight;
+          if (i > 0 && s.consumable_weight_lb.y(i) > s.consumable_weight_lb.y(i - 1)) return Status::kConsumableWeightIncreases;
+        }
+        break;
+      case Kind::kPitchingMoment:
+        if (s.pitching_moment_per_rad.empty()) return Status::kTableEmpty;
+        if (!s.pitching_moment_per_rad.finalized()) return Status::kTableNotMonotonic;
+        break;
+      case Kind::kWind:
+        if (s.wind.speed_ft_s.empty() || s.wind.azimuth_rad.empty()) return Status::kTableEmpty;
+        if (!s.wind.speed_ft_s.finalized() || !s.wind.azimuth_rad.finalized()) return Status::kTableNotMonotonic;
+        break;
+      case Kind::kDrag:
+        if (!(std::fabs(s.drag_variation_fraction) < 1.0)) return Status::kValueOutOfRange;
+        break;
+      case Kind::kTipoff:
+        if (s.stage != 4 && s.stage != 5) return Status::kValueOutOfRange;
+        break;
+      default:
+        break;
+    }
+    const double scalars[] = {s.weight_increment_lb, s.drag_variation_fraction, s.misalignment_rad,
+                              s.thrust_station_ft, s.deadband_rad, s.tipoff_rad, s.launch_change_rad};
+    for (double value : scalars) {
+      if (!std::isfinite(value)) return Status::kValueNotFinite;
+    }
+  }
+  *fault_code = 0;
+  return Status::kOk;
+}
+
+Status build_dispersed_case(const DispersionNominal& nominal, const PreparedCase& nominal_prepared,
+                            const DispersionSource& source, DispersionWorkspace* ws) {
+  DispersionCodeInfo info;
+  if (!dispersion_code_info(source.code, &info) || info.kind == Kind::kNominal) return Status::kDispersionCodeInvalid;
+  ws->mission = *nominal.mission;
+  ws->perturbation = FlightPerturbation{};
+  Mission& m = ws->mission;
+  FlightPerturbation& p = ws->perturbation;
+  const int stage = (info.kind == Kind::kTipoff) ? source.stage : info.stage;
+  if (stage != 0 && !in_sequence(m, stage)) return Status::kDispersionStageNotInSequence;
+
+  switch (info.kind) {
+    case Kind::kVacuumThrust: {
+      // Blocks 30 and 38 replace the stage's tables; its burn time is the new table's last time.
+      // prepare_case() below re-tabulates it (Sec. 14) at the dispersed burn time.
+      if (source.stacked_stage4_5_tables) return Status::kDispersionNotImplemented;
+      StageData& data = m.vehicle.stages[stage_index(stage)];
+      data.vacuum_thrust_lbf = source.vacuum_thrust_lbf;
+      data.consumable_weight_lb = source.consumable_weight_lb;
+      data.duration_s = source.vacuum_thrust_lbf.last_x();
+      // The tables' own rules (validate_dispersion_data); the rest of the case validated as the nominal.
+      if (stage == 1 && !(data.duration_s > m.launch.liftoff_duration_s)) return Status::kLiftoffLongerThanStage1;
+      break;
+    }
+    case Kind::kWeightIncrement:
+      m.vehicle.stages[stage_index(stage)].jettison_weight_lb += source.weight_increment_lb;
+      break;
+    case Kind::kDrag:
+      // "Percentage drag variation to be used for all stages": every drag table (stages 1, 6, 2).
+      for (StageData& data : m.vehicle.stages) {
+        AeroTable& cd = data.drag_coefficient;
+        for (int i = 0; i < cd.size(); ++i) cd.set_y(i, cd.y(i) * (1.0 + source.drag_variation_fraction));
+        if (!cd.empty()) {
+          const Status status = cd.finalize();
+          if (!ok(status)) return status;
+        }
+      }
+      break;
+    case Kind::kPitchingMoment: {
+      if (!nominal.body_dynamics) return Status::kDispersionNeedsBodyDynamics;
+      m.body_dynamics.pitching_moment_per_rad = source.pitching_moment_per_rad;
+      break;
+    }
+    case Kind::kThrustMisalignment:
+      if (!nominal.body_dynamics) return Status::kDispersionNeedsBodyDynamics;
+      (info.plane == Plane::kYaw ? p.misalignment_yaw_rad : p.misalignment_pitch_rad) = source.misalignment_rad;
+      p.thrust_station_ft = source.thrust_station_ft;
+      break;
+    case Kind::kControlDeadband:
+      (info.plane == Plane::kYaw ? p.chi_offset_rad : p.theta_offset_rad)[stage_index(stage)] = source.deadband_rad;
+      break;
+    case Kind::kTipoff: {
+      if (!m.options.stage_is_spun(stage)) return Status::kDispersionStageNotSpun;
+      // The spin axis moves at separation and stays: the stage, its coast, and stage 5 when it
+      // spins on stage 4's attitudes (IP(9) = 1).
+      double* offsets = (info.plane == Plane::kYaw) ? p.chi_offset_rad : p.theta_offset_rad;
+      offsets[stage_index(stage)] = source.tipoff_rad;
+      offsets[stage_index(stage + 5)] = source.tipoff_rad;
+      if (stage == 4 && m.options.spin_stages_4_5() == 1) {
+        offsets[stage_index(5)] = source.tipoff_rad;
+        offsets[stage_index(10)] = source.tipoff_rad;
+      }
+      break;
+    }
+    case Kind::kLaunchAzimuth:
+      // The platform is aligned on the changed azimuth: the whole program turns with it.
+      m.launch.azimuth_rad += source.launch_change_rad;
+      break;
+    case Kind::kLaunchAttitude:
+      // A pitch reference error: every commanded attitude after the lift-off is off by the change.
+      for (double& offset : p.theta_offset_rad) offset = source.launch_change_rad;
+      break;
+    case Kind::kWind:
+      p.wind = &source.wind;
+      break;
+    case Kind::kNominal:
+      return Status::kDispersionCodeInvalid;
+  }
+
+  // Only thrust and weight (Sec. 14's ideal velocities) and the launch azimuth (the launch matrices)
+  // enter prepare_case; every other code's prepared case is the nominal's, exactly what
+  // prepare_case would rebuild.
+  const bool prepares = info.kind == Kind::kVacuumThrust || info.kind == Kind::kWeightIncrement ||
+                        info.kind == Kind::kLaunchAzimuth;
+  if (prepares) {
+    const Status prepared = prepare_case(m, &ws->prepared);
+    if (!ok(prepared)) return prepared;
+  } else {
+    ws->prepared = nominal_prepared;
+  }
+  ws->program_mapped = false;
+  if (nominal.program != nullptr && info.kind == Kind::kVacuumThrust) {
+    if (trajectory_point_count(ws->prepared) != nominal.program->point_count) return Status::kControlProgramSizeMismatch;
+    map_program(nominal_prepared, *nominal.program, ws->prepared, &ws->program);
+    ws->program_mapped = true;
+  }
+  return Status::kOk;
+}
+
+Status record_dispersed_trajectory(const Mission& mission, const PreparedCase& prepared,
+                                   const Trajectory& reference, const Trajectory& flown,
+                                   const WindProfile* wind, DispersedTrajectory* out) {
+  if (!ok(flown.status) || flown.point_count <= 0) return ok(flown.status) ? Status::kNotPrepared : flown.status;
+  // Columns: the ignition of each powered stage after the first in the reference, then the final point.
+  int columns = 0;
+  int reference_points[kMaxStagingPoints] = {};
+  int flown_points[kMaxStagingPoints] = {};
+  for (int k = 0; k < reference.stage_count && columns + 1 < kMaxStagingPoints; ++k) {
+    const int code = reference.stages[k].code;
+    if (!is_powered_stage(code) || code == 1) continue;
+    int flown_point = -1;
+    for (int f = 0; f < flown.stage_count; ++f) {
+      if (flown.stages[f].code == code) flown_point = flown.stages[f].first_point;
+    }
+    if (flown_point < 0) return Status::kDispersionStageNotInSequence;
+    reference_points[columns] = reference.stages[k].first_point;
+    flown_points[columns] = flown_point;
+    ++columns;
+  }
+  reference_points[columns] = reference.point_count - 1;
+  flown_points[columns] = flown.point_count - 1;
+  ++columns;
+
+  for (int j = 0; j < columns; ++j) {
+    const TrajectoryPoint& n = reference.points[reference_points[j]];
+    const TrajectoryPoint& d = flown.points[flown_points[j]];
+    double* v = out->values[j];
+    v[static_cast<int>(StagingVariable::kAltitude)] = d.altitude_ft;
+    v[static_cast<int>(StagingVariable::kVelocity)] = d.state[kStateV];
+    v[static_cast<int>(StagingVariable::kFlightPathAngle)] = d.state[kStateGamma];
+    v[static_cast<int>(StagingVariable::kDownrange)] = d.downrange_rad * kNauticalMilesPerRadian;
+    // Sec. 4: crossrange from the plane of motion at the nominal staging point (0 on the nominal).
+    v[static_cast<int>(StagingVariable::kCrossrange)] =
+        crossrange_angle_rad(n.state[kStateLambda], n.earth_longitude_rad, n.state[kStatePsi], d.state[kStateLambda],
+                             d.earth_longitude_rad) *
+            kNauticalMilesPerRadian +
+        0.0;  // the nominal's own crossrange is -0: print it as 0
+  }
+
+  OrbitElements elements;
+  const Status orbit = compute_orbit_elements(mission.constants, flown.final_point().state,
+                                              mission.launch.launch_space_age_date_days, &elements);
+  if (!ok(orbit)) return orbit;
+  out->orbit[0] = elements.twice_energy_ft2_s2;
+  out->orbit[1] = elements.angular_momentum_ft2_s;
+  out->orbit[2] = elements.perigee_radius_ft;
+  out->orbit[3] = elements.inclination_rad;
+  out->orbit[4] = elements.argument_of_perigee_rad;
+  out->orbit[5] = elements.node_longitude_rad;
+
+  // Max |q-bar alpha|; under a wind the angle is against the air mass, as flown (wind.hpp).
+  out->max_qbar_alpha_lbf_rad_ft2 = 0.0;
+  out->max_qbar_alpha_time_s = 0.0;
+  for (int k = 0; k < flown.point_count; ++k) {
+    const TrajectoryPoint& point = flown.points[k];
+    double alpha = point.alpha_rad;
+    if (wind != nullptr && point.dynamic_pressure_lbf_ft2 > 0.0) {
+      const double speed = wind->speed_ft_s(point.altitude_ft);
+      if (speed != 0.0) {
+        const StateTrig trig(point.state);
+        const Vector3 air = air_relative_velocity_local(point.state, trig, speed, wind->azimuth_rad(point.altitude_ft));
+        if (air.norm() > 0.0) {
+          const Matrix3 platform_to_local = inertial_to_local(trig) * prepared.platform_to_inertial;
+          alpha = air_angle_of_attack_rad(local_to_air_frame(air),
+                                          platform_to_local * thrust_axis_platform(point.theta_rad, point.chi_rad));
+        }
+      }
+    }
+    const double qbar_alpha = std::fabs(point.dynamic_pressure_lbf_ft2 * alpha);
+    if (qbar_alpha > out->max_qbar_alpha_lbf_rad_ft2) {
+      out->max_qbar_alpha_lbf_rad_ft2 = qbar_alpha;
+      out->max_qbar_alpha_time_s = point.time_s;
+    }
+  }
+  return Status::kOk;
+}
+
+bool is_high_dispersion(const DispersedTrajectory& t, int final_column) {
+  const double altitude = t.dispersions[final_column][static_cast<int>(StagingVariable::kAltitude)];
+  if (altitude != 0.0) return altitude > 0.0;
+  return t.dispersions[final_column][static_cast<int>(StagingVariable::kVelocity)] > 0.0;
+}
+
+void compute_three_sigma(DispersionResult* result) {
+  ThreeSigmaSummary& s = result->three_sigma;
+  s.yaw = ThreeSigmaGroup{};
+  s.high = ThreeSigmaGroup{};
+  s.low = ThreeSigmaGroup{};
+  s.high_with_winds = ThreeSigmaGroup{};
+  s.low_with_winds = ThreeSigmaGroup{};
+  const int columns = result->staging_count;
+  const int final_column = columns - 1;
+  // The yaw trajectories first, then high/low without winds; the high/low winds join last.
+  for (int pass = 0; pass < 2; ++pass) {
+    for (int k = 0; k < result->count; ++k) {
+      const DispersedTrajectory& t = result->trajectories[k];
+      DispersionCodeInfo info;
+      if (!ok(t.status) || !dispersion_code_info(t.code, &info)) continue;
+      const bool wind = info.kind == Kind::kWind;
+      if (info.plane == Plane::kYaw) {
+        if (pass == 0) accumulate(t, columns, &s.yaw);
+        continue;
+      }
+      if (info.plane != Plane::kHighLow) continue;
+      const bool high = is_high_dispersion(t, final_column);
+      if (pass == 0 && !wind) {
+        accumulate(t, columns, high ? &s.high : &s.low);
+        accumulate(t, columns, high ? &s.high_with_winds : &s.low_with_winds);
+      } else if (pass == 1 && wind) {
+        accumulate(t, columns, high ? &s.high_with_winds : &s.low_with_winds);
+      }
+    }
+  }
+  finish(columns, &s.yaw);
+  finish(columns, &s.high);
+  finish(columns, &s.low);
+  finish(columns, &s.high_with_winds);
+  finish(columns, &s.low_with_winds);
+  s.computed = true;
+}
+
+Status run_dispersions(const DispersionNominal& nominal, const DispersionData& data, DispersionWorkspace* ws,
+                       DispersionResult* result) {
+  result->count = 0;
+  result->staging_count = 0;
+  result->three_sigma = ThreeSigmaSummary{};
+  result->nominal = DispersedTrajectory{};
+  result->nominal.code = kNominalDispersionCode;
+  if (nominal.mission == nullptr) return result->status = Status::kNotPrepared;
+  int fault_code = 0;
+  Status status = validate_dispersion_data(data, &fault_code);
+  if (!ok(status)) return result->status = status;
+
+  // GIANT plane 40: the nominal, prepared and flown by the same rules as every dispersed case.
+  status = prepare_case(*nominal.mission, &ws->nominal_prepared);
+  if (!ok(status)) return result->status = status;
+  FlightInputs inputs;
+  inputs.program = nominal.program;
+  inputs.body_dynamics = nominal.body_dynamics;
+  status = fly_trajectory(*nominal.mission, ws->nominal_prepared, inputs, &ws->nominal);
+  if (ok(status)) {
+    status = record_dispersed_trajectory(*nominal.mission, ws->nominal_prepared, ws->nominal, ws->nominal, nullptr,
+                                         &result->nominal);
+  }
+  result->nominal.status = status;
+  copy_title("NOMINAL TRAJ", result->nominal.title);
+  if (!ok(status)) return result->status = status;
+  int columns = 0;
+  for (int k = 0; k < ws->nominal.stage_count && columns + 1 < kMaxStagingPoints; ++k) {
+    const int code = ws->nominal.stages[k].code;
+    if (is_powered_stage(code) && code != 1) result->staging_stage_code[columns++] = code;
+  }
+  result->staging_stage_code[columns++] = 0;
+  result->staging_count = columns;
+
+  bool three_sigma = false;
+  for (int k = 0; k < data.count; ++k) {
+    const DispersionSource& source = data.sources[k];
+    if (source.code == kNominalDispersionCode) {
+      three_sigma = true;
+      continue;
+    }
+    DispersedTrajectory& out = result->trajectories[result->count++];
+    out = DispersedTrajectory{};
+    out.code = source.code;
+    copy_title(source.title, out.title);
+    Status code_status = build_dispersed_case(nominal, ws->nominal_prepared, source, ws);
+    if (ok(code_status)) {
+      FlightInputs dispersed;
+      dispersed.program = ws->program_mapped ? &ws->program : nominal.program;
+      dispersed.body_dynamics = nominal.body_dynamics;
+      dispersed.perturbation = &ws->perturbation;
+      code_status = fly_trajectory(ws->mission, ws->prepared, dispersed, &ws->dispersed);
+      if (ok(code_status)) {
+        code_status = record_dispersed_trajectory(ws->mission, ws->prepared, ws->nominal, ws->dispersed,
+                                                  ws->perturbation.wind, &out);
+      }
+    }
+    out.status = code_status;
+    if (!ok(code_status)) continue;
+    for (int j = 0; j < columns; ++j) {
+      for (int i = 0; i < kStagingVariables; ++i) out.dispersions[j][i] = out.values[j][i] - result->nominal.values[j][i];
+    }
+    for (int i = 0; i < kOrbitDispersionElements; ++i) {
+      const double d = out.orbit[i] - result->nominal.orbit[i];
+      out.orbit_dispersions[i] = (i >= 3) ? wrap_angle_rad(d) : d;
+    }
+  }
+  if (three_sigma) compute_three_sigma(result);
+  return result->status = Status::kOk;
+}
+
+}  // namespace tolip

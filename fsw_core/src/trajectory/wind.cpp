@@ -1,0 +1,31 @@
+// Air-relative velocity and angle of attack under a wind (manual Sec. 15).
+#include "tolip/trajectory/wind.hpp"
+
+#include <cmath>
+
+namespace tolip {
+
+Vector3 air_relative_velocity_local(const StateVector& state, const StateTrig& trig, double wind_speed_ft_s,
+                                    double wind_azimuth_rad) {
+  const double relative_azimuth = wind_azimuth_rad - state[kStatePsi];
+  const double along = wind_speed_ft_s * std::cos(relative_azimuth);
+  return Vector3(-wind_speed_ft_s * std::sin(relative_azimuth), state[kStateV] - along * trig.cos_gamma,
+                 along * trig.sin_gamma);
+}
+
+Matrix3 local_to_air_frame(const Vector3& air_velocity_local) {
+  const Vector3 a_y = air_velocity_local.normalized();
+  const Vector3 a_z = (Vector3::UnitZ() - a_y.z() * a_y).normalized();
+  const Vector3 a_x = a_y.cross(a_z);
+  Matrix3 m;
+  m.row(0) = a_x.transpose();
+  m.row(1) = a_y.transpose();
+  m.row(2) = a_z.transpose();
+  return m;
+}
+
+double air_angle_of_attack_rad(const Matrix3& local_to_air, const Vector3& thrust_axis_local) {
+  return angle_of_attack_rad(local_to_air * thrust_axis_local);
+}
+
+}  // namespace tolip

@@ -1,0 +1,116 @@
+// The dispersion analysis of a case (tolip_ground/dispersion_run.hpp).
+#include "tolip_ground/dispersion_run.hpp"
+
+#include <cstring>
+
+namespace tolip::ground {
+namespace {
+
+constexpr double kFtPerInch = 1.0 / 12.0;
+
+template <int N>
+bool fill_table(const DeckTable& deck, Table<N>* table, int block, int code, const std::string& field,
+                DispersionMappingFault* fault) {
+  table->clear();
+  if (deck.empty()) return true;
+  if (deck.size() > N) {
+    fault->data_block = block;
+    fault->code = code;
+    fault->field = field;
+    fault->message = "the table has " + std::to_string(deck.size()) + " points; the core holds at most " +
+                     std::to_string(N);
+    return false;
+  }
+  for (int i = 0; i < deck.size(); ++i) {
+    const std::size_t at = static_cast<std::size_t>(i);
+    (void)table->append(deck.x[at], deck.y[at]);  // finite and increasing (deck reader)
+  }
+  (void)table->finalize();
+  return true;
+}
+
+}  // namespace
+
+bool fill_dispersion_data(const std::vector<DispersionCase>& deck, DispersionData* data, DispersionMappingFault* fault) {
+  data->count = 0;
+  if (deck.size() > static_cast<std::size_t>(kMaxDispersionSources)) {
+    fault->data_block = 46;
+    fault->field = "dispersion";
+    fault->message = "at most " + std::to_string(kMaxDispersionSources) + " dispersed trajectories (codes 1-38, 40)";
+    return false;
+  }
+  for (std::size_t k = 0; k < deck.size(); ++k) {
+    const DispersionCase& d = deck[k];
+    DispersionSource& s = data->sources[data->count];
+    s = DispersionSource{};
+    s.code = d.code;
+    s.stage = d.stage;
+    std::strncpy(s.title, d.title.c_str(), sizeof(s.title) - 1);
+    const std::string path = "dispersion[" + std::to_string(k) + "]";
+    if (!fill_table(d.vacuum_thrust_lbf, &s.vacuum_thrust_lbf, 30, d.code, path + ".thrust", fault) ||
+        !fill_table(d.consumable_weight_lb, &s.consumable_weight_lb, 38, d.code, path + ".consumable_weight", fault) ||
+        !fill_table(d.pitching_moment_per_rad, &s.pitching_moment_per_rad, 35, d.code, path + ".pitching_moment",
+                    fault) ||
+        !fill_table(d.wind_speed_ft_s, &s.wind.speed_ft_s, 53, d.code, path + ".wind_speed", fault) ||
+        !fill_table(d.wind_azimuth_rad, &s.wind.azimuth_rad, 54, d.code, path + ".wind_azimuth", fault)) {
+      return false;
+    }
+    s.stacked_stage4_5_tables = d.has_stage_durations;
+    s.weight_increment_lb = d.weight_increment_lb;
+    s.drag_variation_fraction = d.drag_variation_fraction;
+    s.misalignment_rad = d.misalignment_rad;
+    s.thrust_station_ft = d.thrust_station_in * kFtPerInch;
+    s.deadband_rad = d.deadband_rad;
+    s.tipoff_rad = d.tipoff_rad;
+    s.launch_change_rad = d.launch_change_rad;
+    ++data->count;
+  }
+  return true;
+}
+
+bool final_dispersion_nominal(const Mission& mission, const OptimizationRun& run, DispersionNominal* nominal,
+                              std::string* kind, Status* why) {
+  const bool converged = ok(run.optimizer_status) && run.result != nullptr && run.result->converged;
+  if (!converged) {
+    *why = ok(run.optimizer_status) ? Status::kOptimizationNotStarted : run.optimizer_status;
+    return false;
+  }
+  if (mission.options.linearization()) {
+    // The manual's D4/TTH storage: dispersions about the linearized program (with body dynamics in
+    // stage 1 when the 6D re-linearization ran).
+    const LinearizationStep& lin = run.linearization;
+    if (lin.outcome != StepOutcome::kRun || lin.result == nullptr || !lin.result->finished) {
+      *why = (lin.outcome == StepOutcome::kRun && !ok(lin.status)) ? lin.status : Status::kNotPrepared;
+      return false;
+    }
+    nominal->mission = &lin.workspace->mission;
+    nominal->program = &lin.workspace->program;
+    nominal->body_dynamics = lin.result->body_dynamics;
+    *kind = "linearized program";
+  } else {
+    nominal->mission = &run.workspace->mission;
+    nominal->program = &run.workspace->program;
+    nominal->body_dynamics = false;
+    *kind = "optimum";
+  }
+  return true;
+}
+
+void run_dispersion_step(const Mission& mission, const OptimizationRun& run, std::unique_ptr<DispersionData> data,
+                         DispersionStep* step) {
+  if (!mission.options.dispersions()) return;
+  step->data = std::move(data);
+  DispersionNominal nominal;
+  Status why = Status::kOk;
+  if (!final_dispersion_nominal(mission, run, &nominal, &step->nominal_kind, &why)) {
+    step->outcome = StepOutcome::kSkipped;
+    step->status = why;
+    return;
+  }
+  step->outcome = StepOutcome::kRun;
+  step->workspace = std::make_unique<DispersionWorkspace>();
+  step->result = std::make_unique<DispersionResult>();
+  step->status = run_dispersions(nominal, *step->data, step->workspace.get(), step->result.get());
+}
+
+}  // namespace tolip::ground

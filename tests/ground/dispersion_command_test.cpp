@@ -1,0 +1,184 @@
+// `tolip optimize` with IP(21) = 1 (manual Sec. 15, Sec. 22 "Output format - Dispersion analysis")
+// end to end on examples/scout/mission.toml: every code 1-38 flown about the linearized 6D program,
+// the three-sigma groups recomputed here from the individual dispersions, the listing pages, the
+// CSV, and a table the core cannot hold rejected as bad input. One run is shared (static cache).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+#include "cli_runner.hpp"
+
+namespace tolip::test {
+namespace {
+
+std::string mission_deck() { return std::string(TOLIP_EXAMPLES_DIR) + "/scout/mission.toml"; }
+
+struct Runs {
+  ScratchDirectory scratch{"dispersions"};
+  std::string csv_path;
+  CommandResult json_run;
+  CommandResult listing_run;
+  nlohmann::json document;
+};
+
+const Runs& runs() {
+  static const std::unique_ptr<Runs> r = [] {
+    auto x = std::make_unique<Runs>();
+    x->csv_path = (x->scratch / "dispersions.csv").string();
+    x->json_run = run_tolip_executable({"optimize", mission_deck(), "--json", "--dispersions-csv", x->csv_path});
+    x->listing_run = run_tolip_executable({"optimize", mission_deck()});
+    x->document = nlohmann::json::parse(x->json_run.out, nullptr, false);
+    return x;
+  }();
+  return *r;
+}
+
+const nlohmann::json& dispersions() { return runs().document["dispersions"]; }
+
+TEST(Sec15DispersionCommand, ExampleFliesEveryCodeAboutTheLinearizedProgram) {
+  ASSERT_EQ(runs().json_run.exit_code, 0) << runs().json_run.err;
+  const nlohmann::json& d = dispersions();
+  ASSERT_TRUE(d.is_object());
+  EXPECT_EQ(d["status"], "kOk");
+  EXPECT_EQ(d["nominal_kind"], "linearized program");
+  EXPECT_EQ(d["staging_points"],
+            nlohmann::json::array({"stage_2_ignition", "stage_3_ignition", "stage_4_ignition", "final_point"}));
+  ASSERT_EQ(d["trajectories"].size(), 38u);
+  for (std::size_t k = 0; k < 38; ++k) {
+    const nlohmann::json& t = d["trajectories"][k];
+    EXPECT_EQ(t["code"], static_cast<int>(k) + 1);
+    EXPECT_EQ(t["status"], "kOk") << t["code"];
+  }
+  // IP(21) acts now: no "asked for but not computed" warning names it.
+  EXPECT_EQ(runs().json_run.err.find("IP(21)"), std::string::npos) << runs().json_run.err;
+  // The pinned optimization is untouched by the analysis after it.
+  EXPECT_EQ(runs().document["payload_lb"].get<double>(), 307.6771784567345);
+}
+
+// The analysis' nominal is the linearized trajectory (re-prepared at the optimized payload, the
+// one rule of docs/theory/dispersions.md): its burnout altitude against the linearization's.
+TEST(Sec15DispersionCommand, ExampleNominalIsTheLinearizedTrajectory) {
+  const nlohmann::json& d = dispersions();
+  const double nominal_altitude = d["nominal"]["values"][3]["altitude_ft"].get<double>();
+  const nlohmann::json& constraints = runs().document["linearized"]["constraints"];
+  ASSERT_EQ(constraints[0]["code"], 7);
+  const double linearized_altitude = constraints[0]["achieved"].get<double>();
+  EXPECT_LT(std::fabs(nominal_altitude - linearized_altitude), 5.0) << nominal_altitude << " " << linearized_altitude;
+  EXPECT_EQ(d["nominal"]["values"][3]["crossrange_nmi"].get<double>(), 0.0);
+}
+
+// Sums and RSS recomputed here from the individual dispersions; the sign rule of every member.
+TEST(Sec15DispersionCommand, ThreeSigmaGroupsEqualAnIndependentRecomputation) {
+  const nlohmann::json& d = dispersions();
+  const nlohmann::json& groups = d["three_sigma"];
+  ASSERT_TRUE(groups.is_object());
+  const char* keys[] = {"altitude_ft", "velocity_ft_s", "flight_path_angle_deg", "downrange_nmi", "crossrange_nmi"};
+  const auto trajectory = [&](int code) -> const nlohmann::json& { return d["trajectories"][code - 1]; };
+  for (const char* group : {"yaw", "high", "low", "high_with_winds", "low_with_winds"}) {
+    const nlohmann::json& g = groups[group];
+    for (int column = 0; column < 4; ++column) {
+      for (const char* key : keys) {
+        double sum = 0.0, squares = 0.0;
+        for (const nlohmann::json& code : g["codes"]) {
+          const double x = trajectory(code.get<int>())["dispersions"][column][key].get<double>();
+          sum += x;
+          squares += x * x;
+        }
+        const double tolerance = 1e-9 * (std::fabs(sum) + std::sqrt(squares) + 1e-12);
+        EXPECT_NEAR(g["sum"][column][key].get<double>(), sum, tolerance) << group << " " << column << " " << key;
+        EXPECT_NEAR(g["rss"][column][key].get<double>(), std::sqrt(squares), tolerance) << group << " " << key;
+      }
+    }
+  }
+  // Yaw codes only in the yaw group; winds 36-37 only with winds; high = positive final altitude.
+  EXPECT_EQ(groups["yaw"]["codes"], nlohmann::json::array({23, 26, 29, 32, 33, 38}));
+  for (const char* group : {"high", "low", "high_with_winds", "low_with_winds"}) {
+    const bool high = std::string(group).rfind("high", 0) == 0;
+    const bool winds = std::string(group).find("winds") != std::string::npos;
+    int wind_codes = 0;
+    for (const nlohmann::json& code : groups[group]["codes"]) {
+      const int c = code.get<int>();
+      EXPECT_NE(trajectory(c)["plane"], "yaw") << c;
+      if (c == 36 || c == 37) ++wind_codes;
+      const double altitude = trajectory(c)["dispersions"][3]["altitude_ft"].get<double>();
+      EXPECT_EQ(altitude > 0.0, high) << group << " " << c;
+    }
+    EXPECT_EQ(wind_codes, winds ? 1 : 0) << group;
+  }
+  EXPECT_EQ(groups["high"]["codes"].size() + groups["low"]["codes"].size(), 30u);  // 38 - 6 yaw - 2 winds
+}
+
+TEST(Sec15DispersionCommand, ListingPagesAndCsv) {
+  const CommandResult& listing = runs().listing_run;
+  ASSERT_EQ(listing.exit_code, 0) << listing.err;
+  for (const char* part : {"DISPERSION ANALYSIS (SEC. 15", "NOMINAL TRAJECTORY (GIANT PLANE 40)",
+                           "DISPERSED TRAJECTORY  CODE 36  WINDS HIGH", "SUMMARY OF INDIVIDUAL DISPERSIONS",
+                           "THREE-SIGMA VARIATIONS", "YAW DISPERSIONS  CODES: 23 26 29 32 33 38", "HIGH, WITH WINDS",
+                           "MAX QBAR*ALPHA", "STAGE 4 IGNITION"}) {
+    EXPECT_NE(listing.out.find(part), std::string::npos) << part;
+  }
+  const std::string csv = read_text_file(runs().csv_path);
+  std::istringstream lines(csv);
+  std::string header;
+  std::getline(lines, header);
+  EXPECT_EQ(header.rfind("code,title,status,staging_point,altitude_ft,", 0), 0u) << header;
+  int rows = 0;
+  for (std::string line; std::getline(lines, line);) ++rows;
+  EXPECT_EQ(rows, 39 * 4);  // the nominal and 38 codes, 4 staging points each
+}
+
+TEST(Sec15DispersionCommand, WindTableLongerThanTheCoreHoldsIsBadInputNamingTheBlock) {
+  ScratchDirectory scratch("dispersions_bad");
+  std::string text = read_text_file(mission_deck());
+  const std::size_t from = text.find("[dispersion.wind_speed]");
+  const std::size_t to = text.find("[dispersion.wind_azimuth]", from);
+  ASSERT_NE(from, std::string::npos);
+  ASSERT_NE(to, std::string::npos);
+  std::string table = "[dispersion.wind_speed]\naltitude_ft = [";
+  for (int i = 0; i < 40; ++i) table += std::to_string(i * 1000) + ".0, ";
+  table += "]\nspeed_ft_s = [";
+  for (int i = 0; i < 40; ++i) table += "10.0, ";
+  table += "]\n\n";
+  text.replace(from, to - from, table);
+  const std::string deck = (scratch / "long_wind.toml").string();
+  std::ofstream(deck) << text;
+  const CommandResult run = run_tolip_executable({"optimize", deck, "--json"});
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_TRUE(run.out.empty());
+  EXPECT_NE(run.err.find("data block 53, dispersion code 36"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("40 points; the core holds at most 32"), std::string::npos) << run.err;
+}
+
+// IP(7) = 0: the dispersions are about the optimum (point mass); the codes that act through the
+// body dynamics are named, not skipped.
+TEST(Sec15DispersionCommand, OptimumIsTheNominalWithoutLinearization) {
+  ScratchDirectory scratch("dispersions_optimum");
+  const std::string deck = edited_example_deck(
+      scratch, "optimum.toml",
+      {{"linearization = true ", "linearization = false "}, {"body_dynamics_6d = 1 ", "body_dynamics_6d = 0 "}});
+  ASSERT_FALSE(deck.empty());
+  const CommandResult run = run_tolip_executable({"optimize", deck, "--json"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const nlohmann::json document = nlohmann::json::parse(run.out, nullptr, false);
+  const nlohmann::json& d = document["dispersions"];
+  EXPECT_EQ(d["status"], "kOk");
+  EXPECT_EQ(d["nominal_kind"], "optimum");
+  for (const nlohmann::json& t : d["trajectories"]) {
+    const int code = t["code"].get<int>();
+    EXPECT_EQ(t["status"], (code >= 19 && code <= 23) ? "kDispersionNeedsBodyDynamics" : "kOk") << code;
+  }
+  // The nominal against the optimizer's final trajectory (docs/theory/dispersions.md).
+  const nlohmann::json& last = document["trajectory"].back();
+  EXPECT_LT(std::fabs(d["nominal"]["values"][3]["altitude_ft"].get<double>() - last["altitude_ft"].get<double>()), 50.0);
+  EXPECT_LT(std::fabs(d["nominal"]["values"][3]["velocity_ft_s"].get<double>() - last["velocity_ft_s"].get<double>()), 1.0);
+  // The three-sigma groups leave the codes that did not fly out.
+  EXPECT_EQ(d["three_sigma"]["high"]["codes"].size() + d["three_sigma"]["low"]["codes"].size(), 26u);
+}
+
+}  // namespace
+}  // namespace tolip::test

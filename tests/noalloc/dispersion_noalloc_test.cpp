@@ -1,0 +1,96 @@
+// Rules of the core: the dispersion analysis (manual Sec. 15) - preparing and flying the nominal and
+// every dispersed case, recording, the three-sigma groups - allocates nothing. The data are built
+// (with heap, JSON) before the counting window.
+#include <gtest/gtest.h>
+
+#include "support/allocation_counter.hpp"
+#include "support/reference_mission.hpp"
+#include "tolip/dispersion/dispersion.hpp"
+#include "tolip/dispersion/monte_carlo.hpp"
+
+namespace tolip {
+namespace {
+
+TEST(CoreNoHeap, DispersionAnalysisAllocatesNothing) {
+  static Mission mission;
+  static DispersionData data;
+  static DispersionWorkspace workspace;
+  static DispersionResult result;
+  test::build_reference_mission(test::ReferenceProgram::kOptimum, &mission);
+  const int codes[] = {3, 11, 17, 26, 30, 33, 34, 36, 40};
+  for (int code : codes) {
+    DispersionSource& s = data.sources[data.count++];
+    s.code = code;
+    DispersionCodeInfo info;
+    ASSERT_TRUE(dispersion_code_info(code, &info));
+    s.stage = code == 30 ? 4 : info.stage;
+    s.weight_increment_lb = 50.0;
+    s.drag_variation_fraction = 0.1;
+    s.deadband_rad = 0.01;
+    s.tipoff_rad = 0.03;
+    s.launch_change_rad = 0.005;
+  }
+  data.sources[0].vacuum_thrust_lbf = mission.vehicle.stages[1].vacuum_thrust_lbf;
+  data.sources[0].consumable_weight_lb = mission.vehicle.stages[1].consumable_weight_lb;
+  WindProfile& wind = data.sources[7].wind;
+  ASSERT_EQ(wind.speed_ft_s.append(0.0, 50.0), Status::kOk);
+  ASSERT_EQ(wind.speed_ft_s.append(60000.0, 200.0), Status::kOk);
+  ASSERT_EQ(wind.speed_ft_s.finalize(), Status::kOk);
+  ASSERT_EQ(wind.azimuth_rad.append(0.0, 4.9), Status::kOk);
+  ASSERT_EQ(wind.azimuth_rad.finalize(), Status::kOk);
+  DispersionNominal nominal;
+  nominal.mission = &mission;
+  nominal.body_dynamics = true;  // the block 40 table, stage 1 with body dynamics
+
+  test::AllocationScope scope;
+  const Status status = run_dispersions(nominal, data, &workspace, &result);
+  const auto allocations = scope.count();
+
+  EXPECT_EQ(status, Status::kOk);
+  ASSERT_EQ(result.count, 8);
+  for (int k = 0; k < result.count; ++k) EXPECT_EQ(result.trajectories[k].status, Status::kOk) << result.trajectories[k].code;
+  EXPECT_TRUE(result.three_sigma.computed);  // the work really happened
+  EXPECT_EQ(allocations, 0u);
+}
+
+// A Monte Carlo sample (every scalar source drawn at once) on the core path: no heap either.
+TEST(CoreNoHeap, MonteCarloSampleAllocatesNothing) {
+  static Mission mission;
+  static DispersionData data;
+  static DispersionWorkspace workspace;
+  static DispersedTrajectory nominal_values;
+  static DispersedTrajectory sample;
+  test::build_reference_mission(test::ReferenceProgram::kOptimum, &mission);
+  const int codes[] = {9, 17, 24, 26, 30, 33, 34};
+  for (int code : codes) {
+    DispersionSource& s = data.sources[data.count++];
+    s.code = code;
+    DispersionCodeInfo info;
+    ASSERT_TRUE(dispersion_code_info(code, &info));
+    s.stage = code == 30 ? 4 : info.stage;
+    s.weight_increment_lb = 150.0;
+    s.drag_variation_fraction = 0.1;
+    s.deadband_rad = 0.01;
+    s.tipoff_rad = 0.03;
+    s.launch_change_rad = 0.005;
+  }
+  DispersionNominal nominal;
+  nominal.mission = &mission;
+
+  test::AllocationScope scope;
+  Status status = prepare_monte_carlo(nominal, &workspace);
+  if (ok(status)) {
+    status = record_dispersed_trajectory(mission, workspace.nominal_prepared, workspace.nominal, workspace.nominal,
+                                         nullptr, &nominal_values);
+  }
+  const Status flown = fly_monte_carlo_sample(nominal, data, 1, 5, nominal_values, &workspace, &sample);
+  const auto allocations = scope.count();
+
+  EXPECT_EQ(status, Status::kOk);
+  EXPECT_EQ(flown, Status::kOk);
+  EXPECT_NE(sample.dispersions[3][0], 0.0);  // the work really happened
+  EXPECT_EQ(allocations, 0u);
+}
+
+}  // namespace
+}  // namespace tolip
