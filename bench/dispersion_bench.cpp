@@ -26,7 +26,8 @@ const Prepared& prepared() {
   static Prepared* p = [] {
     auto* made = new Prepared;
     tolip::ground::DeckError error;
-    if (!tolip::ground::load_deck(std::string(TOLIP_EXAMPLES_DIR) + "/scout/mission.toml", &made->deck, &error)) {
+    if (!tolip::ground::load_deck(std::string(TOLIP_EXAMPLES_DIR) + "/scout/mission.toml", &made->deck,
+                                  &error)) {
       std::fprintf(stderr, "%s\n", error.to_string().c_str());
       std::exit(1);
     }
@@ -54,8 +55,8 @@ void BM_Full38CodeDispersionAnalysis(benchmark::State& state) {
     const tolip::Status status = tolip::run_dispersions(p.nominal, *p.data, ws.get(), result.get());
     benchmark::DoNotOptimize(status);
   }
-  state.counters["trajectories_per_s"] =
-      benchmark::Counter(static_cast<double>(result->count + 1), benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["trajectories_per_s"] = benchmark::Counter(static_cast<double>(result->count + 1),
+                                                            benchmark::Counter::kIsIterationInvariantRate);
 }
 BENCHMARK(BM_Full38CodeDispersionAnalysis)->Unit(benchmark::kMillisecond);
 

@@ -48,13 +48,17 @@ void optimize_repeatedly(benchmark::State& state, const tolip::Mission& mission)
   state.counters["payload_lb"] = result->payload_lb;
 }
 
-void BM_FullReferenceOptimization(benchmark::State& state) { optimize_repeatedly(state, load("scout/mission.toml")); }
+void BM_FullReferenceOptimization(benchmark::State& state) {
+  optimize_repeatedly(state, load("scout/mission.toml"));
+}
 BENCHMARK(BM_FullReferenceOptimization)->Unit(benchmark::kMillisecond);
 
 // The second example (examples/strapon): boosters and core back to back, an elliptic target by
 // orbit elements, a spherical Earth, the launch azimuth adjusted (two extra forward runs per
 // backward run), from its crude four-line program: about 70 forward runs.
-void BM_FullStrapOnOptimization(benchmark::State& state) { optimize_repeatedly(state, load("strapon/mission.toml")); }
+void BM_FullStrapOnOptimization(benchmark::State& state) {
+  optimize_repeatedly(state, load("strapon/mission.toml"));
+}
 BENCHMARK(BM_FullStrapOnOptimization)->Unit(benchmark::kMillisecond);
 
 // The same case as a heritage deck flies it: no heading hold, so the first steps after the lift-off
@@ -80,7 +84,8 @@ void BM_BackwardRun(benchmark::State& state) {
     terminals[j].partials[j == 0 ? 6 : j] = 1.0;
   }
   for (auto _ : state) {
-    const tolip::Status status = tolip::run_backward(mission, ws.prepared, ws.nominal, 4, terminals, &ws.backward);
+    const tolip::Status status =
+        tolip::run_backward(mission, ws.prepared, ws.nominal, 4, terminals, &ws.backward);
     benchmark::DoNotOptimize(status);
   }
 }

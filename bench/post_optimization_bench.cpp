@@ -34,7 +34,8 @@ const Optimum& optimum() {
       std::fprintf(stderr, "%s\n", error.to_string().c_str());
       std::exit(1);
     }
-    if (tolip::optimize_trajectory(*made->mission, made->workspace.get(), made->result.get()) != tolip::Status::kOk) {
+    if (tolip::optimize_trajectory(*made->mission, made->workspace.get(), made->result.get()) !=
+        tolip::Status::kOk) {
       std::fprintf(stderr, "the example did not optimize\n");
       std::exit(1);
     }
@@ -91,7 +92,8 @@ void BM_ExchangeRatios(benchmark::State& state) {
   auto scratch = std::make_unique<tolip::ExchangeRatioScratch>();
   auto ratios = std::make_unique<tolip::ExchangeRatios>();
   for (auto _ : state) {
-    const tolip::Status status = tolip::compute_exchange_ratios(*o.workspace, *o.result, scratch.get(), ratios.get());
+    const tolip::Status status =
+        tolip::compute_exchange_ratios(*o.workspace, *o.result, scratch.get(), ratios.get());
     benchmark::DoNotOptimize(status);
   }
   state.counters["forward_runs"] = ratios->forward_runs;

@@ -47,7 +47,8 @@ namespace tolip::target {
 std::uint32_t stack_high_water_bytes() {
   const std::uint32_t* p = __stack_limit;
   while (p < __stack_top && *p == kStackPaint) ++p;
-  return static_cast<std::uint32_t>(reinterpret_cast<std::uintptr_t>(__stack_top) - reinterpret_cast<std::uintptr_t>(p));
+  return static_cast<std::uint32_t>(reinterpret_cast<std::uintptr_t>(__stack_top) -
+                                    reinterpret_cast<std::uintptr_t>(p));
 }
 
 std::uint32_t stack_size_bytes() {
@@ -97,7 +98,8 @@ extern "C" __attribute__((noreturn, used)) void tolip_reset_continue() {
   for (std::uint32_t* p = __bss_start; p < __bss_end; ++p) *p = 0u;
   for (std::uint32_t* p = __psram_bss_start; p < __psram_bss_end; ++p) *p = 0u;
   paint_stack();
-  for (void (**constructor)() = __init_array_start; constructor < __init_array_end; ++constructor) (*constructor)();
+  for (void (**constructor)() = __init_array_start; constructor < __init_array_end; ++constructor)
+    (*constructor)();
   const int code = tolip_target_main();
   tolip::target::semihosting_exit(code);
 }

@@ -1,4 +1,5 @@
-// The entry point of the Cortex-M7 flight image (called by the start-up code; ISO C++ forbids calling main): the flight demo, then the measured stack high-water mark
+// The entry point of the Cortex-M7 flight image (called by the start-up code; ISO C++ forbids calling main):
+// the flight demo, then the measured stack high-water mark
 // ("TARGET" lines are target-only; the host prints none). Also the optimizer's workspace, in the
 // PSRAM.
 #include <cstdint>
@@ -30,7 +31,8 @@ extern "C" const unsigned char tolip_pitch_table[];
 extern "C" int tolip_target_main() {
   const int code = tolip::flight::run_flight_demo();
   tolip::flight::TextLine line;
-  line.text("TARGET table image at ").hex32(static_cast<std::uint32_t>(reinterpret_cast<std::uintptr_t>(tolip_pitch_table)));
+  line.text("TARGET table image at ")
+      .hex32(static_cast<std::uint32_t>(reinterpret_cast<std::uintptr_t>(tolip_pitch_table)));
   line.emit();
   line.text("TARGET stack high-water ").integer(tolip::target::stack_high_water_bytes()).text(" bytes of ");
   line.integer(tolip::target::stack_size_bytes());

@@ -87,14 +87,20 @@ double triangle(int k, int period) {
 
 bool load_tables() {
   TextLine line;
-  line.text("EXEC table image ").integer(static_cast<long long>(sizeof tolip_pitch_table)).text(" bytes, CRC-32 ");
+  line.text("EXEC table image ")
+      .integer(static_cast<long long>(sizeof tolip_pitch_table))
+      .text(" bytes, CRC-32 ");
   line.hex32(stored_table_crc(tolip_pitch_table));
   line.emit();
   const Status loaded = g_tables.load(tolip_pitch_table, sizeof tolip_pitch_table);
   status_line("EXEC ", "load embedded image", loaded);
   if (!ok(loaded)) return false;
   const GuidanceTable& t = *g_tables.active();
-  line.text("EXEC mission '").text(t.mission_id).text("' generator ").text(t.generator_version).text(" created ");
+  line.text("EXEC mission '")
+      .text(t.mission_id)
+      .text("' generator ")
+      .text(t.generator_version)
+      .text(" created ");
   line.integer(t.created_unix_s).text(" s");
   line.emit();
   line.text("EXEC lift-off ").fixed(t.liftoff_duration_s, 6).text(" s, max rate ");
@@ -102,7 +108,9 @@ bool load_tables() {
   line.fixed(t.max_deflection_rad * kRadToDeg, 9).text(" deg");
   line.emit();
   line.text("EXEC spun stage 4 theta ").fixed(t.stage4_theta_rad * kRadToDeg, 12).text(" chi ");
-  line.fixed(t.stage4_chi_rad * kRadToDeg, 12).text(", stage 5 theta ").fixed(t.stage5_theta_rad * kRadToDeg, 12);
+  line.fixed(t.stage4_chi_rad * kRadToDeg, 12)
+      .text(", stage 5 theta ")
+      .fixed(t.stage5_theta_rad * kRadToDeg, 12);
   line.text(" chi ").fixed(t.stage5_chi_rad * kRadToDeg, 12);
   line.emit();
   for (int i = 0; i < t.segment_count; ++i) {
@@ -166,8 +174,8 @@ bool run_executor() {
     ControlDeflection deflection;
     if (!ok(attitude_control_deflection(command, theta, theta_dot, &deflection))) ++failures;
     if (deflection.saturated) ++saturated;
-    for (double value : {command.theta_rad, command.theta_dot_rad_s, command.chi_rad, command.k_theta, command.k_q_s,
-                         deflection.deflection_rad}) {
+    for (double value : {command.theta_rad, command.theta_dot_rad_s, command.chi_rad, command.k_theta,
+                         command.k_q_s, deflection.deflection_rad}) {
       feed(&crc, value);
     }
     ++cycles;
@@ -178,7 +186,9 @@ bool run_executor() {
       line.text(" rate ").fixed(command.theta_dot_rad_s * kRadToDeg, 12, 16);
       line.text(" chi ").fixed(command.chi_rad * kRadToDeg, 9, 14);
       line.text(" K ").fixed(command.k_theta, 4).text(" ").fixed(command.k_q_s, 4);
-      line.text(" delta ").fixed(deflection.deflection_rad * kRadToDeg, 9, 14).text(deflection.saturated ? "*" : " ");
+      line.text(" delta ")
+          .fixed(deflection.deflection_rad * kRadToDeg, 9, 14)
+          .text(deflection.saturated ? "*" : " ");
       line.text(" ").bits(command.theta_rad);
       line.emit();
     }
@@ -200,7 +210,10 @@ bool run_trajectory() {
   status_line("TRAJ ", "fly_trajectory", flown);
   if (!ok(flown)) return false;
   TextLine line;
-  line.text("TRAJ points ").integer(g_trajectory.point_count).text(" stages ").integer(g_trajectory.stage_count);
+  line.text("TRAJ points ")
+      .integer(g_trajectory.point_count)
+      .text(" stages ")
+      .integer(g_trajectory.stage_count);
   line.emit();
   for (int k = 0; k < g_trajectory.stage_count; ++k) {
     const StageEvent& event = g_trajectory.stages[k];
@@ -299,7 +312,11 @@ bool run_optimization() {
   if (!ok(t.status) || t.point_count <= 0 || t.stage_count <= 0) return false;
   const StageEvent& last = t.stages[t.stage_count - 1];
   line.text("OPT final points ").integer(t.point_count).text(" stages ").integer(t.stage_count);
-  line.text(", burnout: end of stage ").integer(last.code).text(" (point ").integer(last.last_point).text(")");
+  line.text(", burnout: end of stage ")
+      .integer(last.code)
+      .text(" (point ")
+      .integer(last.last_point)
+      .text(")");
   line.emit();
   const TrajectoryPoint& p = t.points[last.last_point];
   opt_value("final_time_s", p.time_s);
@@ -317,7 +334,9 @@ bool run_optimization() {
 
 int run_flight_demo() {
   TextLine line;
-  line.text("EXEC TOLIP flight demo: guidance table loader, executor, control law; forward trajectory; optimization");
+  line.text(
+      "EXEC TOLIP flight demo: guidance table loader, executor, control law; forward trajectory; "
+      "optimization");
   line.emit();
   const Status built = build_embedded_mission(&g_mission);
   status_line("EXEC ", "embedded mission", built);

@@ -18,7 +18,7 @@
 namespace tolip::flight {
 Status build_embedded_mission(Mission* mission);            // generated
 Status build_embedded_optimization_case(Mission* mission);  // generated
-}
+}  // namespace tolip::flight
 
 namespace tolip {
 namespace {
@@ -48,18 +48,22 @@ TEST(EmbeddedMission, RebuildsTheDeckCaseFieldByField) {
   EXPECT_EQ(embedded->constraints.count, deck->constraints.count);
   expect_same(embedded->constraints.codes, deck->constraints.codes, "constraint codes");
   expect_same(embedded->constraints.desired, deck->constraints.desired, "desired");
-  expect_same(embedded->constraints.deadband_optimization, deck->constraints.deadband_optimization, "deadband");
-  expect_same(embedded->constraints.deadband_linearization, deck->constraints.deadband_linearization, "deadband");
+  expect_same(embedded->constraints.deadband_optimization, deck->constraints.deadband_optimization,
+              "deadband");
+  expect_same(embedded->constraints.deadband_linearization, deck->constraints.deadband_linearization,
+              "deadband");
   EXPECT_EQ(embedded->adjustable.count, deck->adjustable.count);
   expect_same(embedded->adjustable.codes, deck->adjustable.codes, "adjustable codes");
   expect_same(embedded->adjustable.weights, deck->adjustable.weights, "adjustable weights");
   EXPECT_EQ(embedded->linearization.segment_count, deck->linearization.segment_count);
   expect_same(embedded->linearization.coded_start_times, deck->linearization.coded_start_times, "TLIN");
   expect_same(embedded->linearization.segment_weights, deck->linearization.segment_weights, "ETALIN");
-  EXPECT_EQ(bits(embedded->convergence.initial_payoff_improvement), bits(deck->convergence.initial_payoff_improvement));
+  EXPECT_EQ(bits(embedded->convergence.initial_payoff_improvement),
+            bits(deck->convergence.initial_payoff_improvement));
   EXPECT_EQ(bits(embedded->convergence.stop_improvement), bits(deck->convergence.stop_improvement));
   EXPECT_EQ(embedded->convergence.max_forward_trajectories, deck->convergence.max_forward_trajectories);
-  EXPECT_EQ(embedded->convergence.max_linearization_iterations, deck->convergence.max_linearization_iterations);
+  EXPECT_EQ(embedded->convergence.max_linearization_iterations,
+            deck->convergence.max_linearization_iterations);
   expect_same(embedded->output.final_trajectory, deck->output.final_trajectory, "output");
   EXPECT_EQ(bits(embedded->misc.stage4_theta_rad), bits(deck->misc.stage4_theta_rad));
   EXPECT_EQ(bits(embedded->misc.nose_radius_ft), bits(deck->misc.nose_radius_ft));
@@ -92,14 +96,16 @@ TEST(EmbeddedMission, FliesEveryTrajectoryPointBitForBitLikeTheDeck) {
     EXPECT_EQ(bits(a->points[i].time_s), bits(b->points[i].time_s)) << i;
     EXPECT_EQ(bits(a->points[i].theta_rad), bits(b->points[i].theta_rad)) << i;
     EXPECT_EQ(bits(a->points[i].weight_lb), bits(b->points[i].weight_lb)) << i;
-    for (int k = 0; k < 6; ++k) ASSERT_EQ(bits(a->points[i].state[k]), bits(b->points[i].state[k])) << i << " " << k;
+    for (int k = 0; k < 6; ++k)
+      ASSERT_EQ(bits(a->points[i].state[k]), bits(b->points[i].state[k])) << i << " " << k;
   }
 }
 
 TEST(EmbeddedOptimizationCase, OptimizesBitForBitLikeTheDeck) {
   auto deck = std::make_unique<Mission>();
   ground::DeckError error;
-  ASSERT_TRUE(ground::load_toml_deck(TOLIP_FLIGHT_OPTIMIZATION_DECK, deck.get(), &error)) << error.to_string();
+  ASSERT_TRUE(ground::load_toml_deck(TOLIP_FLIGHT_OPTIMIZATION_DECK, deck.get(), &error))
+      << error.to_string();
   auto embedded = std::make_unique<Mission>();
   ASSERT_EQ(flight::build_embedded_optimization_case(embedded.get()), Status::kOk);
   EXPECT_STREQ(embedded->case_heading, deck->case_heading);

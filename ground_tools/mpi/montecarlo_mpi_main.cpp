@@ -94,8 +94,8 @@ int main(int argc, char** argv) {
   DispersedTrajectory nominal_values;
   Status status = prepare_monte_carlo(nominal, ws.get());
   if (ok(status)) {
-    status = record_dispersed_trajectory(*nominal.mission, ws->nominal_prepared, ws->nominal, ws->nominal, nullptr,
-                                         &nominal_values);
+    status = record_dispersed_trajectory(*nominal.mission, ws->nominal_prepared, ws->nominal, ws->nominal,
+                                         nullptr, &nominal_values);
   }
   if (!ok(status)) return fail(status_name(status));
 
@@ -103,7 +103,8 @@ int main(int argc, char** argv) {
   std::vector<double> mine;
   for (int i = rank; i < count; i += ranks) {
     DispersedTrajectory t;
-    (void)fly_monte_carlo_sample(nominal, *data, seed, static_cast<std::uint64_t>(i), nominal_values, ws.get(), &t);
+    (void)fly_monte_carlo_sample(nominal, *data, seed, static_cast<std::uint64_t>(i), nominal_values,
+                                 ws.get(), &t);
     mine.resize(mine.size() + kRecord);
     pack(t, mine.data() + mine.size() - kRecord);
   }
@@ -116,8 +117,8 @@ int main(int argc, char** argv) {
     at += samples * kRecord;
   }
   std::vector<double> all(rank == 0 ? static_cast<std::size_t>(count) * kRecord : 0);
-  MPI_Gatherv(mine.data(), static_cast<int>(mine.size()), MPI_DOUBLE, all.data(), counts.data(), offsets.data(),
-              MPI_DOUBLE, 0, MPI_COMM_WORLD);
+  MPI_Gatherv(mine.data(), static_cast<int>(mine.size()), MPI_DOUBLE, all.data(), counts.data(),
+              offsets.data(), MPI_DOUBLE, 0, MPI_COMM_WORLD);
   if (rank == 0) {
     MonteCarloSamples samples;
     samples.status = Status::kOk;
@@ -126,7 +127,8 @@ int main(int argc, char** argv) {
     for (int r = 0; r < ranks; ++r) {
       const double* block = all.data() + offsets[static_cast<std::size_t>(r)];
       for (int i = r, n = 0; i < count; i += ranks, ++n) {
-        unpack(block + static_cast<std::ptrdiff_t>(n) * kRecord, &samples.samples[static_cast<std::size_t>(i)]);
+        unpack(block + static_cast<std::ptrdiff_t>(n) * kRecord,
+               &samples.samples[static_cast<std::size_t>(i)]);
       }
     }
     std::cout << monte_carlo_json(samples, seed, kind).dump(1) << '\n';

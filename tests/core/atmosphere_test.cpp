@@ -36,7 +36,7 @@ TEST(Sec19Atmosphere, MatchesOracleAtEveryTestVector) {
     const double radius = v.at("earth_radius_for_geopotential_ft").get<double>();
     const AtmosphereSample s = sample_at(h, radius);
     const double got[6] = {s.density_slug_ft3, s.pressure_lbf_ft2, s.speed_of_sound_ft_s,
-                           s.ddensity_dh, s.dpressure_dh, s.dspeed_of_sound_dh};
+                           s.ddensity_dh,      s.dpressure_dh,     s.dspeed_of_sound_dh};
     const char* keys[6] = {"rho_slug_ft3", "p_lb_ft2", "a_fps", "drho_dh", "dp_dh", "da_dh"};
     for (int k = 0; k < 6; ++k) {
       const double truth = v.at(keys[k]).get<double>();
@@ -96,7 +96,7 @@ TEST(Sec19Atmosphere, MatchesThe1962StandardAtmosphereBelow20Km) {
 // +0.03%, -0.28%, +0.03%, -0.24% going up. Pinned so a changed table or formula shows here.
 TEST(Sec19Atmosphere, DensityJumpsAtLayerBasesAreThoseOfThePrintedTable) {
   const AtmosphereTable table;
-  const double expected_jump[kAtmosphereLayers] = {0.0,       -9.0647e-4, 5.3252e-4, 1.20792e-3,
+  const double expected_jump[kAtmosphereLayers] = {0.0,       -9.0647e-4,  5.3252e-4, 1.20792e-3,
                                                    3.1292e-4, -2.83939e-3, 3.3748e-4, -2.36612e-3};
   for (int b = 1; b < kAtmosphereLayers; ++b) {
     const double hb = table.base_geopotential_altitude_ft[b];
@@ -120,9 +120,9 @@ TEST(Sec19Atmosphere, ConvertsGeometricAltitudeLikeThePublished1962Table) {
 
 // Altitudes inside every layer (kept 100 ft away from the bases, where the one-sided layers meet)
 // and in the extensions below sea level and above the last base.
-constexpr double kProbeAltitudesFt[] = {-3000.0, 1000.0, 20000.0, 35000.0, 40000.0, 70000.0,
-                                        90000.0, 120000.0, 150000.0, 160000.0, 200000.0,
-                                        250000.0, 270000.0, 300000.0, 330000.0, 360000.0, 420000.0};
+constexpr double kProbeAltitudesFt[] = {-3000.0,  1000.0,   20000.0,  35000.0,  40000.0,  70000.0,
+                                        90000.0,  120000.0, 150000.0, 160000.0, 200000.0, 250000.0,
+                                        270000.0, 300000.0, 330000.0, 360000.0, 420000.0};
 
 TEST(Sec19Atmosphere, DerivativesMatchCentralDifferencesInGeopotentialAltitude) {
   const double step_ft = 1.0;

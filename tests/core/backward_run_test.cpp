@@ -62,18 +62,21 @@ TEST(Sec5Adjoint, StatePerturbationsAtSeveralTimesMatchCentralDifferences) {
   for (double t : times) {
     int point = 0;
     for (int i = 1; i < f.nominal.point_count; ++i) {
-      if (std::fabs(f.nominal.points[i].time_s - t) < std::fabs(f.nominal.points[point].time_s - t)) point = i;
+      if (std::fabs(f.nominal.points[i].time_s - t) < std::fabs(f.nominal.points[point].time_s - t))
+        point = i;
     }
     for (int i = 0; i < 6; ++i) {
       FlightInputs inputs;
       inputs.program = &f.program;
       inputs.injection_point = point;
       double fd[kTerminalCount], predicted[kTerminalCount];
-      central_difference([&](double sign, Trajectory* out) {
-        inputs.injection = StateVector::Zero();
-        inputs.injection[i] = sign * sizes[i];
-        return fly_trajectory(f.mission, f.prepared, inputs, out);
-      }, fd);
+      central_difference(
+          [&](double sign, Trajectory* out) {
+            inputs.injection = StateVector::Zero();
+            inputs.injection[i] = sign * sizes[i];
+            return fly_trajectory(f.mission, f.prepared, inputs, out);
+          },
+          fd);
       for (int j = 0; j < kTerminalCount; ++j) predicted[j] = f.backward.lambda[point](i, j) * sizes[i];
       char what[64];
       std::snprintf(what, sizeof what, "t=%.2f dX[%d]", f.nominal.points[point].time_s, i);
@@ -84,7 +87,8 @@ TEST(Sec5Adjoint, StatePerturbationsAtSeveralTimesMatchCentralDifferences) {
 
 TEST(Sec5Adjoint, ThetaOverShortWindowsMatchesCentralDifferences) {
   Fixture& f = fixture();
-  const double windows[][2] = {{5.0, 8.0}, {46.0, 49.0}, {55.0, 58.0}, {80.0, 86.0}, {100.0, 104.0}, {125.0, 130.0}};
+  const double windows[][2] = {{5.0, 8.0},   {46.0, 49.0},   {55.0, 58.0},
+                               {80.0, 86.0}, {100.0, 104.0}, {125.0, 130.0}};
   const double d_theta = 1e-3;  // rad
   for (const auto& w : windows) {
     double predicted[kTerminalCount] = {};
@@ -95,14 +99,16 @@ TEST(Sec5Adjoint, ThetaOverShortWindowsMatchesCentralDifferences) {
     }
     static ControlProgram changed;
     double fd[kTerminalCount];
-    central_difference([&](double sign, Trajectory* out) {
-      changed = f.program;
-      for (int i = 0; i < f.nominal.point_count; ++i) {
-        const double t = f.nominal.points[i].time_s;
-        if (t >= w[0] && t <= w[1]) changed.theta_rad[i] += sign * d_theta;
-      }
-      return fly_trajectory(f.mission, f.prepared, changed, out);
-    }, fd);
+    central_difference(
+        [&](double sign, Trajectory* out) {
+          changed = f.program;
+          for (int i = 0; i < f.nominal.point_count; ++i) {
+            const double t = f.nominal.points[i].time_s;
+            if (t >= w[0] && t <= w[1]) changed.theta_rad[i] += sign * d_theta;
+          }
+          return fly_trajectory(f.mission, f.prepared, changed, out);
+        },
+        fd);
     char what[64];
     std::snprintf(what, sizeof what, "theta %.0f-%.0f s", w[0], w[1]);
     expect_agreement(what, predicted, fd);
@@ -117,33 +123,40 @@ TEST(Sec9Adjoint, PayloadSpunAttitudeAndCoastSensitivitiesMatchCentralDifference
 
   // Payload (lb): the thrust tables stay those of the case (Sec. 14 runs once per case).
   const double d_payload = 1.0;
-  central_difference([&](double sign, Trajectory* out) {
-    changed = f.mission;
-    changed.vehicle.payload_lb += sign * d_payload;
-    return fly_trajectory(changed, f.prepared, f.program, out);
-  }, fd);
+  central_difference(
+      [&](double sign, Trajectory* out) {
+        changed = f.mission;
+        changed.vehicle.payload_lb += sign * d_payload;
+        return fly_trajectory(changed, f.prepared, f.program, out);
+      },
+      fd);
   for (int j = 0; j < kTerminalCount; ++j) predicted[j] = f.backward.payload(j) * d_payload;
   expect_agreement("payload 1 lb", predicted, fd);
 
   const double d_theta4 = 1e-3;
-  central_difference([&](double sign, Trajectory* out) {
-    changed = f.mission;
-    changed.misc.stage4_theta_rad += sign * d_theta4;
-    return fly_trajectory(changed, f.prepared, f.program, out);
-  }, fd);
+  central_difference(
+      [&](double sign, Trajectory* out) {
+        changed = f.mission;
+        changed.misc.stage4_theta_rad += sign * d_theta4;
+        return fly_trajectory(changed, f.prepared, f.program, out);
+      },
+      fd);
   for (int j = 0; j < kTerminalCount; ++j) predicted[j] = f.backward.spun_theta(j) * d_theta4;
   expect_agreement("stage-4 theta 1 mrad", predicted, fd);
 
   const double d_coast = 0.5;
-  central_difference([&](double sign, Trajectory* out) {
-    changed = f.mission;
-    changed.vehicle.stages[stage_index(8)].duration_s += sign * d_coast;
-    changed_prepared = f.prepared;
-    Status s = rebuild_timeline(changed, &changed_prepared);
-    if (!ok(s)) return s;
-    return fly_trajectory(changed, changed_prepared, f.program, out);
-  }, fd);
-  for (int j = 0; j < kTerminalCount; ++j) predicted[j] = f.backward.coast_duration[stage_index(8)](j) * d_coast;
+  central_difference(
+      [&](double sign, Trajectory* out) {
+        changed = f.mission;
+        changed.vehicle.stages[stage_index(8)].duration_s += sign * d_coast;
+        changed_prepared = f.prepared;
+        Status s = rebuild_timeline(changed, &changed_prepared);
+        if (!ok(s)) return s;
+        return fly_trajectory(changed, changed_prepared, f.program, out);
+      },
+      fd);
+  for (int j = 0; j < kTerminalCount; ++j)
+    predicted[j] = f.backward.coast_duration[stage_index(8)](j) * d_coast;
   expect_agreement("coast 8 +0.5 s", predicted, fd);
 }
 

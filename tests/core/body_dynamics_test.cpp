@@ -68,8 +68,8 @@ MomentConditions conditions_at(const Case& c, double stage_time_s, double mach, 
 
 // Eq. 7-4 (the printed left side theta-dot is theta-ddot, from 7-1..7-3):
 // theta-ddot = K_theta M_delta (theta_c - theta) - K_q M_delta theta-dot + M_alpha theta - M_alpha gamma.
-double moment_balance_residual(const AutopilotGains& g, const UnitMoments& m, double theta_c, double theta_c_dot,
-                               double theta, double gamma) {
+double moment_balance_residual(const AutopilotGains& g, const UnitMoments& m, double theta_c,
+                               double theta_c_dot, double theta, double gamma) {
   const double theta_dot = theta_c_dot;  // steady state
   return g.position_gain * m.m_delta_lbf_ft_per_rad * (theta_c - theta) -
          g.rate_gain_s * m.m_delta_lbf_ft_per_rad * theta_dot + m.m_alpha_lbf_ft_per_rad * theta -
@@ -95,13 +95,16 @@ TEST(BodyDynamics, Sec7_SteadyStateAttitudeSatisfiesMomentBalance) {
       ASSERT_FALSE(a.follows_command);
       // Residuals in angular-acceleration units: divided by the moment scale K_theta M_delta.
       const double scale = g.position_gain * m.m_delta_lbf_ft_per_rad;
-      const double pitch = moment_balance_residual(g, m, command.theta_rad, command.theta_rate_rad_s, a.theta_rad,
-                                                   v.gamma_w_rad) / scale;
-      const double yaw = moment_balance_residual(g, m, command.chi_rad, 0.0, a.chi_rad, v.azimuth_w_rad) / scale;
+      const double pitch = moment_balance_residual(g, m, command.theta_rad, command.theta_rate_rad_s,
+                                                   a.theta_rad, v.gamma_w_rad) /
+                           scale;
+      const double yaw =
+          moment_balance_residual(g, m, command.chi_rad, 0.0, a.chi_rad, v.azimuth_w_rad) / scale;
       worst = std::fmax(worst, std::fmax(std::fabs(pitch), std::fabs(yaw)));
       // Eq. 7-1 in the steady state: M_delta delta + M_alpha alpha = 0 with delta of eq. 7-3.
       const double eq71 = (m.m_delta_lbf_ft_per_rad * a.pitch_deflection_rad +
-                           m.m_alpha_lbf_ft_per_rad * (a.theta_rad - v.gamma_w_rad)) / scale;
+                           m.m_alpha_lbf_ft_per_rad * (a.theta_rad - v.gamma_w_rad)) /
+                          scale;
       EXPECT_LT(std::fabs(eq71), 1e-12);
     }
   }
@@ -137,7 +140,8 @@ TEST(BodyDynamics, Sec11_UnitMomentsEqualTheFormulasWithStationsInFeet) {
   EXPECT_NEAR(m.cg_station_ft, xcg, 1e-12);
   EXPECT_NEAR(m.control_lever_ft, xd - xcg, 1e-12);
   const double m_alpha = (cm_alpha * l - cn_alpha * (xfs - xcg)) * q * s;
-  const double m_delta = 2.0 * ((-cm_delta * l + cn_delta * (xfs - xcg)) * q * s + ktv * mc.vacuum_thrust_lbf * (xd - xcg));
+  const double m_delta =
+      2.0 * ((-cm_delta * l + cn_delta * (xfs - xcg)) * q * s + ktv * mc.vacuum_thrust_lbf * (xd - xcg));
   EXPECT_NEAR(m.m_alpha_lbf_ft_per_rad, m_alpha, 1e-9 * std::fabs(m_alpha));
   EXPECT_NEAR(m.m_delta_lbf_ft_per_rad, m_delta, 1e-9 * std::fabs(m_delta));
 }
@@ -231,7 +235,8 @@ TEST(BodyDynamics, Sec7_GuardsNeverLetNaNOut) {
   EXPECT_EQ(steady_state_attitude(AutopilotGains{1.0, 0.35}, balanced, command, v, &a),
             Status::kBodyDynamicsNotTrimmable);
   EXPECT_TRUE(a.follows_command);
-  EXPECT_TRUE(std::isfinite(a.theta_rad) && std::isfinite(a.chi_rad) && std::isfinite(a.pitch_deflection_rad));
+  EXPECT_TRUE(std::isfinite(a.theta_rad) && std::isfinite(a.chi_rad) &&
+              std::isfinite(a.pitch_deflection_rad));
   // Control station at the c.g.: no control force, no division by zero.
   UnitMoments at_cg = balanced;
   at_cg.control_lever_ft = 0.0;
@@ -373,7 +378,8 @@ TEST(BodyDynamics, Sec11_ForcesEnterVdotGammadotPsidotAsPrinted) {
   in.conditions = conditions_at(c, 30.25 - stage.start_s, six.mach, six.dynamic_pressure_lbf_ft2);
   in.command.theta_rad = six.theta_command_rad;
   in.command.theta_rate_rad_s = -1.0 * kDeg;
-  in.normal_force_lbf_per_rad = six.dynamic_pressure_lbf_ft2 * c.mission.vehicle.stages[0].reference_area_ft2 *
+  in.normal_force_lbf_per_rad = six.dynamic_pressure_lbf_ft2 *
+                                c.mission.vehicle.stages[0].reference_area_ft2 *
                                 c.mission.vehicle.lift_curve_slope_per_rad(six.mach);
   in.platform_to_local = cm;
   BodyDynamicsResult r;
@@ -423,11 +429,12 @@ void report_differences(const char* name, const Pair& pair) {
   for (int code : {1, 6, 4}) {
     const TrajectoryPoint& a = end_of_stage(pair.point_mass, code);
     const TrajectoryPoint& b = end_of_stage(pair.six_d, code);
-    std::printf("[ figures ] %s, end of stage %d: 6D - point mass: V %+.2f ft/s, altitude %+.1f ft, "
-                "gamma %+.4f deg (point mass V %.2f ft/s, h %.1f ft, gamma %.4f deg)\n",
-                name, code, b.state[kStateV] - a.state[kStateV], b.altitude_ft - a.altitude_ft,
-                (b.state[kStateGamma] - a.state[kStateGamma]) / kDeg, a.state[kStateV], a.altitude_ft,
-                a.state[kStateGamma] / kDeg);
+    std::printf(
+        "[ figures ] %s, end of stage %d: 6D - point mass: V %+.2f ft/s, altitude %+.1f ft, "
+        "gamma %+.4f deg (point mass V %.2f ft/s, h %.1f ft, gamma %.4f deg)\n",
+        name, code, b.state[kStateV] - a.state[kStateV], b.altitude_ft - a.altitude_ft,
+        (b.state[kStateGamma] - a.state[kStateGamma]) / kDeg, a.state[kStateV], a.altitude_ft,
+        a.state[kStateGamma] / kDeg);
   }
   double worst_lag = 0.0, worst_alpha_pm = 0.0, worst_alpha_6d = 0.0, worst_delta = 0.0;
   for (int i = 0; i < pair.six_d.point_count; ++i) {
@@ -438,13 +445,15 @@ void report_differences(const char* name, const Pair& pair) {
     worst_alpha_pm = std::fmax(worst_alpha_pm, std::fabs(pair.point_mass.points[i].alpha_rad));
     worst_delta = std::fmax(worst_delta, std::fabs(static_cast<double>(p.control_deflection_rad)));
   }
-  std::printf("[ figures ] %s, stage 1 + coast 6: max |theta - theta_c| %.3f deg, max |alpha| 6D %.3f deg "
-              "(point mass %.3f deg), max |delta| %.3f deg\n",
-              name, worst_lag / kDeg, worst_alpha_6d / kDeg, worst_alpha_pm / kDeg, worst_delta / kDeg);
+  std::printf(
+      "[ figures ] %s, stage 1 + coast 6: max |theta - theta_c| %.3f deg, max |alpha| 6D %.3f deg "
+      "(point mass %.3f deg), max |delta| %.3f deg\n",
+      name, worst_lag / kDeg, worst_alpha_6d / kDeg, worst_alpha_pm / kDeg, worst_delta / kDeg);
 }
 
 TEST(BodyDynamics, Sec11_Reference6DTrajectoryFliesToTheEnd) {
-  for (test::ReferenceProgram program : {test::ReferenceProgram::kInitialNominal, test::ReferenceProgram::kOptimum}) {
+  for (test::ReferenceProgram program :
+       {test::ReferenceProgram::kInitialNominal, test::ReferenceProgram::kOptimum}) {
     const Pair& pair = flown_pair(program);
     const char* name = program == test::ReferenceProgram::kOptimum ? "reference optimum" : "block-40 program";
     ASSERT_EQ(pair.six_d.status, Status::kOk) << name;
@@ -460,9 +469,10 @@ TEST(BodyDynamics, Sec11_Reference6DTrajectoryFliesToTheEnd) {
     }
     EXPECT_GT(six_d_points, 40);
     OrbitElements elements;
-    EXPECT_EQ(compute_orbit_elements(reference_case(program).mission.constants, pair.six_d.final_point().state,
-                                     reference_case(program).mission.launch.launch_space_age_date_days, &elements),
-              Status::kOk);
+    EXPECT_EQ(
+        compute_orbit_elements(reference_case(program).mission.constants, pair.six_d.final_point().state,
+                               reference_case(program).mission.launch.launch_space_age_date_days, &elements),
+        Status::kOk);
     report_differences(name, pair);
     // The weathercocking reduces the flown alpha in stage 1: the 6D vehicle turns less.
     const TrajectoryPoint& a = end_of_stage(pair.point_mass, 1);
@@ -497,7 +507,8 @@ TEST(BodyDynamics, Sec11_OnlyStageOneAndFollowingCoast) {
     EXPECT_FALSE(p.body_dynamics);
     EXPECT_NEAR(p.theta_rad, q.theta_rad, 1e-12) << i;
     EXPECT_EQ(p.chi_rad, q.chi_rad) << i;
-    EXPECT_EQ(p.theta_rad, static_cast<double>(p.theta_command_rad) + (p.theta_rad - static_cast<double>(p.theta_command_rad)));
+    EXPECT_EQ(p.theta_rad, static_cast<double>(p.theta_command_rad) +
+                               (p.theta_rad - static_cast<double>(p.theta_command_rad)));
     for (int j = 0; j < 6; ++j) {
       const double scale = std::fmax(1.0, std::fabs(p.state[j]));
       worst = std::fmax(worst, std::fabs(p.state[j] - q.state[j]) / scale);
@@ -592,10 +603,12 @@ TEST(BodyDynamics, Sec10_BackwardRunLinearizesTheSixDModel) {
   }
   ASSERT_EQ(run_backward(c.mission, c.prepared, nominal, kCount, terminals, &backward), Status::kOk);
 
-  auto check = [&](const char* what, const double predicted[kCount], const StateVector& plus, const StateVector& minus) {
+  auto check = [&](const char* what, const double predicted[kCount], const StateVector& plus,
+                   const StateVector& minus) {
     for (int j = 0; j < kCount; ++j) {
       const double fd = (plus[components[j]] - minus[components[j]]) / 2.0;
-      std::printf("[ figures ] 6D adjoint %-16s X[%d]: adjoint % .6e  fd % .6e\n", what, components[j], predicted[j], fd);
+      std::printf("[ figures ] 6D adjoint %-16s X[%d]: adjoint % .6e  fd % .6e\n", what, components[j],
+                  predicted[j], fd);
       EXPECT_LE(std::fabs(predicted[j] - fd), 1e-4 * std::fabs(fd) + 1e-12) << what << " " << j;
     }
   };
@@ -628,7 +641,8 @@ TEST(BodyDynamics, Sec10_BackwardRunLinearizesTheSixDModel) {
   // dgamma = 1e-4 rad at 30 s.
   int point = 0;
   for (int i = 1; i < nominal.point_count; ++i) {
-    if (std::fabs(nominal.points[i].time_s - 30.0) < std::fabs(nominal.points[point].time_s - 30.0)) point = i;
+    if (std::fabs(nominal.points[i].time_s - 30.0) < std::fabs(nominal.points[point].time_s - 30.0))
+      point = i;
   }
   ASSERT_TRUE(nominal.points[point].body_dynamics);
   double predicted[kCount];

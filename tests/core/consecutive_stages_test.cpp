@@ -121,8 +121,8 @@ TEST(Sec22Block5ConsecutiveStages, SequenceWithoutTheCoastAfterStage1FliesWithTh
   EXPECT_EQ(f.prepared.timeline[1].code, 2);
   EXPECT_EQ(f.prepared.timeline[1].start_s, f.prepared.timeline[0].duration_s);
   std::printf("stage 1 burnout %.3f s, %.3f lb; stage 2 ignition %.3f lb; final V %.3f ft/s, h %.1f ft\n",
-              burnout.time_s, stage1.burnout_weight_lb, ignition.weight_lb, f.nominal.final_point().state[kStateV],
-              f.nominal.final_point().altitude_ft);
+              burnout.time_s, stage1.burnout_weight_lb, ignition.weight_lb,
+              f.nominal.final_point().state[kStateV], f.nominal.final_point().altitude_ft);
 }
 
 // An epsilon coast against no coast: both fly the same per-point pitch program (the epsilon
@@ -167,8 +167,8 @@ TEST(Sec22Block5ConsecutiveStages, AbsentCoastAgreesWithAnEpsilonCoastToFirstOrd
     const double without = terminal(absent.mission.constants, absent_flight.final_point().state, j);
     const double predicted = -eps_backward.coast_duration[stage_index(6)](j) * epsilon;
     const double difference = without - with_eps;
-    std::printf("%-12s eps coast % .12e  absent % .12e  diff % .3e  predicted % .3e\n", kTerminalNames[j], with_eps,
-                without, difference, predicted);
+    std::printf("%-12s eps coast % .12e  absent % .12e  diff % .3e  predicted % .3e\n", kTerminalNames[j],
+                with_eps, without, difference, predicted);
     EXPECT_NEAR(difference, predicted, 0.02 * std::fabs(predicted) + 1e-10 * std::fabs(with_eps) + 1e-12)
         << kTerminalNames[j];
   }
@@ -195,14 +195,17 @@ TEST(Sec5AdjointConsecutiveStages, StatePerturbationsAcrossTheStage1To2BoundaryM
       inputs.program = &f.program;
       inputs.injection_point = point;
       double fd[kTerminalCount], predicted[kTerminalCount];
-      central_difference([&](double sign, Trajectory* out) {
-        inputs.injection = StateVector::Zero();
-        inputs.injection[i] = sign * sizes[i];
-        return fly_trajectory(f.mission, f.prepared, inputs, out);
-      }, fd);
+      central_difference(
+          [&](double sign, Trajectory* out) {
+            inputs.injection = StateVector::Zero();
+            inputs.injection[i] = sign * sizes[i];
+            return fly_trajectory(f.mission, f.prepared, inputs, out);
+          },
+          fd);
       for (int j = 0; j < kTerminalCount; ++j) predicted[j] = f.backward.lambda[point](i, j) * sizes[i];
       char what[64];
-      std::snprintf(what, sizeof what, "pt %d (stage %d) dX[%d]", point, f.nominal.points[point].stage_code, i);
+      std::snprintf(what, sizeof what, "pt %d (stage %d) dX[%d]", point, f.nominal.points[point].stage_code,
+                    i);
       expect_agreement(what, predicted, fd);
     }
   }
@@ -228,23 +231,27 @@ TEST(Sec5AdjointConsecutiveStages, PitchAcrossTheBoundaryAndPayloadMatchCentralD
     if (t < boundary_s - 3.0 || t > boundary_s + 3.0) continue;
     for (int j = 0; j < kTerminalCount; ++j) predicted[j] += f.backward.theta_gradient[i](j) * d_theta;
   }
-  central_difference([&](double sign, Trajectory* out) {
-    changed = f.program;
-    for (int i = 0; i < f.nominal.point_count; ++i) {
-      const double t = f.nominal.points[i].time_s;
-      if (t >= boundary_s - 3.0 && t <= boundary_s + 3.0) changed.theta_rad[i] += sign * d_theta;
-    }
-    return fly_trajectory(f.mission, f.prepared, changed, out);
-  }, fd);
+  central_difference(
+      [&](double sign, Trajectory* out) {
+        changed = f.program;
+        for (int i = 0; i < f.nominal.point_count; ++i) {
+          const double t = f.nominal.points[i].time_s;
+          if (t >= boundary_s - 3.0 && t <= boundary_s + 3.0) changed.theta_rad[i] += sign * d_theta;
+        }
+        return fly_trajectory(f.mission, f.prepared, changed, out);
+      },
+      fd);
   expect_agreement("theta +-3 s about staging", predicted, fd);
 
   // Payload: the mass adjoint carried through the jettison at the boundary.
   const double d_payload = 1.0;
-  central_difference([&](double sign, Trajectory* out) {
-    heavier = f.mission;
-    heavier.vehicle.payload_lb += sign * d_payload;
-    return fly_trajectory(heavier, f.prepared, f.program, out);
-  }, fd);
+  central_difference(
+      [&](double sign, Trajectory* out) {
+        heavier = f.mission;
+        heavier.vehicle.payload_lb += sign * d_payload;
+        return fly_trajectory(heavier, f.prepared, f.program, out);
+      },
+      fd);
   for (int j = 0; j < kTerminalCount; ++j) predicted[j] = f.backward.payload(j) * d_payload;
   expect_agreement("payload 1 lb", predicted, fd);
 }

@@ -39,7 +39,8 @@ StateVector state_from_inertial(const Constants& c, double r, double lat, double
                                 double gamma_i, double psi_i) {
   const double up = v_i * std::sin(gamma_i);
   const double north = v_i * std::cos(gamma_i) * std::cos(psi_i);
-  const double east = v_i * std::cos(gamma_i) * std::sin(psi_i) - c.earth_rotation_rate_rad_s * r * std::cos(lat);
+  const double east =
+      v_i * std::cos(gamma_i) * std::sin(psi_i) - c.earth_rotation_rate_rad_s * r * std::cos(lat);
   StateVector x;
   x << std::sqrt(up * up + north * north + east * east), std::atan2(up, std::hypot(north, east)), r,
       std::atan2(east, north), lat, tau;
@@ -147,7 +148,7 @@ double central_difference(const std::function<double(const Vector7&)>& f, const 
 }
 
 struct Agreement {
-  double max_rel = 0.0;   // over components well above the difference's noise
+  double max_rel = 0.0;  // over components well above the difference's noise
   bool ok = true;
   std::string detail;
 };
@@ -216,8 +217,9 @@ double expect_partials_match(int code_number, const std::vector<NamedState>& sta
     EXPECT_TRUE(a.ok) << "code " << code_number << " at " << s.name << a.detail;
     worst = std::max(worst, a.max_rel);
   }
-  std::printf("[ figures  ] Sec5 ICS code %3d: analytic vs central differences, max rel err %.2e over %zu states\n",
-              code_number, worst, states.size());
+  std::printf(
+      "[ figures  ] Sec5 ICS code %3d: analytic vs central differences, max rel err %.2e over %zu states\n",
+      code_number, worst, states.size());
   return worst;
 }
 
@@ -367,7 +369,8 @@ TEST(Sec5Ics, PayloadPartialIsG0PerSlugOfFinalMass) {
   EXPECT_EQ(g(kAdjointMass), 32.174);
   EXPECT_EQ(g.head<6>().norm(), 0.0);
   double w = 0.0;
-  ASSERT_EQ(constraint_value(c, reference_launch(), code, make_point(c, with_mass(oracle_state(0))), &w), Status::kOk);
+  ASSERT_EQ(constraint_value(c, reference_launch(), code, make_point(c, with_mass(oracle_state(0))), &w),
+            Status::kOk);
   EXPECT_DOUBLE_EQ(w, 32.174 * kMass_slug);
 }
 
@@ -392,8 +395,12 @@ TEST(Sec5Ics, VelocityOverCircularPartialsMatchCentralDifferences) {
 }
 
 TEST(Sec5Ics, RadiusPartialsMatchCentralDifferences) { expect_partials_match(4, orbital_states()); }
-TEST(Sec5Ics, AerodynamicVelocityPartialsMatchCentralDifferences) { expect_partials_match(5, orbital_states()); }
-TEST(Sec5Ics, AerodynamicPathAnglePartialsMatchCentralDifferences) { expect_partials_match(6, orbital_states()); }
+TEST(Sec5Ics, AerodynamicVelocityPartialsMatchCentralDifferences) {
+  expect_partials_match(5, orbital_states());
+}
+TEST(Sec5Ics, AerodynamicPathAnglePartialsMatchCentralDifferences) {
+  expect_partials_match(6, orbital_states());
+}
 
 TEST(Sec5Ics, AltitudePartialsMatchCentralDifferences) {
   std::vector<NamedState> s = orbital_states();
@@ -445,8 +452,9 @@ TEST(Sec5Ics, TotalHeatingIsTheCallersIntegralWithZeroInitialAdjoint) {
   ConstraintCode code;
   ASSERT_EQ(decode_constraint_code(14, &code), Status::kOk);
   double q = 0.0;
-  ASSERT_EQ(constraint_value(c, reference_launch(), code, make_point(c, with_mass(oracle_state(1)), 987.0), &q),
-            Status::kOk);
+  ASSERT_EQ(
+      constraint_value(c, reference_launch(), code, make_point(c, with_mass(oracle_state(1)), 987.0), &q),
+      Status::kOk);
   EXPECT_EQ(q, 987.0);
 }
 
@@ -520,15 +528,16 @@ TEST(Sec5Ics, ValuesEqualTheOrbitElementsModuleAndTheOracle) {
     ASSERT_EQ(compute_orbit_elements(c, x, launch.launch_space_age_date_days, &e), Status::kOk);
     EXPECT_EQ(value(1, x), e.inertial.velocity_ft_s);
     EXPECT_EQ(value(2, x), e.inertial.flight_path_angle_rad);
-    EXPECT_EQ(value(3, x), e.inertial.velocity_ft_s - std::sqrt(c.gravitational_parameter_ft3_s2 / x(kStateR)));
+    EXPECT_EQ(value(3, x),
+              e.inertial.velocity_ft_s - std::sqrt(c.gravitational_parameter_ft3_s2 / x(kStateR)));
     EXPECT_EQ(value(4, x), x(kStateR));
     EXPECT_EQ(value(5, x), x(kStateV));
     EXPECT_EQ(value(6, x), x(kStateGamma));
     EXPECT_EQ(value(7, x), oblate_altitude_ft(c, x(kStateR), x(kStateLambda)));
-    EXPECT_EQ(value(8, x), kNauticalMilesPerRadian *
-                               downrange_angle_rad(launch.geocentric_latitude_rad, launch.longitude_rad,
-                                                   x(kStateLambda),
-                                                   x(kStateTau) - c.earth_rotation_rate_rad_s * kTimeFromLaunch_s));
+    EXPECT_EQ(value(8, x),
+              kNauticalMilesPerRadian *
+                  downrange_angle_rad(launch.geocentric_latitude_rad, launch.longitude_rad, x(kStateLambda),
+                                      x(kStateTau) - c.earth_rotation_rate_rad_s * kTimeFromLaunch_s));
     EXPECT_EQ(value(9, x), e.twice_energy_ft2_s2);
     EXPECT_EQ(value(10, x), e.inclination_rad);
     EXPECT_EQ(value(11, x), e.perigee_radius_ft);
@@ -540,11 +549,13 @@ TEST(Sec5Ics, ValuesEqualTheOrbitElementsModuleAndTheOracle) {
     EXPECT_NEAR(value(9, x), want.at("twoE_ft2_per_s2").get<double>(), 1e-9 * std::fabs(value(9, x)));
     EXPECT_NEAR(value(10, x) * kRadToDeg, want.at("inclination_deg").get<double>(), 1e-9);
     EXPECT_NEAR(value(11, x), want.at("perigee_radius_ft").get<double>(), 1e-9 * value(11, x));
-    EXPECT_NEAR(std::remainder(value(12, x) * kRadToDeg - want.at("longitude_of_node_deg").get<double>(), 360.0),
-                0.0, 1e-9);
+    EXPECT_NEAR(
+        std::remainder(value(12, x) * kRadToDeg - want.at("longitude_of_node_deg").get<double>(), 360.0), 0.0,
+        1e-9);
     if (n != 0) {
-      EXPECT_NEAR(std::remainder(value(13, x) * kRadToDeg - want.at("argument_of_perigee_deg").get<double>(), 360.0),
-                  0.0, 1e-9);
+      EXPECT_NEAR(
+          std::remainder(value(13, x) * kRadToDeg - want.at("argument_of_perigee_deg").get<double>(), 360.0),
+          0.0, 1e-9);
     }
   }
   // Circular-orbit constraint of the reference case (code 3) is ~0 at its burnout.
@@ -587,7 +598,8 @@ TEST(Sec5Ics, NodeLongitudeLaunchTimePartialIsTheHergetSiderealRate) {
     ConstraintCode code;
     ASSERT_EQ(decode_constraint_code(code_number, &code), Status::kOk);
     EXPECT_EQ(constraint_partial_wrt_launch_time(code), rate);
-    const ConstraintPoint p = make_point(c, with_mass(code_number == 12 ? oracle_state(2) : hyperbolic_north().x));
+    const ConstraintPoint p =
+        make_point(c, with_mass(code_number == 12 ? oracle_state(2) : hyperbolic_north().x));
     const double step_s = 10.0;
     auto at = [&](double dt_s) {
       LaunchConditions l = launch;
@@ -610,8 +622,10 @@ TEST(Sec5Ics, NodeLongitudeLaunchTimePartialIsTheHergetSiderealRate) {
   EXPECT_GT(std::fabs(rate * kRadToDeg - 4.1068643e-3) / 4.1068643e-3, 0.01);
   // Within 1e-6 of the Earth rate CT1(1) that Addendum H prints for d alpha_eH / d t_G.
   EXPECT_NEAR(rate, c.earth_rotation_rate_rad_s, 1e-6 * rate);
-  std::printf("[ figures  ] Sec5 ICS d Omega_e / d t_launch = %.10e rad/s (%.9e deg/s), vs launch-date difference %.2e rel\n",
-              rate, rate * kRadToDeg, worst);
+  std::printf(
+      "[ figures  ] Sec5 ICS d Omega_e / d t_launch = %.10e rad/s (%.9e deg/s), vs launch-date difference "
+      "%.2e rel\n",
+      rate, rate * kRadToDeg, worst);
 }
 
 // ---- The printed orbit-element partials, differenced in the inertial variables -------------------
@@ -665,8 +679,8 @@ Agreement compare_in_q(const Constants& c, int code_number, const Vector6& q, co
     EXPECT_EQ(compute_orbit_elements(c, x, reference_launch().launch_space_age_date_days, &e), Status::kOk);
     noise_factor = 1.0 / std::min(e.eccentricity, 1.0);
   }
-  return compare(Eigen::VectorXd(printed), Eigen::VectorXd(fd), value_at_q(c, code_number, q), kQStep, kQTypical,
-                 1e-6, noise_factor);
+  return compare(Eigen::VectorXd(printed), Eigen::VectorXd(fd), value_at_q(c, code_number, q), kQStep,
+                 kQTypical, 1e-6, noise_factor);
 }
 
 // The printed partials of Sec. 5 and Addendum H with respect to q at a state.
@@ -674,11 +688,11 @@ struct Printed {
   Vector6 perigee_radius = Vector6::Zero();
   Vector6 inclination = Vector6::Zero();
   Vector6 node = Vector6::Zero();
-  Vector6 argument_of_perigee_sec5 = Vector6::Zero();       // d/dlambda with cos lambda cos lambda
-  Vector6 argument_of_perigee_addendum = Vector6::Zero();   // d/dlambda with sin lambda cos lambda
+  Vector6 argument_of_perigee_sec5 = Vector6::Zero();      // d/dlambda with cos lambda cos lambda
+  Vector6 argument_of_perigee_addendum = Vector6::Zero();  // d/dlambda with sin lambda cos lambda
   Vector6 excess_velocity = Vector6::Zero();
   Vector6 declination = Vector6::Zero();
-  Vector6 right_ascension = Vector6::Zero();                // as printed, with the extra d/dr term
+  Vector6 right_ascension = Vector6::Zero();  // as printed, with the extra d/dr term
   Vector6 right_ascension_without_extra = Vector6::Zero();
   double extra_dr_term = 0.0;
 };
@@ -687,7 +701,8 @@ Printed printed_partials(const Constants& c, const StateVector& x) {
   const double mu = c.gravitational_parameter_ft3_s2;
   OrbitElements e;
   EXPECT_EQ(compute_orbit_elements(c, x, reference_launch().launch_space_age_date_days, &e), Status::kOk);
-  const double vi = e.inertial.velocity_ft_s, gi = e.inertial.flight_path_angle_rad, psii = e.inertial.azimuth_rad;
+  const double vi = e.inertial.velocity_ft_s, gi = e.inertial.flight_path_angle_rad,
+               psii = e.inertial.azimuth_rad;
   const double r = x(kStateR), lat = x(kStateLambda);
   const double h = e.angular_momentum_ft2_s, rp = e.perigee_radius_ft, two_e = e.twice_energy_ft2_s2;
   const double inc = e.inclination_rad;
@@ -768,13 +783,14 @@ double max_rel_err(const Vector6& a, const Vector6& b) {
 TEST(Sec5Ics, PrintedOrbitElementPartialsAreCorrectExceptTheDocumentedMisprints) {
   const Constants c;
   double worst_correct = 0.0;
-  auto check = [&](int code, const Vector6& q, const Vector6& printed, const std::string& what, Vector6* fd = nullptr) {
+  auto check = [&](int code, const Vector6& q, const Vector6& printed, const std::string& what,
+                   Vector6* fd = nullptr) {
     const Agreement a = compare_in_q(c, code, q, printed, fd);
     EXPECT_TRUE(a.ok) << "printed partials of code " << code << " at " << what << a.detail;
     worst_correct = std::max(worst_correct, a.max_rel);
   };
-  for (const NamedState& s : {suborbital_stage3(), inclined_eccentric(), near_circular(), hyperbolic_north(),
-                              hyperbolic_south()}) {
+  for (const NamedState& s :
+       {suborbital_stage3(), inclined_eccentric(), near_circular(), hyperbolic_north(), hyperbolic_south()}) {
     const Vector6 q = inertial_variables(c, s.x);
     const Printed p = printed_partials(c, s.x);
     check(11, q, p.perigee_radius, s.name);
@@ -785,22 +801,28 @@ TEST(Sec5Ics, PrintedOrbitElementPartialsAreCorrectExceptTheDocumentedMisprints)
     // Misprint: Sec. 5 prints d beta_p / d lambda = sin beta cos beta / (cos lambda cos lambda),
     // off by the factor tan lambda.
     EXPECT_GT(std::fabs(p.argument_of_perigee_sec5(4) - fd_bp(4)), 1e-3 * std::fabs(fd_bp(4))) << s.name;
-    EXPECT_NEAR(p.argument_of_perigee_sec5(4) / std::tan(s.x(kStateLambda)), fd_bp(4), 1e-6 * std::fabs(fd_bp(4)));
+    EXPECT_NEAR(p.argument_of_perigee_sec5(4) / std::tan(s.x(kStateLambda)), fd_bp(4),
+                1e-6 * std::fabs(fd_bp(4)));
     if (p.excess_velocity(0) != 0.0) {
       check(100, q, p.excess_velocity, s.name);
       check(102, q, p.declination, s.name);
       Vector6 fd_a;
-      check(101, q, p.right_ascension_without_extra, s.name + " (H5.5-3c without the extra d/dr term)", &fd_a);
+      check(101, q, p.right_ascension_without_extra, s.name + " (H5.5-3c without the extra d/dr term)",
+            &fd_a);
       // Misprint: the printed d alpha_eH / d r adds (d Omega_e/d psi_I)(d psi_I/d r), which is
       // not a partial at fixed psi_I (the chain rule adds it again through psi_I).
       EXPECT_GT(std::fabs(p.right_ascension(3) - fd_a(3)), 1e-2 * std::fabs(fd_a(3))) << s.name;
       EXPECT_NEAR(p.right_ascension(3) - fd_a(3), p.extra_dr_term, 1e-4 * std::fabs(p.extra_dr_term));
-      std::printf("[ figures  ] H5.5-3c printed d alpha_eH/dr at %s: extra term %.3e rad/ft = %.1f%% of the true %.3e\n",
-                  s.name.c_str(), p.extra_dr_term, 100.0 * std::fabs(p.extra_dr_term / fd_a(3)), fd_a(3));
+      std::printf(
+          "[ figures  ] H5.5-3c printed d alpha_eH/dr at %s: extra term %.3e rad/ft = %.1f%% of the true "
+          "%.3e\n",
+          s.name.c_str(), p.extra_dr_term, 100.0 * std::fabs(p.extra_dr_term / fd_a(3)), fd_a(3));
     }
   }
-  std::printf("[ figures  ] Sec5/H5.5 printed orbit-element partials (corrected set) vs q-differences: max rel err %.2e\n",
-              worst_correct);
+  std::printf(
+      "[ figures  ] Sec5/H5.5 printed orbit-element partials (corrected set) vs q-differences: max rel err "
+      "%.2e\n",
+      worst_correct);
 }
 
 // And the chain: module partials = (printed partials wrt q, corrected) x (printed INER partials).
@@ -819,8 +841,8 @@ TEST(Sec5Ics, ModulePartialsAreThePrintedChainRule) {
       int code;
       Vector6 printed;
     };
-    std::vector<Case> cases = {{10, p.inclination}, {11, p.perigee_radius}, {12, p.node},
-                               {13, p.argument_of_perigee_addendum}};
+    std::vector<Case> cases = {
+        {10, p.inclination}, {11, p.perigee_radius}, {12, p.node}, {13, p.argument_of_perigee_addendum}};
     if (p.excess_velocity(0) != 0.0) {
       cases.push_back({100, p.excess_velocity});
       cases.push_back({101, p.right_ascension_without_extra});
@@ -830,7 +852,8 @@ TEST(Sec5Ics, ModulePartialsAreThePrintedChainRule) {
       ConstraintCode code;
       ASSERT_EQ(decode_constraint_code(k.code, &code), Status::kOk);
       AdjointVector g;
-      ASSERT_EQ(constraint_partials(c, reference_launch(), code, make_point(c, with_mass(s.x)), &g), Status::kOk);
+      ASSERT_EQ(constraint_partials(c, reference_launch(), code, make_point(c, with_mass(s.x)), &g),
+                Status::kOk);
       const Vector6 chained = (k.printed.transpose() * dq_dx).transpose();
       EXPECT_LT(max_rel_err(g.head<6>(), chained), 1e-8) << "code " << k.code << " at " << s.name;
     }
@@ -864,7 +887,8 @@ TEST(Sec5Ics, SingularStatesFailWithNamedStatus) {
   for (int code : {1, 2, 3, 9, 10, 12}) EXPECT_EQ(partial_status(code, circ), Status::kOk) << code;
   // Equatorial orbit: inclination, node, argument of perigee have no derivative.
   const StateVector equatorial = state_from_inertial(c, 2.2e7, 0.0, 0.3, 26000.0, 0.05, 0.5 * kPi);
-  for (int code : {10, 12, 13}) EXPECT_EQ(partial_status(code, equatorial), Status::kConstraintSingular) << code;
+  for (int code : {10, 12, 13})
+    EXPECT_EQ(partial_status(code, equatorial), Status::kConstraintSingular) << code;
   EXPECT_EQ(partial_status(11, equatorial), Status::kOk);
   // Vertical inertial velocity: gamma_I, psi_I have no derivative; V_I and 2E do.
   const StateVector vertical = state_from_inertial(c, 2.1e7, 0.2, 0.0, 5000.0, 0.5 * kPi, 0.0);
@@ -908,7 +932,8 @@ TEST(Sec5Ics, OblateRadiusLatitudeDerivativeMatchesCentralDifferences) {
     const double lat = lat_deg * kDegToRad;
     const double h = 1e-4;
     const double fd = (oblate_radius_ft(c, lat - 2 * h) - 8 * oblate_radius_ft(c, lat - h) +
-                       8 * oblate_radius_ft(c, lat + h) - oblate_radius_ft(c, lat + 2 * h)) / (12 * h);
+                       8 * oblate_radius_ft(c, lat + h) - oblate_radius_ft(c, lat + 2 * h)) /
+                      (12 * h);
     const double an = oblate_radius_latitude_derivative_ft_per_rad(c, lat);
     EXPECT_NEAR(an, fd, 1e-7 * std::fabs(fd) + 1e-3) << lat_deg;  // 1e-3 ft/rad: round-off of R / h
     if (std::fabs(fd) > 1.0) worst = std::max(worst, std::fabs(an - fd) / std::fabs(fd));
@@ -923,7 +948,8 @@ TEST(Sec5Ics, HeatingRatePartialsMatchCentralDifferences) {
   const double nose_ft = 0.5;
   const Vector7 y = with_mass(atmospheric().x);
   Eigen::Matrix<double, 6, 1> an;
-  ASSERT_EQ(stagnation_heating_rate_partials(c, nose_ft, kSeaLevelDensity, make_point(c, y), &an), Status::kOk);
+  ASSERT_EQ(stagnation_heating_rate_partials(c, nose_ft, kSeaLevelDensity, make_point(c, y), &an),
+            Status::kOk);
   auto f = [&](const Vector7& z) {
     const ConstraintPoint p = make_point(c, z);
     return stagnation_heating_rate(nose_ft, p.density_slug_ft3, kSeaLevelDensity, z(kStateV));
@@ -934,14 +960,16 @@ TEST(Sec5Ics, HeatingRatePartialsMatchCentralDifferences) {
   an7(6) = 0.0;
   const Agreement a = compare(an7, fd, f(y), 1e-6);
   EXPECT_TRUE(a.ok) << a.detail;
-  std::printf("[ figures  ] Sec13 heating-rate forcing partials vs differences: max rel err %.2e\n", a.max_rel);
+  std::printf("[ figures  ] Sec13 heating-rate forcing partials vs differences: max rel err %.2e\n",
+              a.max_rel);
   // Above the atmosphere (rho = 0) the forcing vanishes instead of dividing by zero.
   ConstraintPoint vacuum = make_point(c, y);
   vacuum.density_slug_ft3 = 0.0;
   vacuum.ddensity_dh = 0.0;
   ASSERT_EQ(stagnation_heating_rate_partials(c, nose_ft, kSeaLevelDensity, vacuum, &an), Status::kOk);
   EXPECT_EQ(an.norm(), 0.0);
-  EXPECT_EQ(stagnation_heating_rate_partials(c, -1.0, kSeaLevelDensity, vacuum, &an), Status::kValueOutOfRange);
+  EXPECT_EQ(stagnation_heating_rate_partials(c, -1.0, kSeaLevelDensity, vacuum, &an),
+            Status::kValueOutOfRange);
 }
 
 // ---- Stopping-condition correction (eqs. 5-12 .. 5-18) -------------------------------------------
@@ -997,8 +1025,9 @@ TEST(Sec5Ics, StoppingConditionCorrectionMatchesDifferencesOfAStoppedTrajectory)
   Vector7 yf;
   yf << 3.0, -1.0, 20.0, 4.0, 2.5, -6.0, 11.0;  // S decreasing through the stop (Sdot = -6)
   const double s_target = Ballistic::s(yf);
-  const AdjointVector corrected = apply_stopping_condition_correction(
-      Ballistic::dz(yf), Ballistic::dz(yf).dot(b.rate(yf)), Ballistic::ds(yf), Ballistic::ds(yf).dot(b.rate(yf)));
+  const AdjointVector corrected =
+      apply_stopping_condition_correction(Ballistic::dz(yf), Ballistic::dz(yf).dot(b.rate(yf)),
+                                          Ballistic::ds(yf), Ballistic::ds(yf).dot(b.rate(yf)));
   Vector7 fd;
   const double h = 1e-4;
   for (int i = 0; i < 7; ++i) {
@@ -1017,9 +1046,12 @@ TEST(Sec5Ics, StoppingConditionCorrectionMatchesDifferencesOfAStoppedTrajectory)
   // The uncorrected dZ/dx is wrong in the p_3 component (the stop moves).
   EXPECT_GT(std::fabs(Ballistic::dz(yf)(2) - fd(2)), 1.0);
   // TOLIP's fixed-time stop: S = t has dS/dx = 0 and the correction is the identity.
-  const AdjointVector fixed_time = apply_stopping_condition_correction(Ballistic::dz(yf), 3.7, AdjointVector::Zero(), 1.0);
+  const AdjointVector fixed_time =
+      apply_stopping_condition_correction(Ballistic::dz(yf), 3.7, AdjointVector::Zero(), 1.0);
   EXPECT_EQ(fixed_time, Ballistic::dz(yf));
-  std::printf("[ figures  ] Sec5 stopping-condition correction vs stopped-trajectory differences: max err %.2e\n", worst);
+  std::printf(
+      "[ figures  ] Sec5 stopping-condition correction vs stopped-trajectory differences: max err %.2e\n",
+      worst);
 }
 
 }  // namespace

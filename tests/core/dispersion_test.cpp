@@ -41,7 +41,8 @@ std::unique_ptr<Fixture> make_fixture() {
   EXPECT_EQ(prepare_case(f->mission, &f->prepared), Status::kOk);
   EXPECT_EQ(fly_trajectory(f->mission, f->prepared, &f->table_flight), Status::kOk);
   f->program.point_count = f->table_flight.point_count;
-  for (int k = 0; k < f->table_flight.point_count; ++k) f->program.theta_rad[k] = f->table_flight.points[k].theta_rad;
+  for (int k = 0; k < f->table_flight.point_count; ++k)
+    f->program.theta_rad[k] = f->table_flight.points[k].theta_rad;
   return f;
 }
 
@@ -66,7 +67,8 @@ DispersionSource& add(DispersionData* data, int code) {
 template <int N>
 void fill(Table<N>* table, const nlohmann::json& x, const nlohmann::json& y, double scale = 1.0) {
   table->clear();
-  for (std::size_t i = 0; i < x.size(); ++i) ASSERT_EQ(table->append(x[i].get<double>(), y[i].get<double>() * scale), Status::kOk);
+  for (std::size_t i = 0; i < x.size(); ++i)
+    ASSERT_EQ(table->append(x[i].get<double>(), y[i].get<double>() * scale), Status::kOk);
   ASSERT_EQ(table->finalize(), Status::kOk);
 }
 
@@ -83,7 +85,8 @@ void reference_data(DispersionData* data) {
   }
   for (int code = 9; code <= 16; ++code) {
     DispersionSource& s = add(data, code);
-    const double w = d["codes_9_16_block47_weight_increment_lb"]["stage_" + std::to_string(s.stage)].get<double>();
+    const double w =
+        d["codes_9_16_block47_weight_increment_lb"]["stage_" + std::to_string(s.stage)].get<double>();
     s.weight_increment_lb = (code % 2) ? w : -w;
   }
   const double drag = d["codes_17_18_block48_drag_variation_fraction"].get<double>();
@@ -97,13 +100,15 @@ void reference_data(DispersionData* data) {
   }
   for (int code = 24; code <= 29; ++code) {
     DispersionSource& s = add(data, code);
-    const double band = d["codes_24_29_block50_control_deadband_deg"]["stage_" + std::to_string(s.stage)].get<double>();
+    const double band =
+        d["codes_24_29_block50_control_deadband_deg"]["stage_" + std::to_string(s.stage)].get<double>();
     s.deadband_rad = ((code == 25 || code == 28) ? -band : band) * kDeg;
   }
   for (int code = 30; code <= 32; ++code) {
     DispersionSource& s = add(data, code);
     s.stage = 4;
-    s.tipoff_rad = (code == 31 ? -1.0 : 1.0) * d["codes_30_32_block51_stage4_tipoff_deg"].get<double>() * kDeg;
+    s.tipoff_rad =
+        (code == 31 ? -1.0 : 1.0) * d["codes_30_32_block51_stage4_tipoff_deg"].get<double>() * kDeg;
   }
   add(data, 33).launch_change_rad = d["code_33_block52_launch_azimuth_change_deg"].get<double>() * kDeg;
   const double attitude = d["codes_34_35_block52_launch_attitude_change_deg"].get<double>() * kDeg;
@@ -114,7 +119,8 @@ void reference_data(DispersionData* data) {
   for (int code = 36; code <= 38; ++code) {
     DispersionSource& s = add(data, code);
     fill(&s.wind.speed_ft_s, w["block53_altitude_ft"], w["block53_wind_speed_ft_per_s"]);
-    fill(&s.wind.azimuth_rad, w["block53_altitude_ft"], w["block54_wind_vector_azimuth_deg"][keys[code - 36]], kDeg);
+    fill(&s.wind.azimuth_rad, w["block53_altitude_ft"], w["block54_wind_vector_azimuth_deg"][keys[code - 36]],
+         kDeg);
   }
   add(data, 40);
 }
@@ -191,7 +197,8 @@ TEST(Sec15Dispersions, WeightDragAndAzimuthEqualTheCaseChangedByHand) {
     if (which == 0) m.vehicle.stages[1].jettison_weight_lb += 50.0;
     if (which == 1) {
       for (StageData& s : m.vehicle.stages) {
-        for (int i = 0; i < s.drag_coefficient.size(); ++i) s.drag_coefficient.set_y(i, s.drag_coefficient.y(i) * 1.1);
+        for (int i = 0; i < s.drag_coefficient.size(); ++i)
+          s.drag_coefficient.set_y(i, s.drag_coefficient.y(i) * 1.1);
         if (!s.drag_coefficient.empty()) ASSERT_EQ(s.drag_coefficient.finalize(), Status::kOk);
       }
     }
@@ -213,7 +220,8 @@ TEST(Sec15Dispersions, SignsOfEveryFamilyOnTheReferenceData) {
   reference_data(&f->data);
   ASSERT_EQ(run_dispersions(nominal_of(*f, true), f->data, &f->workspace, &f->result), Status::kOk);
   const DispersionResult& r = f->result;
-  for (int k = 0; k < r.count; ++k) EXPECT_EQ(r.trajectories[k].status, Status::kOk) << r.trajectories[k].code;
+  for (int k = 0; k < r.count; ++k)
+    EXPECT_EQ(r.trajectories[k].status, Status::kOk) << r.trajectories[k].code;
   const auto twoe = [&](int code) { return find(r, code)->orbit_dispersions[0]; };
   // Thrust high (the same impulse in less time, consumed weight unchanged): less gravity loss, so a
   // higher velocity at the stage's own burnout; low: lower. (Later points need not follow: the
@@ -254,7 +262,8 @@ TEST(Sec15Dispersions, SignsOfEveryFamilyOnTheReferenceData) {
   // Pitch-plane codes stay nearly in the plane: their crossrange (the Sec. 4 small-angle formula on
   // the rotating Earth) is a few hundredths of the yaw codes' smallest.
   double smallest_yaw = 1e30;
-  for (int code : {23, 26, 29, 33, 38}) smallest_yaw = std::fmin(smallest_yaw, std::fabs(find(r, code)->dispersions[3][kCross]));
+  for (int code : {23, 26, 29, 33, 38})
+    smallest_yaw = std::fmin(smallest_yaw, std::fabs(find(r, code)->dispersions[3][kCross]));
   EXPECT_GT(smallest_yaw, 1.0);  // n.mi.
   for (int code : {1, 9, 17, 24, 30, 34}) {
     EXPECT_LT(std::fabs(find(r, code)->dispersions[3][kCross]), 0.05 * smallest_yaw) << code;
@@ -299,10 +308,11 @@ TEST(Sec15ThreeSigma, GroupsBySumAndRssAsTheManualGroupsThem) {
     double alt, vel;
     Status status;
   };
-  const Row rows[] = {{1, 100.0, 5.0, Status::kOk},   {2, -40.0, 9.0, Status::kOk},  {9, 0.0, 3.0, Status::kOk},
-                      {10, 0.0, -2.0, Status::kOk},  {23, 7.0, 1.0, Status::kOk},   {33, -3.0, 2.0, Status::kOk},
-                      {36, 20.0, 1.0, Status::kOk},  {37, -10.0, 1.0, Status::kOk}, {38, 4.0, 0.0, Status::kOk},
-                      {5, 999.0, 9.0, Status::kAltitudeBelowSurface}};
+  const Row rows[] = {{1, 100.0, 5.0, Status::kOk}, {2, -40.0, 9.0, Status::kOk},
+                      {9, 0.0, 3.0, Status::kOk},   {10, 0.0, -2.0, Status::kOk},
+                      {23, 7.0, 1.0, Status::kOk},  {33, -3.0, 2.0, Status::kOk},
+                      {36, 20.0, 1.0, Status::kOk}, {37, -10.0, 1.0, Status::kOk},
+                      {38, 4.0, 0.0, Status::kOk},  {5, 999.0, 9.0, Status::kAltitudeBelowSurface}};
   for (const Row& row : rows) {
     DispersedTrajectory& t = r->trajectories[r->count++];
     t.code = row.code;
@@ -368,7 +378,8 @@ TEST(Sec15Dispersions, FiveStageVehicleGetsEveryStagesIgnitionWithoutTheSqueeze)
   for (int j = 0; j < 4; ++j) EXPECT_LT(r.trajectories[0].dispersions[j][kVel], 0.0) << j;
   // Stage-5 tip-off: nothing before stage 5 ignition, a flight-path change at the end.
   EXPECT_EQ(r.trajectories[1].dispersions[3][kAlt], 0.0);
-  EXPECT_GT(std::fabs(r.trajectories[1].dispersions[4][static_cast<int>(StagingVariable::kFlightPathAngle)]), 1e-4);
+  EXPECT_GT(std::fabs(r.trajectories[1].dispersions[4][static_cast<int>(StagingVariable::kFlightPathAngle)]),
+            1e-4);
 }
 
 }  // namespace

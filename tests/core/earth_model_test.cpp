@@ -76,7 +76,8 @@ TEST(Sec4OblateEarth, GeocentricFromGeodeticInvertsTheSeries) {
     max_err = std::max(max_err, std::fabs(back - geodetic));
     EXPECT_NEAR(back, geodetic, 1e-15) << deg;
     // And the other way round.
-    EXPECT_NEAR(geocentric_from_geodetic_rad(k, geodetic_from_geocentric_rad(k, geodetic)), geodetic, 1e-15) << deg;
+    EXPECT_NEAR(geocentric_from_geodetic_rad(k, geodetic_from_geocentric_rad(k, geodetic)), geodetic, 1e-15)
+        << deg;
   }
   std::printf("[ figures  ] Sec4 geodetic<->geocentric round trip max err %.2e rad\n", max_err);
 }
@@ -103,15 +104,17 @@ TEST(Sec4OblateEarth, WallopsLaunchPointMatchesOracle) {
   const double dl = delta_lambda_rad(constants, lat_gc_deck, r0);
   const double dl_truth = launch.at("delta_lambda_rad").get<double>();
   EXPECT_LT(std::fabs(dl - dl_truth) / dl_truth, 1e-13);
-  std::printf("[ figures  ] Sec4 launch: lat_gc (inverse series) err %.2e deg, r0 rel err %.2e, "
-              "delta-lambda rel err %.2e\n",
-              std::fabs(lat_gc * kRadToDeg - block21.at("geocentric_latitude_deg").get<double>()),
-              std::fabs(r0 - r0_truth) / r0_truth, std::fabs(dl - dl_truth) / dl_truth);
+  std::printf(
+      "[ figures  ] Sec4 launch: lat_gc (inverse series) err %.2e deg, r0 rel err %.2e, "
+      "delta-lambda rel err %.2e\n",
+      std::fabs(lat_gc * kRadToDeg - block21.at("geocentric_latitude_deg").get<double>()),
+      std::fabs(r0 - r0_truth) / r0_truth, std::fabs(dl - dl_truth) / dl_truth);
 }
 
 TEST(Sec4OblateEarth, DeltaLambdaMatchesOracleExample) {
   const auto& ex = test::oracle_test_vectors().at("delta_lambda_example");
-  const double dl = delta_lambda_rad(Constants{}, ex.at("lat_gc_rad").get<double>(), ex.at("r_ft").get<double>());
+  const double dl =
+      delta_lambda_rad(Constants{}, ex.at("lat_gc_rad").get<double>(), ex.at("r_ft").get<double>());
   const double truth = ex.at("delta_lambda_rad").get<double>();
   EXPECT_LT(std::fabs(dl - truth) / truth, 1e-13);
   // It vanishes at the equator and the poles and is odd in latitude.
@@ -194,7 +197,8 @@ TEST(Sec4Earth, ManualConstantsKeepThePrintedSeriesAndSixSigmaBitForBit) {
     EXPECT_EQ(geodetic_from_geocentric_rad(manual, lat), printed_purcell_cowan_rad(lat)) << deg;
     const double r = 2.0925e7, g = manual.gravitational_parameter_ft3_s2 / (r * r);
     const double w = manual.earth_rotation_rate_rad_s;
-    EXPECT_EQ(delta_lambda_rad(manual, lat, r), (0.001638 + w * w * r / (2.0 * g)) * std::sin(2.0 * lat)) << deg;
+    EXPECT_EQ(delta_lambda_rad(manual, lat, r), (0.001638 + w * w * r / (2.0 * g)) * std::sin(2.0 * lat))
+        << deg;
   }
 }
 
@@ -208,13 +212,16 @@ TEST(Sec4Earth, ExactEllipsoidLatitudeAgreesWithPurcellCowanToTheSeriesAccuracyF
     const double lat = deg * kDegToRad;
     const double exact = ellipsoid_geodetic_from_geocentric_rad(manual, lat);
     max_deg = std::max(max_deg, std::fabs(exact - printed_purcell_cowan_rad(lat)) * kRadToDeg);
-    max_round_trip = std::max(max_round_trip, std::fabs(ellipsoid_geocentric_from_geodetic_rad(manual, exact) - lat));
+    max_round_trip =
+        std::max(max_round_trip, std::fabs(ellipsoid_geocentric_from_geodetic_rad(manual, exact) - lat));
   }
   EXPECT_LT(max_deg, 1.5e-3);
   EXPECT_GT(max_deg, 1.0e-4);  // they are different relations (C1 is not the ellipsoid's)
   EXPECT_LT(max_round_trip, 1e-15);
-  std::printf("[ figures  ] Sec4 exact ellipsoid vs Purcell-Cowan (f = 298.3) max %.2e deg; "
-              "exact inverse round trip %.2e rad\n", max_deg, max_round_trip);
+  std::printf(
+      "[ figures  ] Sec4 exact ellipsoid vs Purcell-Cowan (f = 298.3) max %.2e deg; "
+      "exact inverse round trip %.2e rad\n",
+      max_deg, max_round_trip);
 }
 
 TEST(Sec4Earth, GeodeticLatitudeFollowsTheDecksFlattening) {
@@ -227,13 +234,15 @@ TEST(Sec4Earth, GeodeticLatitudeFollowsTheDecksFlattening) {
     const double lat = deg * kDegToRad;
     const double geodetic = geodetic_from_geocentric_rad(flatter, lat);
     EXPECT_NEAR(std::tan(geodetic), k * std::tan(lat), 1e-14 * (1.0 + std::fabs(k * std::tan(lat)))) << deg;
-    max_round_trip = std::max(max_round_trip, std::fabs(geocentric_from_geodetic_rad(flatter, geodetic) - lat));
+    max_round_trip =
+        std::max(max_round_trip, std::fabs(geocentric_from_geodetic_rad(flatter, geodetic) - lat));
   }
   EXPECT_LT(max_round_trip, 1e-15);
   // Twice the manual's flattening: about twice its geodetic-geocentric difference at 45 deg.
   const double lat = 45.0 * kDegToRad;
   EXPECT_NEAR((geodetic_from_geocentric_rad(flatter, lat) - lat) /
-                  (geodetic_from_geocentric_rad(Constants{}, lat) - lat), 2.0, 0.03);
+                  (geodetic_from_geocentric_rad(Constants{}, lat) - lat),
+              2.0, 0.03);
   EXPECT_DOUBLE_EQ(geodetic_from_geocentric_rad(flatter, 0.5 * kPi), 0.5 * kPi);
 }
 
@@ -283,7 +292,8 @@ TEST(Sec4J2Gravity, ComponentsAreTheGradientOfTheGeopotential) {
       const double dr = 10.0;
       const double dlat = 1e-6;
       const double du_dr =
-          (geopotential_ft2_s2(constants, r + dr, lat) - geopotential_ft2_s2(constants, r - dr, lat)) / (2 * dr);
+          (geopotential_ft2_s2(constants, r + dr, lat) - geopotential_ft2_s2(constants, r - dr, lat)) /
+          (2 * dr);
       const double du_dlat =
           (geopotential_ft2_s2(constants, r, lat + dlat) - geopotential_ft2_s2(constants, r, lat - dlat)) /
           (2 * dlat);

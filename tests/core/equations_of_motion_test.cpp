@@ -58,8 +58,8 @@ TEST(Sec4EquationsOfMotion, AgreeWithIndependentCartesianModel) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   for (int trial = 0; trial < 40; ++trial) {
     StateVector x;
-    x << 3000.0 + 20000.0 * (1.0 + u(rng)) / 2.0, 1.2 * u(rng), 2.1e7 + 1.5e6 * (1.0 + u(rng)),
-        3.0 * u(rng), 1.2 * u(rng), 3.0 * u(rng);
+    x << 3000.0 + 20000.0 * (1.0 + u(rng)) / 2.0, 1.2 * u(rng), 2.1e7 + 1.5e6 * (1.0 + u(rng)), 3.0 * u(rng),
+        1.2 * u(rng), 3.0 * u(rng);
     const AppliedForces f = random_forces(rng);
     const StateVector mine = state_derivative(k, x, f);
     const StateVector truth = cartesian_rates(k, x, f);

@@ -130,8 +130,8 @@ TEST(Sec8ExchangeRatios, ReferenceRatiosHaveTheSignsIntuitionAsks) {
   const Baseline& b = baseline();
   ASSERT_EQ(b.status, Status::kOk);
   const ExchangeRatios& r = b.ratios;
-  std::printf("payload %.4f lb; kappa (payload stationarity) %.5f; %d forward runs in %.2f ms\n", b.result.payload_lb,
-              r.payload_stationarity, r.forward_runs, 1e3 * b.seconds);
+  std::printf("payload %.4f lb; kappa (payload stationarity) %.5f; %d forward runs in %.2f ms\n",
+              b.result.payload_lb, r.payload_stationarity, r.forward_runs, 1e3 * b.seconds);
   std::printf(" stage  burn rate lb/%%  propellant lb/lb  Isp lb/%%  drag lb/ft^2  jettison lb/lb\n");
   for (int s = 0; s < r.stage_count; ++s) {
     std::printf("   %d   %12.4f  %15.5f  %9.4f  %12.4f  %14.5f\n", r.stage_codes[s], r.burn_rate[s],
@@ -146,7 +146,8 @@ TEST(Sec8ExchangeRatios, ReferenceRatiosHaveTheSignsIntuitionAsks) {
     EXPECT_GT(r.specific_impulse[s], 0.0) << "more Isp, more payload: stage " << s + 1;
     EXPECT_GT(r.propellant_weight[s], 0.0) << "more propellant (same Isp) pays for itself: stage " << s + 1;
     EXPECT_LT(r.jettison_weight[s], 0.0) << "more inert weight, less payload: stage " << s + 1;
-    if (s > 0) EXPECT_LT(r.jettison_weight[s], r.jettison_weight[s - 1]) << "upper-stage inert weight costs more";
+    if (s > 0)
+      EXPECT_LT(r.jettison_weight[s], r.jettison_weight[s - 1]) << "upper-stage inert weight costs more";
   }
   EXPECT_LT(r.drag[0], 0.0);
   EXPECT_LT(r.drag[1], 0.0);
@@ -229,8 +230,8 @@ TEST(Sec8ExchangeRatios, AgreeWithReoptimizationWithinFivePercent) {
     const double measured_payload = (payload[0] - payload[1]) / (2.0 * c.step);
     const double predicted = (b.ratios.*c.ratio)[slot_of(b.ratios, c.stage)];
     const double relative = std::fabs(predicted - measured) / std::fabs(measured);
-    std::printf("%-40s predicted %9.5f  re-optimized %9.5f (payload alone %9.5f)  difference %.1f%%\n", c.name,
-                predicted, measured, measured_payload, 100.0 * relative);
+    std::printf("%-40s predicted %9.5f  re-optimized %9.5f (payload alone %9.5f)  difference %.1f%%\n",
+                c.name, predicted, measured, measured_payload, 100.0 * relative);
     EXPECT_LE(relative, 0.05) << c.name;
   }
 }
@@ -246,18 +247,25 @@ TEST(Sec8ExchangeRatios, VelocityPayoffRatiosAgreeWithReoptimization) {
   mission.options.ip[1] = 1;  // payoff: inertial velocity at stage-4 burnout
   ConstraintList& c = mission.constraints;
   c.count = 3;
-  c.codes[0] = 1;  c.desired[0] = 0.0;
-  c.codes[1] = 7;  c.desired[1] = 1822834.647; c.deadband_optimization[0] = 2000.0;  // altitude, ft
-  c.codes[2] = 2;  c.desired[2] = 0.0;         c.deadband_optimization[1] = 0.002;   // gamma_I, rad
+  c.codes[0] = 1;
+  c.desired[0] = 0.0;
+  c.codes[1] = 7;
+  c.desired[1] = 1822834.647;
+  c.deadband_optimization[0] = 2000.0;  // altitude, ft
+  c.codes[2] = 2;
+  c.desired[2] = 0.0;
+  c.deadband_optimization[1] = 0.002;  // gamma_I, rad
   mission.convergence.initial_payoff_improvement = 50.0;
   mission.convergence.stop_improvement = 0.1;  // ft/s
   ASSERT_EQ(optimize_trajectory(mission, &workspace(), &result), Status::kOk);
   ASSERT_EQ(compute_exchange_ratios(workspace(), result, &scratch, &ratios), Status::kOk);
   EXPECT_EQ(ratios.payload_stationarity, 0.0);  // payload payoff only
   for (int s = 0; s < ratios.stage_count; ++s) {
-    std::printf("stage %d: burn rate %.3f ft/s/%%  propellant %.4f ft/s/lb  Isp %.3f ft/s/%%  drag %.3f ft/s/ft^2  "
-                "jettison %.4f ft/s/lb\n", ratios.stage_codes[s], ratios.burn_rate[s], ratios.propellant_weight[s],
-                ratios.specific_impulse[s], ratios.drag[s], ratios.jettison_weight[s]);
+    std::printf(
+        "stage %d: burn rate %.3f ft/s/%%  propellant %.4f ft/s/lb  Isp %.3f ft/s/%%  drag %.3f ft/s/ft^2  "
+        "jettison %.4f ft/s/lb\n",
+        ratios.stage_codes[s], ratios.burn_rate[s], ratios.propellant_weight[s], ratios.specific_impulse[s],
+        ratios.drag[s], ratios.jettison_weight[s]);
     EXPECT_GT(ratios.specific_impulse[s], 0.0);
     EXPECT_LT(ratios.jettison_weight[s], 0.0);
   }
@@ -279,8 +287,8 @@ TEST(Sec8ExchangeRatios, VelocityPayoffRatiosAgreeWithReoptimization) {
     const double measured = (corrected[0] - corrected[1]) / (2.0 * change.step);
     const double predicted = (ratios.*change.ratio)[slot_of(ratios, change.stage)];
     const double relative = std::fabs(predicted - measured) / std::fabs(measured);
-    std::printf("%-40s predicted %9.4f  re-optimized %9.4f  difference %.1f%%\n", change.name, predicted, measured,
-                100.0 * relative);
+    std::printf("%-40s predicted %9.4f  re-optimized %9.4f  difference %.1f%%\n", change.name, predicted,
+                measured, 100.0 * relative);
     EXPECT_LE(relative, 0.05) << change.name;
   }
 }
@@ -300,7 +308,8 @@ TEST(Sec8ExchangeRatios, ParameterChangesKeepWhatTheirDefinitionsKeep) {
 
   // Burn rate +1%: thrust x1.01 over times /1.01, same total impulse and consumed weight.
   ASSERT_EQ(perturb_stage_parameter(base, 2, ExchangeParameter::kBurnRate, 1.0, &out), Status::kOk);
-  EXPECT_NEAR(impulse(s.vacuum_thrust_lbf), impulse(in.vacuum_thrust_lbf), 1e-9 * impulse(in.vacuum_thrust_lbf));
+  EXPECT_NEAR(impulse(s.vacuum_thrust_lbf), impulse(in.vacuum_thrust_lbf),
+              1e-9 * impulse(in.vacuum_thrust_lbf));
   EXPECT_NEAR(s.duration_s, in.duration_s / 1.01, 1e-12);
   EXPECT_NEAR(s.vacuum_thrust_lbf.last_x(), s.duration_s, 1e-12);
   EXPECT_DOUBLE_EQ(s.consumable_weight_lb.y(0), in.consumable_weight_lb.y(0));
@@ -315,8 +324,10 @@ TEST(Sec8ExchangeRatios, ParameterChangesKeepWhatTheirDefinitionsKeep) {
   // Propellant +1 lb: initial consumable +1 lb, thrust / mass flow (Isp) and burn time unchanged.
   ASSERT_EQ(perturb_stage_parameter(base, 2, ExchangeParameter::kPropellantWeight, 1.0, &out), Status::kOk);
   EXPECT_NEAR(s.consumable_weight_lb.y(0), in.consumable_weight_lb.y(0) + 1.0, 1e-9);
-  const double isp_in = impulse(in.vacuum_thrust_lbf) / (in.consumable_weight_lb.y(0) - in.consumable_weight_lb.last_y());
-  const double isp_out = impulse(s.vacuum_thrust_lbf) / (s.consumable_weight_lb.y(0) - s.consumable_weight_lb.last_y());
+  const double isp_in =
+      impulse(in.vacuum_thrust_lbf) / (in.consumable_weight_lb.y(0) - in.consumable_weight_lb.last_y());
+  const double isp_out =
+      impulse(s.vacuum_thrust_lbf) / (s.consumable_weight_lb.y(0) - s.consumable_weight_lb.last_y());
   EXPECT_NEAR(isp_out, isp_in, 1e-9 * isp_in);
   EXPECT_DOUBLE_EQ(s.duration_s, in.duration_s);
 
@@ -328,8 +339,9 @@ TEST(Sec8ExchangeRatios, ParameterChangesKeepWhatTheirDefinitionsKeep) {
   // Drag +1 ft^2: C_D S grows by 1 ft^2 at every Mach number.
   ASSERT_EQ(perturb_stage_parameter(base, 2, ExchangeParameter::kDrag, 1.0, &out), Status::kOk);
   for (double mach : {0.3, 0.9, 1.2, 3.0, 8.0}) {
-    EXPECT_NEAR(s.drag_coefficient(mach) * s.reference_area_ft2 - in.drag_coefficient(mach) * in.reference_area_ft2,
-                1.0, 1e-12);
+    EXPECT_NEAR(
+        s.drag_coefficient(mach) * s.reference_area_ft2 - in.drag_coefficient(mach) * in.reference_area_ft2,
+        1.0, 1e-12);
   }
 
   // Jettison +1 lb.
@@ -337,10 +349,14 @@ TEST(Sec8ExchangeRatios, ParameterChangesKeepWhatTheirDefinitionsKeep) {
   EXPECT_DOUBLE_EQ(s.jettison_weight_lb, in.jettison_weight_lb + 1.0);
 
   // Named failures.
-  EXPECT_EQ(perturb_stage_parameter(base, 6, ExchangeParameter::kJettisonWeight, 1.0, &out), Status::kUnknownStageCode);
-  EXPECT_EQ(perturb_stage_parameter(base, 5, ExchangeParameter::kJettisonWeight, 1.0, &out), Status::kUnknownStageCode);
-  EXPECT_EQ(perturb_stage_parameter(base, 2, ExchangeParameter::kBurnRate, -100.0, &out), Status::kValueOutOfRange);
-  EXPECT_EQ(perturb_stage_parameter(base, 2, ExchangeParameter::kJettisonWeight, 1.0, &base), Status::kValueOutOfRange);
+  EXPECT_EQ(perturb_stage_parameter(base, 6, ExchangeParameter::kJettisonWeight, 1.0, &out),
+            Status::kUnknownStageCode);
+  EXPECT_EQ(perturb_stage_parameter(base, 5, ExchangeParameter::kJettisonWeight, 1.0, &out),
+            Status::kUnknownStageCode);
+  EXPECT_EQ(perturb_stage_parameter(base, 2, ExchangeParameter::kBurnRate, -100.0, &out),
+            Status::kValueOutOfRange);
+  EXPECT_EQ(perturb_stage_parameter(base, 2, ExchangeParameter::kJettisonWeight, 1.0, &base),
+            Status::kValueOutOfRange);
 }
 
 TEST(Sec8ExchangeRatios, RefusesAnUnfinishedOptimization) {

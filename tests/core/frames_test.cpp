@@ -108,26 +108,58 @@ TEST(Sec5Frames, PrintedPartialsOfAMatchCentralDifferences) {
         [&](double, double p, double l, double) { return -C(l) * C(p); },
         [&](double, double p, double l, double) { return S(l) * S(p); },
         [](double, double, double, double) { return 0.0; }}},
-      {{[&](double g, double p, double l, double t) { return C(t) * S(l) * C(p) * S(g) + S(t) * S(p) * S(g) + C(t) * C(l) * C(g); },
-        [&](double g, double p, double l, double t) { return C(t) * S(l) * S(p) * C(g) - S(t) * C(p) * C(g); },
-        [&](double g, double p, double l, double t) { return -C(t) * C(l) * C(p) * C(g) - C(t) * S(l) * S(g); },
-        [&](double g, double p, double l, double t) { return S(t) * S(l) * C(p) * C(g) - C(t) * S(p) * C(g) - S(t) * C(l) * S(g); }},
-       {[&](double g, double p, double l, double t) { return S(t) * S(l) * C(p) * S(g) - C(t) * S(p) * S(g) + S(t) * C(l) * C(g); },
-        [&](double g, double p, double l, double t) { return S(t) * S(l) * S(p) * C(g) + C(t) * C(p) * C(g); },
-        [&](double g, double p, double l, double t) { return -S(t) * C(l) * C(p) * C(g) - S(t) * S(l) * S(g); },
-        [&](double g, double p, double l, double t) { return -C(t) * S(l) * C(p) * C(g) - S(t) * S(p) * C(g) + C(t) * C(l) * S(g); }},
+      {{[&](double g, double p, double l, double t) {
+          return C(t) * S(l) * C(p) * S(g) + S(t) * S(p) * S(g) + C(t) * C(l) * C(g);
+        },
+        [&](double g, double p, double l, double t) {
+          return C(t) * S(l) * S(p) * C(g) - S(t) * C(p) * C(g);
+        },
+        [&](double g, double p, double l, double t) {
+          return -C(t) * C(l) * C(p) * C(g) - C(t) * S(l) * S(g);
+        },
+        [&](double g, double p, double l, double t) {
+          return S(t) * S(l) * C(p) * C(g) - C(t) * S(p) * C(g) - S(t) * C(l) * S(g);
+        }},
+       {[&](double g, double p, double l, double t) {
+          return S(t) * S(l) * C(p) * S(g) - C(t) * S(p) * S(g) + S(t) * C(l) * C(g);
+        },
+        [&](double g, double p, double l, double t) {
+          return S(t) * S(l) * S(p) * C(g) + C(t) * C(p) * C(g);
+        },
+        [&](double g, double p, double l, double t) {
+          return -S(t) * C(l) * C(p) * C(g) - S(t) * S(l) * S(g);
+        },
+        [&](double g, double p, double l, double t) {
+          return -C(t) * S(l) * C(p) * C(g) - S(t) * S(p) * C(g) + C(t) * C(l) * S(g);
+        }},
        {[&](double g, double p, double l, double) { return -C(l) * C(p) * S(g) + S(l) * C(g); },
         [&](double g, double p, double l, double) { return -C(l) * S(p) * C(g); },
         [&](double g, double p, double l, double) { return -S(l) * C(p) * C(g) + C(l) * S(g); },
         [](double, double, double, double) { return 0.0; }}},
-      {{[&](double g, double p, double l, double t) { return -C(t) * C(l) * S(g) + C(t) * S(l) * C(p) * C(g) + S(t) * S(p) * C(g); },
-        [&](double g, double p, double l, double t) { return -C(t) * S(l) * S(p) * S(g) + S(t) * C(p) * S(g); },
-        [&](double g, double p, double l, double t) { return -C(t) * S(l) * C(g) + C(t) * C(l) * C(p) * S(g); },
-        [&](double g, double p, double l, double t) { return -S(t) * C(l) * C(g) - S(t) * S(l) * C(p) * S(g) + C(t) * S(p) * S(g); }},
-       {[&](double g, double p, double l, double t) { return -S(t) * C(l) * S(g) + S(t) * S(l) * C(p) * C(g) - C(t) * S(p) * C(g); },
-        [&](double g, double p, double l, double t) { return -S(t) * S(l) * S(p) * S(g) - C(t) * C(p) * S(g); },
-        [&](double g, double p, double l, double t) { return -S(t) * S(l) * C(g) + S(t) * C(l) * C(p) * S(g); },
-        [&](double g, double p, double l, double t) { return C(t) * C(l) * C(g) + C(t) * S(l) * C(p) * S(g) + S(t) * S(p) * S(g); }},
+      {{[&](double g, double p, double l, double t) {
+          return -C(t) * C(l) * S(g) + C(t) * S(l) * C(p) * C(g) + S(t) * S(p) * C(g);
+        },
+        [&](double g, double p, double l, double t) {
+          return -C(t) * S(l) * S(p) * S(g) + S(t) * C(p) * S(g);
+        },
+        [&](double g, double p, double l, double t) {
+          return -C(t) * S(l) * C(g) + C(t) * C(l) * C(p) * S(g);
+        },
+        [&](double g, double p, double l, double t) {
+          return -S(t) * C(l) * C(g) - S(t) * S(l) * C(p) * S(g) + C(t) * S(p) * S(g);
+        }},
+       {[&](double g, double p, double l, double t) {
+          return -S(t) * C(l) * S(g) + S(t) * S(l) * C(p) * C(g) - C(t) * S(p) * C(g);
+        },
+        [&](double g, double p, double l, double t) {
+          return -S(t) * S(l) * S(p) * S(g) - C(t) * C(p) * S(g);
+        },
+        [&](double g, double p, double l, double t) {
+          return -S(t) * S(l) * C(g) + S(t) * C(l) * C(p) * S(g);
+        },
+        [&](double g, double p, double l, double t) {
+          return C(t) * C(l) * C(g) + C(t) * S(l) * C(p) * S(g) + S(t) * S(p) * S(g);
+        }},
        {[&](double g, double p, double l, double) { return -S(l) * S(g) - C(l) * C(p) * C(g); },
         [&](double g, double p, double l, double) { return C(l) * S(p) * S(g); },
         [&](double g, double p, double l, double) { return C(l) * C(g) + S(l) * C(p) * S(g); },
@@ -145,7 +177,8 @@ TEST(Sec5Frames, PrintedPartialsOfAMatchCentralDifferences) {
       for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 3; ++c)
           EXPECT_NEAR(partial[r][c][v](x[1], x[3], x[4], x[5]), fd(r, c), 1e-8)
-              << "dA" << r + 1 << c + 1 << "/d" << "gplt"[v];
+              << "dA" << r + 1 << c + 1 << "/d"
+              << "gplt"[v];
     }
   }
 }
@@ -154,8 +187,8 @@ TEST(Sec4ThrustResolution, ZeroAlphaAttitudeAlignsThrustWithVelocity) {
   std::mt19937 rng(5);
   for (int trial = 0; trial < 50; ++trial) {
     const StateVector x = random_state(rng);
-    const Matrix3 c = inertial_to_local(x) * geocentric_to_inertial(0.3, 0.6, -1.2) *
-                      platform_to_geocentric(0.3, 0.003);
+    const Matrix3 c =
+        inertial_to_local(x) * geocentric_to_inertial(0.3, 0.6, -1.2) * platform_to_geocentric(0.3, 0.003);
     const double theta = theta_for_zero_alpha_rad(c, 0.0);
     const Vector3 axis = c * thrust_axis_platform(theta, 0.0);
     EXPECT_NEAR(axis.norm(), 1.0, 1e-15);

@@ -32,7 +32,8 @@ class Executor : public ::testing::Test {
   // Fires the events of the test timeline up to time t (inclusive).
   void advance_events(GuidanceExecutor* executor, double t) {
     for (const test::TestStageStart& event : test::kTestTimeline) {
-      if (event.start_s <= t && flight_order_index(event.code) > flight_order_index(executor->stage_in_force())) {
+      if (event.start_s <= t &&
+          flight_order_index(event.code) > flight_order_index(executor->stage_in_force())) {
         ASSERT_EQ(executor->stage_event(event.code, event.start_s), Status::kOk);
       }
     }
@@ -82,12 +83,12 @@ TEST_F(Executor, StepsThroughSegmentsInFlightOrder) {
     double theta_deg;
   };
   const Expect expects[] = {
-      {3.0, 1, 0, 90.0},     {5.5, 1, 0, 85.0},   {9.999, 1, 0, 90.0 - 2.0 * 6.999},
-      {10.0, 1, 1, 76.0},    {44.0, 1, 1, 59.0},  {45.0, 6, 2, 60.0},
-      {49.5, 6, 2, 60.0},    {50.0, 2, 3, 60.0},  {60.0, 2, 3, 50.0},
-      {70.0, 2, 4, 40.0},    {87.0, 2, 4, 44.25}, {88.0, 7, 5, 45.0},
-      {94.0, 3, 5, 45.0},    {98.0, 3, 5, 45.0},  {99.0, 3, 6, 38.0},
-      {129.0, 3, 6, 35.0},   {130.0, 8, 7, 35.0}, {549.0, 8, 7, 35.0},
+      {3.0, 1, 0, 90.0},   {5.5, 1, 0, 85.0},   {9.999, 1, 0, 90.0 - 2.0 * 6.999},
+      {10.0, 1, 1, 76.0},  {44.0, 1, 1, 59.0},  {45.0, 6, 2, 60.0},
+      {49.5, 6, 2, 60.0},  {50.0, 2, 3, 60.0},  {60.0, 2, 3, 50.0},
+      {70.0, 2, 4, 40.0},  {87.0, 2, 4, 44.25}, {88.0, 7, 5, 45.0},
+      {94.0, 3, 5, 45.0},  {98.0, 3, 5, 45.0},  {99.0, 3, 6, 38.0},
+      {129.0, 3, 6, 35.0}, {130.0, 8, 7, 35.0}, {549.0, 8, 7, 35.0},
   };
   for (const Expect& e : expects) {
     const GuidanceCommand command = command_at(e.t);

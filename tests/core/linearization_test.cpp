@@ -62,12 +62,13 @@ TEST(Sec6Linearization, NineSegmentsMeetEveryRateLimitAndConstraintWithinHalfAPe
   EXPECT_TRUE(result.rate_limits_met);
   EXPECT_TRUE(result.finished);
   for (int j = 0; j < result.constraint_count; ++j) {
-    EXPECT_LE(std::fabs(result.desired[j] - result.achieved[j]), result.tolerance[j]) << "code " << result.codes[j];
+    EXPECT_LE(std::fabs(result.desired[j] - result.achieved[j]), result.tolerance[j])
+        << "code " << result.codes[j];
     EXPECT_TRUE(result.met[j]) << "code " << result.codes[j];
   }
   EXPECT_GE(result.payoff, 0.995 * optimum.payload_lb);
   EXPECT_LE(result.payoff, optimum.payload_lb * (1.0 + 1e-4));
-  EXPECT_FALSE(result.coast7_below_min_rate);  // coast 7 is a segment: the limits hold there too
+  EXPECT_FALSE(result.coast7_below_min_rate);         // coast 7 is a segment: the limits hold there too
   EXPECT_FALSE(result.coast7_below_min_rate_change);  // straight segments cannot beat the optimum
   EXPECT_LE(result.forward_runs, mission.convergence.max_linearization_iterations);
   const LinearProgram& p = result.program;
@@ -75,14 +76,16 @@ TEST(Sec6Linearization, NineSegmentsMeetEveryRateLimitAndConstraintWithinHalfAPe
   EXPECT_NEAR(p.theta_rad[0], 0.5 * kPi, 1e-12);  // 90 deg at the end of lift-off
   int positives = 0;
   for (int s = 0; s < p.segment_count; ++s) {
-    EXPECT_LE(std::fabs(p.rate_rad_s[s]), mission.control.max_pitch_rate_rad_s * (1.0 + 1e-6)) << "segment " << s;
+    EXPECT_LE(std::fabs(p.rate_rad_s[s]), mission.control.max_pitch_rate_rad_s * (1.0 + 1e-6))
+        << "segment " << s;
     positives += p.rate_rad_s[s] > 1e-7 ? 1 : 0;
   }
   EXPECT_LE(positives, 1);
   // Minimum rate and minimum change of rate (a break whose rate does not change is a merge: Sec. 10
   // "in effect, eliminates a segment").
   for (int s = 0; s < p.segment_count; ++s) {
-    EXPECT_GE(std::fabs(rate_between(p, s)), mission.control.min_pitch_rate_rad_s * (1.0 - 1e-6)) << "segment " << s;
+    EXPECT_GE(std::fabs(rate_between(p, s)), mission.control.min_pitch_rate_rad_s * (1.0 - 1e-6))
+        << "segment " << s;
     if (s == 0) continue;
     const double change = std::fabs(rate_between(p, s) - rate_between(p, s - 1));
     EXPECT_TRUE(change < 1e-9 || change >= mission.control.min_pitch_rate_change_rad_s * (1.0 - 1e-6))
@@ -98,7 +101,8 @@ TEST(Sec6Linearization, NineSegmentsMeetEveryRateLimitAndConstraintWithinHalfAPe
       if (time < p.break_time_s[s] || time > p.break_time_s[s + 1]) continue;
       const double expected = p.theta_rad[s] + p.rate_rad_s[s] * (time - p.break_time_s[s]);
       EXPECT_NEAR(workspace.program.theta_rad[k], expected, 1e-9) << "t = " << time;
-      if (!t.points[k].body_dynamics) EXPECT_EQ(t.points[k].theta_rad, workspace.program.theta_rad[k]) << "t = " << time;
+      if (!t.points[k].body_dynamics)
+        EXPECT_EQ(t.points[k].theta_rad, workspace.program.theta_rad[k]) << "t = " << time;
       break;
     }
   }
@@ -123,14 +127,16 @@ TEST(Sec10Linearization, SixDRelinearizationMeetsEveryLimitAndConstraintAgain) {
     const double six_d_error = std::fabs(result.point_mass_program_6d_achieved[j] - result.desired[j]);
     EXPECT_LE(pm_error, result.tolerance[j]) << "code " << result.codes[j];
     missed = missed || six_d_error > 5.0 * result.tolerance[j];
-    EXPECT_LE(std::fabs(result.achieved[j] - result.desired[j]), result.tolerance[j]) << "code " << result.codes[j];
+    EXPECT_LE(std::fabs(result.achieved[j] - result.desired[j]), result.tolerance[j])
+        << "code " << result.codes[j];
     std::printf("code %3d: point-mass program, point mass %.6g, 6D %.6g; 6D program %.6g (desired %.6g)\n",
                 result.codes[j], result.point_mass_achieved[j], result.point_mass_program_6d_achieved[j],
                 result.achieved[j], result.desired[j]);
   }
   EXPECT_TRUE(missed) << "body dynamics must matter on this case";
   std::printf("payoff: point mass %.4f lb, 6D %.4f lb (difference %.4f lb); optimum %.4f lb\n",
-              result.point_mass_payoff, result.payoff, result.payoff - result.point_mass_payoff, r.optimum.payload_lb);
+              result.point_mass_payoff, result.payoff, result.payoff - result.point_mass_payoff,
+              r.optimum.payload_lb);
   EXPECT_GE(result.payoff, 0.995 * r.optimum.payload_lb);
   EXPECT_GE(result.point_mass_payoff, 0.995 * r.optimum.payload_lb);
   // The flown 6D trajectory really has body dynamics in stage 1 (and only in stage 1 / coast 6).

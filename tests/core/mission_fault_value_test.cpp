@@ -102,10 +102,12 @@ TEST(MissionFaultValue, LatitudeBeyondNinetyDegreesCarriesPlusMinusHalfPi) {
 TEST(MissionFaultValue, AbsurdAnglesAreRejectedWithinOneTurn) {
   auto mission = reference();
   mission->launch.azimuth_rad = 1e20 * kDegToRad;
-  expect_value(fault_of(*mission, Status::kLaunchConditionOutOfRange), 21, "azimuth_rad", -1, 1e20 * kDegToRad);
+  expect_value(fault_of(*mission, Status::kLaunchConditionOutOfRange), 21, "azimuth_rad", -1,
+               1e20 * kDegToRad);
   mission = reference();
   mission->misc.stage4_theta_rad = 1e10 * kDegToRad;
-  expect_value(fault_of(*mission, Status::kMiscellaneousDataOutOfRange), 17, "stage4_theta_rad", -1, 1e10 * kDegToRad);
+  expect_value(fault_of(*mission, Status::kMiscellaneousDataOutOfRange), 17, "stage4_theta_rad", -1,
+               1e10 * kDegToRad);
   mission = reference();
   mission->pitch_program_rad.set_y(2, 1e308);
   ASSERT_EQ(mission->pitch_program_rad.finalize(), Status::kOk);

@@ -90,7 +90,7 @@ TEST(MissionValidation, UnfinalizedTableIsRejected) {
 }
 
 TEST(MissionValidation, TotalThrustPointsOverAllStagesAtMost120) {
-  auto mission = optimum();  // 25 + 22 + 20 + 17 = 84 points in stages 1-4
+  auto mission = optimum();                                   // 25 + 22 + 20 + 17 = 84 points in stages 1-4
   ThrustTable& table = stage(*mission, 5).vacuum_thrust_lbf;  // stage 5 is not flown, but its table is stored
   for (int i = 0; i < 37; ++i) ASSERT_EQ(table.append(i, 1.0), Status::kOk);
   ASSERT_EQ(table.finalize(), Status::kOk);
@@ -132,7 +132,7 @@ TEST(MissionValidation, DurationsAndStepCounts) {
 }
 
 TEST(MissionValidation, PoweredStepTotals) {
-  auto mission = optimum();  // 42 + 30 + 40 + 35 = 147 powered steps, coast 6 has 4
+  auto mission = optimum();                   // 42 + 30 + 40 + 35 = 147 powered steps, coast 6 has 4
   stage(*mission, 3).integration_steps = 61;  // 168
   EXPECT_EQ(validate(*mission).status, Status::kOk);
   stage(*mission, 3).integration_steps = 62;  // 169
@@ -156,7 +156,8 @@ TEST(MissionValidation, ThrustAndWeightTablesEndTogether) {
   auto mission = optimum();
   WeightTable& weight = stage(*mission, 3).consumable_weight_lb;
   WeightTable shorter;
-  for (int i = 0; i + 1 < weight.size(); ++i) ASSERT_EQ(shorter.append(weight.x(i), weight.y(i)), Status::kOk);
+  for (int i = 0; i + 1 < weight.size(); ++i)
+    ASSERT_EQ(shorter.append(weight.x(i), weight.y(i)), Status::kOk);
   ASSERT_EQ(shorter.finalize(), Status::kOk);
   weight = shorter;
   expect_fault(*mission, Status::kThrustWeightTimesDiffer, 38, 3, "consumable_weight_lb");
@@ -252,7 +253,8 @@ TEST(MissionValidation, PayloadRidesWithTheLastPoweredStageOfTheSequence) {
   vehicle.sequence.count = 3;
   const double stage2_end = vehicle_weight_lb(vehicle, 2, 38.0);
   EXPECT_NEAR(stage2_end, 1900.0 + vehicle.payload_lb, 1e-9);
-  EXPECT_NEAR(vehicle_weight_lb(vehicle, 1, 0.0), 20200.0 + 4800.0 + 8000.0 + 1900.0 + vehicle.payload_lb, 1e-9);
+  EXPECT_NEAR(vehicle_weight_lb(vehicle, 1, 0.0), 20200.0 + 4800.0 + 8000.0 + 1900.0 + vehicle.payload_lb,
+              1e-9);
   // With a coast after the last powered stage the payload has been dropped with that stage.
   vehicle.sequence.count = 4;  // 1 6 2 7
   EXPECT_NEAR(vehicle_weight_lb(vehicle, 7, 0.0), vehicle.stages[stage_index(7)].jettison_weight_lb, 1e-12);

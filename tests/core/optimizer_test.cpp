@@ -64,7 +64,8 @@ TEST(Sec22Optimizer, ReferenceMissionConvergesFromTheCrudeProgramAndBeatsTheRefe
         std::fabs(t.points[i].time_s - 45.0) < 0.01 || std::fabs(t.points[i].time_s - 50.0) < 0.01;
     const double slack = next_to_flight_set_attitude ? 0.5 * kDegToRad : 1e-12;
     EXPECT_LE(std::fabs(t.points[i + 1].theta_rad - t.points[i].theta_rad),
-              mission.control.max_pitch_rate_rad_s * dt * (1.0 + 1e-9) + slack) << "t = " << t.points[i].time_s;
+              mission.control.max_pitch_rate_rad_s * dt * (1.0 + 1e-9) + slack)
+        << "t = " << t.points[i].time_s;
   }
 }
 
@@ -92,8 +93,8 @@ TEST(Sec22Optimizer, FamilyOfStartingProgramsConvergesToTheSamePayload) {
   static OptimizerResult result;
   double payloads[3] = {};
   for (int start = 0; start < 3; ++start) {
-    test::build_reference_mission(start == 1 ? test::ReferenceProgram::kOptimum : test::ReferenceProgram::kInitialNominal,
-                                  &mission);
+    test::build_reference_mission(
+        start == 1 ? test::ReferenceProgram::kOptimum : test::ReferenceProgram::kInitialNominal, &mission);
     if (start == 2) {  // a straight-line pitch-over and a short coast guess
       mission.pitch_program_rad.clear();
       mission.pitch_program_rad.append(0.0, 0.5 * kPi);
@@ -137,15 +138,27 @@ TEST(Sec22Optimizer, VelocityPayoffWithStagePointConstraintAzimuthCoastAndHeatin
   mission.options.ip[2] = 1;  // heating constraint
   ConstraintList& c = mission.constraints;
   c.count = 4;
-  c.codes[0] = 1;  c.desired[0] = 0.0;                                   // V_I (payoff)
-  c.codes[1] = 7;  c.desired[1] = 1822834.647; c.deadband_optimization[0] = 2000.0;   // altitude
-  c.codes[2] = 2;  c.desired[2] = 0.0;         c.deadband_optimization[1] = 0.002;    // gamma_I
-  c.codes[3] = 37; c.desired[3] = 430000.0;    c.deadband_optimization[2] = 2000.0;   // altitude, end of stage 3
-  c.codes[4] = 14; c.desired[4] = 13000.0;     c.deadband_optimization[3] = 100.0;    // heat, Btu/ft^2
+  c.codes[0] = 1;
+  c.desired[0] = 0.0;  // V_I (payoff)
+  c.codes[1] = 7;
+  c.desired[1] = 1822834.647;
+  c.deadband_optimization[0] = 2000.0;  // altitude
+  c.codes[2] = 2;
+  c.desired[2] = 0.0;
+  c.deadband_optimization[1] = 0.002;  // gamma_I
+  c.codes[3] = 37;
+  c.desired[3] = 430000.0;
+  c.deadband_optimization[2] = 2000.0;  // altitude, end of stage 3
+  c.codes[4] = 14;
+  c.desired[4] = 13000.0;
+  c.deadband_optimization[3] = 100.0;  // heat, Btu/ft^2
   mission.adjustable.count = 3;
-  mission.adjustable.codes[0] = 1; mission.adjustable.weights[0] = 10.0;    // stage-4 theta
-  mission.adjustable.codes[1] = 3; mission.adjustable.weights[1] = 1e-4;    // coast after stage 3
-  mission.adjustable.codes[2] = 6; mission.adjustable.weights[2] = 2.0;     // launch azimuth
+  mission.adjustable.codes[0] = 1;
+  mission.adjustable.weights[0] = 10.0;  // stage-4 theta
+  mission.adjustable.codes[1] = 3;
+  mission.adjustable.weights[1] = 1e-4;  // coast after stage 3
+  mission.adjustable.codes[2] = 6;
+  mission.adjustable.weights[2] = 2.0;  // launch azimuth
   mission.convergence.initial_payoff_improvement = 200.0;
   mission.convergence.stop_improvement = 2.0;
   mission.convergence.max_forward_trajectories = 60;
@@ -159,13 +172,14 @@ TEST(Sec22Optimizer, VelocityPayoffWithStagePointConstraintAzimuthCoastAndHeatin
   ASSERT_GT(initial.heat_integral_btu_ft2, 13000.0);  // the limit will bind
 
   const Status status = optimize_trajectory(mission, &workspace(), &result);
-  std::printf("V_I %.2f ft/s (initial %.2f), %d forward runs, heat %.1f Btu/ft^2 (initial %.1f), azimuth %.3f deg, "
-              "coast 8 %.2f s, theta4 %.3f deg\n",
-              result.payoff, initial.final_point().inertial.velocity_ft_s, result.forward_runs,
-              workspace().nominal.heat_integral_btu_ft2, initial.heat_integral_btu_ft2,
-              workspace().mission.launch.azimuth_rad * kRadToDeg,
-              workspace().mission.vehicle.stages[stage_index(8)].duration_s,
-              workspace().mission.misc.stage4_theta_rad * kRadToDeg);
+  std::printf(
+      "V_I %.2f ft/s (initial %.2f), %d forward runs, heat %.1f Btu/ft^2 (initial %.1f), azimuth %.3f deg, "
+      "coast 8 %.2f s, theta4 %.3f deg\n",
+      result.payoff, initial.final_point().inertial.velocity_ft_s, result.forward_runs,
+      workspace().nominal.heat_integral_btu_ft2, initial.heat_integral_btu_ft2,
+      workspace().mission.launch.azimuth_rad * kRadToDeg,
+      workspace().mission.vehicle.stages[stage_index(8)].duration_s,
+      workspace().mission.misc.stage4_theta_rad * kRadToDeg);
   ASSERT_EQ(status, Status::kOk);
   expect_constraints_met(result);
   ASSERT_EQ(result.constraint_count, 5);  // the heating constraint joined the list
@@ -177,8 +191,8 @@ TEST(Sec22Optimizer, VelocityPayoffWithStagePointConstraintAzimuthCoastAndHeatin
 }
 
 // Maximum circular-orbit altitude for a fixed payload, with a dynamic-pressure inequality at
-// stage-2 ignition (code 69 = q at the end of coast 6, IP(13) = 1). The fixed payload is the reference's 283.4 lb,
-// below what this vehicle can carry to 300 n.mi., so the circular orbit must come out higher.
+// stage-2 ignition (code 69 = q at the end of coast 6, IP(13) = 1). The fixed payload is the reference's
+// 283.4 lb, below what this vehicle can carry to 300 n.mi., so the circular orbit must come out higher.
 TEST(Sec22Optimizer, AltitudePayoffWithDynamicPressureInequalityAtStage2Ignition) {
   static Mission mission;
   static OptimizerResult result;
@@ -187,10 +201,17 @@ TEST(Sec22Optimizer, AltitudePayoffWithDynamicPressureInequalityAtStage2Ignition
   mission.options.ip[13] = 1;  // q-bar constraint is an inequality
   ConstraintList& c = mission.constraints;
   c.count = 4;
-  c.codes[0] = 7;  c.desired[0] = 0.0;                                    // altitude (payoff)
-  c.codes[1] = 2;  c.desired[1] = 0.0;   c.deadband_optimization[0] = 0.002;   // gamma_I
-  c.codes[2] = 3;  c.desired[2] = 0.0;   c.deadband_optimization[1] = 20.0;    // V_I - V_circ
-  c.codes[3] = 69; c.desired[3] = 600.0; c.deadband_optimization[2] = 10.0;    // q at stage-2 ignition <= 600
+  c.codes[0] = 7;
+  c.desired[0] = 0.0;  // altitude (payoff)
+  c.codes[1] = 2;
+  c.desired[1] = 0.0;
+  c.deadband_optimization[0] = 0.002;  // gamma_I
+  c.codes[2] = 3;
+  c.desired[2] = 0.0;
+  c.deadband_optimization[1] = 20.0;  // V_I - V_circ
+  c.codes[3] = 69;
+  c.desired[3] = 600.0;
+  c.deadband_optimization[2] = 10.0;  // q at stage-2 ignition <= 600
   mission.convergence.initial_payoff_improvement = 20000.0;
   mission.convergence.stop_improvement = 500.0;
   mission.convergence.max_forward_trajectories = 60;

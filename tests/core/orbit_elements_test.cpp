@@ -40,8 +40,8 @@ Cartesian to_cartesian(const Constants& c, const StateVector& x) {
   const Vector3 north = up.cross(east);
   Cartesian out;
   out.r_ft = r * up;
-  const Vector3 v_rel = v * (std::sin(gam) * up + std::cos(gam) * std::cos(psi) * north +
-                             std::cos(gam) * std::sin(psi) * east);
+  const Vector3 v_rel =
+      v * (std::sin(gam) * up + std::cos(gam) * std::cos(psi) * north + std::cos(gam) * std::sin(psi) * east);
   const Vector3 omega(0.0, 0.0, c.earth_rotation_rate_rad_s);
   out.v_inertial_ft_s = v_rel + omega.cross(out.r_ft);
   return out;
@@ -53,7 +53,8 @@ StateVector state_from_inertial(const Constants& c, double r, double lat, double
                                 double gamma_i, double psi_i) {
   const double up = v_i * std::sin(gamma_i);
   const double north = v_i * std::cos(gamma_i) * std::cos(psi_i);
-  const double east = v_i * std::cos(gamma_i) * std::sin(psi_i) - c.earth_rotation_rate_rad_s * r * std::cos(lat);
+  const double east =
+      v_i * std::cos(gamma_i) * std::sin(psi_i) - c.earth_rotation_rate_rad_s * r * std::cos(lat);
   StateVector x;
   x << std::sqrt(up * up + north * north + east * east), std::atan2(up, std::hypot(north, east)), r,
       std::atan2(east, north), lat, tau;
@@ -105,7 +106,8 @@ TEST(Sec4OrbitElements, MatchesOracleForAllThreeStates) {
     const auto& c = cases[n];
     const StateVector x = state_from_json(c.at("state"));
     OrbitElements e;
-    ASSERT_EQ(compute_orbit_elements(constants, x, c.at("launch_space_age_date").get<double>(), &e), Status::kOk);
+    ASSERT_EQ(compute_orbit_elements(constants, x, c.at("launch_space_age_date").get<double>(), &e),
+              Status::kOk);
     const auto& want = c.at("elements");
     // The burnout orbit is circular to round-off: its true anomaly and argument of perigee are
     // the angle of a 1e-16 eccentricity vector, meaningless (reference README Sec. 4).
@@ -115,13 +117,15 @@ TEST(Sec4OrbitElements, MatchesOracleForAllThreeStates) {
       const double truth = want.at(key).get<double>();
       const double err = std::fabs(got - truth);
       const double rel = err / std::max(std::fabs(truth), 1e-300);
-      EXPECT_TRUE(err <= abs_floor || rel < 1e-10) << "case " << n << " " << key << ": " << got << " vs " << truth;
+      EXPECT_TRUE(err <= abs_floor || rel < 1e-10)
+          << "case " << n << " " << key << ": " << got << " vs " << truth;
       if (abs_floor == 0.0) max_rel_magnitude = std::max(max_rel_magnitude, rel);
     };
     auto angle_deg = [&](const char* key, double got_rad) {
       const double truth_deg = want.at(key).get<double>();
       const double err_deg = angle_diff(got_rad, truth_deg * kDegToRad) * kRadToDeg;
-      EXPECT_LT(err_deg, 1e-9) << "case " << n << " " << key << ": " << got_rad * kRadToDeg << " vs " << truth_deg;
+      EXPECT_LT(err_deg, 1e-9) << "case " << n << " " << key << ": " << got_rad * kRadToDeg << " vs "
+                               << truth_deg;
       max_angle_err_deg = std::max(max_angle_err_deg, err_deg);
     };
 
@@ -153,12 +157,15 @@ TEST(Sec4OrbitElements, MatchesOracleForAllThreeStates) {
     EXPECT_FALSE(e.has_asymptote);
 
     const auto& inertial = c.at("inertial");
-    EXPECT_LT(std::fabs(e.inertial.velocity_ft_s - inertial.at("VI_fps").get<double>()) / e.inertial.velocity_ft_s, 1e-13);
+    EXPECT_LT(
+        std::fabs(e.inertial.velocity_ft_s - inertial.at("VI_fps").get<double>()) / e.inertial.velocity_ft_s,
+        1e-13);
     EXPECT_NEAR(e.inertial.flight_path_angle_rad, inertial.at("gammaI_rad").get<double>(), 1e-12);
     EXPECT_NEAR(e.inertial.azimuth_rad, inertial.at("psiI_rad").get<double>(), 1e-12);
   }
-  std::printf("[ figures  ] Sec4 orbit elements vs oracle: max rel err (magnitudes) %.2e, max angle err %.2e deg\n",
-              max_rel_magnitude, max_angle_err_deg);
+  std::printf(
+      "[ figures  ] Sec4 orbit elements vs oracle: max rel err (magnitudes) %.2e, max angle err %.2e deg\n",
+      max_rel_magnitude, max_angle_err_deg);
 }
 
 // ---- INER ------------------------------------------------------------------------------------
@@ -173,7 +180,8 @@ TEST(Sec4InertialVariables, MatchThePrintedInerFormulas) {
   const double wr = w * r * std::cos(lat);  // "ur cos lambda" of the scan
   const double vi = std::sqrt(v * v + 2.0 * (v * std::cos(gam) * std::sin(psi)) * wr + wr * wr);
   const double gi = std::atan(v * std::sin(gam) / std::sqrt(vi * vi - std::pow(v * std::sin(gam), 2)));
-  const double pi_ = std::atan((v * std::cos(gam) * std::sin(psi) + wr) / (v * std::cos(gam) * std::cos(psi)));
+  const double pi_ =
+      std::atan((v * std::cos(gam) * std::sin(psi) + wr) / (v * std::cos(gam) * std::cos(psi)));
   EXPECT_NEAR(iv.velocity_ft_s, vi, 1e-10);
   EXPECT_NEAR(iv.flight_path_angle_rad, gi, 1e-13);
   EXPECT_NEAR(iv.azimuth_rad, pi_, 1e-13);  // first quadrant here, where the printed atan is valid
@@ -198,7 +206,8 @@ TEST(Sec4InertialVariables, MatchOracleEarthCentredInertialExample) {
   const Cartesian s = to_cartesian(c, x);
   double max_rel = 0.0;
   for (int k = 0; k < 3; ++k) {
-    const double r_truth = ex.at("r_eci_ft_launch_greenwich_frame").at(static_cast<std::size_t>(k)).get<double>();
+    const double r_truth =
+        ex.at("r_eci_ft_launch_greenwich_frame").at(static_cast<std::size_t>(k)).get<double>();
     const double v_truth = ex.at("v_inertial_fps").at(static_cast<std::size_t>(k)).get<double>();
     EXPECT_NEAR(s.r_ft(k), r_truth, 1e-12 * s.r_ft.norm());
     EXPECT_NEAR(s.v_inertial_ft_s(k), v_truth, 1e-12 * s.v_inertial_ft_s.norm());
@@ -309,7 +318,8 @@ TEST(Sec4OrbitElements, EllipseBuiltAtPerigeeApogeeAndMidFlightGivesItsElements)
     EXPECT_NEAR(e.apogee_radius_ft, ra, 1e-6) << zeta_deg;
     EXPECT_NEAR(e.semi_major_axis_ft, a, 1e-6) << zeta_deg;
     EXPECT_NEAR(e.eccentricity, ecc, 1e-13) << zeta_deg;
-    EXPECT_NEAR(e.eccentricity, std::sqrt(1.0 + e.twice_energy_ft2_s2 * std::pow(e.angular_momentum_ft2_s / mu, 2)), 1e-12);
+    EXPECT_NEAR(e.eccentricity,
+                std::sqrt(1.0 + e.twice_energy_ft2_s2 * std::pow(e.angular_momentum_ft2_s / mu, 2)), 1e-12);
     EXPECT_NEAR(e.period_s, period, 1e-8) << zeta_deg;
     EXPECT_LT(angle_diff(e.true_anomaly_rad, zeta), 1e-12) << zeta_deg;
     EXPECT_GE(e.true_anomaly_rad, 0.0);
@@ -340,7 +350,8 @@ TEST(AddendumHAsymptote, ExcessVelocityEccentricityAndAsymptoteMatchCartesian) {
 
         const Cartesian s = to_cartesian(c, x);
         const TextbookElements t = textbook(c, s, t_g);
-        EXPECT_NEAR(e.hyperbolic_excess_velocity_ft_s, std::sqrt(s.v_inertial_ft_s.squaredNorm() - 2.0 * mu / r), 1e-9);
+        EXPECT_NEAR(e.hyperbolic_excess_velocity_ft_s,
+                    std::sqrt(s.v_inertial_ft_s.squaredNorm() - 2.0 * mu / r), 1e-9);
         EXPECT_NEAR(e.hyperbolic_excess_velocity_ft_s, std::sqrt(e.twice_energy_ft2_s2), 1e-12);
         EXPECT_GT(e.eccentricity, 1.0);
         EXPECT_NEAR(e.eccentricity, t.e, 1e-12);
@@ -416,8 +427,8 @@ TEST(Sec4RangeEquations, DownrangeMatchesHaversineAndThePrintedCosineLaw) {
       EXPECT_NEAR(got, hav, 1e-14) << dlat << " " << dlon;
       max_err = std::max(max_err, std::fabs(got - hav));
       if (hav > 0.1) {
-        const double printed = std::acos(std::sin(lat0) * std::sin(lat) +
-                                         std::cos(lat0) * std::cos(lat) * std::cos(dlon));
+        const double printed =
+            std::acos(std::sin(lat0) * std::sin(lat) + std::cos(lat0) * std::cos(lat) * std::cos(dlon));
         EXPECT_NEAR(got, printed, 1e-12);
       }
     }
@@ -438,9 +449,9 @@ TEST(Sec4RangeEquations, CrossrangeIsTheCrossTrackAngleForSmallDispersions) {
         if (d_lat == 0.0 && d_lon == 0.0) continue;
         const double lat_d = lat_n + d_lat, lon_d = lon_n + d_lon;
         const double d = haversine_rad(lat_n, lon_n, lat_d, lon_d);
-        const double bearing = std::atan2(std::sin(d_lon) * std::cos(lat_d),
-                                          std::cos(lat_n) * std::sin(lat_d) -
-                                              std::sin(lat_n) * std::cos(lat_d) * std::cos(d_lon));
+        const double bearing = std::atan2(
+            std::sin(d_lon) * std::cos(lat_d),
+            std::cos(lat_n) * std::sin(lat_d) - std::sin(lat_n) * std::cos(lat_d) * std::cos(d_lon));
         const double exact = std::asin(std::sin(d) * std::sin(bearing - psi));
         const double got = crossrange_angle_rad(lat_n, lon_n, psi, lat_d, lon_d);
         // Small-angle error is second order in the ~1e-3 rad offsets.
@@ -469,9 +480,11 @@ TEST(Sec13Heating, PrintedPartialDerivativesMatchFiniteDifferences) {
   const double dq_dv = 3.25 * k * std::sqrt(rho) * std::pow(v, 2.25);
   const double dq_drho = 0.5 * k * std::pow(v, 3.25) / std::sqrt(rho);  // times drho/dh in the manual
   const double fd_v = (stagnation_heating_rate(rn, rho, rho_sl, v + 1.0) -
-                       stagnation_heating_rate(rn, rho, rho_sl, v - 1.0)) / 2.0;
+                       stagnation_heating_rate(rn, rho, rho_sl, v - 1.0)) /
+                      2.0;
   const double fd_rho = (stagnation_heating_rate(rn, rho * (1 + 1e-6), rho_sl, v) -
-                         stagnation_heating_rate(rn, rho * (1 - 1e-6), rho_sl, v)) / (2e-6 * rho);
+                         stagnation_heating_rate(rn, rho * (1 - 1e-6), rho_sl, v)) /
+                        (2e-6 * rho);
   EXPECT_NEAR(dq_dv, fd_v, 1e-7 * std::fabs(dq_dv));
   EXPECT_NEAR(dq_drho, fd_rho, 1e-7 * std::fabs(dq_drho));
 }

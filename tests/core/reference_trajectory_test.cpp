@@ -72,22 +72,30 @@ TEST(Sec4Trajectory, EveryIntegrationPointMatchesOracle) {
     const TrajectoryPoint* mine = nullptr;
     for (int i = 0; i < f.trajectory.point_count; ++i) {
       const TrajectoryPoint& p = f.trajectory.points[i];
-      if (p.stage_code == code && std::fabs(p.time_s - t) < 1e-6) { mine = &p; break; }
+      if (p.stage_code == code && std::fabs(p.time_s - t) < 1e-6) {
+        mine = &p;
+        break;
+      }
     }
     if (mine == nullptr) {
       // The oracle lists each stage boundary once, as the start of the next stage.
       continue;
     }
     ++matched;
-    const double ref[6] = {row[3], row[4].get<double>() * kDegToRad, row[6],
-                           row[5].get<double>() * kDegToRad, row[8].get<double>() * kDegToRad,
+    const double ref[6] = {row[3],
+                           row[4].get<double>() * kDegToRad,
+                           row[6],
+                           row[5].get<double>() * kDegToRad,
+                           row[8].get<double>() * kDegToRad,
                            row[9].get<double>() * kDegToRad};
     for (int k = 0; k < 6; ++k) {
       worst[k] = std::fmax(worst[k], std::fabs(mine->state[k] - ref[k]));
     }
   }
-  std::printf("matched %d of %zu; worst |dV| %.3e ft/s, dgamma %.3e rad, dr %.3e ft, dpsi %.3e, dlat %.3e, dtau %.3e\n",
-              matched, rows.size(), worst[0], worst[1], worst[2], worst[3], worst[4], worst[5]);
+  std::printf(
+      "matched %d of %zu; worst |dV| %.3e ft/s, dgamma %.3e rad, dr %.3e ft, dpsi %.3e, dlat %.3e, dtau "
+      "%.3e\n",
+      matched, rows.size(), worst[0], worst[1], worst[2], worst[3], worst[4], worst[5]);
   EXPECT_EQ(matched, static_cast<int>(rows.size()));
   // The oracle's rows carry 12 significant digits: 1e-4 ft in r is their rounding.
   EXPECT_LT(worst[kStateV], 1e-6);
@@ -103,9 +111,9 @@ TEST(Sec4Trajectory, BurnoutStateMatchesOracle) {
   const auto& ref = test::scout_reference()["oracle_solution"]["burnout_state"];
   const TrajectoryPoint& p = f.trajectory.final_point();
   const auto& x = ref["state_vector_rad_order_V_gamma_r_psi_lambda_tau"];
-  std::printf("burnout: t %.6f vs %.6f; V %.6f vs %.6f; h %.4f vs %.4f; gamma %.3e; W %.6f\n",
-              p.time_s, ref["time_from_launch_s"].get<double>(), p.state[0], x[0].get<double>(),
-              p.altitude_ft, ref["altitude_ft"].get<double>(), p.state[1], p.weight_lb);
+  std::printf("burnout: t %.6f vs %.6f; V %.6f vs %.6f; h %.4f vs %.4f; gamma %.3e; W %.6f\n", p.time_s,
+              ref["time_from_launch_s"].get<double>(), p.state[0], x[0].get<double>(), p.altitude_ft,
+              ref["altitude_ft"].get<double>(), p.state[1], p.weight_lb);
   EXPECT_NEAR(p.time_s, ref["time_from_launch_s"].get<double>(), 1e-9);
   // Same model choices and step counts: agreement to round-off, far inside "a few feet".
   EXPECT_NEAR(p.state[kStateV], x[0].get<double>(), 1e-6);
@@ -136,8 +144,8 @@ TEST(Sec22Trajectory, CrudeInitialNominalFliesEveryStage) {
   EXPECT_NEAR(trajectory.final_point().time_s, 45.0 + 5.0 + 38.0 + 6.0 + 36.0 + 450.0 + 28.0, 1e-9);
   EXPECT_NEAR(trajectory.final_point().weight_lb, 125.0 + 250.0, 1e-9);
   // Stage events: weight drops by the jettison weight between a stage's end and the next start.
-  EXPECT_NEAR(trajectory.stages[0].burnout_weight_lb - trajectory.stages[0].weight_after_jettison_lb,
-              4800.0, 1e-9);
+  EXPECT_NEAR(trajectory.stages[0].burnout_weight_lb - trajectory.stages[0].weight_after_jettison_lb, 4800.0,
+              1e-9);
 }
 
 // Data block 9: every n-th point of a stage, and always its first and last point.
@@ -154,8 +162,10 @@ TEST(Sec22Output, ThinsPointsPerStageKeepingStageEnds) {
     listed += is_output_point(mission, trajectory, i, TrajectoryKind::kFinal) ? 1 : 0;
   }
   for (int k = 0; k < trajectory.stage_count; ++k) {
-    EXPECT_TRUE(is_output_point(mission, trajectory, trajectory.stages[k].first_point, TrajectoryKind::kFinal));
-    EXPECT_TRUE(is_output_point(mission, trajectory, trajectory.stages[k].last_point, TrajectoryKind::kFinal));
+    EXPECT_TRUE(
+        is_output_point(mission, trajectory, trajectory.stages[k].first_point, TrajectoryKind::kFinal));
+    EXPECT_TRUE(
+        is_output_point(mission, trajectory, trajectory.stages[k].last_point, TrajectoryKind::kFinal));
   }
   EXPECT_LT(listed, trajectory.point_count / 3);
   EXPECT_GT(listed, trajectory.point_count / 6);
@@ -178,7 +188,8 @@ TEST(Sec4Trajectory, NonFiniteInputEndsWithNamedStatusAndNoNaNStored) {
   for (int i = 0; i < trajectory.point_count; ++i) {
     const TrajectoryPoint& p = trajectory.points[i];
     EXPECT_TRUE(p.state.allFinite() && std::isfinite(p.drag_lbf) && std::isfinite(p.lift_lbf) &&
-                std::isfinite(p.alpha_rad) && std::isfinite(p.weight_lb)) << i;
+                std::isfinite(p.alpha_rad) && std::isfinite(p.weight_lb))
+        << i;
   }
 }
 

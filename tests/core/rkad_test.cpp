@@ -73,9 +73,9 @@ TEST(Sec19Rkad, CoastConservesEnergyAndAngularMomentumWithoutRotationAndJ2) {
   const double dt = 10.0;
   for (int i = 0; i < 300; ++i) {  // 3000 s, about half an orbit
     const StateVector f0 = derivative(i * dt, x);
-    x = (i < kRkadStartSteps) ? runge_kutta4_step(derivative, i * dt, x, f0, dt)
-                              : adams_bashforth4_step(x, f0, history.back(0), history.back(1),
-                                                      history.back(2), dt);
+    x = (i < kRkadStartSteps)
+            ? runge_kutta4_step(derivative, i * dt, x, f0, dt)
+            : adams_bashforth4_step(x, f0, history.back(0), history.back(1), history.back(2), dt);
     history.push(f0);
   }
   double e1, h1;

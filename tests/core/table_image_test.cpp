@@ -56,12 +56,12 @@ TEST(TableImage, WritesEveryHeaderFieldLittleEndianAtItsOffset) {
   EXPECT_EQ(image[8], 0x2C);  // image size 812 = 0x032C
   EXPECT_EQ(image[9], 0x03);
   EXPECT_EQ(image[10], 0x00);
-  EXPECT_EQ(image[12], 15);   // segment capacity
-  EXPECT_EQ(image[14], 32);   // segment record size
+  EXPECT_EQ(image[12], 15);  // segment capacity
+  EXPECT_EQ(image[14], 32);  // segment record size
   EXPECT_EQ(image[16], table.segment_count);
-  EXPECT_EQ(image[18], 10);   // gain records
+  EXPECT_EQ(image[18], 10);                                                                 // gain records
   EXPECT_EQ(get_u16_le(image.data() + 20), static_cast<std::uint16_t>(table.spin_option));  // IP(9)
-  EXPECT_EQ(image[22], 0);    // reserved
+  EXPECT_EQ(image[22], 0);                                                                  // reserved
   EXPECT_EQ(image[23], 0);
   EXPECT_EQ(get_u64_le(image.data() + 24), static_cast<std::uint64_t>(table.created_unix_s));
   EXPECT_EQ(std::memcmp(image.data() + 32, "TEST MISSION A", 14), 0);
@@ -79,7 +79,8 @@ TEST(TableImage, WritesEveryHeaderFieldLittleEndianAtItsOffset) {
 TEST(TableImage, UnusedSegmentRecordsAreZero) {
   const GuidanceTable table = test::make_test_table();
   const Image image = encode(table);
-  for (std::size_t i = kOffsetSegments + static_cast<std::size_t>(table.segment_count) * kTableSegmentRecordSize;
+  for (std::size_t i =
+           kOffsetSegments + static_cast<std::size_t>(table.segment_count) * kTableSegmentRecordSize;
        i < kOffsetCrc; ++i) {
     ASSERT_EQ(image[i], 0) << "byte " << i;
   }
@@ -167,11 +168,15 @@ TEST(TableImage, ValidationChecksEveryDocumentedRange) {
       {"gain 101", [](GuidanceTable* t) { t->gains[0].k_theta = 101.0; }, Status::kValueOutOfRange},
       {"negative start", [](GuidanceTable* t) { t->segments[0].start_stage_time_s = -1.0; },
        Status::kValueOutOfRange},
-      {"theta 3.2 rad", [](GuidanceTable* t) { t->segments[1].theta_start_rad = 3.2; }, Status::kValueOutOfRange},
+      {"theta 3.2 rad", [](GuidanceTable* t) { t->segments[1].theta_start_rad = 3.2; },
+       Status::kValueOutOfRange},
       {"stamp negative", [](GuidanceTable* t) { t->created_unix_s = -1; }, Status::kValueOutOfRange},
-      {"stage 4 segment", [](GuidanceTable* t) { t->segments[7].stage_code = 4; }, Status::kSegmentStageInvalid},
-      {"stage 0 segment", [](GuidanceTable* t) { t->segments[0].stage_code = 0; }, Status::kSegmentStageInvalid},
-      {"stage 11 segment", [](GuidanceTable* t) { t->segments[0].stage_code = 11; }, Status::kSegmentStageInvalid},
+      {"stage 4 segment", [](GuidanceTable* t) { t->segments[7].stage_code = 4; },
+       Status::kSegmentStageInvalid},
+      {"stage 0 segment", [](GuidanceTable* t) { t->segments[0].stage_code = 0; },
+       Status::kSegmentStageInvalid},
+      {"stage 11 segment", [](GuidanceTable* t) { t->segments[0].stage_code = 11; },
+       Status::kSegmentStageInvalid},
       {"empty mission id", [](GuidanceTable* t) { t->mission_id[0] = '\0'; }, Status::kTableImageTextInvalid},
       {"control character", [](GuidanceTable* t) { t->generator_version[1] = '\n'; },
        Status::kTableImageTextInvalid},
@@ -246,8 +251,8 @@ TEST(TableImage, Sec22_SegmentStagesFollowTheSpinOptionIP9) {
 }
 
 TEST(Status, EveryTableStatusHasANameAndAMessage) {
-  for (int i = static_cast<int>(Status::kTableImageTruncated); i <= static_cast<int>(Status::kStageEventOutOfOrder);
-       ++i) {
+  for (int i = static_cast<int>(Status::kTableImageTruncated);
+       i <= static_cast<int>(Status::kStageEventOutOfOrder); ++i) {
     const auto s = static_cast<Status>(i);
     EXPECT_STRNE(status_name(s), "kUnknownStatus") << i;
     EXPECT_GT(std::strlen(status_message(s)), 5u) << i;

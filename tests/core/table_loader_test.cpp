@@ -30,8 +30,9 @@ std::vector<std::uint64_t> command_trace(const GuidanceTableService& service) {
   for (int k = 0; k <= 6500; k += 7) {
     const double t = k / 10.0;
     while (next_event < 10 && test::kTestTimeline[next_event].start_s <= t) {
-      EXPECT_EQ(executor.stage_event(test::kTestTimeline[next_event].code, test::kTestTimeline[next_event].start_s),
-                Status::kOk);
+      EXPECT_EQ(
+          executor.stage_event(test::kTestTimeline[next_event].code, test::kTestTimeline[next_event].start_s),
+          Status::kOk);
       ++next_event;
     }
     GuidanceCommand command;
@@ -156,8 +157,9 @@ TEST_F(TableLoader, RejectsLayoutMismatchAndKeepsActiveTable) {
                                  Status::kTableImageLayoutMismatch, "header size 64");
   expect_rejected_keeping_active(patched([](std::uint8_t* b) { put_u16_le(b + kOffsetSegmentCapacity, 16); }),
                                  Status::kTableImageLayoutMismatch, "capacity 16");
-  expect_rejected_keeping_active(patched([](std::uint8_t* b) { put_u16_le(b + kOffsetSegmentRecordSize, 24); }),
-                                 Status::kTableImageLayoutMismatch, "record size 24");
+  expect_rejected_keeping_active(
+      patched([](std::uint8_t* b) { put_u16_le(b + kOffsetSegmentRecordSize, 24); }),
+      Status::kTableImageLayoutMismatch, "record size 24");
 }
 
 TEST_F(TableLoader, RejectsCrcMismatchAndKeepsActiveTable) {
@@ -173,8 +175,9 @@ TEST_F(TableLoader, RejectsCrcMismatchAndKeepsActiveTable) {
 TEST_F(TableLoader, RejectsTooManySegmentsAndKeepsActiveTable) {
   expect_rejected_keeping_active(patched([](std::uint8_t* b) { put_u16_le(b + kOffsetSegmentCount, 16); }),
                                  Status::kTooManyLinearSegments, "count 16");
-  expect_rejected_keeping_active(patched([](std::uint8_t* b) { put_u16_le(b + kOffsetSegmentCount, 0xFFFF); }),
-                                 Status::kTooManyLinearSegments, "count 65535");
+  expect_rejected_keeping_active(
+      patched([](std::uint8_t* b) { put_u16_le(b + kOffsetSegmentCount, 0xFFFF); }),
+      Status::kTooManyLinearSegments, "count 65535");
 }
 
 TEST_F(TableLoader, RejectsNonMonotonicTimesAndKeepsActiveTable) {
@@ -230,8 +233,9 @@ TEST_F(TableLoader, RejectsRateOutsideLimitsAndKeepsActiveTable) {
       patched([&](std::uint8_t* b) { put_f64_le(b + rate1, 2.0 * table.max_pitch_rate_rad_s); }),
       Status::kSegmentRateExceedsLimit, "rate 2 x max, positive");
   // Lowering the image's own limit below a segment's rate is the same fault.
-  expect_rejected_keeping_active(patched([](std::uint8_t* b) { put_f64_le(b + kOffsetMaxPitchRate, 1.0 * kDegToRad); }),
-                                 Status::kSegmentRateExceedsLimit, "limit 1 deg/s under a 2 deg/s segment");
+  expect_rejected_keeping_active(
+      patched([](std::uint8_t* b) { put_f64_le(b + kOffsetMaxPitchRate, 1.0 * kDegToRad); }),
+      Status::kSegmentRateExceedsLimit, "limit 1 deg/s under a 2 deg/s segment");
 }
 
 TEST_F(TableLoader, RejectsReservedBytesAndBadTextAndKeepsActiveTable) {
@@ -239,21 +243,24 @@ TEST_F(TableLoader, RejectsReservedBytesAndBadTextAndKeepsActiveTable) {
                                  Status::kTableImageReservedBytesSet, "header reserved word");
   expect_rejected_keeping_active(patched([](std::uint8_t* b) { b[kOffsetHeaderReserved2 + 15] = 1; }),
                                  Status::kTableImageReservedBytesSet, "header reserved tail");
-  expect_rejected_keeping_active(patched([](std::uint8_t* b) { b[kOffsetSegments + kSegmentOffsetReserved] = 1; }),
-                                 Status::kTableImageReservedBytesSet, "segment reserved bytes");
+  expect_rejected_keeping_active(
+      patched([](std::uint8_t* b) { b[kOffsetSegments + kSegmentOffsetReserved] = 1; }),
+      Status::kTableImageReservedBytesSet, "segment reserved bytes");
   expect_rejected_keeping_active(patched([](std::uint8_t* b) { b[kOffsetCrc - 1] = 1; }),
                                  Status::kTableImageReservedBytesSet, "unused segment record");
   expect_rejected_keeping_active(patched([](std::uint8_t* b) { b[kOffsetMissionId + 2] = 0x07; }),
                                  Status::kTableImageTextInvalid, "control character in mission id");
   expect_rejected_keeping_active(patched([](std::uint8_t* b) { b[kOffsetMissionId + 31] = 'Z'; }),
                                  Status::kTableImageTextInvalid, "text after the NUL padding");
-  expect_rejected_keeping_active(patched([](std::uint8_t* b) { std::memset(b + kOffsetGeneratorVersion, 0, 16); }),
-                                 Status::kTableImageTextInvalid, "empty generator version");
+  expect_rejected_keeping_active(
+      patched([](std::uint8_t* b) { std::memset(b + kOffsetGeneratorVersion, 0, 16); }),
+      Status::kTableImageTextInvalid, "empty generator version");
 }
 
 TEST_F(TableLoader, RejectsOutOfRangeValuesAndBadStageCodesAndKeepsActiveTable) {
-  expect_rejected_keeping_active(patched([](std::uint8_t* b) { put_f64_le(b + kOffsetLiftoffDuration, -3.0); }),
-                                 Status::kValueOutOfRange, "negative lift-off");
+  expect_rejected_keeping_active(
+      patched([](std::uint8_t* b) { put_f64_le(b + kOffsetLiftoffDuration, -3.0); }),
+      Status::kValueOutOfRange, "negative lift-off");
   expect_rejected_keeping_active(
       patched([](std::uint8_t* b) { put_f64_le(b + kOffsetSegments + kSegmentOffsetTheta, 7.0); }),
       Status::kValueOutOfRange, "theta 7 rad");

@@ -90,13 +90,15 @@ void fly_and_run_backward(Case* c, double upper_theta_rad) {
   c->program.point_count = c->nominal.point_count;
   for (int i = 0; i < c->nominal.point_count; ++i) {
     const int code = c->nominal.points[i].stage_code;
-    c->program.theta_rad[i] = (code == 4 || code == 5 || code == 9 || code == 10) ? upper_theta_rad
-                                                                                 : c->nominal.points[i].theta_rad;
+    c->program.theta_rad[i] = (code == 4 || code == 5 || code == 9 || code == 10)
+                                  ? upper_theta_rad
+                                  : c->nominal.points[i].theta_rad;
   }
   ASSERT_EQ(fly_trajectory(c->mission, c->prepared, c->program, &c->nominal), Status::kOk);
   ConstraintTerminal terminals[kTerminalCount];
   test::terminal_partials(c->mission.constants, c->nominal, terminals);
-  ASSERT_EQ(run_backward(c->mission, c->prepared, c->nominal, kTerminalCount, terminals, &c->backward), Status::kOk);
+  ASSERT_EQ(run_backward(c->mission, c->prepared, c->nominal, kTerminalCount, terminals, &c->backward),
+            Status::kOk);
 }
 
 struct StageSpan {
@@ -106,7 +108,8 @@ struct StageSpan {
 
 StageSpan span_of(const Trajectory& t, int code) {
   for (int s = 0; s < t.stage_count; ++s) {
-    if (t.stages[s].code == code) return {t.points[t.stages[s].first_point].time_s, t.points[t.stages[s].last_point].time_s};
+    if (t.stages[s].code == code)
+      return {t.points[t.stages[s].first_point].time_s, t.points[t.stages[s].last_point].time_s};
   }
   ADD_FAILURE() << "stage " << code << " not flown";
   return {};
@@ -124,7 +127,8 @@ void expect_stage_sensitivities_match(Case* c, int code) {
     double predicted[kTerminalCount] = {};
     const auto inside = [&](int i) {
       const TrajectoryPoint& p = c->nominal.points[i];
-      return p.stage_code == code && p.time_s >= span.start_s + w[0] - 1e-9 && p.time_s <= span.start_s + w[1] + 1e-9;
+      return p.stage_code == code && p.time_s >= span.start_s + w[0] - 1e-9 &&
+             p.time_s <= span.start_s + w[1] + 1e-9;
     };
     for (int i = 0; i < c->nominal.point_count; ++i) {
       if (!inside(i)) continue;
@@ -133,13 +137,16 @@ void expect_stage_sensitivities_match(Case* c, int code) {
     }
     static ControlProgram changed;
     double fd[kTerminalCount];
-    test::central_difference(c->mission.constants, [&](double sign, Trajectory* out) {
-      changed = c->program;
-      for (int i = 0; i < c->nominal.point_count; ++i) {
-        if (inside(i)) changed.theta_rad[i] += sign * d_theta;
-      }
-      return fly_trajectory(c->mission, c->prepared, changed, out);
-    }, &c->perturbed, fd);
+    test::central_difference(
+        c->mission.constants,
+        [&](double sign, Trajectory* out) {
+          changed = c->program;
+          for (int i = 0; i < c->nominal.point_count; ++i) {
+            if (inside(i)) changed.theta_rad[i] += sign * d_theta;
+          }
+          return fly_trajectory(c->mission, c->prepared, changed, out);
+        },
+        &c->perturbed, fd);
     char what[64];
     std::snprintf(what, sizeof what, "stage %d theta +%.1f-%.1f s", code, w[0], w[1]);
     expect_agreement(what, predicted, fd);
@@ -150,7 +157,8 @@ void expect_stage_sensitivities_match(Case* c, int code) {
   // The state in mid-stage.
   int point = 0;
   for (int i = 0; i < c->nominal.point_count; ++i) {
-    if (c->nominal.points[i].stage_code == code && c->nominal.points[i].time_s <= span.start_s + 0.5 * length) point = i;
+    if (c->nominal.points[i].stage_code == code && c->nominal.points[i].time_s <= span.start_s + 0.5 * length)
+      point = i;
   }
   const double sizes[6] = {0.5, 1e-4, 50.0, 1e-4, 1e-6, 1e-6};
   for (int i = 0; i < 6; ++i) {
@@ -158,11 +166,14 @@ void expect_stage_sensitivities_match(Case* c, int code) {
     inputs.program = &c->program;
     inputs.injection_point = point;
     double fd[kTerminalCount], predicted[kTerminalCount];
-    test::central_difference(c->mission.constants, [&](double sign, Trajectory* out) {
-      inputs.injection = StateVector::Zero();
-      inputs.injection[i] = sign * sizes[i];
-      return fly_trajectory(c->mission, c->prepared, inputs, out);
-    }, &c->perturbed, fd);
+    test::central_difference(
+        c->mission.constants,
+        [&](double sign, Trajectory* out) {
+          inputs.injection = StateVector::Zero();
+          inputs.injection[i] = sign * sizes[i];
+          return fly_trajectory(c->mission, c->prepared, inputs, out);
+        },
+        &c->perturbed, fd);
     for (int j = 0; j < kTerminalCount; ++j) predicted[j] = c->backward.lambda[point](i, j) * sizes[i];
     char what[64];
     std::snprintf(what, sizeof what, "stage %d t=%.2f dX[%d]", code, c->nominal.points[point].time_s, i);
@@ -226,7 +237,8 @@ TEST(Sec5Adjoint, Sec22_IP9Is3_FiveStageVehicleStage5PitchProgramSensitivitiesMa
   // The five stages within the powered-step capacity (data block 16: 168); one step more is a
   // named fault.
   int powered_steps = 0;
-  for (int code = 1; code <= kMaxPoweredStages; ++code) powered_steps += c.mission.vehicle.stages[stage_index(code)].integration_steps;
+  for (int code = 1; code <= kMaxPoweredStages; ++code)
+    powered_steps += c.mission.vehicle.stages[stage_index(code)].integration_steps;
   EXPECT_LE(powered_steps, kMaxPoweredSteps);
   static Mission over;
   over = c.mission;

@@ -47,7 +47,8 @@ TEST(Sec4VerticalFlight, CoordinatesRoundTripAndTheirJacobiansAreInverseAndExact
       xp[c] += steps[c];
       xm[c] -= steps[c];
       const StateVector fd = (to_vertical_coordinates(xp) - to_vertical_coordinates(xm)) / (2.0 * steps[c]);
-      for (int r = 0; r < 6; ++r) EXPECT_NEAR(j(r, c), fd[r], 1e-6 * (1.0 + std::fabs(fd[r]))) << r << "," << c;
+      for (int r = 0; r < 6; ++r)
+        EXPECT_NEAR(j(r, c), fd[r], 1e-6 * (1.0 + std::fabs(fd[r]))) << r << "," << c;
     }
   }
 }
@@ -159,7 +160,8 @@ TEST(Sec4VerticalFlight, StepsFromTheLiftOffMatchAFineInertialIntegration) {
     const StateVector& with_hold_flown = held.points[step.point + 1].state;
     heading = flown[kStatePsi];
     const double psi_error = std::fabs(std::remainder(flown[kStatePsi] - truth[kStatePsi], 2 * kPi));
-    const double hold_psi_error = std::fabs(std::remainder(with_hold_flown[kStatePsi] - truth[kStatePsi], 2 * kPi));
+    const double hold_psi_error =
+        std::fabs(std::remainder(with_hold_flown[kStatePsi] - truth[kStatePsi], 2 * kPi));
     std::printf("t=%5.1f  V %.6f/%.6f ft/s  gamma %.6f/%.6f deg  psi %.4f/%.4f deg (held %.4f)\n",
                 step.command.step_start_s + step.command.step_s, flown[kStateV], truth[kStateV],
                 flown[kStateGamma] * kRadToDeg, truth[kStateGamma] * kRadToDeg, flown[kStatePsi] * kRadToDeg,
@@ -180,8 +182,9 @@ TEST(Sec5Adjoint, NearVerticalStepsWithoutTheHoldMatchCentralDifferences) {
   const auto terminal = [&](const Trajectory& t, int which) {
     const StateVector& x = t.final_point().state;
     const InertialVelocity iv = inertial_velocity(k, x);
-    return which == 0 ? x[kStateR] - oblate_radius_ft(k, x[kStateLambda])
-                      : which == 1 ? iv.flight_path_angle_rad : iv.velocity_ft_s;
+    return which == 0   ? x[kStateR] - oblate_radius_ft(k, x[kStateLambda])
+           : which == 1 ? iv.flight_path_angle_rad
+                        : iv.velocity_ft_s;
   };
   ConstraintTerminal terminals[3];
   const StateVector xf = f.nominal.final_point().state;
@@ -211,7 +214,8 @@ TEST(Sec5Adjoint, NearVerticalStepsWithoutTheHoldMatchCentralDifferences) {
     for (int j = 0; j < 3; ++j) fd[j] = (plus[j] - terminal(f.perturbed, j)) / 2.0;
     for (int j = 0; j < 3; ++j) {
       std::printf("%-24s terminal %d  adjoint % .6e  fd % .6e\n", what, j, predicted[j], fd[j]);
-      EXPECT_LE(std::fabs(predicted[j] - fd[j]), 1e-3 * std::fabs(fd[j]) + 1e-12) << what << " terminal " << j;
+      EXPECT_LE(std::fabs(predicted[j] - fd[j]), 1e-3 * std::fabs(fd[j]) + 1e-12)
+          << what << " terminal " << j;
     }
   };
 

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "cli_runner.hpp"
-#include "tolip_ground/card_deck.hpp"
 #include "deck_test_support.hpp"
+#include "tolip_ground/card_deck.hpp"
 
 namespace tolip::test {
 namespace {
@@ -31,7 +31,8 @@ const std::vector<Edit>& reported_edits() {
   static const std::vector<Edit> edits = {
       {"vacuum_thrust_lbf = [\n  0.0, 68199.8", "vacuum_thrust_lbf = [\n  0.0, -68199.8", 30,
        "stage.1.thrust.vacuum_thrust_lbf[1]", "vacuum_thrust_lbf[1] = -68199.8 lbf", "expected >= 0 lbf"},
-      {"g0_ft_s2 = 32.174", "g0_ft_s2 = 0.0", 10, "constants.g0_ft_s2", "g0_ft_s2 = 0 ft/s^2", "expected > 0 ft/s^2"},
+      {"g0_ft_s2 = 32.174", "g0_ft_s2 = 0.0", 10, "constants.g0_ft_s2", "g0_ft_s2 = 0 ft/s^2",
+       "expected > 0 ft/s^2"},
       {"inverse_flattening = 298.3", "inverse_flattening = 1.0", 10, "constants.inverse_flattening",
        "inverse_flattening = 1", "expected > 1 (or 0 for a spherical Earth)"},
       {"geocentric_latitude_deg = 37.653239661", "geocentric_latitude_deg = 95.0", 21,
@@ -44,16 +45,16 @@ const std::vector<Edit>& reported_edits() {
        "liftoff_duration_s = 0 s", "expected > 0 s"},
       {"zero_alpha_end_s = 45.0", "zero_alpha_end_s = 400.0", 22, "control_constraints.zero_alpha_end_s",
        "zero_alpha_end_s = 400 s", "expected 15 < zero_alpha_end_s <= 45.02 s"},
-      {"max_forward_trajectories = 30", "max_forward_trajectories = 0", 28, "convergence.max_forward_trajectories",
-       "max_forward_trajectories = 0", "expected >= 1"},
+      {"max_forward_trajectories = 30", "max_forward_trajectories = 0", 28,
+       "convergence.max_forward_trajectories", "max_forward_trajectories = 0", "expected >= 1"},
       {"deadband_optimization_ft = 20000.0", "deadband_optimization_ft = 0.0", 29,
        "constraint[1].deadband_optimization_ft", "deadband_optimization_ft = 0 ft", "expected > 0 ft"},
       {"azimuth_deg = 100.0 ", "azimuth_deg = 1e20 ", 21, "launch.azimuth_deg", "azimuth_deg = 1e+20 deg",
        "expected -360 <= azimuth_deg <= 360 deg"},
       {"stage4_theta_deg = -20.0", "stage4_theta_deg = 1e10", 17, "misc.stage4_theta_deg",
        "stage4_theta_deg = 10000000000 deg", "expected -360 <= stage4_theta_deg <= 360 deg"},
-      {"theta_deg = [90.0,", "theta_deg = [1e308,", 40, "pitch_program.theta_deg[0]", "theta_deg[0] = 1e+308 deg",
-       "expected -360 <= theta_deg[0] <= 360 deg"},
+      {"theta_deg = [90.0,", "theta_deg = [1e308,", 40, "pitch_program.theta_deg[0]",
+       "theta_deg[0] = 1e+308 deg", "expected -360 <= theta_deg[0] <= 360 deg"},
       {"altitude_ft = 10.0", "altitude_ft = -1e7", 21, "launch.altitude_ft", "altitude_ft = -10000000 ft",
        "expected -1500 <= altitude_ft <= 100000 ft"},
       {"remaining_lb = [\n  560.0, 559.448, 557.048, 551.669, 518.897, 454.347, 368.279, 280.888",
@@ -78,7 +79,8 @@ TEST(AbsurdDeck, EveryReportedRejectionNamesTheKeyTheValueAndTheAllowedRange) {
 
 TEST(AbsurdDeck, StageWithThrustButNoPropellantIsRejectedNamingBlock38) {
   const std::string weights =
-      "remaining_lb = [\n  560.0, 559.448, 557.048, 551.669, 518.897, 454.347, 368.279, 280.888, 192.172, 125.636,\n"
+      "remaining_lb = [\n  560.0, 559.448, 557.048, 551.669, 518.897, 454.347, 368.279, 280.888, 192.172, "
+      "125.636,\n"
       "  71.292, 40.341, 22.135, 8.562, 2.383, 0.463, 0.0,\n]";
   std::string zeros = "remaining_lb = [";
   for (int i = 0; i < 17; ++i) zeros += i == 0 ? "0.0" : ", 0.0";
@@ -111,7 +113,8 @@ TEST(AbsurdDeck, UnknownConstraintCodeIsRejectedAsUnknownBeforeAnyUnitKeyIsAsked
   EXPECT_TRUE(contains(message, "expected 0-13 (terminal), 14 (heating, last), X5-X9")) << message;
   EXPECT_FALSE(contains(message, "lb_ft2")) << message;
   // A code that is no code at all is named the same way.
-  const ground::DeckError other = rejected(replaced(scout_mission_text(), "code = 7\ndesired_ft", "code = 50\ndesired_ft"));
+  const ground::DeckError other =
+      rejected(replaced(scout_mission_text(), "code = 7\ndesired_ft", "code = 50\ndesired_ft"));
   EXPECT_TRUE(contains(other.to_string(), "unknown constraint code 50")) << other.to_string();
 }
 
@@ -125,7 +128,8 @@ TEST(AbsurdCardDeck, RangeRejectionNamesTheCardColumnsTheValueAndTheRange) {
   ASSERT_FALSE(ground::parse_deck(text, "absurd.dat", deck.get(), &error));
   const std::string message = error.to_string();
   EXPECT_TRUE(contains(message, "columns 49-60: case 1, data block 21, word 5")) << message;
-  EXPECT_TRUE(contains(message, "azimuth_deg = 1e+20 deg; expected -360 <= azimuth_deg <= 360 deg")) << message;
+  EXPECT_TRUE(contains(message, "azimuth_deg = 1e+20 deg; expected -360 <= azimuth_deg <= 360 deg"))
+      << message;
 }
 
 std::string write_deck(const ScratchDirectory& scratch, const std::string& name, const std::string& text) {
@@ -136,15 +140,16 @@ std::string write_deck(const ScratchDirectory& scratch, const std::string& name,
 
 TEST(AbsurdCli, OptimizeOfADeckWithAZeroDeadbandPrintsNothingAndExitsTwo) {
   ScratchDirectory scratch("absurd_deadband");
-  const std::string deck = write_deck(
-      scratch, "deadband.toml",
-      replaced(scout_mission_text(), "deadband_optimization_ft_s = 20.0", "deadband_optimization_ft_s = 0.0"));
+  const std::string deck = write_deck(scratch, "deadband.toml",
+                                      replaced(scout_mission_text(), "deadband_optimization_ft_s = 20.0",
+                                               "deadband_optimization_ft_s = 0.0"));
   for (const bool json : {false, true}) {
     const CommandResult run = json ? run_tolip_executable({"optimize", deck, "--json", "--no-progress"})
                                    : run_tolip_executable({"optimize", deck, "--no-progress"});
     EXPECT_EQ(run.exit_code, 2) << run.err;
     EXPECT_TRUE(run.out.empty()) << run.out;
-    EXPECT_TRUE(contains(run.err, "data block 29, field constraint[3].deadband_optimization_ft_s")) << run.err;
+    EXPECT_TRUE(contains(run.err, "data block 29, field constraint[3].deadband_optimization_ft_s"))
+        << run.err;
     EXPECT_TRUE(contains(run.err, "deadband_optimization_ft_s = 0 ft/s; expected > 0 ft/s")) << run.err;
   }
 }
@@ -179,7 +184,8 @@ TEST(AbsurdCli, ExportRejectsAnEmptyMissionIdInsteadOfUsingTheTitle) {
       run_tolip_executable({"export", example_path("scout/mission.toml"), "--out", out, "--mission-id", ""});
   EXPECT_EQ(run.exit_code, 2) << run.err;
   EXPECT_TRUE(run.out.empty()) << run.out;
-  EXPECT_TRUE(contains(run.err, "--mission-id: an empty value: expected 1-32 printable ASCII characters")) << run.err;
+  EXPECT_TRUE(contains(run.err, "--mission-id: an empty value: expected 1-32 printable ASCII characters"))
+      << run.err;
   EXPECT_TRUE(scratch.entries().empty());
 }
 

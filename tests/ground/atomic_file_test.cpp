@@ -72,8 +72,7 @@ TEST(AtomicFile, RenderedContentsAreWritten) {
   const std::filesystem::path path = scratch / "rendered.txt";
   std::string error;
   ASSERT_TRUE(write_file_atomically(
-      path.string(), [](std::ostream& out) { return static_cast<bool>(out << "x=" << 42 << '\n'); },
-      &error))
+      path.string(), [](std::ostream& out) { return static_cast<bool>(out << "x=" << 42 << '\n'); }, &error))
       << error;
   EXPECT_EQ(read_text_file(path), "x=42\n");
 }
@@ -84,9 +83,8 @@ TEST(AtomicFile, TempPathIsInTheSameDirectoryAndNamesThePid) {
 }
 
 TEST(AtomicFile, InjectedFailureAtEveryStepLeavesTheOldFileAndNoTemp) {
-  for (AtomicWriteStep step : {AtomicWriteStep::kOpen, AtomicWriteStep::kWrite,
-                               AtomicWriteStep::kSync, AtomicWriteStep::kClose,
-                               AtomicWriteStep::kRename}) {
+  for (AtomicWriteStep step : {AtomicWriteStep::kOpen, AtomicWriteStep::kWrite, AtomicWriteStep::kSync,
+                               AtomicWriteStep::kClose, AtomicWriteStep::kRename}) {
     ScratchDirectory scratch("atomic_fault_" + std::to_string(static_cast<int>(step)));
     const std::filesystem::path path = scratch / "table.csv";
     write_plain(path, "precious\n");

@@ -53,7 +53,8 @@ void expect_reference_model(const BodyDynamicsBlocks& deck) {
 TEST(Sec22BodyDynamicsDeck, TomlDeckFillsTheCoreModelInFeet) {
   auto mission = ground::make_mission();
   ground::DeckError error;
-  ASSERT_TRUE(ground::parse_toml_deck(scout_mission_text(), "mission.toml", mission.get(), &error)) << error.to_string();
+  ASSERT_TRUE(ground::parse_toml_deck(scout_mission_text(), "mission.toml", mission.get(), &error))
+      << error.to_string();
   expect_reference_model(mission->body_dynamics);
   MissionFault fault;
   EXPECT_EQ(validate_body_dynamics(*mission, &fault), Status::kOk);
@@ -63,7 +64,8 @@ TEST(Sec22BodyDynamicsDeck, CardDeckFillsTheSameModel) {
   auto mission = ground::make_mission();
   ground::DeckExtras extras;
   ground::DeckError error;
-  ASSERT_TRUE(ground::load_single_case_deck(example_path("scout/mission.dat"), mission.get(), &extras, &error))
+  ASSERT_TRUE(
+      ground::load_single_case_deck(example_path("scout/mission.dat"), mission.get(), &extras, &error))
       << error.to_string();
   expect_reference_model(mission->body_dynamics);
 }
@@ -95,8 +97,8 @@ TEST(Sec22BodyDynamicsDeck, WithoutBodyDynamicsSectionTheModelIsAbsent) {
 }
 
 TEST(Sec22BodyDynamicsDeck, ControlStationInsideTheCgRangeIsNamed) {
-  const std::string text =
-      replaced(scout_mission_text(), "control_station_in = [842.0, 548.0, 296.0]", "control_station_in = [500.0, 548.0, 296.0]");
+  const std::string text = replaced(scout_mission_text(), "control_station_in = [842.0, 548.0, 296.0]",
+                                    "control_station_in = [500.0, 548.0, 296.0]");
   const ground::DeckError error = rejected(text);
   EXPECT_EQ(error.data_block, 33);
   EXPECT_EQ(error.field, "body_dynamics.control_station_in[0]");
@@ -106,10 +108,12 @@ TEST(Sec22BodyDynamicsDeck, ControlStationInsideTheCgRangeIsNamed) {
 }
 
 TEST(Sec22BodyDynamicsDeck, CgTableLongerThanTheCardsIsRejected) {
-  const std::string text = replaced(scout_mission_text(),
-                                    "stage_time_s = [0.0, 10.0, 20.0, 30.0, 40.0, 45.0]\nstation_in = [515.0, 510.0, 502.0, 492.0, 482.0, 478.0]",
-                                    "stage_time_s = [0, 4, 8, 12, 16, 20, 24, 28, 32, 36, 40, 45]\n"
-                                    "station_in = [515, 513, 511, 509, 506, 502, 498, 494, 490, 486, 482, 478]");
+  const std::string text =
+      replaced(scout_mission_text(),
+               "stage_time_s = [0.0, 10.0, 20.0, 30.0, 40.0, 45.0]\nstation_in = [515.0, 510.0, 502.0, "
+               "492.0, 482.0, 478.0]",
+               "stage_time_s = [0, 4, 8, 12, 16, 20, 24, 28, 32, 36, 40, 45]\n"
+               "station_in = [515, 513, 511, 509, 506, 502, 498, 494, 490, 486, 482, 478]");
   const ground::DeckError error = rejected(text);
   EXPECT_EQ(error.data_block, 37);
   EXPECT_NE(error.message.find("at most 10"), std::string::npos) << error.message;

@@ -7,9 +7,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <cstdint>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -88,7 +88,9 @@ const char* const kBodyCards = R"( 33  1 16
                       0.        190.         36.        175.      1.0E10
 )";
 
-std::string options_card(const std::string& digits) { return "  4  1 24     OPTIONS IP(1..24)\n" + digits + "\n"; }
+std::string options_card(const std::string& digits) {
+  return "  4  1 24     OPTIONS IP(1..24)\n" + digits + "\n";
+}
 
 // The deck: title, options, vehicle (and extra optimization cards), the blank card, the optional
 // groups (each with its blank card), the 999 card.
@@ -207,20 +209,22 @@ TEST(CardDeck, ConstantsPatchedWordByWord) {
 // Issue 17: CT1 word 12 = 0 is the spherical Earth (docs/deck-format.md, data block 10), read
 // and validated like the TOML deck's `inverse_flattening = 0`; 1 or a negative value stay errors.
 TEST(CardDeck, Sec4Earth_InverseFlatteningZeroInCt1Word12IsTheSphere) {
-  const Parsed parsed = parse(deck_text("001000000000001000000000", " 10 12 12     SPHERICAL EARTH\n          0.\n"));
+  const Parsed parsed =
+      parse(deck_text("001000000000001000000000", " 10 12 12     SPHERICAL EARTH\n          0.\n"));
   ASSERT_TRUE(parsed.ok) << parsed.error.to_string();
   const Mission& m = *parsed.deck.cases[0].mission;
   EXPECT_EQ(m.constants.inverse_flattening, 0.0);
   EXPECT_EQ(validate_mission(m, nullptr), Status::kOk);
   const Parsed one = parse(deck_text("001000000000001000000000", " 10 12 12\n          1.\n"));
   ASSERT_FALSE(one.ok);
-  EXPECT_NE(one.error.to_string().find("or 0 for a spherical Earth"), std::string::npos) << one.error.to_string();
+  EXPECT_NE(one.error.to_string().find("or 0 for a spherical Earth"), std::string::npos)
+      << one.error.to_string();
 }
 
 TEST(CardDeck, FortranNumberFormsAreRead) {
   // Blanks around a number, a leading point, exponents with E, D or only a sign (FORTRAN E input).
-  const Parsed parsed = parse(deck_text("001000000000001000000000",
-                                        " 21  1  3\n1.0E1       -.7548D2    +3.7+1\n"));
+  const Parsed parsed =
+      parse(deck_text("001000000000001000000000", " 21  1  3\n1.0E1       -.7548D2    +3.7+1\n"));
   ASSERT_TRUE(parsed.ok) << parsed.error.to_string();
   const Mission& m = *parsed.deck.cases[0].mission;
   EXPECT_EQ(m.launch.altitude_ft, 10.0);
@@ -231,7 +235,8 @@ TEST(CardDeck, FortranNumberFormsAreRead) {
 // ---- successive cases ---------------------------------------------------------------------------
 
 TEST(CardDeck, SuccessiveCasesGiveOnlyTheChangedWords) {
-  const std::string text = std::string(kTitleCards) + options_card("001000000000001000000000") + kVehicleCards +
+  const std::string text = std::string(kTitleCards) + options_card("001000000000001000000000") +
+                           kVehicleCards +
                            "\n"
                            "  2  1 12\n"
                            "SECOND CASE: AZIMUTH 95, ONE THRUST LEVEL\n"
@@ -275,7 +280,8 @@ TEST(CardDeck, SeveralCasesSimulateAsAJsonArray) {
   const std::string path = (scratch / "cases.dat").string();
   std::ofstream(path) << std::string(kTitleCards) + options_card("001000000000001000000000") + kVehicleCards +
                              "\n 21  5  5\n         95.\n\n999\n";
-  const CommandResult result = run_tolip_executable({"simulate", path, "--json", "--csv", (scratch / "p.csv").string()});
+  const CommandResult result =
+      run_tolip_executable({"simulate", path, "--json", "--csv", (scratch / "p.csv").string()});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const nlohmann::json documents = nlohmann::json::parse(result.out);
   ASSERT_TRUE(documents.is_array());
@@ -298,10 +304,11 @@ TEST(CardDeck, SeveralCasesSimulateAsAJsonArray) {
 // ---- optional groups ----------------------------------------------------------------------------
 
 TEST(CardDeck, RadarGroupFollowsTheBlankCard) {
-  const std::string radar = " 41        2  RADAR: 2 STATION CARDS\n"
-                            "WALLOPS            37.86      -75.51         40. Wallops Island, VA\n"
-                            "BERMUDA            32.35      -64.66         60.\n"
-                            "\n";
+  const std::string radar =
+      " 41        2  RADAR: 2 STATION CARDS\n"
+      "WALLOPS            37.86      -75.51         40. Wallops Island, VA\n"
+      "BERMUDA            32.35      -64.66         60.\n"
+      "\n";
   const Parsed parsed = parse(deck_text("001000000000001000000001", "", radar));
   ASSERT_TRUE(parsed.ok) << parsed.error.to_string();
   const DeckExtras& x = parsed.deck.cases[0].extras;
@@ -315,17 +322,18 @@ TEST(CardDeck, RadarGroupFollowsTheBlankCard) {
 }
 
 TEST(CardDeck, ImpactGroupWithItsBlock33WordsAndExtensions) {
-  const std::string impact = " 42  1  8  1\n"
-                             "                      0.         .45          1.          .7          5.\n"
-                             "         .46      1.0E10\n"
-                             " 43  1  8  1\n"
-                             "                      0.         8.5          1.         11.          5.\n"
-                             "          9.      1.0E10\n"
-                             " 23  1  3  1  EXTENSION: AREAS AND CASING WEIGHT\n"
-                             "          9.         10.       4500.\n"
-                             " 33 17 19\n"
-                             "  3.  2.  2.\n"
-                             "\n";
+  const std::string impact =
+      " 42  1  8  1\n"
+      "                      0.         .45          1.          .7          5.\n"
+      "         .46      1.0E10\n"
+      " 43  1  8  1\n"
+      "                      0.         8.5          1.         11.          5.\n"
+      "          9.      1.0E10\n"
+      " 23  1  3  1  EXTENSION: AREAS AND CASING WEIGHT\n"
+      "          9.         10.       4500.\n"
+      " 33 17 19\n"
+      "  3.  2.  2.\n"
+      "\n";
   // The last card of block 33 packs its numbers: E12.8 fields are 12 columns wide.
   const std::string fixed_impact = edited(impact, "  3.  2.  2.", "          3.          2.          2.");
   const Parsed parsed = parse(deck_text("001000000000001000000010", "", fixed_impact));
@@ -346,26 +354,27 @@ TEST(CardDeck, ImpactGroupWithItsBlock33WordsAndExtensions) {
 }
 
 TEST(CardDeck, HardoverGroupWithBlocks44And45) {
-  const std::string hardover = " 44  1  6  1  IYY STAGE 1\n"
-                               "                      0.     300000.         10.     150000.      1.0E10\n"
-                               " 44  1  6  4  CMQ (STAGE CODE 4)\n"
-                               "                      0.        -30.          5.        -20.      1.0E10\n"
-                               " 45  1 26\n"
-                               "          2.       3000.          2.          .1         .01        100.\n"
-                               "         .25          .1          .1        800.          5.        150.\n"
-                               "        100.        100.         70.        400.        200.        450.\n"
-                               "        250.          .5          3.          3.          3.          .2\n"
-                               "         .01        100.\n"
-                               " 33  7 16\n"
-                               "        842.        548.        296.       .0011        600.          1.\n"
-                               "          1.          1.          1.     3.33333\n"
-                               " 37  1  6  1\n"
-                               "                      0.        515.         10.        480.      1.0E10\n"
-                               " 37  1  6  2\n"
-                               "                      0.        330.         38.        300.      1.0E10\n"
-                               " 37  1  6  3\n"
-                               "                      0.        190.         36.        175.      1.0E10\n"
-                               "\n";
+  const std::string hardover =
+      " 44  1  6  1  IYY STAGE 1\n"
+      "                      0.     300000.         10.     150000.      1.0E10\n"
+      " 44  1  6  4  CMQ (STAGE CODE 4)\n"
+      "                      0.        -30.          5.        -20.      1.0E10\n"
+      " 45  1 26\n"
+      "          2.       3000.          2.          .1         .01        100.\n"
+      "         .25          .1          .1        800.          5.        150.\n"
+      "        100.        100.         70.        400.        200.        450.\n"
+      "        250.          .5          3.          3.          3.          .2\n"
+      "         .01        100.\n"
+      " 33  7 16\n"
+      "        842.        548.        296.       .0011        600.          1.\n"
+      "          1.          1.          1.     3.33333\n"
+      " 37  1  6  1\n"
+      "                      0.        515.         10.        480.      1.0E10\n"
+      " 37  1  6  2\n"
+      "                      0.        330.         38.        300.      1.0E10\n"
+      " 37  1  6  3\n"
+      "                      0.        190.         36.        175.      1.0E10\n"
+      "\n";
   const Parsed parsed = parse(deck_text("001000000000001000000100", "", hardover));
   ASSERT_TRUE(parsed.ok) << parsed.error.to_string();
   const DeckExtras& x = parsed.deck.cases[0].extras;
@@ -388,23 +397,24 @@ TEST(CardDeck, HardoverGroupWithBlocks44And45) {
 }
 
 TEST(CardDeck, DispersionGroupEntriesStartWithBlock46) {
-  const std::string dispersion = " 46        9  BLANK RANGE: THE WHOLE TITLE\n"
-                                 "WEIGHT HI S1\n"
-                                 " 47  1  1  1\n"
-                                 "        150.\n"
-                                 " 46  1  2 17\n"
-                                 "DRAG HIGH\n"
-                                 " 48  1  1\n"
-                                 "         .15\n"
-                                 " 46  1  2 36\n"
-                                 "WINDS HIGH\n"
-                                 " 53  1  6\n"
-                                 "                      0.         25.      40000.        250.      1.0E10\n"
-                                 " 54  1  6\n"
-                                 "                      0.        280.     250000.        280.      1.0E10\n"
-                                 " 46  1  2 40\n"
-                                 "NOMINAL TRAJ\n"
-                                 "\n";
+  const std::string dispersion =
+      " 46        9  BLANK RANGE: THE WHOLE TITLE\n"
+      "WEIGHT HI S1\n"
+      " 47  1  1  1\n"
+      "        150.\n"
+      " 46  1  2 17\n"
+      "DRAG HIGH\n"
+      " 48  1  1\n"
+      "         .15\n"
+      " 46  1  2 36\n"
+      "WINDS HIGH\n"
+      " 53  1  6\n"
+      "                      0.         25.      40000.        250.      1.0E10\n"
+      " 54  1  6\n"
+      "                      0.        280.     250000.        280.      1.0E10\n"
+      " 46  1  2 40\n"
+      "NOMINAL TRAJ\n"
+      "\n";
   const Parsed parsed = parse(deck_text("001000000000001000001000", kBodyCards, dispersion));
   ASSERT_TRUE(parsed.ok) << parsed.error.to_string();
   const DeckExtras& x = parsed.deck.cases[0].extras;
@@ -429,14 +439,16 @@ TEST(CardDeck, DispersionGroupEntriesStartWithBlock46) {
 
 TEST(CardDeck, GroupsAreReadInTheManualsOrderAndAfreshPerCase) {
   const std::string radar = " 41        1\nWALLOPS            37.86      -75.51         40.\n\n";
-  const std::string impact = " 42  1  6  1\n                      0.         .45          5.         .46      1.0E10\n"
-                             " 43  1  6  1\n                      0.         8.5          5.          9.      1.0E10\n"
-                             " 33 17 19\n          3.          2.          2.\n\n";
+  const std::string impact =
+      " 42  1  6  1\n                      0.         .45          5.         .46      1.0E10\n"
+      " 43  1  6  1\n                      0.         8.5          5.          9.      1.0E10\n"
+      " 33 17 19\n          3.          2.          2.\n\n";
   // Impact (IP(23)) comes before radar (IP(24)); the second case repeats both groups, with one
   // station only this time.
   const std::string radar2 = " 41        1\nBERMUDA            32.35      -64.66         60.\n\n";
-  const std::string text = std::string(kTitleCards) + options_card("001000000000001000000011") + kVehicleCards + "\n" +
-                           impact + radar + " 21  5  5\n         95.\n\n" + impact + radar2 + "999\n";
+  const std::string text = std::string(kTitleCards) + options_card("001000000000001000000011") +
+                           kVehicleCards + "\n" + impact + radar + " 21  5  5\n         95.\n\n" + impact +
+                           radar2 + "999\n";
   const Parsed parsed = parse(text);
   ASSERT_TRUE(parsed.ok) << parsed.error.to_string();
   ASSERT_EQ(parsed.deck.cases.size(), 2u);
@@ -445,26 +457,31 @@ TEST(CardDeck, GroupsAreReadInTheManualsOrderAndAfreshPerCase) {
   EXPECT_EQ(parsed.deck.cases[1].extras.radar_stations[0].id, "BERMUDA");
   EXPECT_TRUE(parsed.deck.cases[1].extras.impact.present);
   // Radar before impact is out of the manual's order.
-  const std::string swapped = std::string(kTitleCards) + options_card("001000000000001000000011") + kVehicleCards +
-                              "\n" + radar + impact + "999\n";
+  const std::string swapped = std::string(kTitleCards) + options_card("001000000000001000000011") +
+                              kVehicleCards + "\n" + radar + impact + "999\n";
   const std::string message = rejection(swapped);
-  EXPECT_TRUE(contains(message, "data block 41 (RADAR STATION LOCATIONS) belongs to the radar data (IP(24)), not to "
-                                "the impact data (IP(23))"))
+  EXPECT_TRUE(contains(message,
+                       "data block 41 (RADAR STATION LOCATIONS) belongs to the radar data (IP(24)), not to "
+                       "the impact data (IP(23))"))
       << message;
 }
 
 // ---- malformed decks ----------------------------------------------------------------------------
 
 TEST(CardDeckErrors, LetterInANumericField) {
-  const std::string message = rejection(edited(deck_text(), "        100.         90.", "        1O0.         90."));
+  const std::string message =
+      rejection(edited(deck_text(), "        100.         90.", "        1O0.         90."));
   EXPECT_EQ(message,
-            "test.dat: card 20, columns 49-60: case 1, data block 21, word 5: letter 'O' in a numeric field: '1O0.' is "
-            "not an E12.8 number such as 1.5, -.25 or 1.0E10 (data card 1 of 1 for the header on card 19, words 1-6)");
+            "test.dat: card 20, columns 49-60: case 1, data block 21, word 5: letter 'O' in a numeric field: "
+            "'1O0.' is "
+            "not an E12.8 number such as 1.5, -.25 or 1.0E10 (data card 1 of 1 for the header on card 19, "
+            "words 1-6)");
 }
 
 TEST(CardDeckErrors, LetterInAnIntegerField) {
   const std::string message = rejection(edited(deck_text(), "  2  3  1  1", "  2  X  1  1"));
-  EXPECT_TRUE(contains(message, "card 14, columns 4-6: case 1, data block 9, word 2: letter 'X' in a numeric field"))
+  EXPECT_TRUE(
+      contains(message, "card 14, columns 4-6: case 1, data block 9, word 2: letter 'X' in a numeric field"))
       << message;
 }
 
@@ -473,8 +490,9 @@ TEST(CardDeckErrors, LetterInAnIntegerField) {
 TEST(CardDeck, Sec22_Block27WeightsAreByCodeNumber) {
   // Codes 1 and 3 (stage-4 theta, coast after stage 3) with the manual's layout: DA12(1), DA12(3).
   const std::string scout = read_text_file(example_path("scout/mission.dat"));
-  ASSERT_TRUE(contains(scout, " 27  1  1     OPTIMIZATION PARAMETER WEIGHTS DA12\n         10.\n"
-                              " 27  3  3     OPTIMIZATION PARAMETER WEIGHTS DA12\n       .0001\n"));
+  ASSERT_TRUE(contains(scout,
+                       " 27  1  1     OPTIMIZATION PARAMETER WEIGHTS DA12\n         10.\n"
+                       " 27  3  3     OPTIMIZATION PARAMETER WEIGHTS DA12\n       .0001\n"));
   const Parsed manual = parse(scout);
   ASSERT_TRUE(manual.ok) << manual.error.to_string();
   const AdjustableParameters& a = manual.deck.cases[0].mission->adjustable;
@@ -484,10 +502,11 @@ TEST(CardDeck, Sec22_Block27WeightsAreByCodeNumber) {
   EXPECT_EQ(a.codes[1], 3);
   EXPECT_EQ(a.weights[1], 1e-4);
   // One card with the unused word 2 blank is the same deck.
-  const Parsed blank_word = parse(replaced(scout,
-                                           " 27  1  1     OPTIMIZATION PARAMETER WEIGHTS DA12\n         10.\n"
-                                           " 27  3  3     OPTIMIZATION PARAMETER WEIGHTS DA12\n       .0001\n",
-                                           " 27  1  3\n         10.                   .0001\n"));
+  const Parsed blank_word =
+      parse(replaced(scout,
+                     " 27  1  1     OPTIMIZATION PARAMETER WEIGHTS DA12\n         10.\n"
+                     " 27  3  3     OPTIMIZATION PARAMETER WEIGHTS DA12\n       .0001\n",
+                     " 27  1  3\n         10.                   .0001\n"));
   ASSERT_TRUE(blank_word.ok) << blank_word.error.to_string();
   EXPECT_EQ(blank_word.deck.cases[0].mission->adjustable.weights[1], 1e-4);
 
@@ -498,8 +517,9 @@ TEST(CardDeck, Sec22_Block27WeightsAreByCodeNumber) {
                                           " 27  3  3     OPTIMIZATION PARAMETER WEIGHTS DA12\n       .0001\n",
                                           " 27  1  2\n         10.       .0001\n");
   const std::string message = rejection(positional);
-  EXPECT_TRUE(contains(message, "data block 27, word 2: DA12(2) = 1e-04 weights adjustable parameter code 2, which "
-                                "data block 6 does not select: block 27 words are by code number"))
+  EXPECT_TRUE(contains(message,
+                       "data block 27, word 2: DA12(2) = 1e-04 weights adjustable parameter code 2, which "
+                       "data block 6 does not select: block 27 words are by code number"))
       << message;
 }
 
@@ -509,8 +529,9 @@ TEST(CardDeckErrors, UnknownAndUndefinedBlocks) {
   EXPECT_TRUE(contains(rejection(edited(deck_text(), " 27  6  6 ", "  7  1  1 ")),
                        "data block 7 is not defined in the manual (blocks 7, 24 and 25 are not used)"));
   const std::string message = rejection(edited(deck_text(), " 27  6  6 ", " 45  1  1 "));
-  EXPECT_TRUE(contains(message, "data block 45 (HARDOVER DATA) belongs to the hardover data (IP(22)), not to the "
-                                "optimization data"))
+  EXPECT_TRUE(contains(message,
+                       "data block 45 (HARDOVER DATA) belongs to the hardover data (IP(22)), not to the "
+                       "optimization data"))
       << message;
 }
 
@@ -518,57 +539,69 @@ TEST(CardDeckErrors, MissingThe999Card) {
   std::string text = deck_text();
   text.resize(text.size() - 4);  // "999\n"
   EXPECT_EQ(rejection(text),
-            "test.dat: card 31: the deck ends without the 999 card: expected a card with 999 in columns 1-3 after the "
+            "test.dat: card 31: the deck ends without the 999 card: expected a card with 999 in columns 1-3 "
+            "after the "
             "blank card ending the last case (case 1)");
   std::string no_blank = deck_text();
   no_blank.replace(no_blank.size() - 5, 1, "");  // the blank card before 999
-  EXPECT_TRUE(contains(rejection(no_blank), "999 card inside case 1: the case's data must be ended by a blank card"));
+  EXPECT_TRUE(
+      contains(rejection(no_blank), "999 card inside case 1: the case's data must be ended by a blank card"));
 }
 
 TEST(CardDeckErrors, HeaderRangeBeyondTheBlock) {
   EXPECT_EQ(rejection(edited(deck_text(), " 21  1  6\n", " 21  1  8\n")),
-            "test.dat: card 19, columns 7-9: case 1, data block 21, word 8: header range beyond the block: words 1-8 "
+            "test.dat: card 19, columns 7-9: case 1, data block 21, word 8: header range beyond the block: "
+            "words 1-8 "
             "asked but data block 21 has 6 words");
   EXPECT_TRUE(contains(rejection(edited(deck_text(), " 39  1  3  1\n", " 39  1  3  6\n")),
                        "data block 39 (stage code 6) has 2 words"));
-  EXPECT_TRUE(contains(rejection(edited(deck_text(), " 21  1  6\n", " 21  4  2\n")),
-                       "columns 7-9: case 1, data block 21: header card: the last word to fill (columns 7-9) is 2, "
-                       "before the first word 4"));
+  EXPECT_TRUE(
+      contains(rejection(edited(deck_text(), " 21  1  6\n", " 21  4  2\n")),
+               "columns 7-9: case 1, data block 21: header card: the last word to fill (columns 7-9) is 2, "
+               "before the first word 4"));
 }
 
 TEST(CardDeckErrors, ShortCards) {
   // A data block short of a data card: the next header is read as data, and said to look like one.
-  const std::string short_block = edited(deck_text(), " 16  1  2\n         10.         30.\n", " 16  1  8\n         10.         30.\n");
+  const std::string short_block =
+      edited(deck_text(), " 16  1  2\n         10.         30.\n", " 16  1  8\n         10.         30.\n");
   const std::string message = rejection(short_block);
   EXPECT_TRUE(contains(message, "card 17, columns 1-12: case 1, data block 16, word 7")) << message;
-  EXPECT_TRUE(contains(message, "(data card 2 of 2 for the header on card 15, words 1-8); card 17 looks like a header "
-                                "card: is the data block short of data cards?"))
+  EXPECT_TRUE(contains(message,
+                       "(data card 2 of 2 for the header on card 15, words 1-8); card 17 looks like a header "
+                       "card: is the data block short of data cards?"))
       << message;
   // A short line whose integer field is cut: FORTRAN would read "1 " as 10.
-  EXPECT_TRUE(contains(rejection(edited(deck_text(), "\n  1  0\n  6", "\n  1 0\n  6")),
-                       "card 8, columns 4-6: case 1, data block 5, word 2: integer ' 0 ' is not right-justified"));
+  EXPECT_TRUE(
+      contains(rejection(edited(deck_text(), "\n  1  0\n  6", "\n  1 0\n  6")),
+               "card 8, columns 4-6: case 1, data block 5, word 2: integer ' 0 ' is not right-justified"));
   // The deck ends inside a block.
   const std::string cut = std::string(kTitleCards) + " 16  1  8\n         10.\n";
-  EXPECT_TRUE(contains(rejection(cut), "the deck ends inside data block 16: the header on card 5 asks for words 1-8, "
-                                       "2 data cards; found 1"));
+  EXPECT_TRUE(contains(rejection(cut),
+                       "the deck ends inside data block 16: the header on card 5 asks for words 1-8, "
+                       "2 data cards; found 1"));
 }
 
 TEST(CardDeckErrors, CardFormMistakes) {
-  EXPECT_TRUE(contains(rejection(edited(deck_text(), "          2.      2373.5", "          2       2373.5")),
-                       "'2' has no decimal point: in an E12.8 field FORTRAN scales such a number by 1.0E-8; write '2.'"));
+  EXPECT_TRUE(contains(
+      rejection(edited(deck_text(), "          2.      2373.5", "          2       2373.5")),
+      "'2' has no decimal point: in an E12.8 field FORTRAN scales such a number by 1.0E-8; write '2.'"));
   EXPECT_TRUE(contains(rejection(edited(deck_text(), "          2.      2373.5", "          2.      23 3.5")),
                        "columns 13-24: case 1, data block 20, word 2: blank inside the number '23 3.5'"));
-  EXPECT_TRUE(contains(rejection(edited(deck_text(), "          2.      2373.5", "          2.      2373.5" + std::string(60, '-'))),
+  EXPECT_TRUE(contains(rejection(edited(deck_text(), "          2.      2373.5",
+                                        "          2.      2373.5" + std::string(60, '-'))),
                        "card 18, columns 81-84: case 1: card has 84 columns: a card has at most 80"));
   EXPECT_TRUE(contains(rejection(edited(deck_text(), "          2.      2373.5", "\t2.      2373.5")),
                        "card 18, column 1: case 1: tab character"));
-  EXPECT_TRUE(contains(rejection(edited(deck_text(), " 30  1  6  1", " 30  1  6   ")),
-                       "data block 30 (VACUUM THRUST TABLE) needs a stage code in columns 10-12: expected 1-5, got blank"));
+  EXPECT_TRUE(contains(
+      rejection(edited(deck_text(), " 30  1  6  1", " 30  1  6   ")),
+      "data block 30 (VACUUM THRUST TABLE) needs a stage code in columns 10-12: expected 1-5, got blank"));
   EXPECT_TRUE(contains(rejection(edited(deck_text(), " 21  1  6\n", " 21  1  6  2\n")),
                        "data block 21 takes no stage code: columns 10-12 must be blank, got 2"));
-  EXPECT_TRUE(contains(rejection(edited(deck_text(), " 30  1  6  1", " 30  3  6  1")),
-                       "data block 30 is input complete (the manual: the entire table for the given stage must be "
-                       "re-input to change it): the first word must be 1, got 3"));
+  EXPECT_TRUE(
+      contains(rejection(edited(deck_text(), " 30  1  6  1", " 30  3  6  1")),
+               "data block 30 is input complete (the manual: the entire table for the given stage must be "
+               "re-input to change it): the first word must be 1, got 3"));
   EXPECT_TRUE(contains(rejection(edited(deck_text(), "60.      1.0E10", "60.         20.")),
                        "data block 40, word 7: word 7 not given: the ordinate paired with word 6"));
   EXPECT_TRUE(contains(rejection(edited(deck_text(), " 40  1  6", " 40  1  4")),
@@ -580,37 +613,47 @@ TEST(CardDeckErrors, CardFormMistakes) {
     full_table += field;
     if (w % 6 == 0 || w == 32) full_table += "\n";
   }
-  EXPECT_TRUE(contains(rejection(deck_text("001000000000001000000000", full_table)),
-                       "data block 40, word 32: abscissa in the block's last word: no room for its ordinate and the "
-                       "1.0E10 terminator"));
-  EXPECT_TRUE(contains(rejection(edited(deck_text(), "                      0.         90.",
-                                        "          3.          0.         90.")),
-                       "card 30, columns 1-12: case 1, data block 40, word 1: word 1 of the table must be blank"));
+  EXPECT_TRUE(
+      contains(rejection(deck_text("001000000000001000000000", full_table)),
+               "data block 40, word 32: abscissa in the block's last word: no room for its ordinate and the "
+               "1.0E10 terminator"));
+  EXPECT_TRUE(
+      contains(rejection(edited(deck_text(), "                      0.         90.",
+                                "          3.          0.         90.")),
+               "card 30, columns 1-12: case 1, data block 40, word 1: word 1 of the table must be blank"));
   EXPECT_TRUE(contains(rejection(edited(deck_text(), "001000000000001000000000", "001100000000001000000000")),
                        "card 6, column 4: case 1, data block 4, word 4: IP(4) is not used by the manual"));
-  EXPECT_TRUE(contains(rejection(std::string(kTitleCards) + options_card("001000000000001000000000") + kVehicleCards +
-                                 "\n\n999\n"),
+  EXPECT_TRUE(contains(rejection(std::string(kTitleCards) + options_card("001000000000001000000000") +
+                                 kVehicleCards + "\n\n999\n"),
                        "blank card where case 2 should start"));
 }
 
 TEST(CardDeckErrors, TomlReaderChecksComeBackOnTheCard) {
   // A non-monotonic table: the TOML reader's check, located on the word's card and columns.
-  EXPECT_EQ(rejection(edited(deck_text(), "          0.      10000.          5.      10000.",
-                             "          0.      10000.          0.      10000.")),
-            "test.dat: card 24, columns 25-36: case 1, data block 30, stage code 1, word 3: table not monotonic: "
-            "time_s[1] = 0 is not greater than time_s[0] = 0; expected strictly increasing stage time in s");
+  EXPECT_EQ(
+      rejection(edited(deck_text(), "          0.      10000.          5.      10000.",
+                       "          0.      10000.          0.      10000.")),
+      "test.dat: card 24, columns 25-36: case 1, data block 30, stage code 1, word 3: table not monotonic: "
+      "time_s[1] = 0 is not greater than time_s[0] = 0; expected strictly increasing stage time in s");
   // A fault validate_mission finds: the stage duration against the thrust table.
   EXPECT_EQ(rejection(edited(deck_text(), "         10.         30.", "         12.         30.")),
-            "test.dat: card 16, columns 1-12: case 1, data block 16, word 1: kStageDurationMismatch: a powered stage "
-            "duration differs from the last time of its thrust table; stage 1 duration_s = 12 s but its thrust table "
+            "test.dat: card 16, columns 1-12: case 1, data block 16, word 1: kStageDurationMismatch: a "
+            "powered stage "
+            "duration differs from the last time of its thrust table; stage 1 duration_s = 12 s but its "
+            "thrust table "
             "ends at 10 s; expected them equal within CT1(10) = 0.02 s");
   // A word the TOML reader requires but the deck does not punch.
-  EXPECT_EQ(rejection(edited(deck_text(), " 21  1  6\n         10.      -75.48         37.          0.        100.         90.",
-                             " 21  1  4\n         10.      -75.48         37.          0.")),
-            "test.dat: card 19: case 1, data block 21, word 5: word 5 not punched: missing required key 'azimuth_deg' in "
-            "[launch]: expected a number (DA6(5) launch azimuth, deg east of north)");
+  EXPECT_EQ(
+      rejection(edited(deck_text(),
+                       " 21  1  6\n         10.      -75.48         37.          0.        100.         90.",
+                       " 21  1  4\n         10.      -75.48         37.          0.")),
+      "test.dat: card 19: case 1, data block 21, word 5: word 5 not punched: missing required key "
+      "'azimuth_deg' in "
+      "[launch]: expected a number (DA6(5) launch azimuth, deg east of north)");
   // A missing stage table.
-  const std::string message = rejection(edited(deck_text(), " 38  1  6  1\n          0.       1000.          5.        500.         10.          0.\n", ""));
+  const std::string message = rejection(
+      edited(deck_text(),
+             " 38  1  6  1\n          0.       1000.          5.        500.         10.          0.\n", ""));
   EXPECT_TRUE(contains(message, "data block 38, stage code 1")) << message;
   EXPECT_TRUE(contains(message, "missing required table [stage.1.consumable_weight]")) << message;
 }
@@ -623,9 +666,10 @@ TEST(CardDeckErrors, GroupMistakes) {
   EXPECT_TRUE(contains(rejection(deck_text("001000000000001000001000", kBodyCards, wrong_block)),
                        "data block 48 is not data of dispersion code 9 (weight increment, block 46 on card"));
   const std::string wrong_stage = " 46  1  2  9\nWEIGHT HI S1\n 47  1  1  2\n        150.\n\n";
-  EXPECT_TRUE(contains(rejection(deck_text("001000000000001000001000", kBodyCards, wrong_stage)),
-                       "dispersion code 9 (weight increment) applies to stage 1: expected stage code 1 in columns "
-                       "10-12, got 2"));
+  EXPECT_TRUE(
+      contains(rejection(deck_text("001000000000001000001000", kBodyCards, wrong_stage)),
+               "dispersion code 9 (weight increment) applies to stage 1: expected stage code 1 in columns "
+               "10-12, got 2"));
   EXPECT_TRUE(contains(rejection(deck_text("001000000000001000000001")),
                        "999 card where the radar data (IP(24)) of case 1 was expected"));
 }
@@ -683,7 +727,8 @@ void expect_same_extras(const DeckExtras& a, const DeckExtras& b) {
   for (std::size_t i = 0; i < 3; ++i) {
     for (const auto* pair : {&a.impact.failure_mode, &a.impact.expended_casing}) {
       const auto& mine = (*pair)[i];
-      const auto& theirs = pair == &a.impact.failure_mode ? b.impact.failure_mode[i] : b.impact.expended_casing[i];
+      const auto& theirs =
+          pair == &a.impact.failure_mode ? b.impact.failure_mode[i] : b.impact.expended_casing[i];
       EXPECT_EQ(mine.present, theirs.present);
       expect_same_table(mine.cd_vs_mach, theirs.cd_vs_mach, "blocks 42-43");
       EXPECT_EQ(mine.reference_area_ft2, theirs.reference_area_ft2);
@@ -693,7 +738,8 @@ void expect_same_extras(const DeckExtras& a, const DeckExtras& b) {
   const ground::HardoverData& h = a.hardover;
   const ground::HardoverData& k = b.hardover;
   EXPECT_EQ(h.present, k.present);
-  for (std::size_t i = 0; i < 3; ++i) expect_same_table(h.pitch_inertia_slug_ft2[i], k.pitch_inertia_slug_ft2[i], "block 44");
+  for (std::size_t i = 0; i < 3; ++i)
+    expect_same_table(h.pitch_inertia_slug_ft2[i], k.pitch_inertia_slug_ft2[i], "block 44");
   expect_same_table(h.stage1_pitch_damping_per_rad, k.stage1_pitch_damping_per_rad, "block 44 CMQ");
   EXPECT_EQ(h.stage1_every_nth_step, k.stage1_every_nth_step);
   EXPECT_EQ(h.max_qbar_alpha_lb_rad_ft2, k.max_qbar_alpha_lb_rad_ft2);
@@ -781,7 +827,8 @@ TEST(CardDeck, ScoutExampleSimulatesLikeItsTomlTwin) {
   // within 1e-10, as the decks' own comparison allows.
   ASSERT_EQ(a["constraints"].size(), b["constraints"].size());
   for (std::size_t i = 0; i < a["constraints"].size(); ++i) {
-    const double ta = a["constraints"][i]["tolerance"].get<double>(), tb = b["constraints"][i]["tolerance"].get<double>();
+    const double ta = a["constraints"][i]["tolerance"].get<double>(),
+                 tb = b["constraints"][i]["tolerance"].get<double>();
     EXPECT_NEAR(ta, tb, 1e-10 * std::fabs(tb));
     a["constraints"][i].erase("tolerance");
     b["constraints"][i].erase("tolerance");
@@ -792,7 +839,8 @@ TEST(CardDeck, ScoutExampleSimulatesLikeItsTomlTwin) {
 TEST(CardDeck, ScoutExampleIsWhatConvertWrites) {
   ScratchDirectory scratch("card_convert_example");
   const std::string out = (scratch / "mission.dat").string();
-  const CommandResult result = run_tolip_executable({"convert", example_path("scout/mission.toml"), "--to", out});
+  const CommandResult result =
+      run_tolip_executable({"convert", example_path("scout/mission.toml"), "--to", out});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   EXPECT_TRUE(contains(result.out, "card deck of 1 case from the TOML deck")) << result.out;
   EXPECT_EQ(read_text_file(out), read_text(example_path("scout/mission.dat")))
@@ -828,7 +876,8 @@ TEST(CardDeck, RoundTripThroughTheCommandGivesIdenticalResults) {
   ASSERT_EQ(run_tolip_executable({"convert", example_path("scout/mission.dat"), "--to", toml}).exit_code, 0);
   ASSERT_EQ(run_tolip_executable({"convert", toml, "--to", cards}).exit_code, 0);
   EXPECT_EQ(read_text_file(cards), read_text(example_path("scout/mission.dat")));
-  const CommandResult original = run_tolip_executable({"simulate", example_path("scout/mission.dat"), "--json"});
+  const CommandResult original =
+      run_tolip_executable({"simulate", example_path("scout/mission.dat"), "--json"});
   const CommandResult via_toml = run_tolip_executable({"simulate", toml, "--json"});
   const CommandResult back = run_tolip_executable({"simulate", cards, "--json"});
   ASSERT_EQ(original.exit_code, 0) << original.err;
@@ -843,10 +892,11 @@ TEST(CardDeck, RoundTripThroughTheCommandGivesIdenticalResults) {
 }
 
 TEST(CardDeck, SuccessiveCasesSurviveConversionToCards) {
-  const std::string text = std::string(kTitleCards) + options_card("001000000000001000000001") + kVehicleCards +
-                           "\n 41        1\nWALLOPS            37.86      -75.51         40.\n\n"
-                           " 21  5  5\n         95.\n 30  1  4  1\n          0.      12000.         10.      12000.\n\n"
-                           " 41        1\nBERMUDA            32.35      -64.66         60.\n\n999\n";
+  const std::string text =
+      std::string(kTitleCards) + options_card("001000000000001000000001") + kVehicleCards +
+      "\n 41        1\nWALLOPS            37.86      -75.51         40.\n\n"
+      " 21  5  5\n         95.\n 30  1  4  1\n          0.      12000.         10.      12000.\n\n"
+      " 41        1\nBERMUDA            32.35      -64.66         60.\n\n999\n";
   const Parsed first = parse(text);
   ASSERT_TRUE(first.ok) << first.error.to_string();
   std::string cards;
@@ -856,7 +906,8 @@ TEST(CardDeck, SuccessiveCasesSurviveConversionToCards) {
   ASSERT_TRUE(again.ok) << again.error.to_string() << "\n" << cards;
   ASSERT_EQ(again.deck.cases.size(), 2u);
   for (std::size_t i = 0; i < 2; ++i) {
-    EXPECT_EQ(fields_of(*again.deck.cases[i].mission), fields_of(*first.deck.cases[i].mission)) << "case " << i + 1;
+    EXPECT_EQ(fields_of(*again.deck.cases[i].mission), fields_of(*first.deck.cases[i].mission))
+        << "case " << i + 1;
     expect_same_extras(again.deck.cases[i].extras, first.deck.cases[i].extras);
   }
   // The second case is written as its changes only.
@@ -865,7 +916,8 @@ TEST(CardDeck, SuccessiveCasesSurviveConversionToCards) {
   // A TOML deck holds one case: --case picks it.
   std::string toml;
   EXPECT_FALSE(ground::deck_to_toml(first.deck, 0, &toml, &error));
-  EXPECT_TRUE(contains(error.to_string(), "the card deck has 2 cases and a TOML deck holds one: choose one with --case N"));
+  EXPECT_TRUE(contains(error.to_string(),
+                       "the card deck has 2 cases and a TOML deck holds one: choose one with --case N"));
   ASSERT_TRUE(ground::deck_to_toml(first.deck, 2, &toml, &error)) << error.to_string();
   EXPECT_TRUE(contains(toml, "azimuth_deg = 95.0"));
 }
@@ -875,8 +927,9 @@ TEST(CardDeck, SuccessiveCasesSurviveConversionToCards) {
 // flight, and survive `convert` to cards and back. (Before: rejected naming block 31.)
 TEST(CardDeck, Sec22_DragTablesOfEveryStageActAndSurviveConversion) {
   ScratchDirectory scratch("card_drag_every_stage");
-  std::string text = replaced(scout_mission_text(), "[stage.3.thrust]",
-                              "[stage.3.drag]\nmach = [0.0, 5.0, 30.0]\ncd = [0.6, 0.6, 0.6]\n\n[stage.3.thrust]");
+  std::string text =
+      replaced(scout_mission_text(), "[stage.3.thrust]",
+               "[stage.3.drag]\nmach = [0.0, 5.0, 30.0]\ncd = [0.6, 0.6, 0.6]\n\n[stage.3.thrust]");
   text = replaced(text, "reference_area_ft2 = 0.0                     # block 39 SG7(2)",
                   "reference_area_ft2 = 4.9087\n\n[stage.7.drag]\nmach = [0.0, 30.0]\ncd = [0.9, 0.9]");
   // The example is above HAERO (250,000 ft) by stage-2 burnout: raise it so that the upper stages
@@ -916,14 +969,15 @@ TEST(CardDeck, Sec22_DragTablesOfEveryStageActAndSurviveConversion) {
 
 TEST(CardDeck, ConvertCommandErrors) {
   ScratchDirectory scratch("card_convert_errors");
-  const CommandResult unknown =
-      run_tolip_executable({"convert", example_path("scout/mission.toml"), "--to", (scratch / "x.txt").string()});
+  const CommandResult unknown = run_tolip_executable(
+      {"convert", example_path("scout/mission.toml"), "--to", (scratch / "x.txt").string()});
   EXPECT_EQ(unknown.exit_code, 2);
   EXPECT_TRUE(contains(unknown.err, "cannot tell the output format")) << unknown.err;
-  const CommandResult forced = run_tolip_executable(
-      {"convert", example_path("scout/mission.toml"), "--to", (scratch / "x.txt").string(), "--format", "cards"});
+  const CommandResult forced = run_tolip_executable({"convert", example_path("scout/mission.toml"), "--to",
+                                                     (scratch / "x.txt").string(), "--format", "cards"});
   EXPECT_EQ(forced.exit_code, 0) << forced.err;
-  const CommandResult bad = run_tolip_executable({"convert", "/nonexistent.dat", "--to", (scratch / "y.toml").string()});
+  const CommandResult bad =
+      run_tolip_executable({"convert", "/nonexistent.dat", "--to", (scratch / "y.toml").string()});
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_FALSE(std::filesystem::exists(scratch / "y.toml"));
 }
@@ -939,11 +993,13 @@ TEST(CardDeck, InputEchoListsEveryBlockWithItsWords) {
   ground::write_input_echo(echo, deck, deck.cases[0]);
   const std::string text = echo.str();
   for (const char* part :
-       {"INPUT DATA OF CASE 1 (OPTION IP(17)), card deck", "DATA BLOCK 1  MAIN HEADING", "DATA BLOCK 4  OPTIONS IP",
-        "IP(17) OUTPUT OF INPUT DATA", "IP( 1) PAYOFF: 0 PAYLOAD, 1 VELOCITY, 2 ALT.", "DATA BLOCK 10  NOMINAL CONSTANTS CT1", "HAERO, AERO BYPASS ALT., FT",
-        "DATA BLOCK 21  INITIAL CONDITIONS DA6", "AZIMUTH, DEG EAST OF NORTH", "1.00000000E+02",
-        "DATA BLOCK 30  VACUUM THRUST TABLE  STAGE CODE 1", "25 POINTS: STAGE TIME, S VS VACUUM THRUST, LB",
-        "DATA BLOCK 15  EXTENSIONS", "DISPERSION DATA (IP(21))", "DISPERSION CODE 36  winds", "HARDOVER DATA (IP(22))",
+       {"INPUT DATA OF CASE 1 (OPTION IP(17)), card deck", "DATA BLOCK 1  MAIN HEADING",
+        "DATA BLOCK 4  OPTIONS IP", "IP(17) OUTPUT OF INPUT DATA",
+        "IP( 1) PAYOFF: 0 PAYLOAD, 1 VELOCITY, 2 ALT.", "DATA BLOCK 10  NOMINAL CONSTANTS CT1",
+        "HAERO, AERO BYPASS ALT., FT", "DATA BLOCK 21  INITIAL CONDITIONS DA6", "AZIMUTH, DEG EAST OF NORTH",
+        "1.00000000E+02", "DATA BLOCK 30  VACUUM THRUST TABLE  STAGE CODE 1",
+        "25 POINTS: STAGE TIME, S VS VACUUM THRUST, LB", "DATA BLOCK 15  EXTENSIONS",
+        "DISPERSION DATA (IP(21))", "DISPERSION CODE 36  winds", "HARDOVER DATA (IP(22))",
         "IMPACT DATA (IP(23))", "DATA BLOCK 41  RADAR STATION LOCATIONS", "WALLOPS"}) {
     EXPECT_TRUE(contains(text, part)) << part;
   }
@@ -976,12 +1032,13 @@ TEST(CardDeck, SimulatePrintsTheEchoWhenIp17IsSet) {
 // Deterministic mutations of valid decks: whatever the input, the reader returns (true, or false
 // with a located message) and never throws or crashes.
 TEST(CardDeckFuzz, MutatedDecksNeverCrashTheReader) {
-  const std::vector<std::string> seeds = {read_text(example_path("scout/mission.dat")),
-                                          deck_text("001000000000001000001111", kBodyCards,
-                                                    " 46  1  2 17\nDRAG HIGH\n 48  1  1\n         .15\n\n"
-                                                    " 44  1  6  1\n                      0.     300000.      1.0E10\n\n"
-                                                    " 42  1  6  1\n                      0.         .45      1.0E10\n\n"
-                                                    " 41        1\nWALLOPS            37.86      -75.51         40.\n\n")};
+  const std::vector<std::string> seeds = {
+      read_text(example_path("scout/mission.dat")),
+      deck_text("001000000000001000001111", kBodyCards,
+                " 46  1  2 17\nDRAG HIGH\n 48  1  1\n         .15\n\n"
+                " 44  1  6  1\n                      0.     300000.      1.0E10\n\n"
+                " 42  1  6  1\n                      0.         .45      1.0E10\n\n"
+                " 41        1\nWALLOPS            37.86      -75.51         40.\n\n")};
   std::uint64_t state = 0x9E3779B97F4A7C15ull;
   auto next = [&state](std::uint64_t bound) {
     state ^= state << 13;

@@ -109,7 +109,8 @@ inline CommandResult run_capturing(const std::string& command, const std::filesy
 inline std::filesystem::path stderr_path(const char* prefix) {
   static int counter = 0;
   return std::filesystem::temp_directory_path() /
-         (std::string(prefix) + std::to_string(static_cast<long long>(::getpid())) + "_" + std::to_string(++counter));
+         (std::string(prefix) + std::to_string(static_cast<long long>(::getpid())) + "_" +
+          std::to_string(++counter));
 }
 
 // Runs TOLIP_EXECUTABLE with the arguments; stderr is captured through a scratch file.

@@ -11,7 +11,6 @@
 namespace tolip::test {
 namespace {
 
-
 TEST(TolipCli, HelpListsTheSubcommandsAndExitCodes) {
   const CommandResult result = run_tolip_executable({"--help"});
   EXPECT_EQ(result.exit_code, 0);
@@ -63,8 +62,8 @@ TEST(TolipCli, AtmosphereJsonAtSeaLevel) {
   const CommandResult result = run_tolip_executable({"atmosphere", "--altitude-ft", "0", "--json"});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const nlohmann::json document = nlohmann::json::parse(result.out);
-  for (const char* key : {"altitude_ft", "geopotential_altitude_ft", "density_slug_ft3",
-                          "pressure_lbf_ft2", "speed_of_sound_ft_s", "temperature_R"}) {
+  for (const char* key : {"altitude_ft", "geopotential_altitude_ft", "density_slug_ft3", "pressure_lbf_ft2",
+                          "speed_of_sound_ft_s", "temperature_R"}) {
     ASSERT_TRUE(document.contains(key)) << key;
     ASSERT_TRUE(document[key].is_number()) << key;
   }
@@ -74,24 +73,21 @@ TEST(TolipCli, AtmosphereJsonAtSeaLevel) {
   EXPECT_NEAR(document["pressure_lbf_ft2"].get<double>(), 2116.2, 0.1);
   EXPECT_NEAR(document["temperature_R"].get<double>(), 518.69, 1e-9);
   // a = sqrt(1.4 R* T) with R* = 1716.4827 ft^2/s^2/R.
-  EXPECT_NEAR(document["speed_of_sound_ft_s"].get<double>(), std::sqrt(1.4 * 1716.4827 * 518.69),
-              1e-6);
+  EXPECT_NEAR(document["speed_of_sound_ft_s"].get<double>(), std::sqrt(1.4 * 1716.4827 * 518.69), 1e-6);
 }
 
 TEST(TolipCli, AtmosphereGeopotentialAltitudeUsesTheEquatorialRadius) {
-  const CommandResult result =
-      run_tolip_executable({"atmosphere", "--altitude-ft", "100000", "--json"});
+  const CommandResult result = run_tolip_executable({"atmosphere", "--altitude-ft", "100000", "--json"});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const nlohmann::json document = nlohmann::json::parse(result.out);
   const double radius = 20925696.0;  // CT1(3)
-  EXPECT_NEAR(document["geopotential_altitude_ft"].get<double>(),
-              radius * 100000.0 / (radius + 100000.0), 1e-6);
+  EXPECT_NEAR(document["geopotential_altitude_ft"].get<double>(), radius * 100000.0 / (radius + 100000.0),
+              1e-6);
   EXPECT_EQ(document["earth_radius_ft"].get<double>(), radius);
 }
 
 TEST(TolipCli, AtmosphereAcceptsANegativeAltitude) {
-  const CommandResult result =
-      run_tolip_executable({"atmosphere", "--altitude-ft=-1000", "--json"});
+  const CommandResult result = run_tolip_executable({"atmosphere", "--altitude-ft=-1000", "--json"});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const nlohmann::json document = nlohmann::json::parse(result.out);
   EXPECT_GT(document["density_slug_ft3"].get<double>(), 0.0023769);
@@ -100,8 +96,8 @@ TEST(TolipCli, AtmosphereAcceptsANegativeAltitude) {
 TEST(TolipCli, AtmosphereTextNamesEveryQuantity) {
   const CommandResult result = run_tolip_executable({"atmosphere", "--altitude-ft", "0"});
   ASSERT_EQ(result.exit_code, 0) << result.err;
-  for (const char* label : {"DENSITY", "PRESSURE", "SPEED OF SOUND", "TEMPERATURE",
-                            "GEOPOTENTIAL ALTITUDE", "SLUG/FT3", "DEG R"}) {
+  for (const char* label : {"DENSITY", "PRESSURE", "SPEED OF SOUND", "TEMPERATURE", "GEOPOTENTIAL ALTITUDE",
+                            "SLUG/FT3", "DEG R"}) {
     EXPECT_TRUE(contains(result.out, label)) << label << "\n" << result.out;
   }
 }

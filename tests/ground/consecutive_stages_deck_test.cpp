@@ -23,14 +23,17 @@ namespace {
 const std::string kSequence = "sequence = [1, 6, 2, 7, 3, 8, 4]";
 const std::string kWithoutCoast7 = "sequence = [1, 6, 2, 3, 8, 4]";
 
-const std::string kCodedTimes = "segment_count = 9                            # TLIN(1)\n"
-                                "coded_times = [103.0, 108.0, 115.0, 145.0, 200.0, 219.0, 238.0, 300.0,";
+const std::string kCodedTimes =
+    "segment_count = 9                            # TLIN(1)\n"
+    "coded_times = [103.0, 108.0, 115.0, 145.0, 200.0, 219.0, 238.0, 300.0,";
 // Without coast 7 stage 2's burnout (238.0) is stage 3's ignition (300.0): block 18 lists one.
-const std::string kCodedTimesWithoutCoast7 = "segment_count = 8\n"
-                                             "coded_times = [103.0, 108.0, 115.0, 145.0, 200.0, 219.0, 300.0,";
+const std::string kCodedTimesWithoutCoast7 =
+    "segment_count = 8\n"
+    "coded_times = [103.0, 108.0, 115.0, 145.0, 200.0, 219.0, 300.0,";
 
 std::string without_coast7() {
-  return replaced(replaced(scout_mission_text(), kSequence, kWithoutCoast7), kCodedTimes, kCodedTimesWithoutCoast7);
+  return replaced(replaced(scout_mission_text(), kSequence, kWithoutCoast7), kCodedTimes,
+                  kCodedTimesWithoutCoast7);
 }
 
 std::string written(const ScratchDirectory& scratch, const std::string& name, const std::string& text) {
@@ -54,7 +57,8 @@ TEST(Sec22Block5Deck, SequenceWithoutCoast7IsRead) {
 
 TEST(Sec22Block5Deck, OutOfOrderSequenceSaysWhatMayComeNext) {
   // A coast after the wrong stage (coast 8 after stage 2), and a skipped powered stage.
-  ground::DeckError error = rejected(replaced(scout_mission_text(), kSequence, "sequence = [1, 6, 2, 8, 3, 4]"));
+  ground::DeckError error =
+      rejected(replaced(scout_mission_text(), kSequence, "sequence = [1, 6, 2, 8, 3, 4]"));
   EXPECT_EQ(error.data_block, 5);
   EXPECT_EQ(error.field, "vehicle.sequence[3]");
   EXPECT_TRUE(contains(error.message, "expected 3 or its coast 7 here")) << error.message;
@@ -76,7 +80,8 @@ TEST(Sec22Block16Deck, ZeroLengthCoastIsRefusedTellingToLeaveItOutOfTheSequence)
   const ground::DeckError error = rejected(text);
   EXPECT_EQ(error.data_block, 16);
   EXPECT_TRUE(contains(error.message, "kZeroLengthCoast")) << error.message;
-  EXPECT_TRUE(contains(error.message, "coast 7 left out of vehicle.sequence (data block 5)")) << error.message;
+  EXPECT_TRUE(contains(error.message, "coast 7 left out of vehicle.sequence (data block 5)"))
+      << error.message;
 }
 
 TEST(Sec22Block6Deck, LengthOfAnAbsentCoastIsRefusedNamingBlock6) {
@@ -123,7 +128,8 @@ TEST(Sec22Block5Deck, ConvertRoundTripKeepsTheSequenceAndTheFlight) {
   EXPECT_EQ(events[3]["kind"].get<std::string>(), "powered");
   EXPECT_EQ(events[3]["start_time_s"].get<double>(), events[2]["end_time_s"].get<double>());
   EXPECT_NEAR(events[2]["jettison_weight_lb"].get<double>(), 1900.0, 1e-9);  // stage 2's block 39 SG2(1)
-  EXPECT_NEAR(events[3]["start_weight_lb"].get<double>(), events[2]["weight_after_jettison_lb"].get<double>(), 1e-9);
+  EXPECT_NEAR(events[3]["start_weight_lb"].get<double>(), events[2]["weight_after_jettison_lb"].get<double>(),
+              1e-9);
 }
 
 TEST(Sec22Block5Deck, BundledExampleOptimizesWithCoast7Removed) {

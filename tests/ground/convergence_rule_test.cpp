@@ -1,8 +1,8 @@
 // The one rule of a case's success (issue 10 part 1; manual Sec. 22 "Sequence of Trajectory
 // Iterations During Optimization"): `converged` only when guidance succeeded, at least one
 // optimization run was made, the attempted improvement fell under DA13(2) (not the forward-run
-// budget) and the final guidance run met every deadband; and `optimize` and `export` apply the same rule to the
-// linearization the deck asks for. Each deck is the bundled example with one field changed.
+// budget) and the final guidance run met every deadband; and `optimize` and `export` apply the same rule to
+// the linearization the deck asks for. Each deck is the bundled example with one field changed.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -17,8 +17,6 @@
 
 namespace tolip::test {
 namespace {
-
-
 
 void expect_every_constraint_met(const nlohmann::json& document) {
   ASSERT_TRUE(document["constraints"].is_array());
@@ -36,7 +34,8 @@ TEST(Sec22Convergence, TheExampleConvergesByTheMinimumImprovementRule) {
   EXPECT_GT(d["successful_optimization_runs"].get<int>(), 0);
   EXPECT_EQ(d["final_guidance_met"], true);
   // Every forward run is the initial nominal, a guidance, an optimization or the final guidance run.
-  EXPECT_EQ(d["forward_runs"].get<int>(), 1 + d["guidance_runs"].get<int>() + d["optimization_runs"].get<int>() + 1);
+  EXPECT_EQ(d["forward_runs"].get<int>(),
+            1 + d["guidance_runs"].get<int>() + d["optimization_runs"].get<int>() + 1);
   expect_every_constraint_met(d);
 }
 
@@ -45,8 +44,8 @@ TEST(Sec22Convergence, TheExampleConvergesByTheMinimumImprovementRule) {
 // this printed CONVERGED YES and exited 0).
 TEST(Sec22Convergence, NoOptimizationRunIsNotConvergedButReportsTheFeasibleTrajectory) {
   ScratchDirectory scratch("convergence_not_started");
-  const std::string deck =
-      edited_example_deck(scratch, "not_started.toml", {{"stop_improvement = 0.5", "stop_improvement = 1000000.0"}});
+  const std::string deck = edited_example_deck(scratch, "not_started.toml",
+                                               {{"stop_improvement = 0.5", "stop_improvement = 1000000.0"}});
   const CommandResult run = run_tolip_executable({"optimize", deck, "--json"});
   EXPECT_EQ(run.exit_code, 1);
   EXPECT_TRUE(contains(run.err, "tolip: optimization: kOptimizationNotStarted: ")) << run.err;
@@ -62,7 +61,8 @@ TEST(Sec22Convergence, NoOptimizationRunIsNotConvergedButReportsTheFeasibleTraje
   EXPECT_EQ(listing.exit_code, 1);
   EXPECT_TRUE(std::regex_search(listing.out, std::regex("\n   CONVERGED +=  +NO\n")));
   EXPECT_TRUE(std::regex_search(listing.out, std::regex("\n   OPTIMIZATION ENDED BY +=  +NOT REACHED\n")));
-  EXPECT_TRUE(std::regex_search(listing.out, std::regex("\n   CASE RESULT += +optimization: kOptimizationNotStarted\n")));
+  EXPECT_TRUE(std::regex_search(listing.out,
+                                std::regex("\n   CASE RESULT += +optimization: kOptimizationNotStarted\n")));
 }
 
 // Sec. 22: "either until the attempted payoff improvement is smaller than a specified magnitude or
@@ -78,7 +78,8 @@ TEST(Sec22Convergence, ABudgetEndedOptimizationIsReportedAsExhaustedNotConverged
   const int budget = 1 + f["guidance_runs"].get<int>() + 2 + 1;
   ASSERT_LT(budget, f["forward_runs"].get<int>());
   const std::string deck = edited_example_deck(
-      scratch, "budget.toml", {{"max_forward_trajectories = 30", "max_forward_trajectories = " + std::to_string(budget)}});
+      scratch, "budget.toml",
+      {{"max_forward_trajectories = 30", "max_forward_trajectories = " + std::to_string(budget)}});
   const CommandResult run = run_tolip_executable({"optimize", deck, "--json"});
   const nlohmann::json d = nlohmann::json::parse(run.out);
   EXPECT_EQ(d["optimization_stop"], "forward_run_budget");
@@ -104,10 +105,11 @@ TEST(Sec22Convergence, AHeritageDeckWithoutTheHeadingHoldConvergesToTheHeldPaylo
   ASSERT_EQ(held.exit_code, 0) << held.err;
   const double held_payload_lb = nlohmann::json::parse(held.out)["payload_lb"].get<double>();
 
-  const std::string heritage = edited_example_deck(scratch, "heritage.toml",
-                                           {{"payload_lb = 250.0 ", "payload_lb = 0.0 "},
-                                            {"jettison_weight_lb = 125.0 ", "jettison_weight_lb = 375.0 "},
-                                            {"heading_hold_until_s = 5.0 ", "heading_hold_until_s = 0.0 "}});
+  const std::string heritage =
+      edited_example_deck(scratch, "heritage.toml",
+                          {{"payload_lb = 250.0 ", "payload_lb = 0.0 "},
+                           {"jettison_weight_lb = 125.0 ", "jettison_weight_lb = 375.0 "},
+                           {"heading_hold_until_s = 5.0 ", "heading_hold_until_s = 0.0 "}});
   const CommandResult run = run_tolip_executable({"optimize", heritage, "--json"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const nlohmann::json d = nlohmann::json::parse(run.out);
@@ -121,7 +123,8 @@ TEST(Sec22Convergence, AHeritageDeckWithoutTheHeadingHoldConvergesToTheHeldPaylo
   // The two optimized trajectories end alike (docs/theory/liftoff.md: 0.14 ft, 1.2e-3 ft/s).
   const nlohmann::json h = nlohmann::json::parse(held.out);
   EXPECT_NEAR(d["burnout"]["altitude_ft"].get<double>(), h["burnout"]["altitude_ft"].get<double>(), 1.0);
-  EXPECT_NEAR(d["inertial"]["velocity_ft_s"].get<double>(), h["inertial"]["velocity_ft_s"].get<double>(), 0.01);
+  EXPECT_NEAR(d["inertial"]["velocity_ft_s"].get<double>(), h["inertial"]["velocity_ft_s"].get<double>(),
+              0.01);
 }
 
 // The iteration history keeps the first kMaxOptimizerIterations (80) records and says how many it
@@ -141,7 +144,8 @@ TEST(Sec22Convergence, RunsBeyondTheHistoryCapacityAreCountedNotSilentlyDropped)
   EXPECT_EQ(d["iterations_dropped"].get<int>(), runs - 80);
   for (const nlohmann::json& r : d["iterations"]) EXPECT_EQ(r["run_status"], "kOk") << r["forward_run"];
   const CommandResult listing = run_tolip_executable({"optimize", deck});
-  EXPECT_TRUE(contains(listing.out, "    ... " + std::to_string(runs - 80) + " LATER FORWARD RUNS NOT RECORDED"));
+  EXPECT_TRUE(
+      contains(listing.out, "    ... " + std::to_string(runs - 80) + " LATER FORWARD RUNS NOT RECORDED"));
 }
 
 // Sec. 10: a linearization that does not meet its constraints and rate limits in DA13(4) forward
@@ -149,8 +153,9 @@ TEST(Sec22Convergence, RunsBeyondTheHistoryCapacityAreCountedNotSilentlyDropped)
 // optimize exited 0 on this deck while export exited 1).
 TEST(Sec10Convergence, AFailedLinearizationFailsOptimizeAndExportAlike) {
   ScratchDirectory scratch("convergence_linearization");
-  const std::string deck = edited_example_deck(
-      scratch, "one_linear_run.toml", {{"max_linearization_iterations = 4", "max_linearization_iterations = 1"}});
+  const std::string deck =
+      edited_example_deck(scratch, "one_linear_run.toml",
+                          {{"max_linearization_iterations = 4", "max_linearization_iterations = 1"}});
   const CommandResult run = run_tolip_executable({"optimize", deck, "--json"});
   EXPECT_EQ(run.exit_code, 1) << run.err;
   EXPECT_TRUE(contains(run.err, "tolip: linearization: kLinearizationDidNotConverge: ")) << run.err;
@@ -162,7 +167,8 @@ TEST(Sec10Convergence, AFailedLinearizationFailsOptimizeAndExportAlike) {
   const std::string image = (scratch / "table.bin").string();
   const CommandResult exported = run_tolip_executable({"export", deck, "--out", image});
   EXPECT_EQ(exported.exit_code, 1);
-  EXPECT_TRUE(contains(exported.err, "linearization did not succeed: kLinearizationDidNotConverge")) << exported.err;
+  EXPECT_TRUE(contains(exported.err, "linearization did not succeed: kLinearizationDidNotConverge"))
+      << exported.err;
   EXPECT_FALSE(std::filesystem::exists(image));
 }
 

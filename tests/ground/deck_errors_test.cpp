@@ -49,7 +49,8 @@ theta_deg = [90.0, 45.0]
 TEST(Sec22Deck, AcceptsMinimalDeckWithManualDefaults) {
   auto mission = ground::make_mission();
   DeckError error;
-  ASSERT_TRUE(ground::parse_toml_deck(kMinimalDeck, "minimal.toml", mission.get(), &error)) << error.to_string();
+  ASSERT_TRUE(ground::parse_toml_deck(kMinimalDeck, "minimal.toml", mission.get(), &error))
+      << error.to_string();
   EXPECT_EQ(mission->vehicle.sequence.count, 1);
   EXPECT_EQ(mission->vehicle.stages[0].duration_s, 30.0);  // defaults to the last thrust time
   EXPECT_EQ(mission->constants.g0_ft_s2, 32.174);          // block 10 default
@@ -68,7 +69,8 @@ TEST(Sec22Deck, RejectsMissingLaunchBlockNamingBlock20) {
   EXPECT_EQ(error.data_block, 20);
   EXPECT_EQ(error.field, "launch");
   EXPECT_TRUE(contains(error.message, "missing required table [launch]"));
-  EXPECT_TRUE(contains(error.to_string(), "edited.toml: data block 20, field launch: missing required table"));
+  EXPECT_TRUE(
+      contains(error.to_string(), "edited.toml: data block 20, field launch: missing required table"));
 }
 
 TEST(Sec22Deck, RejectsMissingRequiredKeyNamingBlockAndField) {
@@ -83,7 +85,8 @@ TEST(Sec22Deck, RejectsMissingRequiredKeyNamingBlockAndField) {
 TEST(Sec22Deck, RejectsNonMonotonicThrustTableNamingBlock30) {
   // Stage 2 thrust times 0.0, 0.08, 0.2, 0.4, 1.0, 3.0 ... : make 1.0 come after 3.0.
   const std::string original = scout_mission_text();
-  const std::string text = replaced(original, "0.0, 0.08, 0.2, 0.4, 1.0, 3.0", "0.0, 0.08, 0.2, 0.4, 3.5, 3.0");
+  const std::string text =
+      replaced(original, "0.0, 0.08, 0.2, 0.4, 1.0, 3.0", "0.0, 0.08, 0.2, 0.4, 3.5, 3.0");
   const DeckError error = rejected(text);
   EXPECT_EQ(error.data_block, 30);
   EXPECT_EQ(error.field, "stage.2.thrust.time_s[5]");
@@ -93,7 +96,8 @@ TEST(Sec22Deck, RejectsNonMonotonicThrustTableNamingBlock30) {
 }
 
 TEST(Sec22Deck, RejectsUnknownKeyInWeightTableNamingBlock38) {
-  const std::string text = replaced(scout_mission_text(), "remaining_lb = [\n  560.0, 559.448", "time_s_x = 1\nremaining_lb = [\n  560.0, 559.448");
+  const std::string text = replaced(scout_mission_text(), "remaining_lb = [\n  560.0, 559.448",
+                                    "time_s_x = 1\nremaining_lb = [\n  560.0, 559.448");
   const DeckError error = rejected(text);
   EXPECT_EQ(error.data_block, 38);
   EXPECT_EQ(error.field, "stage.4.consumable_weight.time_s_x");
@@ -165,7 +169,8 @@ theta_deg = [90.0, 10.0]
 TEST(Sec22Deck, AcceptsExactly120ThrustPointsOverAllStages) {
   auto mission = ground::make_mission();
   DeckError error;
-  EXPECT_TRUE(ground::parse_toml_deck(two_stage_deck(60, 60), "cap.toml", mission.get(), &error)) << error.to_string();
+  EXPECT_TRUE(ground::parse_toml_deck(two_stage_deck(60, 60), "cap.toml", mission.get(), &error))
+      << error.to_string();
 }
 
 TEST(Sec22Deck, RejectsMoreThan120ThrustPointsOverAllStagesNamingBlock30) {
@@ -184,7 +189,8 @@ TEST(Sec22Deck, RejectsMoreThan120ThrustPointsInOneStageNamingBlock30) {
 }
 
 TEST(Sec22Deck, RejectsUnknownStageCodeInSequenceNamingBlock5) {
-  const std::string text = replaced(scout_mission_text(), "sequence = [1, 6, 2, 7, 3, 8, 4]", "sequence = [1, 6, 2, 7, 3, 8, 11]");
+  const std::string text =
+      replaced(scout_mission_text(), "sequence = [1, 6, 2, 7, 3, 8, 4]", "sequence = [1, 6, 2, 7, 3, 8, 11]");
   const DeckError error = rejected(text);
   EXPECT_EQ(error.data_block, 5);
   EXPECT_EQ(error.field, "vehicle.sequence[6]");
@@ -193,7 +199,8 @@ TEST(Sec22Deck, RejectsUnknownStageCodeInSequenceNamingBlock5) {
 }
 
 TEST(Sec22Deck, RejectsOutOfOrderSequenceNamingBlock5) {
-  const std::string text = replaced(scout_mission_text(), "sequence = [1, 6, 2, 7, 3, 8, 4]", "sequence = [1, 2, 6]");
+  const std::string text =
+      replaced(scout_mission_text(), "sequence = [1, 6, 2, 7, 3, 8, 4]", "sequence = [1, 2, 6]");
   const DeckError error = rejected(text);
   EXPECT_EQ(error.data_block, 5);
   EXPECT_EQ(error.field, "vehicle.sequence[2]");  // 1 2 is stage 2 directly after stage 1 (issue 17)
@@ -210,7 +217,8 @@ TEST(Sec22Deck, RejectsUnknownStageTableNamingBlock16) {
 }
 
 TEST(Sec22Deck, RejectsNegativeJettisonWeightNamingBlock39) {
-  const std::string text = replaced(scout_mission_text(), "jettison_weight_lb = 560.0", "jettison_weight_lb = -560.0");
+  const std::string text =
+      replaced(scout_mission_text(), "jettison_weight_lb = 560.0", "jettison_weight_lb = -560.0");
   const DeckError error = rejected(text);
   EXPECT_EQ(error.data_block, 39);
   EXPECT_EQ(error.field, "stage.3.jettison_weight_lb");
@@ -247,7 +255,8 @@ TEST(Sec22Deck, RejectsTomlSyntaxErrorWithItsLine) {
 }
 
 TEST(Sec22Deck, RejectsUnknownKeyNamingIt) {
-  const std::string text = replaced(scout_mission_text(), "azimuth_deg = 100.0", "azimuth_deg = 100.0\nazimuth_degs = 100.0");
+  const std::string text =
+      replaced(scout_mission_text(), "azimuth_deg = 100.0", "azimuth_deg = 100.0\nazimuth_degs = 100.0");
   const DeckError error = rejected(text);
   EXPECT_EQ(error.data_block, 20);
   EXPECT_EQ(error.field, "launch.azimuth_degs");
@@ -273,7 +282,8 @@ TEST(Sec22Deck, RejectsAngleConstraintGivenInFeetNamingBlock19) {
 }
 
 TEST(Sec22Deck, RejectsWrongValueTypeNamingTheExpectation) {
-  const std::string text = replaced(scout_mission_text(), "integration_steps = 42", "integration_steps = 42.5");
+  const std::string text =
+      replaced(scout_mission_text(), "integration_steps = 42", "integration_steps = 42.5");
   const DeckError error = rejected(text);
   EXPECT_EQ(error.data_block, 16);
   EXPECT_EQ(error.field, "stage.1.integration_steps");
@@ -299,7 +309,8 @@ TEST(Sec22Deck, RejectsNonZeroInitialVelocityNamingBlock21) {
 }
 
 TEST(Sec22Deck, RejectsLiftoffLongerThanStage1NamingBlock20) {
-  const std::string text = replaced(scout_mission_text(), "liftoff_duration_s = 3.0", "liftoff_duration_s = 45.0");
+  const std::string text =
+      replaced(scout_mission_text(), "liftoff_duration_s = 3.0", "liftoff_duration_s = 45.0");
   const DeckError error = rejected(text);
   EXPECT_EQ(error.data_block, 20);
   EXPECT_EQ(error.field, "launch.liftoff_duration_s");
@@ -323,8 +334,9 @@ TEST(Sec22Deck, RejectsMissingStageOfTheSequenceNamingBlock16) {
 }
 
 TEST(Sec22Deck, RejectsThrustTableInACoastNamingBlock30) {
-  const std::string text = replaced(scout_mission_text(), "[stage.6.drag]",
-                                    "[stage.6.thrust]\ntime_s = [0.0, 5.0]\nvacuum_thrust_lbf = [1.0, 1.0]\n\n[stage.6.drag]");
+  const std::string text =
+      replaced(scout_mission_text(), "[stage.6.drag]",
+               "[stage.6.thrust]\ntime_s = [0.0, 5.0]\nvacuum_thrust_lbf = [1.0, 1.0]\n\n[stage.6.drag]");
   const DeckError error = rejected(text);
   EXPECT_EQ(error.data_block, 30);
   EXPECT_EQ(error.field, "stage.6.thrust");
@@ -373,14 +385,16 @@ TEST(Sec22Deck, RejectsOutOfOrderDispersionCodesNamingBlock46) {
 }
 
 TEST(Sec22Deck, RejectsNonMonotonicWindTableNamingBlock53) {
-  const std::string text = replaced(scout_mission_text(), "altitude_ft = [\n  0.0, 1000.0, 5000.0", "altitude_ft = [\n  0.0, 6000.0, 5000.0");
+  const std::string text = replaced(scout_mission_text(), "altitude_ft = [\n  0.0, 1000.0, 5000.0",
+                                    "altitude_ft = [\n  0.0, 6000.0, 5000.0");
   const DeckError error = rejected(text);
   EXPECT_EQ(error.data_block, 53);
   EXPECT_EQ(error.field, "dispersion[35].wind_speed.altitude_ft[2]");
 }
 
 TEST(Sec22Deck, RejectsImpactDragTableNotStartingAtMachZeroNamingBlock43) {
-  const std::string text = replaced(scout_mission_text(), "casing_weight_lb = 560.0\nmach = [0.0,", "casing_weight_lb = 560.0\nmach = [0.1,");
+  const std::string text = replaced(scout_mission_text(), "casing_weight_lb = 560.0\nmach = [0.0,",
+                                    "casing_weight_lb = 560.0\nmach = [0.1,");
   const DeckError error = rejected(text);
   EXPECT_EQ(error.data_block, 43);
   EXPECT_EQ(error.field, "impact.casing_drag.3.mach");
@@ -501,7 +515,8 @@ TEST(Sec22Deck, LoadErrorsNameTheFileOnDisk) {
   DeckError error;
   EXPECT_FALSE(ground::load_toml_deck(path, mission.get(), &error));
   EXPECT_TRUE(contains(error.to_string(), path + ":"));
-  EXPECT_TRUE(contains(error.to_string(), ": data block 39, field stage.4.jettison_weight_lb: kNegativeWeight"));
+  EXPECT_TRUE(
+      contains(error.to_string(), ": data block 39, field stage.4.jettison_weight_lb: kNegativeWeight"));
   std::remove(path.c_str());
 }
 
@@ -512,7 +527,9 @@ TEST(Sec22Deck, DeckErrorToStringFollowsFileLineBlockFieldMessage) {
   error.data_block = 30;
   error.field = "stage.2.thrust.time_s";
   error.message = "expected strictly increasing stage time";
-  EXPECT_EQ(error.to_string(), "deck.toml:12: data block 30, field stage.2.thrust.time_s: expected strictly increasing stage time");
+  EXPECT_EQ(
+      error.to_string(),
+      "deck.toml:12: data block 30, field stage.2.thrust.time_s: expected strictly increasing stage time");
   error.line = 0;
   error.data_block = 0;
   error.field.clear();

@@ -24,7 +24,8 @@ struct Loaded {
 Loaded load_example(const std::string& name) {
   Loaded loaded;
   DeckError error;
-  const bool ok_load = ground::load_toml_deck(example_path(name), loaded.mission.get(), &loaded.extras, &error);
+  const bool ok_load =
+      ground::load_toml_deck(example_path(name), loaded.mission.get(), &loaded.extras, &error);
   EXPECT_TRUE(ok_load) << error.to_string();
   return loaded;
 }
@@ -55,7 +56,8 @@ TEST(Sec22Deck, LoadsReferenceOptimumExampleAndValidates) {
 TEST(Sec22Deck, LoadsThroughTheMissionOnlyOverload) {
   auto mission = ground::make_mission();
   DeckError error;
-  ASSERT_TRUE(ground::load_toml_deck(example_path("scout/mission.toml"), mission.get(), &error)) << error.to_string();
+  ASSERT_TRUE(ground::load_toml_deck(example_path("scout/mission.toml"), mission.get(), &error))
+      << error.to_string();
   EXPECT_EQ(mission->vehicle.sequence.count, 7);
 }
 
@@ -83,7 +85,8 @@ TEST(Sec22Deck, MissionExampleCarriesTheReferenceVehicle) {
     EXPECT_EQ(data.jettison_weight_lb, stage["jettison_weight_lb"].get<double>());
     EXPECT_EQ(data.reference_area_ft2, stage["reference_area_ft2"].get<double>());
     EXPECT_EQ(data.nozzle_exit_area_ft2, stage["nozzle_exit_area_ft2"].get<double>());
-    expect_table(data.vacuum_thrust_lbf, stage["thrust_table"]["time_s"], stage["thrust_table"]["vacuum_thrust_lbf"]);
+    expect_table(data.vacuum_thrust_lbf, stage["thrust_table"]["time_s"],
+                 stage["thrust_table"]["vacuum_thrust_lbf"]);
     expect_table(data.consumable_weight_lb, stage["consumable_weight_table"]["time_s"],
                  stage["consumable_weight_table"]["consumable_weight_remaining_lb"]);
   }
@@ -112,7 +115,8 @@ TEST(Sec22Deck, MissionExampleCarriesTheReferenceVehicle) {
   EXPECT_FALSE(m.vehicle.stages[stage_index(2)].uses_lift_table);
 
   // The crude starting payload.
-  EXPECT_EQ(m.vehicle.payload_lb, ref["oracle_solution"]["tth_block40_initial_nominal"]["payload_lb"].get<double>());
+  EXPECT_EQ(m.vehicle.payload_lb,
+            ref["oracle_solution"]["tth_block40_initial_nominal"]["payload_lb"].get<double>());
 }
 
 TEST(Sec22Deck, MissionExampleCarriesTheReferenceMissionData) {
@@ -138,7 +142,8 @@ TEST(Sec22Deck, MissionExampleCarriesTheReferenceMissionData) {
 
   // Blocks 10-14 as in the reference (= the manual's nominal values).
   const nlohmann::json& ct1 = ref["constants_block10_CT1"];
-  EXPECT_EQ(m.constants.gravitational_parameter_ft3_s2, ct1["gravitational_parameter_ft3_per_s2"].get<double>());
+  EXPECT_EQ(m.constants.gravitational_parameter_ft3_s2,
+            ct1["gravitational_parameter_ft3_per_s2"].get<double>());
   EXPECT_EQ(m.constants.gas_constant_ft2_s2_R, ct1["gas_constant_ft2_per_s2_R"].get<double>());
   EXPECT_EQ(m.constants.j2, ct1["j2"].get<double>());
   EXPECT_EQ(m.atmosphere.base_density_slug_ft3[7],
@@ -147,7 +152,8 @@ TEST(Sec22Deck, MissionExampleCarriesTheReferenceMissionData) {
   // Blocks 20, 21: degrees in the deck, radians in the core.
   const nlohmann::json& ic = mission["initial_conditions_block21"];
   EXPECT_EQ(m.launch.liftoff_duration_s, mission["liftoff_duration_s_block20_word1"].get<double>());
-  EXPECT_EQ(m.launch.launch_space_age_date_days, mission["launch_date_space_age_days_block20_word2"].get<double>());
+  EXPECT_EQ(m.launch.launch_space_age_date_days,
+            mission["launch_date_space_age_days_block20_word2"].get<double>());
   EXPECT_EQ(m.launch.altitude_ft, ic["altitude_ft"].get<double>());
   EXPECT_DOUBLE_EQ(m.launch.geocentric_latitude_rad, deg(ic["geocentric_latitude_deg"].get<double>()));
   EXPECT_NEAR(m.launch.geocentric_latitude_rad, 0.657173006127, 1e-12);  // the oracle's state vector
@@ -203,7 +209,8 @@ TEST(Sec22Deck, MissionExampleCarriesTheReferenceMissionData) {
   ASSERT_EQ(m.pitch_program_rad.size(), static_cast<int>(tth["time_s"].size()));
   for (int i = 0; i < m.pitch_program_rad.size(); ++i) {
     EXPECT_EQ(m.pitch_program_rad.x(i), tth["time_s"][static_cast<std::size_t>(i)].get<double>());
-    EXPECT_DOUBLE_EQ(m.pitch_program_rad.y(i), deg(tth["theta_deg"][static_cast<std::size_t>(i)].get<double>()));
+    EXPECT_DOUBLE_EQ(m.pitch_program_rad.y(i),
+                     deg(tth["theta_deg"][static_cast<std::size_t>(i)].get<double>()));
   }
 }
 
@@ -221,8 +228,9 @@ TEST(Sec22Deck, ReferenceOptimumCarriesTheOracleSolution) {
   EXPECT_DOUBLE_EQ(m.pitch_program_rad.y(0), 0.5 * kPi);
   for (int i = 0; i < 11; ++i) EXPECT_EQ(m.pitch_program_rad.x(i), node_times[i]);
   for (int i = 1; i < 11; ++i) {
-    EXPECT_DOUBLE_EQ(m.pitch_program_rad.y(i),
-                     deg(oracle["pitch_program"]["theta_deg_as_flown"][static_cast<std::size_t>(i) - 1].get<double>()));
+    EXPECT_DOUBLE_EQ(
+        m.pitch_program_rad.y(i),
+        deg(oracle["pitch_program"]["theta_deg_as_flown"][static_cast<std::size_t>(i) - 1].get<double>()));
   }
 }
 
@@ -238,8 +246,9 @@ TEST(Sec22Deck, ExampleExtrasCarryTheOptionalComputationData) {
   ASSERT_TRUE(b.present);
   EXPECT_EQ(b.position_gain[0], 1.2);
   EXPECT_DOUBLE_EQ(b.control_station_ft[2], 296.0 / 12.0);
-  EXPECT_DOUBLE_EQ(b.jet_vane_effectiveness_per_rad,
-                   da6d["jet_vane_effectiveness_lb_per_lb_vacuum_thrust_per_deg_per_vane"].get<double>() / kDegToRad);
+  EXPECT_DOUBLE_EQ(
+      b.jet_vane_effectiveness_per_rad,
+      da6d["jet_vane_effectiveness_lb_per_lb_vacuum_thrust_per_deg_per_vane"].get<double>() / kDegToRad);
   EXPECT_EQ(b.reference_length_ft, da6d["reference_length_ft"].get<double>());
   EXPECT_EQ(x.body_dynamics.impact_every_nth_step[1], 2);
   EXPECT_EQ(b.pitching_moment_per_rad.size(), 10);
@@ -276,24 +285,25 @@ TEST(Sec22Deck, ExampleExtrasCarryTheOptionalComputationData) {
   for (std::size_t i = 0; i < 38; ++i) EXPECT_EQ(x.dispersions[i].code, static_cast<int>(i) + 1);
   EXPECT_EQ(x.dispersions.back().code, 40);
   EXPECT_EQ(x.dispersions.back().title, "NOMINAL TRAJ");
-  const nlohmann::json& high1 = ref["dispersions"]["codes_1_8_vacuum_thrust_variation"]["tables"]["stage_1_high"];
+  const nlohmann::json& high1 =
+      ref["dispersions"]["codes_1_8_vacuum_thrust_variation"]["tables"]["stage_1_high"];
   EXPECT_EQ(x.dispersions[0].stage, 1);
   EXPECT_EQ(x.dispersions[0].vacuum_thrust_lbf.x.back(), high1["time_s"].back().get<double>());
   EXPECT_EQ(x.dispersions[0].vacuum_thrust_lbf.y[3], high1["vacuum_thrust_lbf"][3].get<double>());
   EXPECT_EQ(x.dispersions[7].stage, 4);
-  EXPECT_EQ(x.dispersions[8].weight_increment_lb, 150.0);    // code 9
-  EXPECT_EQ(x.dispersions[9].weight_increment_lb, -150.0);   // code 10
-  EXPECT_EQ(x.dispersions[15].stage, 4);                     // code 16
-  EXPECT_EQ(x.dispersions[17].drag_variation_fraction, -0.1);  // code 18
+  EXPECT_EQ(x.dispersions[8].weight_increment_lb, 150.0);                    // code 9
+  EXPECT_EQ(x.dispersions[9].weight_increment_lb, -150.0);                   // code 10
+  EXPECT_EQ(x.dispersions[15].stage, 4);                                     // code 16
+  EXPECT_EQ(x.dispersions[17].drag_variation_fraction, -0.1);                // code 18
   EXPECT_NEAR(x.dispersions[18].pitching_moment_per_rad.y[0], -7.2, 1e-12);  // code 19: x_cp 690 in
   EXPECT_NEAR(x.dispersions[19].pitching_moment_per_rad.y[0], -8.8, 1e-12);  // code 20: x_cp 710 in
-  EXPECT_DOUBLE_EQ(x.dispersions[21].misalignment_rad, deg(-0.25));  // code 22
+  EXPECT_DOUBLE_EQ(x.dispersions[21].misalignment_rad, deg(-0.25));          // code 22
   EXPECT_EQ(x.dispersions[20].thrust_station_in, 864.0);
-  EXPECT_EQ(x.dispersions[26].stage, 3);                           // code 27
-  EXPECT_DOUBLE_EQ(x.dispersions[30].tipoff_rad, deg(-2.0));       // code 31
-  EXPECT_DOUBLE_EQ(x.dispersions[32].launch_change_rad, deg(0.5));  // code 33
-  EXPECT_DOUBLE_EQ(x.dispersions[34].launch_change_rad, deg(-0.3));  // code 35
-  EXPECT_EQ(x.dispersions[35].wind_speed_ft_s.y[7], 250.0);          // code 36
+  EXPECT_EQ(x.dispersions[26].stage, 3);                                 // code 27
+  EXPECT_DOUBLE_EQ(x.dispersions[30].tipoff_rad, deg(-2.0));             // code 31
+  EXPECT_DOUBLE_EQ(x.dispersions[32].launch_change_rad, deg(0.5));       // code 33
+  EXPECT_DOUBLE_EQ(x.dispersions[34].launch_change_rad, deg(-0.3));      // code 35
+  EXPECT_EQ(x.dispersions[35].wind_speed_ft_s.y[7], 250.0);              // code 36
   EXPECT_DOUBLE_EQ(x.dispersions[37].wind_azimuth_rad.y[0], deg(10.0));  // code 38
 }
 
@@ -301,9 +311,9 @@ TEST(Sec22Deck, ExampleExtrasCarryTheOptionalComputationData) {
 TEST(Sec22Deck, ExamplesMatchTheirGenerator) {
   if (std::system("python3 -c 'import json' > /dev/null 2>&1") != 0) GTEST_SKIP() << "python3 not available";
   const std::string out = std::string(TOLIP_BINARY_DIR) + "/generated_scout_examples";
-  const std::string command = "python3 '" + std::string(TOLIP_SOURCE_DIR) + "/scripts/make_scout_examples.py'" +
-                              " --reference '" + std::string(TOLIP_REFERENCE_DIR) + "/scout_reference.json'" +
-                              " --out '" + out + "' > /dev/null";
+  const std::string command =
+      "python3 '" + std::string(TOLIP_SOURCE_DIR) + "/scripts/make_scout_examples.py'" + " --reference '" +
+      std::string(TOLIP_REFERENCE_DIR) + "/scout_reference.json'" + " --out '" + out + "' > /dev/null";
   ASSERT_EQ(std::system(command.c_str()), 0) << command;
   for (const char* name : {"mission.toml", "reference_optimum.toml", "mission.dat", "cases.dat"}) {
     EXPECT_EQ(read_text(out + "/" + name), read_text(example_path(std::string("scout/") + name)))

@@ -35,8 +35,8 @@ double loaded_value(const FieldDescription& field, const ground::DeckCase& deck_
 
 // A nearby value with at most 6 significant digits, so that it fits an E12.8 card field exactly:
 // 1e-4 larger (the stage 1 duration and the end of the zero-alpha window stay within CT1(10) of
-// the end of the thrust table), 0.5 for a zero, half a unit more for a value that must be at least 1, integers one
-// more, 0/1 flags swapped, choices the next allowed one.
+// the end of the thrust table), 0.5 for a zero, half a unit more for a value that must be at least 1,
+// integers one more, 0/1 flags swapped, choices the next allowed one.
 double distinctive(const FieldDescription& field, double current) {
   using ground::deck_detail::Range;
   if (field.range == Range::kFlag) return current == 0.0 ? 1.0 : 0.0;
@@ -73,9 +73,10 @@ void set_in(toml::table& root, const FieldDescription& field, int code, int inde
   toml::array values;
   for (int i = 0; i < field.count; ++i) {
     const toml::node* given = section->get(field.key);
-    const double element = i == index          ? value
-                           : given != nullptr ? given->as_array()->get(static_cast<std::size_t>(i))->value<double>().value()
-                                              : ground::deck_detail::default_deck_value(field, code, i);
+    const double element = i == index ? value
+                           : given != nullptr
+                               ? given->as_array()->get(static_cast<std::size_t>(i))->value<double>().value()
+                               : ground::deck_detail::default_deck_value(field, code, i);
     if (field.integer) values.push_back(static_cast<int64_t>(element));
     else values.push_back(element);
   }
@@ -85,8 +86,10 @@ void set_in(toml::table& root, const FieldDescription& field, int code, int inde
 // The value of the key behind a field in a TOML text (deck units); NaN when absent.
 double toml_value(const std::string& text, const FieldDescription& field, int code, int index) {
   const toml::table root = toml::parse(text);
-  const toml::node_view<const toml::node> at = root.at_path(ground::deck_detail::section_of(field, code))[field.key];
-  const toml::node_view<const toml::node> element = field.count == 1 ? at : at[static_cast<std::size_t>(index)];
+  const toml::node_view<const toml::node> at =
+      root.at_path(ground::deck_detail::section_of(field, code))[field.key];
+  const toml::node_view<const toml::node> element =
+      field.count == 1 ? at : at[static_cast<std::size_t>(index)];
   return element.value<double>().value_or(std::nan(""));
 }
 
@@ -126,7 +129,8 @@ struct Edit {
 // The Scout deck with the edits, through every reader and writer; each edited value must come back.
 void expect_every_path_keeps(const std::vector<Edit>& edits) {
   toml::table root = toml::parse(scout_mission_text());
-  for (const Edit& edit : edits) set_in(root, *edit.probe.field, edit.probe.code, edit.probe.index, edit.value);
+  for (const Edit& edit : edits)
+    set_in(root, *edit.probe.field, edit.probe.code, edit.probe.index, edit.value);
   std::ostringstream text;
   text << root;
   ground::Deck toml_deck;
@@ -154,7 +158,8 @@ void expect_every_path_keeps(const std::vector<Edit>& edits) {
     if (*field.core_name != '\0') {  // the fields the core's Mission holds
       const std::string name = ground::deck_detail::core_name_of(field, code, index);
       const std::string literal = field.integer ? std::to_string(static_cast<long long>(core)) : hex(core);
-      EXPECT_NE(source.find("  m." + name + " = " + literal + ";\n"), std::string::npos) << "C++ source: m." << name;
+      EXPECT_NE(source.find("  m." + name + " = " + literal + ";\n"), std::string::npos)
+          << "C++ source: m." << name;
     }
   }
 }
@@ -170,8 +175,9 @@ TEST(Sec22DeckFields, EveryDescribedFieldIsReadByBothReadersWrittenByTheWriterAn
   // dropped key; the mission validation tests reject any other value). IP(9) = 2, 3 need the deck's
   // spun-attitude adjustable codes replaced and stage-4 segments added (and 3 a stage 5): the
   // upper-stage deck tests carry IP(9) = 2 through the TOML and the card reader instead.
-  const std::set<std::string> fixed = {"options.payoff", "options.heating_constraint", "options.linearization",
-                                       "options.stage5_chi", "options.spin_stages_4_5"};
+  const std::set<std::string> fixed = {"options.payoff", "options.heating_constraint",
+                                       "options.linearization", "options.stage5_chi",
+                                       "options.spin_stages_4_5"};
   const std::set<std::string> nominal_only = {"launch.velocity_ft_s", "launch.flight_path_angle_deg"};
   // Two decks: every other field at once, and the options at once (an option switching a group
   // off drops that group's cards, so the groups' own fields are checked in the first deck).
@@ -180,8 +186,8 @@ TEST(Sec22DeckFields, EveryDescribedFieldIsReadByBothReadersWrittenByTheWriterAn
   int walked = 0;
   for (const Probe& probe : probes(base.cases[0])) {
     const FieldDescription& field = *probe.field;
-    const double current = ground::deck_detail::to_deck(field.conversion,
-                                                        loaded_value(field, base.cases[0], probe.code, probe.index));
+    const double current = ground::deck_detail::to_deck(
+        field.conversion, loaded_value(field, base.cases[0], probe.code, probe.index));
     double value = distinctive(field, current);
     if (fixed.count(probe.name) == 1 || nominal_only.count(probe.name) == 1) value = current;
     (field.block == 4 ? options : fields).push_back({probe, value});
@@ -223,7 +229,8 @@ TEST(Sec15DispersionCodes, EveryCodeMapsToItsDataOnce) {
     EXPECT_LE(codes.first, codes.last);
     previous_last = codes.last;
   }
-  for (int code = 1; code <= 38; ++code) EXPECT_NE(ground::deck_detail::find_dispersion(code), nullptr) << code;
+  for (int code = 1; code <= 38; ++code)
+    EXPECT_NE(ground::deck_detail::find_dispersion(code), nullptr) << code;
   EXPECT_EQ(ground::deck_detail::find_dispersion(39), nullptr);
   EXPECT_NE(ground::deck_detail::find_dispersion(40), nullptr);
   EXPECT_EQ(ground::deck_detail::find_dispersion(41), nullptr);

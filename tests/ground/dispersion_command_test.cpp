@@ -30,7 +30,8 @@ const Runs& runs() {
   static const std::unique_ptr<Runs> r = [] {
     auto x = std::make_unique<Runs>();
     x->csv_path = (x->scratch / "dispersions.csv").string();
-    x->json_run = run_tolip_executable({"optimize", mission_deck(), "--json", "--dispersions-csv", x->csv_path});
+    x->json_run =
+        run_tolip_executable({"optimize", mission_deck(), "--json", "--dispersions-csv", x->csv_path});
     x->listing_run = run_tolip_executable({"optimize", mission_deck()});
     x->document = nlohmann::json::parse(x->json_run.out, nullptr, false);
     return x;
@@ -46,8 +47,8 @@ TEST(Sec15DispersionCommand, ExampleFliesEveryCodeAboutTheLinearizedProgram) {
   ASSERT_TRUE(d.is_object());
   EXPECT_EQ(d["status"], "kOk");
   EXPECT_EQ(d["nominal_kind"], "linearized program");
-  EXPECT_EQ(d["staging_points"],
-            nlohmann::json::array({"stage_2_ignition", "stage_3_ignition", "stage_4_ignition", "final_point"}));
+  EXPECT_EQ(d["staging_points"], nlohmann::json::array({"stage_2_ignition", "stage_3_ignition",
+                                                        "stage_4_ignition", "final_point"}));
   ASSERT_EQ(d["trajectories"].size(), 38u);
   for (std::size_t k = 0; k < 38; ++k) {
     const nlohmann::json& t = d["trajectories"][k];
@@ -68,7 +69,8 @@ TEST(Sec15DispersionCommand, ExampleNominalIsTheLinearizedTrajectory) {
   const nlohmann::json& constraints = runs().document["linearized"]["constraints"];
   ASSERT_EQ(constraints[0]["code"], 7);
   const double linearized_altitude = constraints[0]["achieved"].get<double>();
-  EXPECT_LT(std::fabs(nominal_altitude - linearized_altitude), 5.0) << nominal_altitude << " " << linearized_altitude;
+  EXPECT_LT(std::fabs(nominal_altitude - linearized_altitude), 5.0)
+      << nominal_altitude << " " << linearized_altitude;
   EXPECT_EQ(d["nominal"]["values"][3]["crossrange_nmi"].get<double>(), 0.0);
 }
 
@@ -77,7 +79,8 @@ TEST(Sec15DispersionCommand, ThreeSigmaGroupsEqualAnIndependentRecomputation) {
   const nlohmann::json& d = dispersions();
   const nlohmann::json& groups = d["three_sigma"];
   ASSERT_TRUE(groups.is_object());
-  const char* keys[] = {"altitude_ft", "velocity_ft_s", "flight_path_angle_deg", "downrange_nmi", "crossrange_nmi"};
+  const char* keys[] = {"altitude_ft", "velocity_ft_s", "flight_path_angle_deg", "downrange_nmi",
+                        "crossrange_nmi"};
   const auto trajectory = [&](int code) -> const nlohmann::json& { return d["trajectories"][code - 1]; };
   for (const char* group : {"yaw", "high", "low", "high_with_winds", "low_with_winds"}) {
     const nlohmann::json& g = groups[group];
@@ -90,8 +93,10 @@ TEST(Sec15DispersionCommand, ThreeSigmaGroupsEqualAnIndependentRecomputation) {
           squares += x * x;
         }
         const double tolerance = 1e-9 * (std::fabs(sum) + std::sqrt(squares) + 1e-12);
-        EXPECT_NEAR(g["sum"][column][key].get<double>(), sum, tolerance) << group << " " << column << " " << key;
-        EXPECT_NEAR(g["rss"][column][key].get<double>(), std::sqrt(squares), tolerance) << group << " " << key;
+        EXPECT_NEAR(g["sum"][column][key].get<double>(), sum, tolerance)
+            << group << " " << column << " " << key;
+        EXPECT_NEAR(g["rss"][column][key].get<double>(), std::sqrt(squares), tolerance)
+            << group << " " << key;
       }
     }
   }
@@ -118,8 +123,8 @@ TEST(Sec15DispersionCommand, ListingPagesAndCsv) {
   ASSERT_EQ(listing.exit_code, 0) << listing.err;
   for (const char* part : {"DISPERSION ANALYSIS (SEC. 15", "NOMINAL TRAJECTORY (GIANT PLANE 40)",
                            "DISPERSED TRAJECTORY  CODE 36  WINDS HIGH", "SUMMARY OF INDIVIDUAL DISPERSIONS",
-                           "THREE-SIGMA VARIATIONS", "YAW DISPERSIONS  CODES: 23 26 29 32 33 38", "HIGH, WITH WINDS",
-                           "MAX QBAR*ALPHA", "STAGE 4 IGNITION"}) {
+                           "THREE-SIGMA VARIATIONS", "YAW DISPERSIONS  CODES: 23 26 29 32 33 38",
+                           "HIGH, WITH WINDS", "MAX QBAR*ALPHA", "STAGE 4 IGNITION"}) {
     EXPECT_NE(listing.out.find(part), std::string::npos) << part;
   }
   const std::string csv = read_text_file(runs().csv_path);
@@ -158,9 +163,9 @@ TEST(Sec15DispersionCommand, WindTableLongerThanTheCoreHoldsIsBadInputNamingTheB
 // body dynamics are named, not skipped.
 TEST(Sec15DispersionCommand, OptimumIsTheNominalWithoutLinearization) {
   ScratchDirectory scratch("dispersions_optimum");
-  const std::string deck = edited_example_deck(
-      scratch, "optimum.toml",
-      {{"linearization = true ", "linearization = false "}, {"body_dynamics_6d = 1 ", "body_dynamics_6d = 0 "}});
+  const std::string deck = edited_example_deck(scratch, "optimum.toml",
+                                               {{"linearization = true ", "linearization = false "},
+                                                {"body_dynamics_6d = 1 ", "body_dynamics_6d = 0 "}});
   ASSERT_FALSE(deck.empty());
   const CommandResult run = run_tolip_executable({"optimize", deck, "--json"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
@@ -174,8 +179,12 @@ TEST(Sec15DispersionCommand, OptimumIsTheNominalWithoutLinearization) {
   }
   // The nominal against the optimizer's final trajectory (docs/theory/dispersions.md).
   const nlohmann::json& last = document["trajectory"].back();
-  EXPECT_LT(std::fabs(d["nominal"]["values"][3]["altitude_ft"].get<double>() - last["altitude_ft"].get<double>()), 50.0);
-  EXPECT_LT(std::fabs(d["nominal"]["values"][3]["velocity_ft_s"].get<double>() - last["velocity_ft_s"].get<double>()), 1.0);
+  EXPECT_LT(
+      std::fabs(d["nominal"]["values"][3]["altitude_ft"].get<double>() - last["altitude_ft"].get<double>()),
+      50.0);
+  EXPECT_LT(std::fabs(d["nominal"]["values"][3]["velocity_ft_s"].get<double>() -
+                      last["velocity_ft_s"].get<double>()),
+            1.0);
   // The three-sigma groups leave the codes that did not fly out.
   EXPECT_EQ(d["three_sigma"]["high"]["codes"].size() + d["three_sigma"]["low"]["codes"].size(), 26u);
 }

@@ -13,8 +13,6 @@
 namespace tolip::test {
 namespace {
 
-
-
 TEST(ExchangeRatioReport, JsonListsEveryPoweredStageWithTheSignsIntuitionAsks) {
   const CommandResult run = run_tolip_executable({"optimize", mission_deck(), "--json"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
@@ -27,7 +25,8 @@ TEST(ExchangeRatioReport, JsonListsEveryPoweredStageWithTheSignsIntuitionAsks) {
   for (std::size_t s = 0; s < ratios.size(); ++s) {
     const nlohmann::json& r = ratios[s];
     EXPECT_EQ(r["stage"].get<int>(), static_cast<int>(s) + 1);
-    for (const char* key : {"burn_rate", "propellant_weight", "specific_impulse", "drag", "jettison_weight"}) {
+    for (const char* key :
+         {"burn_rate", "propellant_weight", "specific_impulse", "drag", "jettison_weight"}) {
       ASSERT_TRUE(r[key].is_number()) << key;
     }
     EXPECT_GT(r["specific_impulse"].get<double>(), 0.0);   // lb of payload per 1% Isp
@@ -45,8 +44,9 @@ TEST(ExchangeRatioReport, ListingPrintsTheTableWithinTheLineWidth) {
   const CommandResult run = run_tolip_executable({"optimize", mission_deck()});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const std::string& text = run.out;
-  for (const char* part : {"PERFORMANCE EXCHANGE RATIOS", "BURN RATE", "PROPELLANT WEIGHT", "SPECIFIC IMPULSE",
-                           "DRAG AREA", "JETTISON WEIGHT", "LB/PCT", "LB/FT2", "PRICE OF 1 LB OF PAYLOAD"}) {
+  for (const char* part :
+       {"PERFORMANCE EXCHANGE RATIOS", "BURN RATE", "PROPELLANT WEIGHT", "SPECIFIC IMPULSE", "DRAG AREA",
+        "JETTISON WEIGHT", "LB/PCT", "LB/FT2", "PRICE OF 1 LB OF PAYLOAD"}) {
     EXPECT_TRUE(contains(text, part)) << part;
   }
   EXPECT_FALSE(contains(text, "nan"));
@@ -57,15 +57,16 @@ TEST(ExchangeRatioReport, ListingPrintsTheTableWithinTheLineWidth) {
 
 TEST(ExchangeRatioReport, AbsentWithoutOption3AndNullWhenTheOptimizationDidNotConverge) {
   ScratchDirectory scratch("exchange_ratio_report");
-  const std::string off = edited_example_deck(scratch, "off.toml", {{"exchange_ratios = true", "exchange_ratios = false"}});
+  const std::string off =
+      edited_example_deck(scratch, "off.toml", {{"exchange_ratios = true", "exchange_ratios = false"}});
   const CommandResult without = run_tolip_executable({"optimize", off, "--json"});
   ASSERT_EQ(without.exit_code, 0) << without.err;
   EXPECT_FALSE(nlohmann::json::parse(without.out).contains("exchange_ratios"));
   EXPECT_FALSE(contains(run_tolip_executable({"optimize", off}).out, "PERFORMANCE EXCHANGE RATIOS"));
 
   // A forward-run budget of 2 stops the optimization before it converges: no ratios.
-  const std::string budget =
-      edited_example_deck(scratch, "budget.toml", {{"max_forward_trajectories = 30", "max_forward_trajectories = 2"}});
+  const std::string budget = edited_example_deck(
+      scratch, "budget.toml", {{"max_forward_trajectories = 30", "max_forward_trajectories = 2"}});
   const CommandResult json_run = run_tolip_executable({"optimize", budget, "--json"});
   EXPECT_EQ(json_run.exit_code, 1);
   const nlohmann::json document = nlohmann::json::parse(json_run.out);

@@ -14,7 +14,9 @@
 namespace tolip::test {
 namespace {
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
 
 void expect_every_constraint_met(const nlohmann::json& document) {
   ASSERT_TRUE(document["constraints"].is_array());
@@ -36,7 +38,8 @@ TEST(Sec5WeakDirections, InclinationAtTheLaunchLatitudeIsHeldByItsDeadbandAndThe
         "[[constraint]]  # inclination = the launch site's geocentric latitude\ncode = 10\n"
         "desired_deg = 37.653239661\ndeadband_optimization_deg = 1.0\ndeadband_linearization_deg = 0.05\n\n"
         "# Data blocks 6 and 27"},
-       {"[linearization]", "[[adjustable_parameter]]  # launch azimuth\ncode = 6\nweight = 1.0\n\n[linearization]"}});
+       {"[linearization]",
+        "[[adjustable_parameter]]  # launch azimuth\ncode = 6\nweight = 1.0\n\n[linearization]"}});
   const CommandResult run = run_tolip_executable({"optimize", deck, "--json"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const nlohmann::json d = nlohmann::json::parse(run.out);
@@ -56,16 +59,19 @@ TEST(Sec5WeakDirections, InclinationAtTheLaunchLatitudeIsHeldByItsDeadbandAndThe
   EXPECT_LT(held[3]["steerability_deadbands"].get<double>(), 0.02);
   EXPECT_EQ(held[3]["message"], "constraint 4 (code 10) has no first-order effect: held by deadband");
   bool some_run_held = false;
-  for (const nlohmann::json& r : d["iterations"]) some_run_held = some_run_held || r["constraints_held"][3] == true;
+  for (const nlohmann::json& r : d["iterations"])
+    some_run_held = some_run_held || r["constraints_held"][3] == true;
   EXPECT_TRUE(some_run_held);
   const CommandResult listing = run_tolip_executable({"optimize", deck});
-  EXPECT_TRUE(contains(listing.out, "CONSTRAINT 4 (CODE 10) HAS NO FIRST-ORDER EFFECT: HELD BY DEADBAND ON ")) << listing.out;
+  EXPECT_TRUE(contains(listing.out, "CONSTRAINT 4 (CODE 10) HAS NO FIRST-ORDER EFFECT: HELD BY DEADBAND ON "))
+      << listing.out;
   EXPECT_TRUE(contains(listing.out, "  HELD: 4\n"));
 }
 
 // The bundled example's constraints are all steerable: nothing is held, nothing fails.
 TEST(Sec5WeakDirections, TheExampleHoldsNothing) {
-  const CommandResult run = run_tolip_executable({"optimize", std::string(TOLIP_EXAMPLES_DIR) + "/scout/mission.toml", "--json"});
+  const CommandResult run =
+      run_tolip_executable({"optimize", std::string(TOLIP_EXAMPLES_DIR) + "/scout/mission.toml", "--json"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const nlohmann::json d = nlohmann::json::parse(run.out);
   for (const nlohmann::json& h : d["held_constraints"]) EXPECT_EQ(h["held_runs"].get<int>(), 0) << h["code"];
@@ -78,11 +84,11 @@ TEST(Sec5WeakDirections, TheExampleHoldsNothing) {
 // goes on to its final guidance run instead of ending with kAltitudeBelowSurface at run 29.
 TEST(Sec22FailedRuns, ARunBelowTheSurfaceIsRetriedFromTheLastGoodNominalAndTheCaseGoesOn) {
   ScratchDirectory scratch("hard_cases_crash");
-  const std::string deck = edited_example_deck(
-      scratch, "flat.toml",
-      {{"theta_deg = [90.0, 90.0, 80.0, 65.0, 49.0, 33.0, 27.0, 22.0, 21.0, 20.0, 18.0]",
-        "theta_deg = [90.0, 90.0, 70.0, 45.0, 30.0, 15.0, 10.0, 5.0, 5.0, 5.0, 5.0]"},
-       {"max_forward_trajectories = 30", "max_forward_trajectories = 32"}});
+  const std::string deck =
+      edited_example_deck(scratch, "flat.toml",
+                          {{"theta_deg = [90.0, 90.0, 80.0, 65.0, 49.0, 33.0, 27.0, 22.0, 21.0, 20.0, 18.0]",
+                            "theta_deg = [90.0, 90.0, 70.0, 45.0, 30.0, 15.0, 10.0, 5.0, 5.0, 5.0, 5.0]"},
+                           {"max_forward_trajectories = 30", "max_forward_trajectories = 32"}});
   const CommandResult run = run_tolip_executable({"optimize", deck, "--json"});
   const nlohmann::json d = nlohmann::json::parse(run.out);
   EXPECT_EQ(d["forward_runs"].get<int>(), 32);
@@ -100,7 +106,8 @@ TEST(Sec22FailedRuns, ARunBelowTheSurfaceIsRetriedFromTheLastGoodNominalAndTheCa
   EXPECT_EQ(retry["kind"], "guidance");
   EXPECT_EQ(retry["run_status"], "kOk");
   EXPECT_FALSE(retry["payoff"].is_null());
-  EXPECT_NEAR(retry["payload_increment_lb"].get<double>(), 0.5 * crashed["payload_increment_lb"].get<double>(), 1e-6);
+  EXPECT_NEAR(retry["payload_increment_lb"].get<double>(),
+              0.5 * crashed["payload_increment_lb"].get<double>(), 1e-6);
   EXPECT_EQ(runs[31]["kind"], "final_guidance");
   // Not converged (the budget ends guidance), but for that reason, not because a run crashed.
   EXPECT_EQ(d["status"], "kGuidanceDidNotConverge");

@@ -11,7 +11,6 @@
 namespace tolip::test {
 namespace {
 
-
 struct CommandHelp {
   const char* command;
   std::vector<std::string> options;  // as the help prints them, positionals included
@@ -67,7 +66,8 @@ TEST(Help, EverySubcommandExplainsEachOptionAndGivesExamples) {
       const std::string line = option_line(help, option);
       ASSERT_FALSE(line.empty()) << command.command << " does not list " << option << "\n" << help;
       // CLI11 puts the explanation in a column after the option (and its type): some words there.
-      EXPECT_GT(line.size(), 32u) << command.command << " " << option << " has no explanation: '" << line << "'";
+      EXPECT_GT(line.size(), 32u) << command.command << " " << option << " has no explanation: '" << line
+                                  << "'";
       EXPECT_NE(line.substr(30).find_first_not_of(' '), std::string::npos) << line;
     }
     EXPECT_TRUE(contains(help, "Example")) << command.command << "\n" << help;
@@ -82,9 +82,10 @@ TEST(Help, EverySubcommandExplainsEachOptionAndGivesExamples) {
 TEST(Help, UnknownCommandIsNamedAndTheCommandsListed) {
   const CommandResult result = run_tolip_executable({"simulat", "examples/scout/mission.toml"});
   EXPECT_EQ(result.exit_code, 2);
-  EXPECT_EQ(result.err,
-            "tolip: unknown command 'simulat'; the commands are: atmosphere, simulate, optimize, plot, export, "
-            "inspect, convert\nRun 'tolip --help' for more information.\n");
+  EXPECT_EQ(
+      result.err,
+      "tolip: unknown command 'simulat'; the commands are: atmosphere, simulate, optimize, plot, export, "
+      "inspect, convert\nRun 'tolip --help' for more information.\n");
   const CommandResult bare = run_tolip_executable({});
   EXPECT_EQ(bare.exit_code, 2);
   EXPECT_TRUE(contains(bare.err, "A subcommand is required")) << "no word at all: CLI11's own message";

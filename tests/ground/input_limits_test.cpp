@@ -22,8 +22,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-
-
 // A sparse file of `size` bytes (no disk space used).
 std::string sparse_file(const ScratchDirectory& scratch, const std::string& name, off_t size) {
   const std::string path = (scratch / name).string();
@@ -83,8 +81,8 @@ TEST(InputLimits, EndlessAndOversizedResultFilesAreRefusedByPlot) {
   for (const std::string& source : {std::string("/dev/zero"), big}) {
     const CommandResult result = run_tolip_bounded({"plot", source, "--out", (scratch / "plots").string()});
     EXPECT_EQ(result.exit_code, 2) << source << ": " << result.err;
-    EXPECT_EQ(result.err, "tolip: " + source + ": more than " + cap + " bytes: a result file is at most " + cap +
-                              " bytes (docs/cli.md, \"Input limits\")\n");
+    EXPECT_EQ(result.err, "tolip: " + source + ": more than " + cap + " bytes: a result file is at most " +
+                              cap + " bytes (docs/cli.md, \"Input limits\")\n");
   }
   EXPECT_FALSE(fs::exists(scratch / "plots"));
 }
@@ -108,7 +106,8 @@ TEST(CappedRead, ReadsUpToTheCapAndRefusesOneBytePast) {
   EXPECT_EQ(contents, "");
   EXPECT_FALSE(tolip::ground::read_file_capped(scratch.path().string(), 10, "test file", &contents, &error));
   EXPECT_EQ(error, "is a directory, not a test file");
-  EXPECT_FALSE(tolip::ground::read_file_capped((scratch / "absent").string(), 10, "test file", &contents, &error));
+  EXPECT_FALSE(
+      tolip::ground::read_file_capped((scratch / "absent").string(), 10, "test file", &contents, &error));
   EXPECT_EQ(error, "cannot open the test file: No such file or directory");
 }
 
@@ -122,9 +121,11 @@ TEST(InputLimits, DirectoryGivenAsAnInputIsNamedADirectory) {
     std::string message;
   } cases[] = {
       {{"simulate", dir}, "tolip: " + dir + ": is a directory, not a deck file\n"},
-      {{"convert", dir, "--to", (scratch / "x.toml").string()}, "tolip: " + dir + ": is a directory, not a deck file\n"},
+      {{"convert", dir, "--to", (scratch / "x.toml").string()},
+       "tolip: " + dir + ": is a directory, not a deck file\n"},
       {{"inspect", dir}, "tolip: " + dir + ": is a directory, not a guidance table image\n"},
-      {{"plot", dir, "--out", (scratch / "plots").string()}, "tolip: " + dir + ": is a directory, not a result file\n"},
+      {{"plot", dir, "--out", (scratch / "plots").string()},
+       "tolip: " + dir + ": is a directory, not a result file\n"},
   };
   for (const auto& c : cases) {
     const CommandResult result = run_tolip_bounded(c.command);

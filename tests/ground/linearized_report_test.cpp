@@ -14,8 +14,6 @@
 namespace tolip::test {
 namespace {
 
-
-
 const nlohmann::json& example_document() {
   static const nlohmann::json document = [] {
     const CommandResult run = run_tolip_executable({"optimize", mission_deck(), "--json"});
@@ -42,7 +40,7 @@ TEST(LinearizedReport, Sec10_JsonGivesSegmentsThatMeetTheLimitsAndConstraints) {
     }
     EXPECT_GT(seg["start_time_s"].get<double>(), previous_start);
     previous_start = seg["start_time_s"].get<double>();
-    EXPECT_LE(std::fabs(seg["rate_deg_s"].get<double>()), 5.0 * (1.0 + 1e-9));  // data block 22 word 3
+    EXPECT_LE(std::fabs(seg["rate_deg_s"].get<double>()), 5.0 * (1.0 + 1e-9));   // data block 22 word 3
     EXPECT_GE(std::fabs(seg["rate_deg_s"].get<double>()), 0.05 * (1.0 - 1e-9));  // word 4
     // Continuity: the next start is this start plus rate times duration.
     const double end_time = s + 1 < segments.size() ? segments[s + 1]["start_time_s"].get<double>()
@@ -63,7 +61,8 @@ TEST(LinearizedReport, Sec10_JsonGivesSegmentsThatMeetTheLimitsAndConstraints) {
   EXPECT_LE(payoff, optimum * (1.0 + 1e-6));
   EXPECT_GE(payoff, 0.995 * optimum);
   for (const nlohmann::json& c : l["constraints"]) {
-    EXPECT_LE(std::fabs(c["achieved"].get<double>() - c["desired"].get<double>()), c["tolerance"].get<double>())
+    EXPECT_LE(std::fabs(c["achieved"].get<double>() - c["desired"].get<double>()),
+              c["tolerance"].get<double>())
         << c["code"];
     EXPECT_TRUE(c["met"].get<bool>()) << c["code"];
   }
@@ -72,8 +71,9 @@ TEST(LinearizedReport, Sec10_JsonGivesSegmentsThatMeetTheLimitsAndConstraints) {
 TEST(LinearizedReport, ListingPrintsTheProgramAndItsConstraints) {
   const CommandResult run = run_tolip_executable({"optimize", mission_deck()});
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  for (const char* part : {"LINEARIZED PITCH PROGRAM", "PITCH RATE", "END OF PROGRAM", "LINEARIZATION DEADBANDS",
-                           "AGAINST THE OPTIMUM'S", "RATE LIMITS (DATA BLOCK 22) MET; CONSTRAINTS MET"}) {
+  for (const char* part :
+       {"LINEARIZED PITCH PROGRAM", "PITCH RATE", "END OF PROGRAM", "LINEARIZATION DEADBANDS",
+        "AGAINST THE OPTIMUM'S", "RATE LIMITS (DATA BLOCK 22) MET; CONSTRAINTS MET"}) {
     EXPECT_TRUE(contains(run.out, part)) << part;
   }
   std::istringstream in(run.out);
@@ -83,16 +83,16 @@ TEST(LinearizedReport, ListingPrintsTheProgramAndItsConstraints) {
 
 TEST(LinearizedReport, AbsentWithoutOption7AndNotComputedWhenTheOptimizationDidNotConverge) {
   ScratchDirectory scratch("linearized_report");
-  const std::string off = edited_example_deck(scratch, "off.toml",
-                                      {{"linearization = true", "linearization = false"},
-                                       {"body_dynamics_6d = 1", "body_dynamics_6d = 0"}});
+  const std::string off = edited_example_deck(
+      scratch, "off.toml",
+      {{"linearization = true", "linearization = false"}, {"body_dynamics_6d = 1", "body_dynamics_6d = 0"}});
   const CommandResult without = run_tolip_executable({"optimize", off, "--json"});
   ASSERT_EQ(without.exit_code, 0) << without.err;
   EXPECT_FALSE(nlohmann::json::parse(without.out).contains("linearized"));
 
   // A forward-run budget of 2 cannot converge: the linearization is not run and says why.
-  const std::string short_run =
-      edited_example_deck(scratch, "short.toml", {{"max_forward_trajectories = 30", "max_forward_trajectories = 2"}});
+  const std::string short_run = edited_example_deck(
+      scratch, "short.toml", {{"max_forward_trajectories = 30", "max_forward_trajectories = 2"}});
   const CommandResult stopped = run_tolip_executable({"optimize", short_run, "--json"});
   EXPECT_EQ(stopped.exit_code, 1) << stopped.err;
   const nlohmann::json document = nlohmann::json::parse(stopped.out);
@@ -125,7 +125,8 @@ TEST(LinearizedReport, Sec10_BodyDynamicsObjectReportsTheSixDRelinearization) {
 // 6D, and simulate flies the 6D trajectory itself (the same final state).
 TEST(LinearizedReport, Sec22_Option6Equal2FliesTheInitialNominalSixD) {
   ScratchDirectory scratch("body_dynamics_ip6_2");
-  const std::string deck = edited_example_deck(scratch, "ip6_2.toml", {{"body_dynamics_6d = 1", "body_dynamics_6d = 2"}});
+  const std::string deck =
+      edited_example_deck(scratch, "ip6_2.toml", {{"body_dynamics_6d = 1", "body_dynamics_6d = 2"}});
   const CommandResult optimized = run_tolip_executable({"optimize", deck, "--json"});
   ASSERT_EQ(optimized.exit_code, 0) << optimized.err;
   const nlohmann::json document = nlohmann::json::parse(optimized.out);
@@ -134,13 +135,16 @@ TEST(LinearizedReport, Sec22_Option6Equal2FliesTheInitialNominalSixD) {
   EXPECT_EQ(b["mode"], "initial_nominal");
   EXPECT_EQ(b["status"], "kOk");
   EXPECT_GT(std::fabs(b["difference"]["altitude_ft"].get<double>()), 1000.0);
-  EXPECT_NEAR(b["difference"]["velocity_ft_s"].get<double>(),
-              b["body_dynamics"]["velocity_ft_s"].get<double>() - b["point_mass"]["velocity_ft_s"].get<double>(), 1e-9);
+  EXPECT_NEAR(
+      b["difference"]["velocity_ft_s"].get<double>(),
+      b["body_dynamics"]["velocity_ft_s"].get<double>() - b["point_mass"]["velocity_ft_s"].get<double>(),
+      1e-9);
   const CommandResult simulated = run_tolip_executable({"simulate", deck, "--json"});
   ASSERT_EQ(simulated.exit_code, 0) << simulated.err;
   const nlohmann::json flown = nlohmann::json::parse(simulated.out)["trajectory"];
   ASSERT_FALSE(flown.empty());
-  EXPECT_DOUBLE_EQ(flown.back()["altitude_ft"].get<double>(), b["body_dynamics"]["altitude_ft"].get<double>());
+  EXPECT_DOUBLE_EQ(flown.back()["altitude_ft"].get<double>(),
+                   b["body_dynamics"]["altitude_ft"].get<double>());
 }
 
 }  // namespace

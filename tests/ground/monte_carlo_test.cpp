@@ -17,9 +17,9 @@
 namespace tolip::test {
 namespace {
 
+using ground::monte_carlo_statistic;
 using ground::MonteCarloSamples;
 using ground::MonteCarloStatistic;
-using ground::monte_carlo_statistic;
 using ground::run_monte_carlo;
 
 constexpr double kDeg = kPi / 180.0;
@@ -42,9 +42,12 @@ TEST(MonteCarlo, CounterDrawsAreUniformAndNormalWhateverTheOrder) {
   EXPECT_NEAR(sum_z2 / n, 1.0, 3.0 * std::sqrt(2.0 / n));
   // A draw depends on its counter only: again, backwards, the same bits; another seed or stream differs.
   for (int i = n - 1; i >= n - 10; --i) {
-    EXPECT_EQ(counter_normal(7, static_cast<std::uint64_t>(i), 5), counter_normal(7, static_cast<std::uint64_t>(i), 5));
-    EXPECT_NE(counter_normal(7, static_cast<std::uint64_t>(i), 5), counter_normal(8, static_cast<std::uint64_t>(i), 5));
-    EXPECT_NE(counter_normal(7, static_cast<std::uint64_t>(i), 5), counter_normal(7, static_cast<std::uint64_t>(i), 6));
+    EXPECT_EQ(counter_normal(7, static_cast<std::uint64_t>(i), 5),
+              counter_normal(7, static_cast<std::uint64_t>(i), 5));
+    EXPECT_NE(counter_normal(7, static_cast<std::uint64_t>(i), 5),
+              counter_normal(8, static_cast<std::uint64_t>(i), 5));
+    EXPECT_NE(counter_normal(7, static_cast<std::uint64_t>(i), 5),
+              counter_normal(7, static_cast<std::uint64_t>(i), 6));
   }
 }
 
@@ -134,8 +137,10 @@ TEST(MonteCarlo, SigmaAgreesWithTheRssSigmaInTheLinearRegime) {
     const MonteCarloStatistic s = monte_carlo_statistic(mc, kFinal, v);
     ASSERT_EQ(s.count, n);
     std::printf("final %s: Monte Carlo sigma %.6g, RSS sigma %.6g, mean %.4g\n",
-                v == StagingVariable::kAltitude ? "altitude ft" : "crossrange n.mi.", s.standard_deviation, rss, s.mean);
-    EXPECT_NEAR(s.standard_deviation / rss, 1.0, 0.15) << static_cast<int>(v) << " mc " << s.standard_deviation << " rss " << rss;
+                v == StagingVariable::kAltitude ? "altitude ft" : "crossrange n.mi.", s.standard_deviation,
+                rss, s.mean);
+    EXPECT_NEAR(s.standard_deviation / rss, 1.0, 0.15)
+        << static_cast<int>(v) << " mc " << s.standard_deviation << " rss " << rss;
     EXPECT_LT(std::fabs(s.mean), 3.0 * s.standard_deviation / std::sqrt(n)) << static_cast<int>(v);
     EXPECT_LT(s.p00135, s.p50);
     EXPECT_LT(s.p50, s.p99865);

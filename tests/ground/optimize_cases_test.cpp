@@ -17,7 +17,6 @@
 namespace tolip::test {
 namespace {
 
-
 std::size_t count(const std::string& text, const std::string& part) {
   std::size_t n = 0;
   for (std::size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++n;
@@ -86,7 +85,8 @@ TEST(OptimizeCases, EveryCaseRunsInOrder) {
   EXPECT_EQ(count(listing.out, "\n OPTIMIZATION SUMMARY\n"), 2u) << "one listing per case";
   const std::size_t second = listing.out.find("SECOND CASE: INITIAL PAYLOAD 260 LB");
   ASSERT_NE(second, std::string::npos);
-  EXPECT_LT(listing.out.find("MAXIMUM PAYLOAD FROM THE CRUDE INITIAL PITCH PROGRAM"), second) << "in case order";
+  EXPECT_LT(listing.out.find("MAXIMUM PAYLOAD FROM THE CRUDE INITIAL PITCH PROGRAM"), second)
+      << "in case order";
 }
 
 TEST(OptimizeCases, OneCaseDeckStillPrintsOneObject) {

@@ -22,8 +22,6 @@
 namespace tolip::test {
 namespace {
 
-
-
 // One `optimize --json --csv FILE` run and one listing run of the example, shared by the tests.
 struct CachedRuns {
   ScratchDirectory scratch{"optimize_cache"};
@@ -117,12 +115,32 @@ TEST(OptimizeCommand, KeepsTheSimulateSchemaForTheFinalTrajectory) {
   const nlohmann::json& document = optimized_document();
   std::vector<std::string> keys;
   for (auto it = document.begin(); it != document.end(); ++it) keys.push_back(it.key());
-  for (const char* key : {"program", "version", "deck", "title", "case_heading", "date", "status",
-                          "status_message", "launch_space_age_date_days", "point_count",
-                          "heat_integral_btu_ft2", "burnout", "inertial", "orbit", "stage_events",
-                          "converged", "forward_runs", "backward_runs", "payoff", "payload_lb",
-                          "constraints", "payoff_partials", "adjustable", "theta_history",
-                          "iterations", "trajectory"}) {
+  for (const char* key : {"program",
+                          "version",
+                          "deck",
+                          "title",
+                          "case_heading",
+                          "date",
+                          "status",
+                          "status_message",
+                          "launch_space_age_date_days",
+                          "point_count",
+                          "heat_integral_btu_ft2",
+                          "burnout",
+                          "inertial",
+                          "orbit",
+                          "stage_events",
+                          "converged",
+                          "forward_runs",
+                          "backward_runs",
+                          "payoff",
+                          "payload_lb",
+                          "constraints",
+                          "payoff_partials",
+                          "adjustable",
+                          "theta_history",
+                          "iterations",
+                          "trajectory"}) {
     EXPECT_TRUE(document.contains(key)) << key;
   }
   EXPECT_EQ(document["deck"], mission_deck());
@@ -231,13 +249,27 @@ TEST(OptimizeCommand, ListingHasTheIterationTablesTheFinalTrajectoryAndTheSummar
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_TRUE(without_input_warnings(run.err).empty()) << run.err;
   const std::string& text = run.out;
-  for (const char* heading :
-       {"OPTIMIZATION HISTORY", "OPTIMIZATION PROBLEM", "ITERATION HISTORY", "NOMINAL PAYOFF INCR",
-        "CORRECTED PAYOFF", "PAYLOAD INCREMENT", "FORWARD RUN 1   INITIAL NOMINAL",
-        "CONSTRAINT CORRECTIONS (DESIRED - ACHIEVED)", "D PAYOFF/D CONSTRAINT", "NOMINAL PAYOFF INCREMENT",
-        "FINAL GUIDANCE", "FINAL TRAJECTORY", "TERMINAL CONDITIONS", "STAGE EVENTS", "ORBIT ELEMENTS",
-        "OPTIMIZATION SUMMARY", "CONSTRAINTS ON THE FINAL TRAJECTORY", "ADJUSTABLE PARAMETERS",
-        "STAGE 4 THETA (SPUN)", "COAST AFTER STAGE 3", "LB/RAD"}) {
+  for (const char* heading : {"OPTIMIZATION HISTORY",
+                              "OPTIMIZATION PROBLEM",
+                              "ITERATION HISTORY",
+                              "NOMINAL PAYOFF INCR",
+                              "CORRECTED PAYOFF",
+                              "PAYLOAD INCREMENT",
+                              "FORWARD RUN 1   INITIAL NOMINAL",
+                              "CONSTRAINT CORRECTIONS (DESIRED - ACHIEVED)",
+                              "D PAYOFF/D CONSTRAINT",
+                              "NOMINAL PAYOFF INCREMENT",
+                              "FINAL GUIDANCE",
+                              "FINAL TRAJECTORY",
+                              "TERMINAL CONDITIONS",
+                              "STAGE EVENTS",
+                              "ORBIT ELEMENTS",
+                              "OPTIMIZATION SUMMARY",
+                              "CONSTRAINTS ON THE FINAL TRAJECTORY",
+                              "ADJUSTABLE PARAMETERS",
+                              "STAGE 4 THETA (SPUN)",
+                              "COAST AFTER STAGE 3",
+                              "LB/RAD"}) {
     EXPECT_TRUE(contains(text, heading)) << heading;
   }
   EXPECT_TRUE(contains(text, "CONVERGED                  =                  YES"));
@@ -260,7 +292,8 @@ TEST(OptimizeCommand, ListingHasTheIterationTablesTheFinalTrajectoryAndTheSummar
 TEST(OptimizeCommand, NotConvergedExitsOneAndStillReportsTheBestTrajectory) {
   ScratchDirectory scratch("optimize_budget");
   // A forward-run budget of 2: the initial nominal and one guidance run leave V_I - V_circ outside.
-  const std::string deck = edited_example_deck(scratch, "budget.toml", {{"max_forward_trajectories = 30", "max_forward_trajectories = 2"}});
+  const std::string deck = edited_example_deck(
+      scratch, "budget.toml", {{"max_forward_trajectories = 30", "max_forward_trajectories = 2"}});
   const CommandResult run = run_tolip_executable({"optimize", deck, "--json"});
   EXPECT_EQ(run.exit_code, 1);
   EXPECT_TRUE(contains(run.err, "tolip: optimization: kGuidanceDidNotConverge: ")) << run.err;
@@ -292,7 +325,8 @@ TEST(OptimizeCommand, NotConvergedExitsOneAndStillReportsTheBestTrajectory) {
 TEST(OptimizeCommand, BadInputExitsTwoWithNothingOnStdout) {
   ScratchDirectory scratch("optimize_bad");
   // IP(1) = 1 (velocity) but the payoff entry of data block 8 is the payload (code 0).
-  const std::string mismatch = edited_example_deck(scratch, "mismatch.toml", {{"payoff = 0 ", "payoff = 1 "}});
+  const std::string mismatch =
+      edited_example_deck(scratch, "mismatch.toml", {{"payoff = 0 ", "payoff = 1 "}});
   CommandResult run = run_tolip_executable({"optimize", mismatch, "--json"});
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_TRUE(run.out.empty());

@@ -14,7 +14,6 @@
 namespace tolip::test {
 namespace {
 
-
 // The oblate Earth (an ellipse of equatorial radius a and flattening f) at geocentric latitude,
 // written here from its definition: r = a (1 - f) / sqrt(1 - (2 f - f^2) cos^2(latitude)).
 double ellipse_radius_ft(double latitude_rad) {
@@ -53,7 +52,9 @@ TEST(OrbitSummary, TheOptimumIsAnOrbitNearThe300NmiTarget) {
   EXPECT_NEAR(orbit["apogee_altitude_nmi"].get<double>(), 300.0, 5.0);
 
   const CommandResult listing = run_tolip_executable({"optimize", scout_example("mission.toml")});
-  EXPECT_TRUE(std::regex_search(listing.out, std::regex("\\n ORBIT SUMMARY\\n   PATH +=  +ORBIT\\n   PERIGEE ALTITUDE += +29[0-9]\\.[0-9]{3} N\\.MI\\. AT GEOC LAT")))
+  EXPECT_TRUE(
+      std::regex_search(listing.out, std::regex("\\n ORBIT SUMMARY\\n   PATH +=  +ORBIT\\n   PERIGEE "
+                                                "ALTITUDE += +29[0-9]\\.[0-9]{3} N\\.MI\\. AT GEOC LAT")))
       << listing.out.substr(listing.out.find("ORBIT SUMMARY"), 300);
 }
 
@@ -76,12 +77,15 @@ TEST(OrbitSummary, TheCrudeProgramIsSuborbitalAndSimulateSaysWhichConstraintsItM
 
   const CommandResult listing = run_tolip_executable({"simulate", scout_example("mission.toml")});
   EXPECT_TRUE(std::regex_search(listing.out, std::regex("PATH += SUBORBITAL: PERIGEE BELOW THE SURFACE")));
-  EXPECT_TRUE(std::regex_search(listing.out, std::regex(" CONSTRAINTS OF DATA BLOCK 8 ON THIS TRAJECTORY.*\\n.*\\n +1 +7  ALTITUDE +1822834\\.647 +2646107\\.938 .* NO\\n")));
+  EXPECT_TRUE(
+      std::regex_search(listing.out, std::regex(" CONSTRAINTS OF DATA BLOCK 8 ON THIS TRAJECTORY.*\\n.*\\n "
+                                                "+1 +7  ALTITUDE +1822834\\.647 +2646107\\.938 .* NO\\n")));
 }
 
 // The reference optimum meets its own constraints in `simulate` too.
 TEST(OrbitSummary, SimulateOfTheReferenceOptimumMeetsItsConstraints) {
-  const CommandResult run = run_tolip_executable({"simulate", scout_example("reference_optimum.toml"), "--json"});
+  const CommandResult run =
+      run_tolip_executable({"simulate", scout_example("reference_optimum.toml"), "--json"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const nlohmann::json d = nlohmann::json::parse(run.out);
   EXPECT_EQ(d["orbit"]["path"], "orbit");

@@ -20,8 +20,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-
-
 bool is_named_pipe(const fs::path& path) {
   struct stat info {};
   return ::lstat(path.c_str(), &info) == 0 && S_ISFIFO(info.st_mode);
@@ -35,8 +33,9 @@ TEST(Outputs, ExportRefusesAHeaderNamingTheImageFile) {
   const CommandResult result = run_tolip_bounded(
       {"export", scout_example("reference_optimum.toml"), "--out", image, "--c-header", other_spelling});
   EXPECT_EQ(result.exit_code, 2) << result.err;
-  EXPECT_EQ(result.err, "tolip: --out '" + image + "' and --c-header '" + other_spelling +
-                            "' name the same file: the header would replace the image; name two different files\n");
+  EXPECT_EQ(result.err,
+            "tolip: --out '" + image + "' and --c-header '" + other_spelling +
+                "' name the same file: the header would replace the image; name two different files\n");
   EXPECT_TRUE(scratch.entries().empty());
 }
 
@@ -49,7 +48,8 @@ TEST(Outputs, ExportRefusesAnOutputThatIsTheDeck) {
   fs::create_symlink(deck, link);
   for (const std::vector<std::string>& command :
        {std::vector<std::string>{"export", deck, "--out", deck},
-        std::vector<std::string>{"export", deck, "--out", (scratch / "t.bin").string(), "--c-header", link}}) {
+        std::vector<std::string>{"export", deck, "--out", (scratch / "t.bin").string(), "--c-header",
+                                 link}}) {
     const CommandResult result = run_tolip_bounded(command);
     EXPECT_EQ(result.exit_code, 2) << result.err;
     EXPECT_TRUE(contains(result.err, "is the input deck '" + deck + "'")) << result.err;
@@ -101,10 +101,12 @@ TEST(Outputs, OutputsNeverReplaceAFifoASymlinkOrADirectory) {
     const char* kind;
   } outputs[] = {{fifo, "a FIFO (named pipe)"}, {link, "a symbolic link"}, {directory, "a directory"}};
   for (const auto& output : outputs) {
-    const CommandResult result = run_tolip_bounded({"convert", scout_example("mission.toml"), "--to", output.path.string()});
+    const CommandResult result =
+        run_tolip_bounded({"convert", scout_example("mission.toml"), "--to", output.path.string()});
     EXPECT_EQ(result.exit_code, 1) << output.kind;
-    EXPECT_EQ(result.err, "tolip: refusing to replace '" + output.path.string() + "': it is " + output.kind +
-                              "; tolip writes its outputs only as regular files (remove it or name another file)\n");
+    EXPECT_EQ(result.err,
+              "tolip: refusing to replace '" + output.path.string() + "': it is " + output.kind +
+                  "; tolip writes its outputs only as regular files (remove it or name another file)\n");
   }
   EXPECT_TRUE(is_named_pipe(fifo));
   EXPECT_TRUE(fs::is_symlink(link));

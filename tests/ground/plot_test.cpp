@@ -11,8 +11,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
-#include <utility>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli_runner.hpp"
@@ -24,15 +24,22 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-const std::vector<std::string> kFigures = {"altitude_downrange_ascent", "altitude_downrange", "velocity_time",
-                                           "flight_path_angle_time",    "dynamic_pressure_time", "alpha_time",
-                                           "qalpha_time",               "theta_time_ascent",  "theta_time",
-                                           "weight_time",               "ground_track",       "convergence"};
+const std::vector<std::string> kFigures = {"altitude_downrange_ascent",
+                                           "altitude_downrange",
+                                           "velocity_time",
+                                           "flight_path_angle_time",
+                                           "dynamic_pressure_time",
+                                           "alpha_time",
+                                           "qalpha_time",
+                                           "theta_time_ascent",
+                                           "theta_time",
+                                           "weight_time",
+                                           "ground_track",
+                                           "convergence"};
 // The figures of a simulate result (no 'iterations': no convergence figure).
 const std::vector<std::string> kTrajectoryFigures(kFigures.begin(), kFigures.end() - 1);
 
 constexpr double kFeetPerNauticalMile = 1852.0 / 0.3048;
-
 
 bool gnuplot_installed() { return std::system("command -v gnuplot >/dev/null 2>&1") == 0; }
 
@@ -65,37 +72,64 @@ json point(double t, int stage, double range, double altitude, double velocity, 
 // A small result in the optimize --json schema, with a linearized program: stage 1 from 0 to 30 s,
 // a coast to 100 s, stage 2 to 110 s; max q (400) at 10 s; alpha = 0 on the steps from 10 to 30 s.
 json small_result(const std::string& title) {
-  json document = {{"program", "tolip"},    {"title", title},      {"case_heading", "HEADING"},
-                   {"status", "kOk"},       {"converged", true},   {"case_status", "kOk"},
-                   {"iterations", json::array()}};
+  json document = {
+      {"program", "tolip"}, {"title", title},       {"case_heading", "HEADING"},  {"status", "kOk"},
+      {"converged", true},  {"case_status", "kOk"}, {"iterations", json::array()}};
   document["stage_events"] = json::array({
-      json{{"stage", 1}, {"kind", "powered"}, {"first_point", 1}, {"last_point", 3}, {"start_time_s", 10.0},
+      json{{"stage", 1},
+           {"kind", "powered"},
+           {"first_point", 1},
+           {"last_point", 3},
+           {"start_time_s", 10.0},
            {"end_time_s", 30.0}},
-      json{{"stage", 6}, {"kind", "coast"}, {"first_point", 4}, {"last_point", 6}, {"start_time_s", 30.0},
+      json{{"stage", 6},
+           {"kind", "coast"},
+           {"first_point", 4},
+           {"last_point", 6},
+           {"start_time_s", 30.0},
            {"end_time_s", 100.0}},
-      json{{"stage", 2}, {"kind", "powered"}, {"first_point", 7}, {"last_point", 8}, {"start_time_s", 100.0},
+      json{{"stage", 2},
+           {"kind", "powered"},
+           {"first_point", 7},
+           {"last_point", 8},
+           {"start_time_s", 100.0},
            {"end_time_s", 110.0}},
   });
-  document["trajectory"] = json::array({point(0, 1, 0, 0, 0, 0.0, 90), point(10, 1, 1, 5000, 800, 400.0, 80, true),
-                                        point(20, 1, 4, 20000, 2000, nullptr, 60, true),
-                                        point(30, 1, 10, 50000, 4000, 100.0, 45), point(30, 6, 10, 50000, 4000, 100.0, 45),
-                                        point(65, 6, 60, 300000, 3800, 0.0, 45), point(100, 6, 110, 400000, 3600, 0.0, 45),
-                                        point(100, 2, 110, 400000, 3600, 0.0, 20), point(110, 2, 130, 410000, 9000, 0.0, 20)});
-  document["linearized"] = {
-      {"segments", json::array({json{{"stage", 1}, {"start_stage_time_s", 0.0}, {"start_time_s", 0.0},
-                                     {"theta_deg", 90.0}, {"rate_deg_s", -1.0}},
-                                json{{"stage", 1}, {"start_stage_time_s", 10.0}, {"start_time_s", 10.0},
-                                     {"theta_deg", 80.0}, {"rate_deg_s", -1.75}}})},
-      {"constraints_met", true},
-      {"rate_limits_met", false},
-      {"payoff", 300.0}};
+  document["trajectory"] =
+      json::array({point(0, 1, 0, 0, 0, 0.0, 90), point(10, 1, 1, 5000, 800, 400.0, 80, true),
+                   point(20, 1, 4, 20000, 2000, nullptr, 60, true), point(30, 1, 10, 50000, 4000, 100.0, 45),
+                   point(30, 6, 10, 50000, 4000, 100.0, 45), point(65, 6, 60, 300000, 3800, 0.0, 45),
+                   point(100, 6, 110, 400000, 3600, 0.0, 45), point(100, 2, 110, 400000, 3600, 0.0, 20),
+                   point(110, 2, 130, 410000, 9000, 0.0, 20)});
+  document["linearized"] = {{"segments", json::array({json{{"stage", 1},
+                                                           {"start_stage_time_s", 0.0},
+                                                           {"start_time_s", 0.0},
+                                                           {"theta_deg", 90.0},
+                                                           {"rate_deg_s", -1.0}},
+                                                      json{{"stage", 1},
+                                                           {"start_stage_time_s", 10.0},
+                                                           {"start_time_s", 10.0},
+                                                           {"theta_deg", 80.0},
+                                                           {"rate_deg_s", -1.75}}})},
+                            {"constraints_met", true},
+                            {"rate_limits_met", false},
+                            {"payoff", 300.0}};
   document["payoff"] = {{"kind", "payload"}, {"unit", "lb"}};
-  document["constraints"] = json::array({json{{"name", "altitude"}, {"tolerance", 20000.0}, {"inequality", false}},
-                                         json{{"name", "total_heating"}, {"tolerance", 10.0}, {"inequality", true}}});
-  document["iterations"] = json::array(
-      {json{{"forward_run", 1}, {"successful", false}, {"payoff", 250.0}, {"constraint_corrections", {-40000.0, 0.0}}},
-       json{{"forward_run", 2}, {"successful", true}, {"payoff", 260.0}, {"constraint_corrections", {0.0, -5.0}}},
-       json{{"forward_run", 3}, {"successful", true}, {"payoff", 270.0}, {"constraint_corrections", {1000.0, 30.0}}}});
+  document["constraints"] =
+      json::array({json{{"name", "altitude"}, {"tolerance", 20000.0}, {"inequality", false}},
+                   json{{"name", "total_heating"}, {"tolerance", 10.0}, {"inequality", true}}});
+  document["iterations"] = json::array({json{{"forward_run", 1},
+                                             {"successful", false},
+                                             {"payoff", 250.0},
+                                             {"constraint_corrections", {-40000.0, 0.0}}},
+                                        json{{"forward_run", 2},
+                                             {"successful", true},
+                                             {"payoff", 260.0},
+                                             {"constraint_corrections", {0.0, -5.0}}},
+                                        json{{"forward_run", 3},
+                                             {"successful", true},
+                                             {"payoff", 270.0},
+                                             {"constraint_corrections", {1000.0, 30.0}}}});
   return document;
 }
 
@@ -182,7 +216,8 @@ TEST(PlotCatalogue, StagingMarkersAtEveryIgnitionAndBurnout) {
   // Against time: a vertical line per event; stage 1 ignites at lift-off, the first point.
   for (const char* name : {"velocity_time", "flight_path_angle_time", "theta_time", "weight_time"}) {
     std::vector<std::pair<double, std::string>> markers;
-    for (const ground::XMarker& marker : figure_named(result, name).x_markers) markers.emplace_back(marker.x, marker.label);
+    for (const ground::XMarker& marker : figure_named(result, name).x_markers)
+      markers.emplace_back(marker.x, marker.label);
     EXPECT_EQ(markers, (std::vector<std::pair<double, std::string>>{
                            {0.0, "S1 ign"}, {30.0, "S1 bo"}, {100.0, "S2 ign"}, {110.0, "S2 bo"}}))
         << name;
@@ -252,7 +287,8 @@ TEST(PlotCatalogue, AltitudeIsInNauticalMiles) {
 
 TEST(PlotCatalogue, ZeroAlphaWindowIsShaded) {
   const ground::DocumentFigures result = ground::figures_for_document(small_result(""));
-  for (const char* name : {"theta_time", "alpha_time", "qalpha_time", "dynamic_pressure_time", "flight_path_angle_time"}) {
+  for (const char* name :
+       {"theta_time", "alpha_time", "qalpha_time", "dynamic_pressure_time", "flight_path_angle_time"}) {
     const ground::Figure& figure = figure_named(result, name);
     ASSERT_EQ(figure.bands.size(), 1u) << name;
     EXPECT_EQ(figure.bands[0].from, 10.0) << "the steps starting at the flagged points 10 and 20 s";
@@ -274,7 +310,8 @@ TEST(PlotCatalogue, TitleNamesTheCaseHeadingAndRunStatus) {
   document["status"] = "kOk";
   document["case_status"] = "kLinearizationDidNotConverge";
   document["case_failed_step"] = "linearization";
-  EXPECT_EQ(ground::run_status_text(document), "converged, kOk; case failed: linearization: kLinearizationDidNotConverge");
+  EXPECT_EQ(ground::run_status_text(document),
+            "converged, kOk; case failed: linearization: kLinearizationDidNotConverge");
   document.erase("converged");
   document["status"] = "kAltitudeBelowSurface";
   EXPECT_EQ(ground::run_status_text(document), "simulated, kAltitudeBelowSurface");
@@ -364,11 +401,12 @@ TEST(PlotCatalogue, CasesAreOverlaidWithALegendPerCase) {
   EXPECT_NE(velocity.series[0].dash_type, velocity.series[1].dash_type);
   std::vector<std::string> legend;
   for (const ground::KeyEntry& entry : velocity.key_entries) legend.push_back(entry.title);
-  EXPECT_EQ(legend, (std::vector<std::string>{
-                        "staging: Sn ign = stage n ignition, Sn bo = burnout", "case 1: HEADING - converged, kOk",
-                        "case 2: SECOND - not converged, kGuidanceDidNotConverge", "VEL, Earth-relative",
-                        "VI, inertial"}));
-  EXPECT_EQ(velocity.subtitle, (std::vector<std::string>{"SAME TITLE", "2 cases overlaid, a colour per case"}));
+  EXPECT_EQ(legend, (std::vector<std::string>{"staging: Sn ign = stage n ignition, Sn bo = burnout",
+                                              "case 1: HEADING - converged, kOk",
+                                              "case 2: SECOND - not converged, kGuidanceDidNotConverge",
+                                              "VEL, Earth-relative", "VI, inertial"}));
+  EXPECT_EQ(velocity.subtitle,
+            (std::vector<std::string>{"SAME TITLE", "2 cases overlaid, a colour per case"}));
   // A figure of one curve a case has a legend entry per case only.
   std::size_t entries = 0;
   for (const ground::KeyEntry& entry : figure_named(result, "weight_time").key_entries) {
@@ -431,7 +469,8 @@ TEST(PlotCommand, HelpAndDocsNameEveryFigure) {
   for (const ground::PlotKind& kind : ground::plot_catalogue()) {
     EXPECT_TRUE(contains(help.out, kind.name)) << kind.name;
     EXPECT_TRUE(contains(docs, std::string("| `") + kind.name + "` |")) << "docs/cli.md lacks " << kind.name;
-    EXPECT_TRUE(contains(guide, std::string("`") + kind.name + "`")) << "docs/user-guide.md lacks " << kind.name;
+    EXPECT_TRUE(contains(guide, std::string("`") + kind.name + "`"))
+        << "docs/user-guide.md lacks " << kind.name;
   }
   EXPECT_FALSE(contains(docs, "NAME.caseN")) << "no per-case figures any more";
 }
@@ -517,7 +556,8 @@ TEST(PlotScript, MarkersCloseTogetherShareOneLabel) {
   EXPECT_TRUE(contains(script, "\"S1 bo, S2 ign\" at first 45"));
   EXPECT_TRUE(contains(script, "\"S2 bo\" at first 300"));
   EXPECT_FALSE(contains(script, "far away")) << "a marker beyond the data is not drawn";
-  EXPECT_TRUE(contains(script, "rectangle from first 550, graph 0 to first 600,")) << "a band clipped to the data";
+  EXPECT_TRUE(contains(script, "rectangle from first 550, graph 0 to first 600,"))
+      << "a band clipped to the data";
   EXPECT_TRUE(contains(script, "keyentry with boxes"));
   EXPECT_EQ(outputs.size(), 2u);
 }
@@ -528,9 +568,10 @@ TEST(PlotCommand, MalformedJsonIsNamedAndNothingIsWritten) {
   const std::string broken = write_file(scratch, "broken.json", "{\"trajectory\": [\n  {\"time_s\": x}]}");
   CommandResult plot = run_tolip_executable({"plot", broken, "--out", out.string()});
   EXPECT_EQ(plot.exit_code, 2);
-  EXPECT_EQ(plot.err, "tolip: " + broken +
-                          ": not valid JSON: parse error at line 2, column 14: syntax error while parsing value - "
-                          "invalid literal; last read: '\"time_s\": x'\n");
+  EXPECT_EQ(plot.err,
+            "tolip: " + broken +
+                ": not valid JSON: parse error at line 2, column 14: syntax error while parsing value - "
+                "invalid literal; last read: '\"time_s\": x'\n");
   EXPECT_EQ(plot.out, "");
   EXPECT_FALSE(fs::exists(out)) << "the output directory is not even made";
 
@@ -546,7 +587,8 @@ TEST(PlotCommand, MalformedJsonIsNamedAndNothingIsWritten) {
   const std::string nothing = write_file(scratch, "nothing.json", "{\"program\": \"tolip\"}");
   plot = run_tolip_executable({"plot", nothing, "--out", out.string()});
   EXPECT_EQ(plot.exit_code, 2);
-  EXPECT_EQ(plot.err, "tolip: " + nothing + ": nothing to plot: altitude_downrange_ascent (no member 'trajectory')\n");
+  EXPECT_EQ(plot.err,
+            "tolip: " + nothing + ": nothing to plot: altitude_downrange_ascent (no member 'trajectory')\n");
 
   plot = run_tolip_executable({"plot", (scratch / "absent.json").string(), "--out", out.string()});
   EXPECT_EQ(plot.exit_code, 2);
@@ -565,8 +607,9 @@ TEST(PlotCommand, MissingGnuplotIsExplainedAndLeavesTheDirectoryAlone) {
   CommandResult plot =
       run_tolip_executable({"plot", result, "--out", out.string(), "--gnuplot", "/nonexistent/gnuplot"});
   EXPECT_EQ(plot.exit_code, 1);
-  EXPECT_TRUE(contains(plot.err, "tolip: cannot run gnuplot ('/nonexistent/gnuplot'): No such file or directory; "
-                                 "install the Debian package gnuplot-nox"))
+  EXPECT_TRUE(contains(plot.err,
+                       "tolip: cannot run gnuplot ('/nonexistent/gnuplot'): No such file or directory; "
+                       "install the Debian package gnuplot-nox"))
       << plot.err;
   EXPECT_EQ(plot.out, "");
 
@@ -609,7 +652,8 @@ json result_with_altitudes(const json& altitude) {
 
 TEST(PlotCatalogue, FigureWithoutAFiniteValueIsSkippedWithANote) {
   for (const json& altitude : {json(nullptr), json(1e308), json(-1e308)}) {
-    const tolip::ground::DocumentFigures figures = tolip::ground::figures_for_document(result_with_altitudes(altitude));
+    const tolip::ground::DocumentFigures figures =
+        tolip::ground::figures_for_document(result_with_altitudes(altitude));
     std::set<std::string> names;
     for (const tolip::ground::Figure& figure : figures.figures) names.insert(figure.name);
     std::set<std::string> expected(kTrajectoryFigures.begin(), kTrajectoryFigures.end());
@@ -617,9 +661,10 @@ TEST(PlotCatalogue, FigureWithoutAFiniteValueIsSkippedWithANote) {
     expected.erase("altitude_downrange");
     EXPECT_EQ(names, expected) << altitude;
     ASSERT_EQ(figures.notes.size(), 2u) << altitude;
-    EXPECT_EQ(figures.notes[1],
-              "figure altitude_downrange skipped: no finite value to draw (every value null, or beyond 1e30 in "
-              "magnitude)");
+    EXPECT_EQ(
+        figures.notes[1],
+        "figure altitude_downrange skipped: no finite value to draw (every value null, or beyond 1e30 in "
+        "magnitude)");
   }
 }
 
@@ -633,13 +678,16 @@ TEST(PlotCommand, AltitudeAllNullOrHugeSkipsThatFigureAndDrawsTheRest) {
     fs::remove_all(out);
     const CommandResult result = run_tolip_executable({"plot", source, "--out", out.string()});
     EXPECT_EQ(result.exit_code, 0) << altitude << ": " << result.err;
-    EXPECT_EQ(result.err,
-              "tolip: " + source +
-                  ": figure altitude_downrange_ascent skipped: no finite value to draw (every value null, or beyond "
-                  "1e30 in magnitude)\n"
-                  "tolip: " + source +
-                  ": figure altitude_downrange skipped: no finite value to draw (every value null, or beyond 1e30 "
-                  "in magnitude)\n");
+    EXPECT_EQ(
+        result.err,
+        "tolip: " + source +
+            ": figure altitude_downrange_ascent skipped: no finite value to draw (every value null, or "
+            "beyond "
+            "1e30 in magnitude)\n"
+            "tolip: " +
+            source +
+            ": figure altitude_downrange skipped: no finite value to draw (every value null, or beyond 1e30 "
+            "in magnitude)\n");
     EXPECT_FALSE(fs::exists(out / "altitude_downrange.png"));
     EXPECT_TRUE(fs::exists(out / "velocity_time.png"));
     EXPECT_TRUE(fs::exists(out / "theta_time.svg"));

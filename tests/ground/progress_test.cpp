@@ -19,7 +19,6 @@ using ground::OptimizerProgress;
 using ground::ProgressLine;
 using ground::ProgressMode;
 
-
 // What is on screen after the carriage returns: the text after the last '\r' that is followed by
 // something, with trailing blanks trimmed.
 std::string visible(const std::string& written) {
@@ -138,7 +137,8 @@ TEST(Progress, ForcedOnThroughTheOptimizeCommand) {
   EXPECT_TRUE(contains(err.str(), "\rforward run 1  payoff 250.0 lb")) << err.str().substr(0, 300);
   // The deck's input warnings come first; the progress line is cleared before anything after it.
   const std::string after_warnings = without_input_warnings(err.str());
-  EXPECT_EQ(visible(after_warnings.substr(0, after_warnings.find('\n'))), "") << "cleared before anything else";
+  EXPECT_EQ(visible(after_warnings.substr(0, after_warnings.find('\n'))), "")
+      << "cleared before anything else";
   EXPECT_EQ(out.str().find('\r'), std::string::npos) << "never on stdout";
 }
 

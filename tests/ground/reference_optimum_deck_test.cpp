@@ -15,7 +15,8 @@ namespace {
 TEST(Sec4ReferenceDeck, SimulateReproducesOracleBurnoutAndOrbit) {
   auto mission = ground::make_mission();
   ground::DeckError error;
-  ASSERT_TRUE(ground::load_toml_deck(test::example_path("scout/reference_optimum.toml"), mission.get(), &error))
+  ASSERT_TRUE(
+      ground::load_toml_deck(test::example_path("scout/reference_optimum.toml"), mission.get(), &error))
       << error.to_string();
   auto prepared = std::make_unique<PreparedCase>();
   auto trajectory = std::make_unique<Trajectory>();
@@ -32,8 +33,9 @@ TEST(Sec4ReferenceDeck, SimulateReproducesOracleBurnoutAndOrbit) {
   EXPECT_NEAR(p.weight_lb, oracle["final_weight_lb"].get<double>(), 1e-6);
 
   OrbitElements e;
-  ASSERT_EQ(compute_orbit_elements(mission->constants, p.state, mission->launch.launch_space_age_date_days, &e),
-            Status::kOk);
+  ASSERT_EQ(
+      compute_orbit_elements(mission->constants, p.state, mission->launch.launch_space_age_date_days, &e),
+      Status::kOk);
   const auto& o = oracle["orbit_elements"];
   EXPECT_NEAR(e.inertial.velocity_ft_s, o["VI_fps"].get<double>(), 1e-6);
   EXPECT_NEAR(e.inclination_rad * kRadToDeg, o["inclination_deg"].get<double>(), 1e-9);

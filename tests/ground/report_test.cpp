@@ -188,13 +188,48 @@ TEST(ReportFormat, ListingHasTitlesColumnsAndTerminalConditions) {
   std::ostringstream listing;
   ground::write_trajectory_listing(listing, test_case.report);
   const std::string text = listing.str();
-  for (const char* part : {"SYNTHETIC REPORT TEST", "CASE 1", "01 JUL 1966", "TIME", "VEL", "GAMMA",
-                           "PSI", "ALTITUDE", "GEOC LAT", "TAU", "QBAR", "THRUST", "WEIGHT",
-                           "GEOD LAT", "RADIUS", "HEAT RATE", "THETA", "VI", "GAMI", "PSII", "MACH",
-                           "ALPHA", "DRAG", "LIFT", "QALPHA", "RANGE", "STAGE EVENTS",
-                           "TERMINAL CONDITIONS", "TWOE", "EH", "RP", "EYE", "BETAP",
-                           "ECCENTRICITY", "RALPHA", "PERIOD", "OMEGAE", "HYPERBOLIC", "VH",
-                           "ASYMPTOTE RA", "ASYMPTOTE DECL", "COAST AFTER STAGE 1"}) {
+  for (const char* part : {"SYNTHETIC REPORT TEST",
+                           "CASE 1",
+                           "01 JUL 1966",
+                           "TIME",
+                           "VEL",
+                           "GAMMA",
+                           "PSI",
+                           "ALTITUDE",
+                           "GEOC LAT",
+                           "TAU",
+                           "QBAR",
+                           "THRUST",
+                           "WEIGHT",
+                           "GEOD LAT",
+                           "RADIUS",
+                           "HEAT RATE",
+                           "THETA",
+                           "VI",
+                           "GAMI",
+                           "PSII",
+                           "MACH",
+                           "ALPHA",
+                           "DRAG",
+                           "LIFT",
+                           "QALPHA",
+                           "RANGE",
+                           "STAGE EVENTS",
+                           "TERMINAL CONDITIONS",
+                           "TWOE",
+                           "EH",
+                           "RP",
+                           "EYE",
+                           "BETAP",
+                           "ECCENTRICITY",
+                           "RALPHA",
+                           "PERIOD",
+                           "OMEGAE",
+                           "HYPERBOLIC",
+                           "VH",
+                           "ASYMPTOTE RA",
+                           "ASYMPTOTE DECL",
+                           "COAST AFTER STAGE 1"}) {
     EXPECT_NE(text.find(part), std::string::npos) << part << "\n" << text;
   }
   EXPECT_EQ(text.find("nan"), std::string::npos) << text;
@@ -247,8 +282,7 @@ TEST(ReportReference, JsonBurnoutAndOrbitMatchTheOracle) {
   EXPECT_NEAR(document["orbit"]["inclination_deg"].get<double>(), 38.7995658682, 0.001);
   EXPECT_NEAR(document["orbit"]["node_longitude_deg"].get<double>(), 323.404399324, 0.01);
   EXPECT_NEAR(document["orbit"]["period_min"].get<double>(), 95.6463476257, 0.01);
-  EXPECT_EQ(document["trajectory"].size(),
-            static_cast<std::size_t>(flown.trajectory->point_count));
+  EXPECT_EQ(document["trajectory"].size(), static_cast<std::size_t>(flown.trajectory->point_count));
 }
 
 TEST(ReportReference, CsvHasARowPerPoint) {

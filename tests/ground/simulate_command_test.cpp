@@ -17,8 +17,6 @@
 namespace tolip::test {
 namespace {
 
-
-
 std::vector<std::string> lines_of(const std::string& text) {
   std::vector<std::string> lines;
   std::istringstream in(text);
@@ -83,8 +81,8 @@ TEST(SimulateCommand, JsonOfTheReferenceOptimum) {
   EXPECT_NEAR(document["launch_space_age_date_days"].get<double>(), 2373.625, 1e-9);
 
   const nlohmann::json& burnout = document["burnout"];
-  for (const char* key : {"time_s", "velocity_ft_s", "gamma_deg", "psi_deg", "radius_ft",
-                          "altitude_ft", "geocentric_latitude_deg", "longitude_deg", "weight_lb"}) {
+  for (const char* key : {"time_s", "velocity_ft_s", "gamma_deg", "psi_deg", "radius_ft", "altitude_ft",
+                          "geocentric_latitude_deg", "longitude_deg", "weight_lb"}) {
     ASSERT_TRUE(burnout.contains(key)) << key;
     EXPECT_TRUE(burnout[key].is_number()) << key;
   }
@@ -97,9 +95,9 @@ TEST(SimulateCommand, JsonOfTheReferenceOptimum) {
     EXPECT_TRUE(document["inertial"][key].is_number()) << key;
   }
   const nlohmann::json& orbit = document["orbit"];
-  for (const char* key : {"twoe_ft2_s2", "angular_momentum_ft2_s", "perigee_radius_ft",
-                          "inclination_deg", "argument_of_perigee_deg", "node_longitude_deg",
-                          "semi_major_axis_ft", "period_min", "eccentricity", "type"}) {
+  for (const char* key : {"twoe_ft2_s2", "angular_momentum_ft2_s", "perigee_radius_ft", "inclination_deg",
+                          "argument_of_perigee_deg", "node_longitude_deg", "semi_major_axis_ft", "period_min",
+                          "eccentricity", "type"}) {
     ASSERT_TRUE(orbit.contains(key)) << key;
   }
   EXPECT_EQ(orbit["type"], "elliptic");
@@ -111,8 +109,8 @@ TEST(SimulateCommand, JsonOfTheReferenceOptimum) {
   const nlohmann::json& points = document["trajectory"];
   ASSERT_FALSE(points.empty());
   EXPECT_EQ(points.size(), document["point_count"].get<std::size_t>());
-  for (const char* key : {"time_s", "stage", "stage_time_s", "velocity_ft_s", "gamma_deg",
-                          "altitude_ft", "longitude_deg", "range_nmi"}) {
+  for (const char* key : {"time_s", "stage", "stage_time_s", "velocity_ft_s", "gamma_deg", "altitude_ft",
+                          "longitude_deg", "range_nmi"}) {
     EXPECT_TRUE(points[0].contains(key)) << key;
   }
 }
@@ -124,8 +122,7 @@ TEST(SimulateCommand, CsvHasARowPerPointAndIsWrittenAtomically) {
     std::ofstream old(csv);
     old << "old contents\n";
   }
-  const CommandResult result =
-      run_tolip_executable({"simulate", reference_deck(), "--json", "--csv", csv});
+  const CommandResult result = run_tolip_executable({"simulate", reference_deck(), "--json", "--csv", csv});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const nlohmann::json document = nlohmann::json::parse(result.out);
   const std::vector<std::string> rows = lines_of(read_text_file(csv));
@@ -145,8 +142,7 @@ TEST(SimulateCommand, CsvWriteFailureExitsOneAndLeavesTheTarget) {
     std::ofstream keep(target / "keep.txt");
     keep << "keep\n";
   }
-  const CommandResult result =
-      run_tolip_executable({"simulate", reference_deck(), "--csv", target.string()});
+  const CommandResult result = run_tolip_executable({"simulate", reference_deck(), "--csv", target.string()});
   EXPECT_EQ(result.exit_code, 1);
   EXPECT_EQ(result.err.rfind("tolip: ", 0), 0u) << result.err;
   EXPECT_TRUE(contains(result.err, target.string())) << result.err;
@@ -158,9 +154,9 @@ TEST(SimulateCommand, CsvWriteFailureExitsOneAndLeavesTheTarget) {
 TEST(SimulateCommand, ListingShowsTrajectoryStagesAndTerminalConditions) {
   const CommandResult result = run_tolip_executable({"simulate", reference_deck()});
   ASSERT_EQ(result.exit_code, 0) << result.err;
-  for (const char* part : {"TIME", "GEOC LAT", "QALPHA", "RANGE", "STAGE EVENTS",
-                           "TERMINAL CONDITIONS", "TWOE", "EH", "RP", "EYE", "BETAP",
-                           "ECCENTRICITY", "RALPHA", "PERIOD", "OMEGAE", "VI", "GAMI", "PSII"}) {
+  for (const char* part :
+       {"TIME", "GEOC LAT", "QALPHA", "RANGE", "STAGE EVENTS", "TERMINAL CONDITIONS", "TWOE", "EH", "RP",
+        "EYE", "BETAP", "ECCENTRICITY", "RALPHA", "PERIOD", "OMEGAE", "VI", "GAMI", "PSII"}) {
     EXPECT_TRUE(contains(result.out, part)) << part;
   }
   EXPECT_FALSE(contains(result.out, "nan"));
@@ -176,8 +172,8 @@ TEST(SimulateCommand, ListingIsThinnedByTheOutputFrequency) {
   ASSERT_EQ(full.exit_code, 0) << full.err;
   EXPECT_EQ(listed_points(full.out), points);
 
-  const std::string deck = edited_reference_deck(scratch, "thinned.toml", "[output_frequency]",
-                                                 "final = 1", "", "final = 5");
+  const std::string deck =
+      edited_reference_deck(scratch, "thinned.toml", "[output_frequency]", "final = 1", "", "final = 5");
   ASSERT_FALSE(deck.empty());
   const std::string csv = (scratch / "thinned.csv").string();
   const CommandResult thinned = run_tolip_executable({"simulate", deck, "--csv", csv});
@@ -219,20 +215,20 @@ TEST(SimulateCommand, FailedTrajectoryStillReportsThePointsFlown) {
   EXPECT_EQ(listed_points(listing.out), static_cast<int>(flown));
 }
 
-
 // Issue 17: a deck may say the Earth is a sphere (CT1(12) inverse_flattening = 0, Sec. 4's oblate
 // figure turned off); with J2 = 0 and no rotation as well the case flies end to end, the launch
 // vertical is the geocentric one and every point's geodetic latitude is its geocentric latitude,
 // its altitude the radius less CT1(3).
 TEST(SimulateCommand, Sec4Earth_DeckWithASphericalNonRotatingEarthSimulates) {
   ScratchDirectory scratch("simulate_sphere");
-  const std::string deck = edited_reference_deck(
-      scratch, "sphere.toml", "[constants]", "earth_rotation_rate_rad_s = 7.29211e-05", "inverse_flattening = 298.3",
-      "earth_rotation_rate_rad_s = 0.0\n"
-      "gravitational_parameter_ft3_s2 = 1.407735e+16\n"
-      "earth_equatorial_radius_ft = 20925696.0\n"
-      "j2 = 0.0\n"
-      "inverse_flattening = 0  # a spherical Earth");
+  const std::string deck =
+      edited_reference_deck(scratch, "sphere.toml", "[constants]", "earth_rotation_rate_rad_s = 7.29211e-05",
+                            "inverse_flattening = 298.3",
+                            "earth_rotation_rate_rad_s = 0.0\n"
+                            "gravitational_parameter_ft3_s2 = 1.407735e+16\n"
+                            "earth_equatorial_radius_ft = 20925696.0\n"
+                            "j2 = 0.0\n"
+                            "inverse_flattening = 0  # a spherical Earth");
   ASSERT_FALSE(deck.empty());
   const CommandResult result = run_tolip_executable({"simulate", deck, "--json"});
   ASSERT_EQ(result.exit_code, 0) << result.err;
@@ -250,10 +246,12 @@ TEST(SimulateCommand, Sec4Earth_DeckWithASphericalNonRotatingEarthSimulates) {
   const CommandResult oblate = run_tolip_executable({"simulate", reference_deck(), "--json"});
   ASSERT_EQ(oblate.exit_code, 0) << oblate.err;
   const nlohmann::json oblate_document = nlohmann::json::parse(oblate.out);
-  EXPECT_NE(oblate_document["burnout"]["altitude_ft"].get<double>(), document["burnout"]["altitude_ft"].get<double>());
-  std::printf("[ figures  ] spherical non-rotating Earth: %zu points, burnout altitude %.1f ft (oblate %.1f ft)\n",
-              points.size(), document["burnout"]["altitude_ft"].get<double>(),
-              oblate_document["burnout"]["altitude_ft"].get<double>());
+  EXPECT_NE(oblate_document["burnout"]["altitude_ft"].get<double>(),
+            document["burnout"]["altitude_ft"].get<double>());
+  std::printf(
+      "[ figures  ] spherical non-rotating Earth: %zu points, burnout altitude %.1f ft (oblate %.1f ft)\n",
+      points.size(), document["burnout"]["altitude_ft"].get<double>(),
+      oblate_document["burnout"]["altitude_ft"].get<double>());
 }
 
 }  // namespace

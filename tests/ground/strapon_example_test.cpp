@@ -9,8 +9,8 @@
 #include <cstdlib>
 #include <fstream>
 #include <iomanip>
-#include <sstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 
 #include "cli_runner.hpp"
@@ -48,7 +48,8 @@ TEST(Sec22StrapOnExample, ConvergesFromItsCrudeStartWithEveryConstraintInsideIts
   for (const nlohmann::json& h : d["held_constraints"]) EXPECT_EQ(h["held_runs"].get<int>(), 0) << h["code"];
   // The linearization meets its (tighter) deadbands within 0.5 % of the optimum's payload.
   EXPECT_EQ(d["linearized"]["status"], "kOk");
-  EXPECT_NEAR(d["linearized"]["payoff"].get<double>(), d["payload_lb"].get<double>(), 0.005 * d["payload_lb"].get<double>());
+  EXPECT_NEAR(d["linearized"]["payoff"].get<double>(), d["payload_lb"].get<double>(),
+              0.005 * d["payload_lb"].get<double>());
 }
 
 TEST(Sec4StrapOnExample, FliesTheBoostersAndTheCoreBackToBackOverASphere) {
@@ -151,8 +152,8 @@ TEST(Sec22StrapOnExample, OtherCrudeStartsConvergeWithinHalfAPercent) {
 TEST(Sec22StrapOnExample, TheDeckMatchesItsGenerator) {
   if (std::system("python3 -c 'import json' > /dev/null 2>&1") != 0) GTEST_SKIP() << "python3 not available";
   const std::string out = std::string(TOLIP_BINARY_DIR) + "/generated_strapon_example";
-  const std::string command = "python3 '" + std::string(TOLIP_SOURCE_DIR) + "/scripts/make_strapon_example.py' --out '" +
-                              out + "' > /dev/null";
+  const std::string command = "python3 '" + std::string(TOLIP_SOURCE_DIR) +
+                              "/scripts/make_strapon_example.py' --out '" + out + "' > /dev/null";
   ASSERT_EQ(std::system(command.c_str()), 0) << command;
   EXPECT_EQ(read_text_file(out + "/mission.toml"), read_text_file(strapon_deck()))
       << "examples/strapon/mission.toml differs from scripts/make_strapon_example.py output";

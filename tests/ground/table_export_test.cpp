@@ -36,8 +36,6 @@ namespace {
 
 using Image = std::vector<std::uint8_t>;
 
-
-
 Image read_image(const std::filesystem::path& path) {
   const std::string text = read_text_file(path);
   return Image(text.begin(), text.end());
@@ -75,14 +73,15 @@ const ReferenceCase& reference_case() {
     ground::TableBuildOptions options;
     options.created_unix_s = 0;
     std::string build_error;
-    EXPECT_TRUE(ground::build_guidance_table(*c->mission, *c->extras, *c->prepared, nullptr, options, &c->table, &build_error))
+    EXPECT_TRUE(ground::build_guidance_table(*c->mission, *c->extras, *c->prepared, nullptr, options,
+                                             &c->table, &build_error))
         << build_error;
     ground::run_optimization(*c->mission, nullptr, &c->run);
     EXPECT_EQ(c->run.linearization.status, Status::kOk);
     if (c->run.linearization.outcome == ground::StepOutcome::kRun) {
-      EXPECT_TRUE(ground::build_guidance_table(c->run.linearization.workspace->mission, *c->extras, c->linearized_case(),
-                                               &c->run.linearization.result->program, options, &c->linearized_table,
-                                               &build_error))
+      EXPECT_TRUE(ground::build_guidance_table(c->run.linearization.workspace->mission, *c->extras,
+                                               c->linearized_case(), &c->run.linearization.result->program,
+                                               options, &c->linearized_table, &build_error))
           << build_error;
     }
     return c;
@@ -102,8 +101,9 @@ Image export_reference(const ScratchDirectory& scratch, const std::string& name)
 // The reference deck without the linearization option (IP(7) = 0, and so IP(6) = 0): export
 // takes data block 40.
 std::string without_linearization(std::string deck) {
-  for (const auto& [from, to] : {std::pair<std::string, std::string>{"linearization = true", "linearization = false"},
-                                 {"body_dynamics_6d = 1", "body_dynamics_6d = 0"}}) {
+  for (const auto& [from, to] :
+       {std::pair<std::string, std::string>{"linearization = true", "linearization = false"},
+        {"body_dynamics_6d = 1", "body_dynamics_6d = 0"}}) {
     const std::size_t at = deck.find(from);
     EXPECT_NE(at, std::string::npos) << from;
     if (at != std::string::npos) deck.replace(at, from.size(), to);
@@ -169,7 +169,8 @@ TEST(TableExport, RoundTripReproducesTheSegmentListThetaAtEveryIntegrationPoint)
     EXPECT_EQ(decoded.segments[i].theta_start_rad, c.linearized_table.segments[i].theta_start_rad);
     EXPECT_EQ(decoded.segments[i].rate_rad_s, c.linearized_table.segments[i].rate_rad_s);
   }
-  EXPECT_EQ(decoded.stage4_theta_rad, c.run.workspace->mission.misc.stage4_theta_rad);  // the optimized attitude
+  EXPECT_EQ(decoded.stage4_theta_rad,
+            c.run.workspace->mission.misc.stage4_theta_rad);  // the optimized attitude
 
   static GuidanceTableService service;
   ASSERT_EQ(service.load(image.data(), image.size()), Status::kOk);
@@ -210,8 +211,9 @@ TEST(TableExport, Sec10_ExecutedTableFliesTheLinearizedTrajectoryAttitude) {
     const TrajectoryPoint& p = trajectory.points[i];
     if (p.time_s < c.mission->launch.liftoff_duration_s) continue;
     // The program commands stages 1-3 and coasts 6-8; the spun stages fly their attitude.
-    const double commanded =
-        is_segment_stage(c.mission->options.spin_stages_4_5(), p.stage_code) ? c.run.linearization.workspace->program.theta_rad[i] : p.theta_rad;
+    const double commanded = is_segment_stage(c.mission->options.spin_stages_4_5(), p.stage_code)
+                                 ? c.run.linearization.workspace->program.theta_rad[i]
+                                 : p.theta_rad;
     if (!p.body_dynamics) EXPECT_EQ(commanded, p.theta_rad) << "point " << i;  // flown = commanded
     const double error_deg = std::fabs(theta[i] - commanded) * kRadToDeg;
     worst_deg = std::max(worst_deg, error_deg);
@@ -247,19 +249,22 @@ TEST(TableExport, InterimSegmentsReproduceTheBlock40ProgramAndTheFlownAttitude) 
     if (c.prepared->timeline[i].code == 2) stage2_start = c.prepared->timeline[i].start_s;
   }
   const double rules_from = m.control.zero_alpha_start_s;
-  const double rules_until = std::max(next_node_after(m.control.zero_alpha_end_s), next_node_after(stage2_start));
+  const double rules_until =
+      std::max(next_node_after(m.control.zero_alpha_end_s), next_node_after(stage2_start));
 
   int compared_with_table = 0;
   int compared_with_flight = 0;
   for (int i = 0; i < trajectory.point_count; ++i) {
     const TrajectoryPoint& p = trajectory.points[i];
-    if (is_segment_stage(m.options.spin_stages_4_5(), p.stage_code) && p.time_s >= m.launch.liftoff_duration_s) {
+    if (is_segment_stage(m.options.spin_stages_4_5(), p.stage_code) &&
+        p.time_s >= m.launch.liftoff_duration_s) {
       EXPECT_NEAR(theta[i] * kRadToDeg, m.pitch_program_rad(p.time_s) * kRadToDeg, 1e-12) << "t " << p.time_s;
       ++compared_with_table;
     }
     const bool in_flight_rules = p.time_s >= rules_from - 1e-9 && p.time_s < rules_until - 1e-9;
     if (!in_flight_rules) {
-      EXPECT_NEAR(theta[i] * kRadToDeg, p.theta_rad * kRadToDeg, 1e-12) << "t " << p.time_s << " stage " << p.stage_code;
+      EXPECT_NEAR(theta[i] * kRadToDeg, p.theta_rad * kRadToDeg, 1e-12)
+          << "t " << p.time_s << " stage " << p.stage_code;
       ++compared_with_flight;
     }
   }
@@ -273,7 +278,7 @@ TEST(TableExport, ReferenceDeckGivesTheDocumentedInterimContents) {
   EXPECT_EQ(t.segment_count, 10);
   EXPECT_EQ(t.liftoff_duration_s, 3.0);
   EXPECT_DOUBLE_EQ(t.max_pitch_rate_rad_s * kRadToDeg, 5.0);
-  EXPECT_DOUBLE_EQ(t.max_deflection_rad * kRadToDeg, 10.0);   // block 45 word 11
+  EXPECT_DOUBLE_EQ(t.max_deflection_rad * kRadToDeg, 10.0);  // block 45 word 11
   EXPECT_EQ(t.stage4_theta_rad, c.mission->misc.stage4_theta_rad);
   EXPECT_EQ(t.stage5_theta_rad, c.mission->misc.stage4_theta_rad);  // IP(9) = 1: theta_5 = theta_4
   EXPECT_EQ(t.gains[0].k_theta, c.mission->body_dynamics.position_gain[0]);
@@ -281,9 +286,9 @@ TEST(TableExport, ReferenceDeckGivesTheDocumentedInterimContents) {
   EXPECT_EQ(t.gains[5].k_theta, t.gains[0].k_theta);  // coast 6 keeps stage 1's gains
   EXPECT_EQ(t.gains[3].k_theta, 0.0);                 // spun stage 4: no autopilot
   EXPECT_EQ(t.segments[0].stage_code, 1);
-  EXPECT_EQ(t.segments[0].start_stage_time_s, 3.0);   // the lift-off interval is excluded
+  EXPECT_EQ(t.segments[0].start_stage_time_s, 3.0);  // the lift-off interval is excluded
   EXPECT_EQ(t.segments[3].stage_code, 6);
-  EXPECT_EQ(t.segments[9].stage_code, 8);             // hold of the last node through coast 8
+  EXPECT_EQ(t.segments[9].stage_code, 8);  // hold of the last node through coast 8
   EXPECT_EQ(t.segments[9].rate_rad_s, 0.0);
   EXPECT_STREQ(t.mission_id, "SCOUT-CLASS 4-STAGE, WALLOPS ISL");
 }
@@ -300,9 +305,9 @@ TEST(ExportCli, CHeaderHoldsTheImageBytesInTheTableSection) {
   ScratchDirectory scratch("table_header");
   const std::filesystem::path bin = scratch / "t.bin";
   const std::filesystem::path header = scratch / "pitch_table.h";
-  const CommandResult result = run_tolip_executable({"export", reference_deck(), "--out", bin.string(), "--c-header",
-                                                     header.string(), "--symbol", "flight_table", "--created-unix-s",
-                                                     "0"});
+  const CommandResult result =
+      run_tolip_executable({"export", reference_deck(), "--out", bin.string(), "--c-header", header.string(),
+                            "--symbol", "flight_table", "--created-unix-s", "0"});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   EXPECT_TRUE(contains(result.out, "pitch_table.h"));
   const std::string text = read_text_file(header);
@@ -323,15 +328,15 @@ TEST(ExportCli, CHeaderHoldsTheImageBytesInTheTableSection) {
 TEST(ExportCli, MissionIdAndCreationStampAreStored) {
   ScratchDirectory scratch("table_stamp");
   const std::filesystem::path bin = scratch / "t.bin";
-  const CommandResult result = run_tolip_executable({"export", reference_deck(), "--out", bin.string(),
-                                                     "--mission-id", "SCOUT S-142", "--created-unix-s",
-                                                     "-86400"});
+  const CommandResult result =
+      run_tolip_executable({"export", reference_deck(), "--out", bin.string(), "--mission-id", "SCOUT S-142",
+                            "--created-unix-s", "-86400"});
   EXPECT_EQ(result.exit_code, 2);  // before 1970
   EXPECT_TRUE(contains(result.err, "creation stamp")) << result.err;
   EXPECT_FALSE(std::filesystem::exists(bin));
-  const CommandResult stamped = run_tolip_executable({"export", reference_deck(), "--out", bin.string(),
-                                                      "--mission-id", "SCOUT S-142", "--created-unix-s",
-                                                      "1000000000"});
+  const CommandResult stamped =
+      run_tolip_executable({"export", reference_deck(), "--out", bin.string(), "--mission-id", "SCOUT S-142",
+                            "--created-unix-s", "1000000000"});
   ASSERT_EQ(stamped.exit_code, 0) << stamped.err;
   const Image image = read_image(bin);
   GuidanceTable table;
@@ -340,8 +345,8 @@ TEST(ExportCli, MissionIdAndCreationStampAreStored) {
   EXPECT_EQ(table.created_unix_s, 1000000000);
   const CommandResult inspected = run_tolip_executable({"inspect", bin.string()});
   EXPECT_TRUE(contains(inspected.out, "2001-09-09T01:46:40Z")) << inspected.out;
-  const CommandResult too_long = run_tolip_executable({"export", reference_deck(), "--out", bin.string(),
-                                                       "--mission-id", std::string(33, 'X')});
+  const CommandResult too_long = run_tolip_executable(
+      {"export", reference_deck(), "--out", bin.string(), "--mission-id", std::string(33, 'X')});
   EXPECT_EQ(too_long.exit_code, 2);
   EXPECT_TRUE(contains(too_long.err, "mission identifier")) << too_long.err;
 }
@@ -370,9 +375,9 @@ ground::AtomicWriteStep g_failing_step = ground::AtomicWriteStep::kOpen;
 bool fail_selected_step(ground::AtomicWriteStep step) { return step == g_failing_step; }
 
 TEST(ExportCli, FailedWriteLeavesNoPartialFileAndKeepsTheOldOne) {
-  for (ground::AtomicWriteStep step : {ground::AtomicWriteStep::kOpen, ground::AtomicWriteStep::kWrite,
-                                       ground::AtomicWriteStep::kSync, ground::AtomicWriteStep::kClose,
-                                       ground::AtomicWriteStep::kRename}) {
+  for (ground::AtomicWriteStep step :
+       {ground::AtomicWriteStep::kOpen, ground::AtomicWriteStep::kWrite, ground::AtomicWriteStep::kSync,
+        ground::AtomicWriteStep::kClose, ground::AtomicWriteStep::kRename}) {
     ScratchDirectory scratch("table_atomic_" + std::to_string(static_cast<int>(step)));
     const std::filesystem::path existing = scratch / "table.bin";
     const std::filesystem::path fresh = scratch / "fresh.bin";
@@ -443,11 +448,11 @@ TEST(InspectCli, PrintsAValidImageInEngineeringUnits) {
   const CommandResult result = run_tolip_executable({"inspect", (scratch / "t.bin").string()});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   EXPECT_TRUE(result.err.empty()) << result.err;
-  for (const char* part : {"guidance table image: valid", "format version       2", "812 bytes",
-                           "SCOUT-CLASS 4-STAGE, WALLOPS ISL", "1970-01-01T00:00:00Z", "lift-off duration    3.000000 s",
-                           "max 5.000000 deg/s", "max deflection       10.000000 deg",
-                           "theta -22.259653370 deg", "segments             10 of 15",
-                           "K_theta   1.200000  K_q   0.350000"}) {
+  for (const char* part :
+       {"guidance table image: valid", "format version       2", "812 bytes",
+        "SCOUT-CLASS 4-STAGE, WALLOPS ISL", "1970-01-01T00:00:00Z", "lift-off duration    3.000000 s",
+        "max 5.000000 deg/s", "max deflection       10.000000 deg", "theta -22.259653370 deg",
+        "segments             10 of 15", "K_theta   1.200000  K_q   0.350000"}) {
     EXPECT_TRUE(contains(result.out, part)) << part << "\n" << result.out;
   }
   char crc[16];
@@ -528,8 +533,9 @@ TEST(InspectCli, NamesTheFaultOfABadImageAndExitsNonZero) {
 TEST(InspectCli, MissingFileIsReportedAndExitsNonZero) {
   const CommandResult result = run_tolip_executable({"inspect", "/nonexistent/table.bin"});
   EXPECT_EQ(result.exit_code, 2);
-  EXPECT_EQ(result.err,
-            "tolip: /nonexistent/table.bin: cannot open the guidance table image: No such file or directory\n");
+  EXPECT_EQ(
+      result.err,
+      "tolip: /nonexistent/table.bin: cannot open the guidance table image: No such file or directory\n");
 }
 
 // The macros the help and the docs name are the ones the generated C header defines.
@@ -537,9 +543,9 @@ TEST(ExportCli, HelpAndDocsNameTheMacrosTheHeaderDefines) {
   ScratchDirectory scratch("hostile_header_macros");
   const std::string symbol = "flight_table";
   const std::string header = (scratch / "table.h").string();
-  const CommandResult exported = run_tolip_executable({"export", reference_deck(), "--out",
-                                                     (scratch / "t.bin").string(), "--c-header", header, "--symbol",
-                                                     symbol, "--created-unix-s", "0"});
+  const CommandResult exported =
+      run_tolip_executable({"export", reference_deck(), "--out", (scratch / "t.bin").string(), "--c-header",
+                            header, "--symbol", symbol, "--created-unix-s", "0"});
   ASSERT_EQ(exported.exit_code, 0) << exported.err;
   const std::string text = read_text_file(header);
 
@@ -556,13 +562,14 @@ TEST(ExportCli, HelpAndDocsNameTheMacrosTheHeaderDefines) {
   }
   ASSERT_EQ(named.size(), 2u) << help.out;
   for (const std::string& name : named) {
-    EXPECT_TRUE(contains(text, "#define " + name + " ")) << name << " is not defined by the header:\n" << text;
+    EXPECT_TRUE(contains(text, "#define " + name + " ")) << name << " is not defined by the header:\n"
+                                                         << text;
   }
 
   // The docs spell the default symbol's macros; exported with it, the header defines them.
   const std::string default_header = (scratch / "default.h").string();
   ASSERT_EQ(run_tolip_executable({"export", reference_deck(), "--out", (scratch / "d.bin").string(),
-                               "--c-header", default_header, "--created-unix-s", "0"})
+                                  "--c-header", default_header, "--created-unix-s", "0"})
                 .exit_code,
             0);
   const std::string default_text = read_text_file(default_header);

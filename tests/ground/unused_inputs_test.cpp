@@ -12,10 +12,10 @@
 namespace tolip::test {
 namespace {
 
-
 int warning_count(const std::string& err) {
   int count = 0;
-  for (std::size_t at = err.find("tolip: warning: "); at != std::string::npos; at = err.find("tolip: warning: ", at + 1)) {
+  for (std::size_t at = err.find("tolip: warning: "); at != std::string::npos;
+       at = err.find("tolip: warning: ", at + 1)) {
     ++count;
   }
   return count;
@@ -25,12 +25,14 @@ int warning_count(const std::string& err) {
 // step rate: six warnings, each naming its block and word; the run itself succeeds.
 TEST(UnusedInputs, TheExampleNamesEveryInputItDoesNotActOn) {
   for (const char* deck : {"scout/mission.toml", "scout/mission.dat"}) {
-    const CommandResult run = run_tolip_executable({"simulate", std::string(TOLIP_EXAMPLES_DIR) + "/" + deck, "--json"});
+    const CommandResult run =
+        run_tolip_executable({"simulate", std::string(TOLIP_EXAMPLES_DIR) + "/" + deck, "--json"});
     EXPECT_EQ(run.exit_code, 0) << run.err;
-    for (const char* named : {"data block 4, IP(21) (options.dispersions)", "data block 4, IP(22) (options.hardover)",
-                              "data block 4, IP(23) (options.impact)", "data block 4, IP(24) (options.radar)",
-                              "data block 17, DA2(8) (misc.gyro_uncage_s_before_launch)",
-                              "data block 33, DA6D(17-19) (body_dynamics.impact_every_nth_step)"}) {
+    for (const char* named :
+         {"data block 4, IP(21) (options.dispersions)", "data block 4, IP(22) (options.hardover)",
+          "data block 4, IP(23) (options.impact)", "data block 4, IP(24) (options.radar)",
+          "data block 17, DA2(8) (misc.gyro_uncage_s_before_launch)",
+          "data block 33, DA6D(17-19) (body_dynamics.impact_every_nth_step)"}) {
       EXPECT_TRUE(contains(run.err, named)) << deck << ": " << named << "\n" << run.err;
     }
     EXPECT_EQ(warning_count(run.err), 6) << deck << "\n" << run.err;
@@ -59,7 +61,8 @@ TEST(UnusedInputs, EachInputWarnsAloneAndADeckWithoutThemIsSilent) {
       {{"stage5_chi = 0 ", "stage5_chi = 1 "}, "data block 4, IP(10) (options.stage5_chi)"},
       {{"initial = 1", "initial = 2"}, "data block 9, initial and intermediate print frequencies"},
       {{"ct1_13 = 1.0", "ct1_13 = 2.0"}, "data block 10, CT1(13) (constants.ct1_13)"},
-      {{"integration_frequency_multiplier = [1.0, 1.0, 1.0, 1.0]", "integration_frequency_multiplier = [2.0, 1.0, 1.0, 1.0]"},
+      {{"integration_frequency_multiplier = [1.0, 1.0, 1.0, 1.0]",
+        "integration_frequency_multiplier = [2.0, 1.0, 1.0, 1.0]"},
        "data block 33, DA6D(12-15) (body_dynamics.integration_frequency_multiplier)"},
   };
   int n = 0;

@@ -26,7 +26,8 @@ namespace {
 // ignition, so both cases start from the same trajectory.
 const std::vector<std::pair<std::string, std::string>> kStage4Continuous = {
     {"spin_stages_4_5 = 1", "spin_stages_4_5 = 2"},
-    {"[[adjustable_parameter]]  # block 6 IB1(2)\ncode = 1\nweight = 10.0                                # block 27 DA12(1)\n\n",
+    {"[[adjustable_parameter]]  # block 6 IB1(2)\ncode = 1\nweight = 10.0                                # "
+     "block 27 DA12(1)\n\n",
      ""},
     {"segment_count = 9 ", "segment_count = 11"},
     {"300.0, 318.0, 336.0]", "300.0, 318.0, 336.0, 400.0, 428.0]"},
@@ -50,7 +51,8 @@ const Runs& runs() {
   static const std::unique_ptr<Runs> r = [] {
     auto runs = std::make_unique<Runs>();
     runs->deck = edited_example_deck(runs->scratch, "stage4_continuous.toml", kStage4Continuous);
-    runs->spun = run_tolip_executable({"optimize", std::string(TOLIP_EXAMPLES_DIR) + "/scout/mission.toml", "--json"});
+    runs->spun =
+        run_tolip_executable({"optimize", std::string(TOLIP_EXAMPLES_DIR) + "/scout/mission.toml", "--json"});
     runs->continuous = run_tolip_executable({"optimize", runs->deck, "--json"});
     const std::string image = (runs->scratch / "table.bin").string();
     runs->exported = run_tolip_executable({"export", runs->deck, "--out", image, "--created-unix-s", "0"});
@@ -63,7 +65,8 @@ const Runs& runs() {
   return *r;
 }
 
-TEST(Sec22Optimizer, IP9Is2_ScoutWithAContinuousStage4ConvergesMeetsItsConstraintsAndCarriesAtLeastTheSpunPayload) {
+TEST(Sec22Optimizer,
+     IP9Is2_ScoutWithAContinuousStage4ConvergesMeetsItsConstraintsAndCarriesAtLeastTheSpunPayload) {
   const Runs& r = runs();
   ASSERT_EQ(r.spun.exit_code, 0) << r.spun.err;
   ASSERT_EQ(r.continuous.exit_code, 0) << r.continuous.err;
@@ -109,7 +112,8 @@ TEST(Sec22Optimizer, IP9Is2_LinearizationAndTheTableImageCarryStage4PitchSegment
   EXPECT_EQ(table_stage4, stage4_segments);
   // A continuous stage 4 has no spun attitude; it takes stage 3's autopilot gains.
   EXPECT_EQ(t["stage4_theta_deg"].get<double>(), 0.0);
-  EXPECT_EQ(t["gains"][3]["k_theta_deg_per_deg"].get<double>(), t["gains"][2]["k_theta_deg_per_deg"].get<double>());
+  EXPECT_EQ(t["gains"][3]["k_theta_deg_per_deg"].get<double>(),
+            t["gains"][2]["k_theta_deg_per_deg"].get<double>());
   EXPECT_GT(t["gains"][3]["k_theta_deg_per_deg"].get<double>(), 0.0);
 }
 
@@ -121,7 +125,8 @@ TEST(Sec22Deck, IP9Is2_Stage4AttitudeWordsAreReportedUnusedAndItsAdjustableCodeI
   EXPECT_EQ(r.spun.err.find("DA2(5)"), std::string::npos) << r.spun.err;
 
   ScratchDirectory scratch("ip9_rejected");
-  const std::string rejected = edited_example_deck(scratch, "code1.toml", {{"spin_stages_4_5 = 1", "spin_stages_4_5 = 2"}});
+  const std::string rejected =
+      edited_example_deck(scratch, "code1.toml", {{"spin_stages_4_5 = 1", "spin_stages_4_5 = 2"}});
   const CommandResult result = run_tolip_executable({"optimize", rejected});
   EXPECT_NE(result.exit_code, 0);
   EXPECT_NE(result.err.find("data block 6"), std::string::npos) << result.err;
@@ -154,13 +159,16 @@ TEST(Sec22Optimizer, IP9Is3_AFiveStageScoutSteersStages4And5LinearizesAndExports
   edits[2].second = "segment_count = 13";
   edits[3].second = "300.0, 318.0, 336.0, 400.0, 428.0, 500.0, 515.0]";
   edits.push_back({"sequence = [1, 6, 2, 7, 3, 8, 4] ", "sequence = [1, 6, 2, 7, 3, 8, 4, 9, 5] "});
-  edits.push_back({"[launch]  # data blocks 20 and 21",
-                   "[stage.9]\nduration_s = 6.0\nintegration_steps = 3\njettison_weight_lb = 0.0\nreference_area_ft2 = 0.0\n\n"
-                   "[stage.5]\nname = \"illustrative kick motor\"\nduration_s = 15.0\nintegration_steps = 12\n"
-                   "jettison_weight_lb = 30.0\nreference_area_ft2 = 1.0\nnozzle_exit_area_ft2 = 0.3\n\n"
-                   "[stage.5.thrust]\ntime_s = [0.0, 0.2, 14.8, 15.0]\nvacuum_thrust_lbf = [0.0, 1500.0, 1500.0, 0.0]\n\n"
-                   "[stage.5.consumable_weight]\ntime_s = [0.0, 0.2, 14.8, 15.0]\nremaining_lb = [80.0, 79.99, 0.01, 0.0]\n\n"
-                   "[launch]  # data blocks 20 and 21"});
+  edits.push_back(
+      {"[launch]  # data blocks 20 and 21",
+       "[stage.9]\nduration_s = 6.0\nintegration_steps = 3\njettison_weight_lb = 0.0\nreference_area_ft2 = "
+       "0.0\n\n"
+       "[stage.5]\nname = \"illustrative kick motor\"\nduration_s = 15.0\nintegration_steps = 12\n"
+       "jettison_weight_lb = 30.0\nreference_area_ft2 = 1.0\nnozzle_exit_area_ft2 = 0.3\n\n"
+       "[stage.5.thrust]\ntime_s = [0.0, 0.2, 14.8, 15.0]\nvacuum_thrust_lbf = [0.0, 1500.0, 1500.0, 0.0]\n\n"
+       "[stage.5.consumable_weight]\ntime_s = [0.0, 0.2, 14.8, 15.0]\nremaining_lb = [80.0, 79.99, 0.01, "
+       "0.0]\n\n"
+       "[launch]  # data blocks 20 and 21"});
   const std::string deck = edited_example_deck(scratch, "five_stages.toml", edits);
   const CommandResult run = run_tolip_executable({"optimize", deck, "--json"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
@@ -169,7 +177,8 @@ TEST(Sec22Optimizer, IP9Is3_AFiveStageScoutSteersStages4And5LinearizesAndExports
   EXPECT_TRUE(d["converged"].get<bool>());
   for (const nlohmann::json& c : d["constraints"]) EXPECT_TRUE(c["met"].get<bool>()) << c.dump();
   std::printf("five stages, IP(9) = 3: payload %.4f lb in %d forward runs, linearized %.4f lb\n",
-              d["payload_lb"].get<double>(), d["forward_runs"].get<int>(), d["linearized"]["payoff"].get<double>());
+              d["payload_lb"].get<double>(), d["forward_runs"].get<int>(),
+              d["linearized"]["payoff"].get<double>());
   for (int code : {4, 5}) {
     double lowest = 1e9, highest = -1e9;
     for (const nlohmann::json& p : d["trajectory"]) {
@@ -181,11 +190,13 @@ TEST(Sec22Optimizer, IP9Is3_AFiveStageScoutSteersStages4And5LinearizesAndExports
   }
   EXPECT_EQ(d["linearized"]["status"].get<std::string>(), "kOk");
   int stage5_segments = 0;
-  for (const nlohmann::json& s : d["linearized"]["segments"]) stage5_segments += s["stage"].get<int>() == 5 ? 1 : 0;
+  for (const nlohmann::json& s : d["linearized"]["segments"])
+    stage5_segments += s["stage"].get<int>() == 5 ? 1 : 0;
   EXPECT_GE(stage5_segments, 1);
 
   const std::string image = (scratch / "table.bin").string();
-  const CommandResult exported = run_tolip_executable({"export", deck, "--out", image, "--created-unix-s", "0"});
+  const CommandResult exported =
+      run_tolip_executable({"export", deck, "--out", image, "--created-unix-s", "0"});
   ASSERT_EQ(exported.exit_code, 0) << exported.err;
   const CommandResult inspected = run_tolip_executable({"inspect", image, "--json"});
   ASSERT_EQ(inspected.exit_code, 0) << inspected.err;

@@ -59,7 +59,8 @@ std::vector<std::string> guide_commands(const std::string& guide) {
     if (count < 3 || std::regex_search(command, placeholder)) continue;
     found.emplace_back(static_cast<std::size_t>(it->position(0)), command);
   }
-  std::stable_sort(found.begin(), found.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::stable_sort(found.begin(), found.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
   std::vector<std::string> commands;
   for (const auto& entry : found) commands.push_back(entry.second);
   return commands;

@@ -48,7 +48,8 @@ TEST(CoreNoHeap, DispersionAnalysisAllocatesNothing) {
 
   EXPECT_EQ(status, Status::kOk);
   ASSERT_EQ(result.count, 8);
-  for (int k = 0; k < result.count; ++k) EXPECT_EQ(result.trajectories[k].status, Status::kOk) << result.trajectories[k].code;
+  for (int k = 0; k < result.count; ++k)
+    EXPECT_EQ(result.trajectories[k].status, Status::kOk) << result.trajectories[k].code;
   EXPECT_TRUE(result.three_sigma.computed);  // the work really happened
   EXPECT_EQ(allocations, 0u);
 }
@@ -80,8 +81,8 @@ TEST(CoreNoHeap, MonteCarloSampleAllocatesNothing) {
   test::AllocationScope scope;
   Status status = prepare_monte_carlo(nominal, &workspace);
   if (ok(status)) {
-    status = record_dispersed_trajectory(mission, workspace.nominal_prepared, workspace.nominal, workspace.nominal,
-                                         nullptr, &nominal_values);
+    status = record_dispersed_trajectory(mission, workspace.nominal_prepared, workspace.nominal,
+                                         workspace.nominal, nullptr, &nominal_values);
   }
   const Status flown = fly_monte_carlo_sample(nominal, data, 1, 5, nominal_values, &workspace, &sample);
   const auto allocations = scope.count();

@@ -24,7 +24,7 @@ TEST(CoreNoHeap, LinearizationAllocatesNothing) {
   const auto allocations = scope.count();
 
   EXPECT_EQ(status, Status::kOk);
-  EXPECT_GE(result.forward_runs, 1);     // the work really happened
+  EXPECT_GE(result.forward_runs, 1);       // the work really happened
   EXPECT_GE(result.programs_computed, 2);  // with rate repairs
   EXPECT_EQ(allocations, 0u);
 }

@@ -45,7 +45,8 @@ TEST(CoreNoHeap, OptimizationWithNearVerticalStepsAllocatesNothing) {
 
   EXPECT_EQ(status, Status::kOk);
   bool vertical_steps = false;
-  for (int s = 0; s < workspace.nominal.step_count; ++s) vertical_steps |= workspace.nominal.steps[s].command.vertical_flight;
+  for (int s = 0; s < workspace.nominal.step_count; ++s)
+    vertical_steps |= workspace.nominal.steps[s].command.vertical_flight;
   EXPECT_TRUE(vertical_steps);
   EXPECT_GT(result.forward_runs, 5);
   EXPECT_EQ(allocations, 0u);

@@ -44,7 +44,8 @@ TEST(CoreNoHeap, TableLoaderExecutorAndControlLawAllocateNothing) {
   for (int k = 0; k <= 6500; ++k) {
     const double t = k / 10.0;
     while (events < 10 && test::kTestTimeline[events].start_s <= t) {
-      if (!ok(executor.stage_event(test::kTestTimeline[events].code, test::kTestTimeline[events].start_s))) ++failures;
+      if (!ok(executor.stage_event(test::kTestTimeline[events].code, test::kTestTimeline[events].start_s)))
+        ++failures;
       ++events;
     }
     GuidanceCommand command;

@@ -17,7 +17,8 @@
 namespace tolip::test {
 
 inline constexpr int kTerminalCount = 6;
-inline const char* const kTerminalNames[kTerminalCount] = {"altitude", "gamma_I", "V_I - V_circ", "V", "psi", "tau"};
+inline const char* const kTerminalNames[kTerminalCount] = {"altitude", "gamma_I", "V_I - V_circ",
+                                                           "V",        "psi",     "tau"};
 
 inline double terminal(const Constants& k, const StateVector& x, int which) {
   const InertialVelocity iv = inertial_velocity(k, x);
@@ -32,7 +33,8 @@ inline double terminal(const Constants& k, const StateVector& x, int which) {
 }
 
 // The final-state partials of the terminal quantities, by central differences.
-inline void terminal_partials(const Constants& k, const Trajectory& t, ConstraintTerminal terminals[kTerminalCount]) {
+inline void terminal_partials(const Constants& k, const Trajectory& t,
+                              ConstraintTerminal terminals[kTerminalCount]) {
   const StateVector xf = t.final_point().state;
   const double steps[6] = {1e-3, 1e-8, 1e-2, 1e-8, 1e-8, 1e-8};
   for (int j = 0; j < kTerminalCount; ++j) {
@@ -48,7 +50,8 @@ inline void terminal_partials(const Constants& k, const Trajectory& t, Constrain
 
 // Central difference of every terminal quantity for a change flown by `fly(sign, perturbed)`.
 template <typename Fly>
-void central_difference(const Constants& k, const Fly& fly, Trajectory* perturbed, double out[kTerminalCount]) {
+void central_difference(const Constants& k, const Fly& fly, Trajectory* perturbed,
+                        double out[kTerminalCount]) {
   double plus[kTerminalCount], minus[kTerminalCount];
   ASSERT_EQ(fly(+1.0, perturbed), Status::kOk);
   for (int j = 0; j < kTerminalCount; ++j) plus[j] = terminal(k, perturbed->final_point().state, j);
@@ -58,11 +61,12 @@ void central_difference(const Constants& k, const Fly& fly, Trajectory* perturbe
 }
 
 // |predicted - fd| within 1% of |fd| per quantity, with each pair printed.
-inline void expect_agreement(const char* what, const double predicted[kTerminalCount], const double fd[kTerminalCount]) {
+inline void expect_agreement(const char* what, const double predicted[kTerminalCount],
+                             const double fd[kTerminalCount]) {
   for (int j = 0; j < kTerminalCount; ++j) {
     const double error = std::fabs(predicted[j] - fd[j]);
-    std::printf("%-30s %-14s adjoint % .6e  fd % .6e  rel %.1e\n", what, kTerminalNames[j], predicted[j], fd[j],
-                error / std::fmax(std::fabs(fd[j]), 1e-300));
+    std::printf("%-30s %-14s adjoint % .6e  fd % .6e  rel %.1e\n", what, kTerminalNames[j], predicted[j],
+                fd[j], error / std::fmax(std::fabs(fd[j]), 1e-300));
     EXPECT_LE(error, 0.01 * std::fabs(fd[j]) + 1e-12) << what << " " << kTerminalNames[j];
   }
 }

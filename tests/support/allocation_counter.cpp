@@ -169,12 +169,8 @@ void operator delete(void* pointer, std::align_val_t) noexcept { raw_free(pointe
 void operator delete[](void* pointer, std::align_val_t) noexcept { raw_free(pointer); }
 void operator delete(void* pointer, std::size_t, std::align_val_t) noexcept { raw_free(pointer); }
 void operator delete[](void* pointer, std::size_t, std::align_val_t) noexcept { raw_free(pointer); }
-void operator delete(void* pointer, std::align_val_t, const std::nothrow_t&) noexcept {
-  raw_free(pointer);
-}
-void operator delete[](void* pointer, std::align_val_t, const std::nothrow_t&) noexcept {
-  raw_free(pointer);
-}
+void operator delete(void* pointer, std::align_val_t, const std::nothrow_t&) noexcept { raw_free(pointer); }
+void operator delete[](void* pointer, std::align_val_t, const std::nothrow_t&) noexcept { raw_free(pointer); }
 
 // ---- malloc family (glibc: interposed for the executable and every shared library) -------------
 

@@ -67,7 +67,8 @@ struct TestStageStart {
   int code;
   double start_s;
 };
-inline constexpr TestStageStart kTestTimeline[] = {{1, 0.0},   {6, 45.0},  {2, 50.0},  {7, 88.0}, {3, 94.0},
-                                                   {8, 130.0}, {4, 550.0}, {9, 578.0}, {5, 600.0}, {10, 630.0}};
+inline constexpr TestStageStart kTestTimeline[] = {{1, 0.0},   {6, 45.0},  {2, 50.0},  {7, 88.0},
+                                                   {3, 94.0},  {8, 130.0}, {4, 550.0}, {9, 578.0},
+                                                   {5, 600.0}, {10, 630.0}};
 
 }  // namespace tolip::test

@@ -68,8 +68,8 @@ void build_reference_mission(ReferenceProgram program, Mission* m) {
            s["consumable_weight_table"]["consumable_weight_remaining_lb"]);
     }
     if (code == 8) {
-      stage.duration_s = optimum ? oracle["coast8_duration_s"].get<double>()
-                                 : initial["coast8_s"].get<double>();
+      stage.duration_s =
+          optimum ? oracle["coast8_duration_s"].get<double>() : initial["coast8_s"].get<double>();
     }
   }
   const nlohmann::json& aero = veh["aerodynamics"];
@@ -101,11 +101,12 @@ void build_reference_mission(ReferenceProgram program, Mission* m) {
   m->control.zero_alpha_end_s = b22["alpha_zero_end_s"];
   m->control.max_pitch_rate_rad_s = b22["max_pitch_rate_deg_per_s"].get<double>() * kDegToRad;
   m->control.min_pitch_rate_rad_s = b22["min_pitch_rate_deg_per_s"].get<double>() * kDegToRad;
-  m->control.min_pitch_rate_change_rad_s = b22["min_change_in_pitch_rate_deg_per_s"].get<double>() * kDegToRad;
+  m->control.min_pitch_rate_change_rad_s =
+      b22["min_change_in_pitch_rate_deg_per_s"].get<double>() * kDegToRad;
 
   const nlohmann::json& b17 = mis["block17"];
-  m->misc.stage4_theta_rad = (optimum ? oracle["stage4_theta_deg"].get<double>()
-                                      : initial["theta4_deg"].get<double>()) * kDegToRad;
+  m->misc.stage4_theta_rad =
+      (optimum ? oracle["stage4_theta_deg"].get<double>() : initial["theta4_deg"].get<double>()) * kDegToRad;
   m->misc.stage4_chi_rad = b17["stage4_chi_deg"].get<double>() * kDegToRad;
   m->misc.nose_radius_ft = b17["nose_radius_ft"];
   m->misc.gyro_uncage_s_before_launch = b17["gyro_uncage_s_before_launch"];

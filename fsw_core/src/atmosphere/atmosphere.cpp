@@ -20,14 +20,14 @@ int layer_index(const AtmosphereTable& table, double geopotential_altitude_ft) {
 bool all_finite(const AtmosphereSample& s) {
   return std::isfinite(s.geopotential_altitude_ft) && std::isfinite(s.density_slug_ft3) &&
          std::isfinite(s.pressure_lbf_ft2) && std::isfinite(s.speed_of_sound_ft_s) &&
-         std::isfinite(s.temperature_R) && std::isfinite(s.ddensity_dh) &&
-         std::isfinite(s.dpressure_dh) && std::isfinite(s.dspeed_of_sound_dh);
+         std::isfinite(s.temperature_R) && std::isfinite(s.ddensity_dh) && std::isfinite(s.dpressure_dh) &&
+         std::isfinite(s.dspeed_of_sound_dh);
 }
 
 }  // namespace
 
-Status evaluate_atmosphere(const AtmosphereTable& table, const Constants& constants,
-                           double altitude_ft, double earth_radius_ft, AtmosphereSample* out) {
+Status evaluate_atmosphere(const AtmosphereTable& table, const Constants& constants, double altitude_ft,
+                           double earth_radius_ft, AtmosphereSample* out) {
   if (out == nullptr) return Status::kValueOutOfRange;
   if (!std::isfinite(altitude_ft) || !std::isfinite(earth_radius_ft)) return Status::kValueNotFinite;
   const double radius_sum_ft = earth_radius_ft + altitude_ft;
@@ -67,8 +67,8 @@ Status evaluate_atmosphere(const AtmosphereTable& table, const Constants& consta
     s.density_slug_ft3 = base_density * std::pow(temperature_ratio, -exponent);
     s.pressure_lbf_ft2 = s.density_slug_ft3 * r_gas * s.temperature_R;
     s.speed_of_sound_ft_s = std::sqrt(1.4 * r_gas * s.temperature_R);
-    s.ddensity_dh = -s.density_slug_ft3 * exponent * (lapse_R_per_ft / base_temperature_R) /
-                    temperature_ratio;
+    s.ddensity_dh =
+        -s.density_slug_ft3 * exponent * (lapse_R_per_ft / base_temperature_R) / temperature_ratio;
     s.dpressure_dh = r_gas * (s.temperature_R * s.ddensity_dh + s.density_slug_ft3 * lapse_R_per_ft);
     s.dspeed_of_sound_dh = 0.7 * r_gas * lapse_R_per_ft / s.speed_of_sound_ft_s;
   }

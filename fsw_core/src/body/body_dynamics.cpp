@@ -33,9 +33,12 @@ UnitMoments unit_moments(const BodyDynamicsBlocks& data, const MomentConditions&
   double aero_alpha = 0.0;
   double aero_delta = 0.0;
   if (q_s > 0.0) {
-    aero_alpha = (data.pitching_moment_per_rad(c.mach) * l_ref - c.normal_force_slope_per_rad * reference_arm_ft) * q_s;
+    aero_alpha =
+        (data.pitching_moment_per_rad(c.mach) * l_ref - c.normal_force_slope_per_rad * reference_arm_ft) *
+        q_s;
     aero_delta = (-data.fin_pitching_moment_per_rad(c.mach) * l_ref +
-                  data.fin_normal_force_per_rad(c.mach) * reference_arm_ft) * q_s;
+                  data.fin_normal_force_per_rad(c.mach) * reference_arm_ft) *
+                 q_s;
   }
   const double jet_vanes = data.jet_vane_effectiveness_per_rad * c.vacuum_thrust_lbf * m.control_lever_ft;
   m.m_alpha_lbf_ft_per_rad = aero_alpha;
@@ -87,8 +90,8 @@ Status steady_state_attitude(const AutopilotGains& gains, const UnitMoments& mom
     out->chi_rad = command.chi_rad;
   }
   // Eq. 7-3 in the steady state (theta-dot = theta_c-dot).
-  out->pitch_deflection_rad =
-      gains.position_gain * (command.theta_rad - out->theta_rad) - gains.rate_gain_s * command.theta_rate_rad_s;
+  out->pitch_deflection_rad = gains.position_gain * (command.theta_rad - out->theta_rad) -
+                              gains.rate_gain_s * command.theta_rate_rad_s;
   out->yaw_deflection_rad =
       gains.position_gain * (command.chi_rad - out->chi_rad) - gains.rate_gain_s * command.chi_rate_rad_s;
   return status;
@@ -150,7 +153,8 @@ Status evaluate_body_dynamics(const BodyDynamicsBlocks& data, const BodyDynamics
     command.yaw_disturbance_lbf_ft += unit_moment * in.misalignment_yaw_rad;
   }
   const Status status = steady_state_attitude(gains, out->moments, command, out->velocity, &out->attitude);
-  const Matrix3& angle_frame = (in.air_platform_to_local != nullptr) ? *in.air_platform_to_local : in.platform_to_local;
+  const Matrix3& angle_frame =
+      (in.air_platform_to_local != nullptr) ? *in.air_platform_to_local : in.platform_to_local;
   out->angles = body_angles_of_attack(out->attitude.theta_rad, out->attitude.chi_rad, angle_frame);
   out->forces = body_forces(out->moments, out->angles, in.normal_force_lbf_per_rad, out->attitude.theta_rad,
                             out->attitude.chi_rad, in.platform_to_local);

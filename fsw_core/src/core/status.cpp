@@ -43,7 +43,8 @@ const char* status_name(Status status) {
     case Status::kThrustWithoutPropellant: return "kThrustWithoutPropellant";
     case Status::kConsumableWeightIncreases: return "kConsumableWeightIncreases";
     case Status::kOptionOutOfRange: return "kOptionOutOfRange";
-    case Status::kBodyDynamicsRelinearizationWithoutLinearization: return "kBodyDynamicsRelinearizationWithoutLinearization";
+    case Status::kBodyDynamicsRelinearizationWithoutLinearization:
+      return "kBodyDynamicsRelinearizationWithoutLinearization";
     case Status::kConstantOutOfRange: return "kConstantOutOfRange";
     case Status::kNegativeArea: return "kNegativeArea";
     case Status::kReferenceAreaMissing: return "kReferenceAreaMissing";
@@ -122,10 +123,14 @@ const char* status_message(Status status) {
   switch (status) {
     case Status::kOk: return "success";
     case Status::kTooManyTablePoints: return "a table has more points than its capacity";
-    case Status::kTooManyThrustPointsInAllStages: return "the thrust tables of all stages together exceed 120 points";
-    case Status::kTooManyWeightPointsInAllStages: return "the weight tables of all stages together exceed 120 points";
-    case Status::kTooManyPoweredSteps: return "the powered stages together have more than 168 integration steps";
-    case Status::kTooManyPoweredStepsWithFollowingCoast: return "the powered stages and coast 6 together have more than 177 integration steps";
+    case Status::kTooManyThrustPointsInAllStages:
+      return "the thrust tables of all stages together exceed 120 points";
+    case Status::kTooManyWeightPointsInAllStages:
+      return "the weight tables of all stages together exceed 120 points";
+    case Status::kTooManyPoweredSteps:
+      return "the powered stages together have more than 168 integration steps";
+    case Status::kTooManyPoweredStepsWithFollowingCoast:
+      return "the powered stages and coast 6 together have more than 177 integration steps";
     case Status::kTooManyCoastSteps: return "a coast has more integration steps than the per-coast capacity";
     case Status::kTooFewStage1Steps: return "stage 1 needs at least 25 integration steps";
     case Status::kTooManyConstraints: return "more than 13 constraints";
@@ -139,96 +144,191 @@ const char* status_message(Status status) {
     case Status::kNegativeWeight: return "a weight is negative";
     case Status::kNonPositiveDuration: return "a stage duration must be positive";
     case Status::kNonPositiveStepCount: return "a stage needs at least one integration step";
-    case Status::kStageSequenceInvalid: return "the stage sequence must start with stage 1 and follow the order 1 6 2 7 3 8 4 9 5 10: each powered stage is the next one, each coast n+5 comes directly after its stage n, and a coast may be left out (powered stages then burn back to back)";
+    case Status::kStageSequenceInvalid:
+      return "the stage sequence must start with stage 1 and follow the order 1 6 2 7 3 8 4 9 5 10: each "
+             "powered stage is the next one, each coast n+5 comes directly after its stage n, and a coast "
+             "may be left out (powered stages then burn back to back)";
     case Status::kUnknownStageCode: return "a stage code is not one of 1-10";
     case Status::kMissingThrustTable: return "a powered stage has no vacuum thrust table";
     case Status::kMissingWeightTable: return "a powered stage has no consumable-weight table";
-    case Status::kThrustWeightTimesDiffer: return "thrust and weight tables of a stage end at different times";
-    case Status::kStageDurationMismatch: return "a powered stage duration differs from the last time of its thrust table";
+    case Status::kThrustWeightTimesDiffer:
+      return "thrust and weight tables of a stage end at different times";
+    case Status::kStageDurationMismatch:
+      return "a powered stage duration differs from the last time of its thrust table";
     case Status::kLiftoffLongerThanStage1: return "the lift-off interval is not shorter than stage 1";
-    case Status::kLiftoffNotPositive: return "the closed-form lift-off DA5(1) must last more than 0 s: the integration starts from its end state, and at V = 0 the equations of motion are singular (flight-path angle and heading undefined)";
-    case Status::kZeroLengthCoast: return "a coast of the stage sequence lasts 0 s: leave the coast out of the stage sequence (data block 5) instead, the powered stages around it then burn back to back with the jettison at the boundary";
-    case Status::kAdjustableCoastNotInSequence: return "a coast length is an adjustable parameter (data block 6) but that coast is not in the stage sequence (data block 5)";
-    case Status::kAdjustableAttitudeNotSpun: return "a spun-stage attitude is an adjustable parameter (data block 6 codes 1, 2, 8, 9) but IP(9) does not spin that stage on its own attitudes";
-    case Status::kSpinOptionInconsistent: return "IP(9) does not fit the stage sequence: stage 4 flown needs 1, 2 or 3, and 3 (stages 4 and 5 continuous) needs stage 5";
-    case Status::kInitialConditionsInvalid: return "initial conditions must have zero velocity and a 90 degree flight-path angle";
+    case Status::kLiftoffNotPositive:
+      return "the closed-form lift-off DA5(1) must last more than 0 s: the integration starts from its end "
+             "state, and at V = 0 the equations of motion are singular (flight-path angle and heading "
+             "undefined)";
+    case Status::kZeroLengthCoast:
+      return "a coast of the stage sequence lasts 0 s: leave the coast out of the stage sequence (data block "
+             "5) instead, the powered stages around it then burn back to back with the jettison at the "
+             "boundary";
+    case Status::kAdjustableCoastNotInSequence:
+      return "a coast length is an adjustable parameter (data block 6) but that coast is not in the stage "
+             "sequence (data block 5)";
+    case Status::kAdjustableAttitudeNotSpun:
+      return "a spun-stage attitude is an adjustable parameter (data block 6 codes 1, 2, 8, 9) but IP(9) "
+             "does not spin that stage on its own attitudes";
+    case Status::kSpinOptionInconsistent:
+      return "IP(9) does not fit the stage sequence: stage 4 flown needs 1, 2 or 3, and 3 (stages 4 and 5 "
+             "continuous) needs stage 5";
+    case Status::kInitialConditionsInvalid:
+      return "initial conditions must have zero velocity and a 90 degree flight-path angle";
     case Status::kAtmosphereTableInvalid: return "the atmosphere table is inconsistent";
-    case Status::kBodyDynamicsDataMissing: return "a 6D (body dynamics) trajectory needs data blocks 33-37 (gains, stations, reference length and area, the block 34-36 tables and the stage-1 c.g. history), which the case does not give completely";
-    case Status::kControlStationAtCenterOfGravity: return "the stage-1 control station DA6D(7) lies within the range of the stage-1 c.g. stations of data block 37, so X_delta - X_CG would vanish";
-    case Status::kThrustWithoutPropellant: return "a powered stage has thrust where no consumable weight (propellant) remains";
-    case Status::kConsumableWeightIncreases: return "the consumable weight remaining of a powered stage increases during the burn";
-    case Status::kOptionOutOfRange: return "an option IP(n) of data block 4 has a value the manual does not define for it";
-    case Status::kBodyDynamicsRelinearizationWithoutLinearization: return "IP(6) = 1 (the 6D re-linearization) needs IP(7) = 1 (the linearization)";
+    case Status::kBodyDynamicsDataMissing:
+      return "a 6D (body dynamics) trajectory needs data blocks 33-37 (gains, stations, reference length and "
+             "area, the block 34-36 tables and the stage-1 c.g. history), which the case does not give "
+             "completely";
+    case Status::kControlStationAtCenterOfGravity:
+      return "the stage-1 control station DA6D(7) lies within the range of the stage-1 c.g. stations of data "
+             "block 37, so X_delta - X_CG would vanish";
+    case Status::kThrustWithoutPropellant:
+      return "a powered stage has thrust where no consumable weight (propellant) remains";
+    case Status::kConsumableWeightIncreases:
+      return "the consumable weight remaining of a powered stage increases during the burn";
+    case Status::kOptionOutOfRange:
+      return "an option IP(n) of data block 4 has a value the manual does not define for it";
+    case Status::kBodyDynamicsRelinearizationWithoutLinearization:
+      return "IP(6) = 1 (the 6D re-linearization) needs IP(7) = 1 (the linearization)";
     case Status::kConstantOutOfRange: return "a constant of data block 10 is outside its physical range";
     case Status::kNegativeArea: return "a reference or nozzle exit area of data block 39 is negative";
-    case Status::kReferenceAreaMissing: return "a stage with a drag or lift table (data blocks 31, 32) has no positive reference area (data block 39)";
-    case Status::kPropulsionInCoast: return "a coast carries a thrust table, a consumable weight table or a nozzle exit area";
+    case Status::kReferenceAreaMissing:
+      return "a stage with a drag or lift table (data blocks 31, 32) has no positive reference area (data "
+             "block 39)";
+    case Status::kPropulsionInCoast:
+      return "a coast carries a thrust table, a consumable weight table or a nozzle exit area";
     case Status::kTableTimeNegative: return "a thrust or consumable weight table starts before stage time 0";
     case Status::kNegativeThrust: return "a vacuum thrust of data block 30 is negative";
-    case Status::kLaunchConditionOutOfRange: return "a launch condition of data block 21 (altitude, longitude, latitude, azimuth, heading hold) is outside its range";
+    case Status::kLaunchConditionOutOfRange:
+      return "a launch condition of data block 21 (altitude, longitude, latitude, azimuth, heading hold) is "
+             "outside its range";
     case Status::kPitchRateLimitNegative: return "a pitch-rate limit of data block 22 is negative";
-    case Status::kZeroAlphaWindowInvalid: return "the zero-alpha window of data block 22 (IP(11)) does not lie inside stage 1";
+    case Status::kZeroAlphaWindowInvalid:
+      return "the zero-alpha window of data block 22 (IP(11)) does not lie inside stage 1";
     case Status::kMiscellaneousDataOutOfRange: return "a word of data block 17 is outside its range";
-    case Status::kCoastChangeLimitMissing: return "a coast length is an adjustable parameter but the coast change limit DA2(16) of data block 17 is not positive";
-    case Status::kNoPayoffConstraint: return "data block 8 lists no constraint: the payoff entry comes first and is required";
-    case Status::kPayloadCodeNotFirst: return "the payload code 0 of data block 8 may only be the payoff, the first entry";
+    case Status::kCoastChangeLimitMissing:
+      return "a coast length is an adjustable parameter but the coast change limit DA2(16) of data block 17 "
+             "is not positive";
+    case Status::kNoPayoffConstraint:
+      return "data block 8 lists no constraint: the payoff entry comes first and is required";
+    case Status::kPayloadCodeNotFirst:
+      return "the payload code 0 of data block 8 may only be the payoff, the first entry";
     case Status::kDuplicateConstraintCode: return "a constraint code is listed twice in data block 8";
-    case Status::kPayoffCodeMismatch: return "the payoff code of data block 8 does not match the payoff IP(1) asks for";
-    case Status::kHeatingCodeMismatch: return "the heating code 14 must follow the counted constraints of data block 8 exactly when IP(2) = 1";
+    case Status::kPayoffCodeMismatch:
+      return "the payoff code of data block 8 does not match the payoff IP(1) asks for";
+    case Status::kHeatingCodeMismatch:
+      return "the heating code 14 must follow the counted constraints of data block 8 exactly when IP(2) = 1";
     case Status::kDeadbandNotPositive: return "a deadband of data block 29 is not positive";
-    case Status::kNegativeCount: return "the count of adjustable parameters (data block 6) or of linear segments (data block 18) is negative";
-    case Status::kUnknownAdjustableParameterCode: return "an adjustable-parameter code of data block 6 is not one of 1-11";
-    case Status::kDuplicateAdjustableParameterCode: return "an adjustable-parameter code is listed twice in data block 6";
-    case Status::kWeightingFactorNotPositive: return "a weighting factor of data block 26 or 27 is not positive";
-    case Status::kCodedTimeAfterUnusedEntry: return "a coded segment start time of data block 18 follows an unused (zero) entry";
-    case Status::kCodedTimeStageInvalid: return "a coded segment start time 100 n + t of data block 18 names no powered stage n of the sequence";
-    case Status::kLinearizationWithoutSegments: return "IP(7) = 1 (linearization) needs the segment start times of data block 18";
-    case Status::kSteeredStageWithoutSegments: return "IP(7) = 1 (linearization): a stage that flies the pitch program (stages 4 and 5 too when IP(9) steers them) has no coded start time 100 n + t in data block 18";
-    case Status::kCodedTimeInSpunStage: return "a data block 18 coded time 100 n + t lies in a stage that IP(9) spins (a spun stage holds its data block 17 attitudes; it has no pitch segments)";
-    case Status::kSegmentCountMismatch: return "the segment count of data block 18 is not the number of coded start times less one";
-    case Status::kConvergenceDataOutOfRange: return "a convergence control of data block 28 is outside its range";
+    case Status::kNegativeCount:
+      return "the count of adjustable parameters (data block 6) or of linear segments (data block 18) is "
+             "negative";
+    case Status::kUnknownAdjustableParameterCode:
+      return "an adjustable-parameter code of data block 6 is not one of 1-11";
+    case Status::kDuplicateAdjustableParameterCode:
+      return "an adjustable-parameter code is listed twice in data block 6";
+    case Status::kWeightingFactorNotPositive:
+      return "a weighting factor of data block 26 or 27 is not positive";
+    case Status::kCodedTimeAfterUnusedEntry:
+      return "a coded segment start time of data block 18 follows an unused (zero) entry";
+    case Status::kCodedTimeStageInvalid:
+      return "a coded segment start time 100 n + t of data block 18 names no powered stage n of the sequence";
+    case Status::kLinearizationWithoutSegments:
+      return "IP(7) = 1 (linearization) needs the segment start times of data block 18";
+    case Status::kSteeredStageWithoutSegments:
+      return "IP(7) = 1 (linearization): a stage that flies the pitch program (stages 4 and 5 too when IP(9) "
+             "steers them) has no coded start time 100 n + t in data block 18";
+    case Status::kCodedTimeInSpunStage:
+      return "a data block 18 coded time 100 n + t lies in a stage that IP(9) spins (a spun stage holds its "
+             "data block 17 attitudes; it has no pitch segments)";
+    case Status::kSegmentCountMismatch:
+      return "the segment count of data block 18 is not the number of coded start times less one";
+    case Status::kConvergenceDataOutOfRange:
+      return "a convergence control of data block 28 is outside its range";
     case Status::kOutputFrequencyNotPositive: return "an output frequency of data block 9 is below 1";
-    case Status::kBodyDynamicsValueOutOfRange: return "a body-dynamics word of data block 33 is outside its range";
-    case Status::kPitchAttitudeOutOfRange: return "an attitude of the data block 40 pitch program is beyond one turn";
-    case Status::kUnknownConstraintCode: return "a data block 8 constraint code is not 0-14, 10X+5 to 10X+9 (X = 1-9) or 100-102";
-    case Status::kConstraintNotHyperbolic: return "a hyperbolic-asymptote constraint (100-102) needs a hyperbolic orbit (2E > 0)";
-    case Status::kConstraintSingular: return "the constraint has no derivative at this state (equatorial or circular orbit, vertical inertial velocity, zero range)";
+    case Status::kBodyDynamicsValueOutOfRange:
+      return "a body-dynamics word of data block 33 is outside its range";
+    case Status::kPitchAttitudeOutOfRange:
+      return "an attitude of the data block 40 pitch program is beyond one turn";
+    case Status::kUnknownConstraintCode:
+      return "a data block 8 constraint code is not 0-14, 10X+5 to 10X+9 (X = 1-9) or 100-102";
+    case Status::kConstraintNotHyperbolic:
+      return "a hyperbolic-asymptote constraint (100-102) needs a hyperbolic orbit (2E > 0)";
+    case Status::kConstraintSingular:
+      return "the constraint has no derivative at this state (equatorial or circular orbit, vertical "
+             "inertial velocity, zero range)";
     case Status::kNonFiniteState: return "the integration produced a NaN or infinite state";
     case Status::kAltitudeBelowSurface: return "the vehicle went below the Earth surface";
     case Status::kZeroVelocity: return "the velocity is zero where a direction is needed";
     case Status::kMassNotPositive: return "the vehicle mass is not positive";
-    case Status::kTrajectoryStorageFull: return "the trajectory has more integration points than its fixed storage";
-    case Status::kControlProgramSizeMismatch: return "the pitch program has a different number of points than the case's trajectory";
-    case Status::kSteeringMatrixSingular: return "the steering matrix (integral of Lambda Lambda^T plus S Y^-1 S^T) could not be inverted: the constraints cannot be controlled independently";
-    case Status::kLinearizationDidNotConverge: return "the linearized pitch program did not meet the constraints within the linearization deadbands and the rate limits in DA13(4) forward runs";
-    case Status::kGuidanceDidNotConverge: return "not converged: the guidance runs used the forward-run budget DA13(3) without bringing every constraint inside its data block 29 deadband, so no optimization run was made";
-    case Status::kOptimizationNotStarted: return "not converged: guidance met every deadband but no optimization run was made (the first payoff-improvement attempt was below DA13(2), or the forward-run budget DA13(3) left no room); the trajectory is feasible, not optimized";
-    case Status::kOptimizationBudgetExhausted: return "not converged: the forward-run budget DA13(3) ended the optimization while payoff-improvement attempts above DA13(2) remained; the last feasible optimization run is reported (raise DA13(3) to go on)";
-    case Status::kFinalGuidanceFailed: return "not converged: the final guidance run did not meet every data block 29 deadband; the last feasible optimization run is reported instead";
-    case Status::kAdjustableParameterNotSupported: return "an adjustable parameter code of data block 6 is not supported by this optimizer yet";
-    case Status::kBodyDynamicsNotTrimmable: return "the autopilot has no steady state (Sec. 7): K_theta M_delta - M_alpha is not positive, a statically unstable vehicle with too little control moment";
-    case Status::kPayoffNotSupported: return "the payoff of data block 8 does not match option IP(1) or is not supported";
+    case Status::kTrajectoryStorageFull:
+      return "the trajectory has more integration points than its fixed storage";
+    case Status::kControlProgramSizeMismatch:
+      return "the pitch program has a different number of points than the case's trajectory";
+    case Status::kSteeringMatrixSingular:
+      return "the steering matrix (integral of Lambda Lambda^T plus S Y^-1 S^T) could not be inverted: the "
+             "constraints cannot be controlled independently";
+    case Status::kLinearizationDidNotConverge:
+      return "the linearized pitch program did not meet the constraints within the linearization deadbands "
+             "and the rate limits in DA13(4) forward runs";
+    case Status::kGuidanceDidNotConverge:
+      return "not converged: the guidance runs used the forward-run budget DA13(3) without bringing every "
+             "constraint inside its data block 29 deadband, so no optimization run was made";
+    case Status::kOptimizationNotStarted:
+      return "not converged: guidance met every deadband but no optimization run was made (the first "
+             "payoff-improvement attempt was below DA13(2), or the forward-run budget DA13(3) left no room); "
+             "the trajectory is feasible, not optimized";
+    case Status::kOptimizationBudgetExhausted:
+      return "not converged: the forward-run budget DA13(3) ended the optimization while payoff-improvement "
+             "attempts above DA13(2) remained; the last feasible optimization run is reported (raise DA13(3) "
+             "to go on)";
+    case Status::kFinalGuidanceFailed:
+      return "not converged: the final guidance run did not meet every data block 29 deadband; the last "
+             "feasible optimization run is reported instead";
+    case Status::kAdjustableParameterNotSupported:
+      return "an adjustable parameter code of data block 6 is not supported by this optimizer yet";
+    case Status::kBodyDynamicsNotTrimmable:
+      return "the autopilot has no steady state (Sec. 7): K_theta M_delta - M_alpha is not positive, a "
+             "statically unstable vehicle with too little control moment";
+    case Status::kPayoffNotSupported:
+      return "the payoff of data block 8 does not match option IP(1) or is not supported";
     case Status::kNotPrepared: return "the case was not prepared (prepare_case) before use";
     case Status::kTableImageTruncated: return "the table image is shorter than the format's fixed size";
-    case Status::kTableImageSizeMismatch: return "the table image is longer than the format's fixed size, or its size field disagrees";
+    case Status::kTableImageSizeMismatch:
+      return "the table image is longer than the format's fixed size, or its size field disagrees";
     case Status::kTableImageBadMagic: return "the table image does not start with the magic bytes TLGT";
-    case Status::kTableImageUnsupportedVersion: return "the table image has a format version this loader does not read";
-    case Status::kTableImageLayoutMismatch: return "the table image header's size fields do not match its format version";
+    case Status::kTableImageUnsupportedVersion:
+      return "the table image has a format version this loader does not read";
+    case Status::kTableImageLayoutMismatch:
+      return "the table image header's size fields do not match its format version";
     case Status::kTableImageCrcMismatch: return "the table image CRC-32 does not match its contents";
-    case Status::kTableImageReservedBytesSet: return "a reserved or unused byte of the table image is not zero";
-    case Status::kTableImageTextInvalid: return "the mission identifier or generator version is not NUL-padded printable ASCII";
-    case Status::kSegmentStageInvalid: return "a pitch segment's stage code is not 1, 2, 3 or a coast 6, 7, 8 after them";
-    case Status::kSegmentTimesNotMonotonic: return "pitch segments must follow the flight order of stages and strictly increasing start times within a stage";
-    case Status::kSegmentRateExceedsLimit: return "a pitch segment's rate exceeds the maximum pitch rate the image carries";
+    case Status::kTableImageReservedBytesSet:
+      return "a reserved or unused byte of the table image is not zero";
+    case Status::kTableImageTextInvalid:
+      return "the mission identifier or generator version is not NUL-padded printable ASCII";
+    case Status::kSegmentStageInvalid:
+      return "a pitch segment's stage code is not 1, 2, 3 or a coast 6, 7, 8 after them";
+    case Status::kSegmentTimesNotMonotonic:
+      return "pitch segments must follow the flight order of stages and strictly increasing start times "
+             "within a stage";
+    case Status::kSegmentRateExceedsLimit:
+      return "a pitch segment's rate exceeds the maximum pitch rate the image carries";
     case Status::kTableNotStaged: return "no table image has been staged in the inactive buffer";
     case Status::kTableNotValidated: return "the staged table image has not passed validation";
     case Status::kNoActiveTable: return "no guidance table is active";
-    case Status::kStageEventOutOfOrder: return "a stage event is earlier in time or in the flight order than the stage in force";
+    case Status::kStageEventOutOfOrder:
+      return "a stage event is earlier in time or in the flight order than the stage in force";
     case Status::kDispersionNotImplemented: return "this dispersion code is not computed by this version";
-    case Status::kDispersionNeedsBodyDynamics: return "this dispersion acts through the body dynamics (Sec. 7, 15): the nominal must fly stage 1 with body dynamics (IP(6) = 1 with IP(7) = 1) and data blocks 33-37";
-    case Status::kDispersionStageNotInSequence: return "the dispersion's stage is not in the stage sequence (data block 5)";
-    case Status::kDispersionStageNotSpun: return "tip-off dispersions apply to a spin-stabilized stage 4 or 5 (IP(9))";
-    case Status::kDispersionCodeInvalid: return "dispersion codes must be 1-38 or 40, in increasing order, each with the data its code needs (Sec. 22, data block 46)";
+    case Status::kDispersionNeedsBodyDynamics:
+      return "this dispersion acts through the body dynamics (Sec. 7, 15): the nominal must fly stage 1 with "
+             "body dynamics (IP(6) = 1 with IP(7) = 1) and data blocks 33-37";
+    case Status::kDispersionStageNotInSequence:
+      return "the dispersion's stage is not in the stage sequence (data block 5)";
+    case Status::kDispersionStageNotSpun:
+      return "tip-off dispersions apply to a spin-stabilized stage 4 or 5 (IP(9))";
+    case Status::kDispersionCodeInvalid:
+      return "dispersion codes must be 1-38 or 40, in increasing order, each with the data its code needs "
+             "(Sec. 22, data block 46)";
   }
   return "unknown status";
 }

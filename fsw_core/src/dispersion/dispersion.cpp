@@ -166,16 +166,21 @@ Status validate_dispersion_data(const DispersionData& data, int* fault_code) {
     switch (info.kind) {
       case Kind::kVacuumThrust:
         if (s.vacuum_thrust_lbf.empty() || s.consumable_weight_lb.empty()) return Status::kTableEmpty;
-        if (!s.vacuum_thrust_lbf.finalized() || !s.consumable_weight_lb.finalized()) return Status::kTableNotMonotonic;
+        if (!s.vacuum_thrust_lbf.finalized() || !s.consumable_weight_lb.finalized())
+          return Status::kTableNotMonotonic;
         // As data blocks 30 and 38 (validate_mission): from stage time 0, on the same times, the
         // thrust not negative, the consumable weight not increasing and not negative.
-        if (s.vacuum_thrust_lbf.size() != s.consumable_weight_lb.size()) return Status::kThrustWeightTimesDiffer;
-        if (s.vacuum_thrust_lbf.first_x() != 0.0 || !(s.vacuum_thrust_lbf.last_x() > 0.0)) return Status::kValueOutOfRange;
+        if (s.vacuum_thrust_lbf.size() != s.consumable_weight_lb.size())
+          return Status::kThrustWeightTimesDiffer;
+        if (s.vacuum_thrust_lbf.first_x() != 0.0 || !(s.vacuum_thrust_lbf.last_x() > 0.0))
+          return Status::kValueOutOfRange;
         for (int i = 0; i < s.vacuum_thrust_lbf.size(); ++i) {
-          if (s.vacuum_thrust_lbf.x(i) != s.consumable_weight_lb.x(i)) return Status::kThrustWeightTimesDiffer;
+          if (s.vacuum_thrust_lbf.x(i) != s.consumable_weight_lb.x(i))
+            return Status::kThrustWeightTimesDiffer;
           if (s.vacuum_thrust_lbf.y(i) < 0.0) return Status::kValueOutOfRange;
           if (s.consumable_weight_lb.y(i) < 0.0) return Status::kNegativeWeight;
-          if (i > 0 && s.consumable_weight_lb.y(i) > s.consumable_weight_lb.y(i - 1)) return Status::kConsumableWeightIncreases;
+          if (i > 0 && s.consumable_weight_lb.y(i) > s.consumable_weight_lb.y(i - 1))
+            return Status::kConsumableWeightIncreases;
         }
         break;
       case Kind::kPitchingMoment:
@@ -184,7 +189,8 @@ Status validate_dispersion_data(const DispersionData& data, int* fault_code) {
         break;
       case Kind::kWind:
         if (s.wind.speed_ft_s.empty() || s.wind.azimuth_rad.empty()) return Status::kTableEmpty;
-        if (!s.wind.speed_ft_s.finalized() || !s.wind.azimuth_rad.finalized()) return Status::kTableNotMonotonic;
+        if (!s.wind.speed_ft_s.finalized() || !s.wind.azimuth_rad.finalized())
+          return Status::kTableNotMonotonic;
         break;
       case Kind::kDrag:
         if (!(std::fabs(s.drag_variation_fraction) < 1.0)) return Status::kValueOutOfRange;
@@ -192,11 +198,12 @@ Status validate_dispersion_data(const DispersionData& data, int* fault_code) {
       case Kind::kTipoff:
         if (s.stage != 4 && s.stage != 5) return Status::kValueOutOfRange;
         break;
-      default:
-        break;
+      default: break;
     }
-    const double scalars[] = {s.weight_increment_lb, s.drag_variation_fraction, s.misalignment_rad,
-                              s.thrust_station_ft, s.deadband_rad, s.tipoff_rad, s.launch_change_rad};
+    const double scalars[] = {s.weight_increment_lb, s.drag_variation_fraction,
+                              s.misalignment_rad,    s.thrust_station_ft,
+                              s.deadband_rad,        s.tipoff_rad,
+                              s.launch_change_rad};
     for (double value : scalars) {
       if (!std::isfinite(value)) return Status::kValueNotFinite;
     }
@@ -208,7 +215,8 @@ Status validate_dispersion_data(const DispersionData& data, int* fault_code) {
 Status build_dispersed_case(const DispersionNominal& nominal, const PreparedCase& nominal_prepared,
                             const DispersionSource& source, DispersionWorkspace* ws) {
   DispersionCodeInfo info;
-  if (!dispersion_code_info(source.code, &info) || info.kind == Kind::kNominal) return Status::kDispersionCodeInvalid;
+  if (!dispersion_code_info(source.code, &info) || info.kind == Kind::kNominal)
+    return Status::kDispersionCodeInvalid;
   ws->mission = *nominal.mission;
   ws->perturbation = FlightPerturbation{};
   Mission& m = ws->mission;
@@ -226,7 +234,8 @@ Status build_dispersed_case(const DispersionNominal& nominal, const PreparedCase
       data.consumable_weight_lb = source.consumable_weight_lb;
       data.duration_s = source.vacuum_thrust_lbf.last_x();
       // The tables' own rules (validate_dispersion_data); the rest of the case validated as the nominal.
-      if (stage == 1 && !(data.duration_s > m.launch.liftoff_duration_s)) return Status::kLiftoffLongerThanStage1;
+      if (stage == 1 && !(data.duration_s > m.launch.liftoff_duration_s))
+        return Status::kLiftoffLongerThanStage1;
       break;
     }
     case Kind::kWeightIncrement:
@@ -250,11 +259,13 @@ Status build_dispersed_case(const DispersionNominal& nominal, const PreparedCase
     }
     case Kind::kThrustMisalignment:
       if (!nominal.body_dynamics) return Status::kDispersionNeedsBodyDynamics;
-      (info.plane == Plane::kYaw ? p.misalignment_yaw_rad : p.misalignment_pitch_rad) = source.misalignment_rad;
+      (info.plane == Plane::kYaw ? p.misalignment_yaw_rad : p.misalignment_pitch_rad) =
+          source.misalignment_rad;
       p.thrust_station_ft = source.thrust_station_ft;
       break;
     case Kind::kControlDeadband:
-      (info.plane == Plane::kYaw ? p.chi_offset_rad : p.theta_offset_rad)[stage_index(stage)] = source.deadband_rad;
+      (info.plane == Plane::kYaw ? p.chi_offset_rad : p.theta_offset_rad)[stage_index(stage)] =
+          source.deadband_rad;
       break;
     case Kind::kTipoff: {
       if (!m.options.stage_is_spun(stage)) return Status::kDispersionStageNotSpun;
@@ -277,11 +288,8 @@ Status build_dispersed_case(const DispersionNominal& nominal, const PreparedCase
       // A pitch reference error: every commanded attitude after the lift-off is off by the change.
       for (double& offset : p.theta_offset_rad) offset = source.launch_change_rad;
       break;
-    case Kind::kWind:
-      p.wind = &source.wind;
-      break;
-    case Kind::kNominal:
-      return Status::kDispersionCodeInvalid;
+    case Kind::kWind: p.wind = &source.wind; break;
+    case Kind::kNominal: return Status::kDispersionCodeInvalid;
   }
 
   // Only thrust and weight (Sec. 14's ideal velocities) and the launch azimuth (the launch matrices)
@@ -297,7 +305,8 @@ Status build_dispersed_case(const DispersionNominal& nominal, const PreparedCase
   }
   ws->program_mapped = false;
   if (nominal.program != nullptr && info.kind == Kind::kVacuumThrust) {
-    if (trajectory_point_count(ws->prepared) != nominal.program->point_count) return Status::kControlProgramSizeMismatch;
+    if (trajectory_point_count(ws->prepared) != nominal.program->point_count)
+      return Status::kControlProgramSizeMismatch;
     map_program(nominal_prepared, *nominal.program, ws->prepared, &ws->program);
     ws->program_mapped = true;
   }
@@ -307,7 +316,8 @@ Status build_dispersed_case(const DispersionNominal& nominal, const PreparedCase
 Status record_dispersed_trajectory(const Mission& mission, const PreparedCase& prepared,
                                    const Trajectory& reference, const Trajectory& flown,
                                    const WindProfile* wind, DispersedTrajectory* out) {
-  if (!ok(flown.status) || flown.point_count <= 0) return ok(flown.status) ? Status::kNotPrepared : flown.status;
+  if (!ok(flown.status) || flown.point_count <= 0)
+    return ok(flown.status) ? Status::kNotPrepared : flown.status;
   // Columns: the ignition of each powered stage after the first in the reference, then the final point.
   int columns = 0;
   int reference_points[kMaxStagingPoints] = {};
@@ -338,7 +348,8 @@ Status record_dispersed_trajectory(const Mission& mission, const PreparedCase& p
     v[static_cast<int>(StagingVariable::kDownrange)] = d.downrange_rad * kNauticalMilesPerRadian;
     // Sec. 4: crossrange from the plane of motion at the nominal staging point (0 on the nominal).
     v[static_cast<int>(StagingVariable::kCrossrange)] =
-        crossrange_angle_rad(n.state[kStateLambda], n.earth_longitude_rad, n.state[kStatePsi], d.state[kStateLambda],
+        crossrange_angle_rad(n.state[kStateLambda], n.earth_longitude_rad, n.state[kStatePsi],
+                             d.state[kStateLambda],
                              d.earth_longitude_rad) *
             kNauticalMilesPerRadian +
         0.0;  // the nominal's own crossrange is -0: print it as 0
@@ -365,11 +376,13 @@ Status record_dispersed_trajectory(const Mission& mission, const PreparedCase& p
       const double speed = wind->speed_ft_s(point.altitude_ft);
       if (speed != 0.0) {
         const StateTrig trig(point.state);
-        const Vector3 air = air_relative_velocity_local(point.state, trig, speed, wind->azimuth_rad(point.altitude_ft));
+        const Vector3 air =
+            air_relative_velocity_local(point.state, trig, speed, wind->azimuth_rad(point.altitude_ft));
         if (air.norm() > 0.0) {
           const Matrix3 platform_to_local = inertial_to_local(trig) * prepared.platform_to_inertial;
-          alpha = air_angle_of_attack_rad(local_to_air_frame(air),
-                                          platform_to_local * thrust_axis_platform(point.theta_rad, point.chi_rad));
+          alpha = air_angle_of_attack_rad(
+              local_to_air_frame(air),
+              platform_to_local * thrust_axis_platform(point.theta_rad, point.chi_rad));
         }
       }
     }
@@ -446,8 +459,8 @@ Status run_dispersions(const DispersionNominal& nominal, const DispersionData& d
   inputs.body_dynamics = nominal.body_dynamics;
   status = fly_trajectory(*nominal.mission, ws->nominal_prepared, inputs, &ws->nominal);
   if (ok(status)) {
-    status = record_dispersed_trajectory(*nominal.mission, ws->nominal_prepared, ws->nominal, ws->nominal, nullptr,
-                                         &result->nominal);
+    status = record_dispersed_trajectory(*nominal.mission, ws->nominal_prepared, ws->nominal, ws->nominal,
+                                         nullptr, &result->nominal);
   }
   result->nominal.status = status;
   copy_title("NOMINAL TRAJ", result->nominal.title);
@@ -486,7 +499,8 @@ Status run_dispersions(const DispersionNominal& nominal, const DispersionData& d
     out.status = code_status;
     if (!ok(code_status)) continue;
     for (int j = 0; j < columns; ++j) {
-      for (int i = 0; i < kStagingVariables; ++i) out.dispersions[j][i] = out.values[j][i] - result->nominal.values[j][i];
+      for (int i = 0; i < kStagingVariables; ++i)
+        out.dispersions[j][i] = out.values[j][i] - result->nominal.values[j][i];
     }
     for (int i = 0; i < kOrbitDispersionElements; ++i) {
       const double d = out.orbit[i] - result->nominal.orbit[i];

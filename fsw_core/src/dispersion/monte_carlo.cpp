@@ -59,7 +59,8 @@ Status build_monte_carlo_case(const DispersionNominal& nominal, const PreparedCa
     if (!dispersion_code_info(s.code, &info)) return Status::kDispersionCodeInvalid;
     const int leader = family_leader(s.code);
     if (leader != s.code && has_code(data, leader)) continue;  // the pair's high code speaks for it
-    const double z = counter_normal(seed, sample, static_cast<std::uint32_t>(leader)) / 3.0;  // 3 sigma -> 1 sigma
+    const double z =
+        counter_normal(seed, sample, static_cast<std::uint32_t>(leader)) / 3.0;  // 3 sigma -> 1 sigma
     const int stage = (info.kind == DispersionKind::kTipoff) ? s.stage : info.stage;
     const bool yaw = info.plane == DispersionPlane::kYaw;
     switch (info.kind) {
@@ -67,9 +68,7 @@ Status build_monte_carlo_case(const DispersionNominal& nominal, const PreparedCa
         m.vehicle.stages[stage_index(stage)].jettison_weight_lb += z * s.weight_increment_lb;
         prepares = true;
         break;
-      case DispersionKind::kDrag:
-        drag_fraction += z * s.drag_variation_fraction;
-        break;
+      case DispersionKind::kDrag: drag_fraction += z * s.drag_variation_fraction; break;
       case DispersionKind::kThrustMisalignment:
         if (!nominal.body_dynamics) break;
         (yaw ? p.misalignment_yaw_rad : p.misalignment_pitch_rad) += z * s.misalignment_rad;
@@ -126,9 +125,10 @@ Status prepare_monte_carlo(const DispersionNominal& nominal, DispersionWorkspace
   return fly_trajectory(*nominal.mission, ws->nominal_prepared, inputs, &ws->nominal);
 }
 
-Status fly_monte_carlo_sample(const DispersionNominal& nominal, const DispersionData& data, std::uint64_t seed,
-                              std::uint64_t sample, const DispersedTrajectory& nominal_values,
-                              DispersionWorkspace* ws, DispersedTrajectory* out) {
+Status fly_monte_carlo_sample(const DispersionNominal& nominal, const DispersionData& data,
+                              std::uint64_t seed, std::uint64_t sample,
+                              const DispersedTrajectory& nominal_values, DispersionWorkspace* ws,
+                              DispersedTrajectory* out) {
   *out = DispersedTrajectory{};
   Status status = build_monte_carlo_case(nominal, ws->nominal_prepared, data, seed, sample, ws);
   if (ok(status)) {
@@ -138,11 +138,13 @@ Status fly_monte_carlo_sample(const DispersionNominal& nominal, const Dispersion
     inputs.perturbation = &ws->perturbation;
     status = fly_trajectory(ws->mission, ws->prepared, inputs, &ws->dispersed);
   }
-  if (ok(status)) status = record_dispersed_trajectory(ws->mission, ws->prepared, ws->nominal, ws->dispersed, nullptr, out);
+  if (ok(status))
+    status = record_dispersed_trajectory(ws->mission, ws->prepared, ws->nominal, ws->dispersed, nullptr, out);
   out->status = status;
   if (!ok(status)) return status;
   for (int j = 0; j < kMaxStagingPoints; ++j) {
-    for (int i = 0; i < kStagingVariables; ++i) out->dispersions[j][i] = out->values[j][i] - nominal_values.values[j][i];
+    for (int i = 0; i < kStagingVariables; ++i)
+      out->dispersions[j][i] = out->values[j][i] - nominal_values.values[j][i];
   }
   for (int i = 0; i < kOrbitDispersionElements; ++i) {
     const double d = out->orbit[i] - nominal_values.orbit[i];

@@ -11,8 +11,8 @@ StateVector state_derivative(const Constants& constants, const StateVector& stat
   return state_derivative(constants, state, StateTrig(state), forces);
 }
 
-StateVector state_derivative(const Constants& constants, const StateVector& state,
-                             const StateTrig& trig, const AppliedForces& forces) {
+StateVector state_derivative(const Constants& constants, const StateVector& state, const StateTrig& trig,
+                             const AppliedForces& forces) {
   const double v = state[kStateV];
   const double r = state[kStateR];
   const double sg = trig.sin_gamma, cg = trig.cos_gamma;
@@ -34,12 +34,13 @@ StateVector state_derivative(const Constants& constants, const StateVector& stat
 
   StateVector d;
   // F = dV/dt
-  d[kStateV] = r_omega2 * (cl * cl * sg - sl * cl * cp * cg) + gravity_y +
-               (thrust.y() - forces.drag_lbf) * inv_m;
+  d[kStateV] =
+      r_omega2 * (cl * cl * sg - sl * cl * cp * cg) + gravity_y + (thrust.y() - forces.drag_lbf) * inv_m;
   // G = dgamma/dt
-  d[kStateGamma] = 2.0 * omega * cl * sp + (v / r) * cg +
-                   (gravity_z + r_omega2 * (cl * cl * cg + sl * cl * cp * sg) +
-                    (thrust.z() + forces.lift_lbf) * inv_m) / v;
+  d[kStateGamma] =
+      2.0 * omega * cl * sp + (v / r) * cg +
+      (gravity_z + r_omega2 * (cl * cl * cg + sl * cl * cp * sg) + (thrust.z() + forces.lift_lbf) * inv_m) /
+          v;
   // H = dpsi/dt
   if (forces.heading_hold) {
     d[kStatePsi] = 0.0;

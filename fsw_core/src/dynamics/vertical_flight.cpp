@@ -28,8 +28,9 @@ StateVector from_vertical_coordinates(const StateVector& y, double heading_rad) 
   StateVector x = y;
   x[kStateV] = std::hypot(up, horizontal);
   x[kStateGamma] = std::atan2(up, horizontal);
-  x[kStatePsi] = (horizontal > 0.0) ? heading_rad + std::remainder(std::atan2(east, north) - heading_rad, 2.0 * kPi)
-                                    : heading_rad;
+  x[kStatePsi] = (horizontal > 0.0)
+                     ? heading_rad + std::remainder(std::atan2(east, north) - heading_rad, 2.0 * kPi)
+                     : heading_rad;
   return x;
 }
 

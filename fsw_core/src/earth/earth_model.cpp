@@ -42,8 +42,8 @@ double oblate_radius_ft(const Constants& constants, double geocentric_latitude_r
   const double f = constants.inverse_flattening;
   // atan2 rather than the printed atan(tan) so the poles need no special case; the result is
   // the same reduced latitude eta everywhere else.
-  const double eta = std::atan2(f * std::sin(geocentric_latitude_rad),
-                                (f - 1.0) * std::cos(geocentric_latitude_rad));
+  const double eta =
+      std::atan2(f * std::sin(geocentric_latitude_rad), (f - 1.0) * std::cos(geocentric_latitude_rad));
   const double z = (f - 1.0) / f * std::sin(eta);
   const double x = std::cos(eta);
   return constants.earth_equatorial_radius_ft * std::sqrt(x * x + z * z);

@@ -10,9 +10,7 @@ Matrix3 frame_rotation_x(double angle_rad) {
   const double c = std::cos(angle_rad);
   const double s = std::sin(angle_rad);
   Matrix3 m;
-  m << 1.0, 0.0, 0.0,
-       0.0, c, s,
-       0.0, -s, c;
+  m << 1.0, 0.0, 0.0, 0.0, c, s, 0.0, -s, c;
   return m;
 }
 
@@ -20,9 +18,7 @@ Matrix3 frame_rotation_y(double angle_rad) {
   const double c = std::cos(angle_rad);
   const double s = std::sin(angle_rad);
   Matrix3 m;
-  m << c, 0.0, -s,
-       0.0, 1.0, 0.0,
-       s, 0.0, c;
+  m << c, 0.0, -s, 0.0, 1.0, 0.0, s, 0.0, c;
   return m;
 }
 
@@ -30,9 +26,7 @@ Matrix3 frame_rotation_z(double angle_rad) {
   const double c = std::cos(angle_rad);
   const double s = std::sin(angle_rad);
   Matrix3 m;
-  m << c, s, 0.0,
-       -s, c, 0.0,
-       0.0, 0.0, 1.0;
+  m << c, s, 0.0, -s, c, 0.0, 0.0, 0.0, 1.0;
   return m;
 }
 
@@ -55,9 +49,8 @@ Matrix3 inertial_to_local(const StateTrig& t) {
   const double m22 = t.sin_lambda;
   const double cg = t.cos_gamma, sg = t.sin_gamma;
   Matrix3 a;
-  a << m00, m01, m02,
-       cg * m10 + sg * m20, cg * m11 + sg * m21, cg * m12 + sg * m22,
-       -sg * m10 + cg * m20, -sg * m11 + cg * m21, -sg * m12 + cg * m22;
+  a << m00, m01, m02, cg * m10 + sg * m20, cg * m11 + sg * m21, cg * m12 + sg * m22, -sg * m10 + cg * m20,
+      -sg * m11 + cg * m21, -sg * m12 + cg * m22;
   return a;
 }
 
@@ -69,15 +62,13 @@ Matrix3 inertial_to_local(const StateVector& state) {
          frame_rotation_y(half_pi - state[kStateLambda]) * frame_rotation_z(state[kStateTau]);
 }
 
-Matrix3 geocentric_to_inertial(double azimuth_rad, double geocentric_latitude_rad,
-                               double longitude_rad) {
+Matrix3 geocentric_to_inertial(double azimuth_rad, double geocentric_latitude_rad, double longitude_rad) {
   const double sp = std::sin(azimuth_rad), cp = std::cos(azimuth_rad);
   const double sl = std::sin(geocentric_latitude_rad), cl = std::cos(geocentric_latitude_rad);
   const double st = std::sin(longitude_rad), ct = std::cos(longitude_rad);
   Matrix3 b;
-  b << sp * sl * ct - cp * st, -sp * st - cp * sl * ct, cl * ct,
-       cp * ct + sp * sl * st, sp * ct - cp * sl * st, cl * st,
-       -sp * cl, cp * cl, sl;
+  b << sp * sl * ct - cp * st, -sp * st - cp * sl * ct, cl * ct, cp * ct + sp * sl * st,
+      sp * ct - cp * sl * st, cl * st, -sp * cl, cp * cl, sl;
   return b;
 }
 
@@ -85,9 +76,8 @@ Matrix3 platform_to_geocentric(double azimuth_rad, double delta_lambda_rad) {
   const double sp = std::sin(azimuth_rad), cp = std::cos(azimuth_rad);
   const double sd = std::sin(delta_lambda_rad), cd = std::cos(delta_lambda_rad);
   Matrix3 b;
-  b << sp * sp * cd + cp * cp, sp * cp * (1.0 - cd), -sp * sd,
-       sp * cp * (1.0 - cd), sp * sp + cp * cp * cd, cp * sd,
-       sp * sd, -cp * sd, cd;
+  b << sp * sp * cd + cp * cp, sp * cp * (1.0 - cd), -sp * sd, sp * cp * (1.0 - cd), sp * sp + cp * cp * cd,
+      cp * sd, sp * sd, -cp * sd, cd;
   return b;
 }
 

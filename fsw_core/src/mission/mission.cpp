@@ -111,17 +111,17 @@ struct Check {
   }
 };
 
-#define TOLIP_CHECK(expression)              \
-  do {                                       \
-    const Status check_status_ = expression; \
+#define TOLIP_CHECK(expression)                   \
+  do {                                            \
+    const Status check_status_ = expression;      \
     if (!ok(check_status_)) return check_status_; \
   } while (false)
 
 // Every stored point finite and the abscissae strictly increasing (what finalize() checks); the
 // fault names the point. `x_field` and `y_field` name the table's columns.
 template <int N>
-Status table_shape(const Table<N>& table, const Check& check, int data_block, int stage_code, const char* x_field,
-                   const char* x_unit, const char* y_field, const char* y_unit) {
+Status table_shape(const Table<N>& table, const Check& check, int data_block, int stage_code,
+                   const char* x_field, const char* x_unit, const char* y_field, const char* y_unit) {
   for (int i = 0; i < table.size(); ++i) {
     TOLIP_CHECK(check.finite(table.x(i), data_block, stage_code, x_field, x_unit, i));
     TOLIP_CHECK(check.finite(table.y(i), data_block, stage_code, y_field, y_unit, i));
@@ -135,11 +135,12 @@ Status table_shape(const Table<N>& table, const Check& check, int data_block, in
 
 // A table that may be empty; when it has points it must be well formed and finalized.
 template <int N>
-Status optional_table(const Table<N>& table, const Check& check, int data_block, int stage_code, const char* x_field,
-                      const char* x_unit, const char* y_field, const char* y_unit) {
+Status optional_table(const Table<N>& table, const Check& check, int data_block, int stage_code,
+                      const char* x_field, const char* x_unit, const char* y_field, const char* y_unit) {
   if (table.empty()) return Status::kOk;
   TOLIP_CHECK(table_shape(table, check, data_block, stage_code, x_field, x_unit, y_field, y_unit));
-  return table.finalized() ? Status::kOk : check.fail(Status::kTableNotMonotonic, data_block, stage_code, x_field);
+  return table.finalized() ? Status::kOk
+                           : check.fail(Status::kTableNotMonotonic, data_block, stage_code, x_field);
 }
 
 // Data block 8 codes: 0-14 terminal (14 = heating), X5-X9 at the end of stage X = 1-9,
@@ -199,8 +200,8 @@ Status check_options(const Options& options, const Check& check) {
   TOLIP_CHECK(option(10, 0, 2));
   // IP(6) = 1 (6D after linearization) requires IP(7) = 1.
   if (ip[6] == 1 && ip[7] != 1) {
-    return check.fail(Status::kBodyDynamicsRelinearizationWithoutLinearization, 4, 0, "ip", 7, ip[7], "", exactly(1),
-                      "IP(7) = 1 (linearization) with IP(6) = 1");
+    return check.fail(Status::kBodyDynamicsRelinearizationWithoutLinearization, 4, 0, "ip", 7, ip[7], "",
+                      exactly(1), "IP(7) = 1 (linearization) with IP(6) = 1");
   }
   return Status::kOk;
 }
@@ -210,7 +211,8 @@ Status check_sequence(const Vehicle& vehicle, const Check& check) {
   const StageSequence& sequence = vehicle.sequence;
   if (sequence.count < 1 || sequence.count > kMaxStages) {
     return check.fail(Status::kStageSequenceInvalid, 5, 0, "sequence", -1, sequence.count, "",
-                      between(1, kMaxStages), "1-10 stage codes in the order 1 6 2 7 3 8 4 9 5 10, coasts optional");
+                      between(1, kMaxStages),
+                      "1-10 stage codes in the order 1 6 2 7 3 8 4 9 5 10, coasts optional");
   }
   for (int k = 0; k < sequence.count; ++k) {
     const int code = sequence.codes[k];
@@ -219,10 +221,11 @@ Status check_sequence(const Vehicle& vehicle, const Check& check) {
                         "1-5 (powered stages) or 6-10 (the coasts after them)");
     }
     if (!may_follow_in_sequence(k == 0 ? 0 : sequence.codes[k - 1], code)) {
-      return check.fail(Status::kStageSequenceInvalid, 5, code, "sequence", k, code, "", ValueRange{},
-                        k == 0 ? "stage 1 first"
-                               : "after stage n the next powered stage n+1 or the coast n+5, after coast n+5 stage n+1 "
-                                 "(the order 1 6 2 7 3 8 4 9 5 10, coasts optional)");
+      return check.fail(
+          Status::kStageSequenceInvalid, 5, code, "sequence", k, code, "", ValueRange{},
+          k == 0 ? "stage 1 first"
+                 : "after stage n the next powered stage n+1 or the coast n+5, after coast n+5 stage n+1 "
+                   "(the order 1 6 2 7 3 8 4 9 5 10, coasts optional)");
     }
   }
   for (int code = 1; code <= kMaxStages; ++code) {
@@ -264,25 +267,27 @@ struct NamedWord {
 // ---- data block 10 ------------------------------------------------------------------------------
 Status check_constants(const Constants& c, const Check& check) {
   const NamedWord words[] = {{c.earth_rotation_rate_rad_s, "earth_rotation_rate_rad_s", "rad/s"},
-                        {c.gravitational_parameter_ft3_s2, "gravitational_parameter_ft3_s2", "ft^3/s^2"},
-                        {c.earth_equatorial_radius_ft, "earth_equatorial_radius_ft", "ft"},
-                        {c.gas_constant_ft2_s2_R, "gas_constant_ft2_s2_R", "ft^2/(s^2 R)"},
-                        {c.g0_ft_s2, "g0_ft_s2", "ft/s^2"},
-                        {c.sea_level_pressure_lbf_ft2, "sea_level_pressure_lbf_ft2", "lbf/ft^2"},
-                        {c.haero_ft, "haero_ft", "ft"},
-                        {c.time_epsilon_s, "time_epsilon_s", "s"},
-                        {c.j2, "j2", ""},
-                        {c.inverse_flattening, "inverse_flattening", ""},
-                        {c.ct1_13, "ct1_13", ""}};
+                             {c.gravitational_parameter_ft3_s2, "gravitational_parameter_ft3_s2", "ft^3/s^2"},
+                             {c.earth_equatorial_radius_ft, "earth_equatorial_radius_ft", "ft"},
+                             {c.gas_constant_ft2_s2_R, "gas_constant_ft2_s2_R", "ft^2/(s^2 R)"},
+                             {c.g0_ft_s2, "g0_ft_s2", "ft/s^2"},
+                             {c.sea_level_pressure_lbf_ft2, "sea_level_pressure_lbf_ft2", "lbf/ft^2"},
+                             {c.haero_ft, "haero_ft", "ft"},
+                             {c.time_epsilon_s, "time_epsilon_s", "s"},
+                             {c.j2, "j2", ""},
+                             {c.inverse_flattening, "inverse_flattening", ""},
+                             {c.ct1_13, "ct1_13", ""}};
   for (const NamedWord& word : words) TOLIP_CHECK(check.finite(word.value, 10, 0, word.field, word.unit));
   const Status bad = Status::kConstantOutOfRange;
-  TOLIP_CHECK(check.range(c.gravitational_parameter_ft3_s2, above(0.0), bad, 10, 0, "gravitational_parameter_ft3_s2",
-                          "ft^3/s^2"));
-  TOLIP_CHECK(check.range(c.earth_equatorial_radius_ft, above(0.0), bad, 10, 0, "earth_equatorial_radius_ft", "ft"));
-  TOLIP_CHECK(check.range(c.gas_constant_ft2_s2_R, above(0.0), bad, 10, 0, "gas_constant_ft2_s2_R", "ft^2/(s^2 R)"));
+  TOLIP_CHECK(check.range(c.gravitational_parameter_ft3_s2, above(0.0), bad, 10, 0,
+                          "gravitational_parameter_ft3_s2", "ft^3/s^2"));
+  TOLIP_CHECK(
+      check.range(c.earth_equatorial_radius_ft, above(0.0), bad, 10, 0, "earth_equatorial_radius_ft", "ft"));
+  TOLIP_CHECK(
+      check.range(c.gas_constant_ft2_s2_R, above(0.0), bad, 10, 0, "gas_constant_ft2_s2_R", "ft^2/(s^2 R)"));
   TOLIP_CHECK(check.range(c.g0_ft_s2, above(0.0), bad, 10, 0, "g0_ft_s2", "ft/s^2"));
-  TOLIP_CHECK(check.range(c.sea_level_pressure_lbf_ft2, at_least(0.0), bad, 10, 0, "sea_level_pressure_lbf_ft2",
-                          "lbf/ft^2"));
+  TOLIP_CHECK(check.range(c.sea_level_pressure_lbf_ft2, at_least(0.0), bad, 10, 0,
+                          "sea_level_pressure_lbf_ft2", "lbf/ft^2"));
   TOLIP_CHECK(check.range(c.haero_ft, at_least(0.0), bad, 10, 0, "haero_ft", "ft"));
   TOLIP_CHECK(check.range(c.time_epsilon_s, above(0.0), bad, 10, 0, "time_epsilon_s", "s"));
   // CT1(12) = 0 is the spherical Earth (no flattening); any other value is 1 / flattening.
@@ -296,10 +301,12 @@ Status check_constants(const Constants& c, const Check& check) {
 // ---- data blocks 11-14 --------------------------------------------------------------------------
 Status check_atmosphere(const AtmosphereTable& a, const Check& check) {
   for (int i = 0; i < kAtmosphereLayers; ++i) {
-    TOLIP_CHECK(check.finite(a.base_geopotential_altitude_ft[i], 11, 0, "base_geopotential_altitude_ft", "ft", i));
+    TOLIP_CHECK(
+        check.finite(a.base_geopotential_altitude_ft[i], 11, 0, "base_geopotential_altitude_ft", "ft", i));
   }
   for (int i = 0; i < kAtmosphereLayers; ++i) {
-    TOLIP_CHECK(check.finite(a.base_molecular_temperature_R[i], 12, 0, "base_molecular_temperature_R", "R", i));
+    TOLIP_CHECK(
+        check.finite(a.base_molecular_temperature_R[i], 12, 0, "base_molecular_temperature_R", "R", i));
   }
   for (int i = 0; i < kAtmosphereLayers; ++i) {
     TOLIP_CHECK(check.finite(a.lapse_rate_R_per_ft[i], 13, 0, "lapse_rate_R_per_ft", "R/ft", i));
@@ -308,16 +315,17 @@ Status check_atmosphere(const AtmosphereTable& a, const Check& check) {
     TOLIP_CHECK(check.finite(a.base_density_slug_ft3[i], 14, 0, "base_density_slug_ft3", "slug/ft^3", i));
   }
   const Status bad = Status::kAtmosphereTableInvalid;
-  TOLIP_CHECK(check.range(a.base_geopotential_altitude_ft[0], exactly(0.0), bad, 11, 0, "base_geopotential_altitude_ft",
-                          "ft", 0));
+  TOLIP_CHECK(check.range(a.base_geopotential_altitude_ft[0], exactly(0.0), bad, 11, 0,
+                          "base_geopotential_altitude_ft", "ft", 0));
   for (int i = 1; i < kAtmosphereLayers; ++i) {
-    TOLIP_CHECK(check.range(a.base_geopotential_altitude_ft[i], above(a.base_geopotential_altitude_ft[i - 1]), bad, 11,
-                            0, "base_geopotential_altitude_ft", "ft", i));
+    TOLIP_CHECK(check.range(a.base_geopotential_altitude_ft[i], above(a.base_geopotential_altitude_ft[i - 1]),
+                            bad, 11, 0, "base_geopotential_altitude_ft", "ft", i));
   }
   for (int i = 0; i < kAtmosphereLayers; ++i) {
-    TOLIP_CHECK(check.range(a.base_molecular_temperature_R[i], above(0.0), bad, 12, 0, "base_molecular_temperature_R",
-                            "R", i));
-    TOLIP_CHECK(check.range(a.base_density_slug_ft3[i], above(0.0), bad, 14, 0, "base_density_slug_ft3", "slug/ft^3", i));
+    TOLIP_CHECK(check.range(a.base_molecular_temperature_R[i], above(0.0), bad, 12, 0,
+                            "base_molecular_temperature_R", "R", i));
+    TOLIP_CHECK(check.range(a.base_density_slug_ft3[i], above(0.0), bad, 14, 0, "base_density_slug_ft3",
+                            "slug/ft^3", i));
   }
   return Status::kOk;
 }
@@ -335,7 +343,8 @@ Status check_stage(const StageData& stage, int code, double time_epsilon_s, cons
     return check.fail(Status::kZeroLengthCoast, 16, code, "duration_s", -1, 0.0, "s", above(0.0),
                       "> 0, or leave the coast out of the stage sequence (data block 5)");
   }
-  TOLIP_CHECK(check.range(stage.duration_s, above(0.0), Status::kNonPositiveDuration, 16, code, "duration_s", "s"));
+  TOLIP_CHECK(
+      check.range(stage.duration_s, above(0.0), Status::kNonPositiveDuration, 16, code, "duration_s", "s"));
   TOLIP_CHECK(check.range(stage.integration_steps, at_least(1), Status::kNonPositiveStepCount, 16, code,
                           "integration_steps", ""));
   TOLIP_CHECK(check.range(stage.jettison_weight_lb, at_least(0.0), Status::kNegativeWeight, 39, code,
@@ -345,18 +354,20 @@ Status check_stage(const StageData& stage, int code, double time_epsilon_s, cons
   TOLIP_CHECK(check.range(stage.nozzle_exit_area_ft2, at_least(0.0), Status::kNegativeArea, 39, code,
                           "nozzle_exit_area_ft2", "ft^2"));
 
-  TOLIP_CHECK(optional_table(stage.drag_coefficient, check, 31, code, "drag_mach", "", "drag_coefficient", ""));
+  TOLIP_CHECK(
+      optional_table(stage.drag_coefficient, check, 31, code, "drag_mach", "", "drag_coefficient", ""));
   if (!stage.drag_coefficient.empty() && !(stage.reference_area_ft2 > 0.0)) {
-    return check.fail(Status::kReferenceAreaMissing, 39, code, "reference_area_ft2", -1, stage.reference_area_ft2, "ft^2",
-                      above(0.0), "> 0 for a stage with a drag table (data block 31)");
+    return check.fail(Status::kReferenceAreaMissing, 39, code, "reference_area_ft2", -1,
+                      stage.reference_area_ft2, "ft^2", above(0.0),
+                      "> 0 for a stage with a drag table (data block 31)");
   }
 
   if (is_coast_stage(code)) {
-    TOLIP_CHECK(check.range(stage.integration_steps, at_most(kMaxCoastSteps), Status::kTooManyCoastSteps, 16, code,
-                            "integration_steps", ""));
+    TOLIP_CHECK(check.range(stage.integration_steps, at_most(kMaxCoastSteps), Status::kTooManyCoastSteps, 16,
+                            code, "integration_steps", ""));
     if (!stage.vacuum_thrust_lbf.empty()) {
-      return check.fail(Status::kPropulsionInCoast, 30, code, "vacuum_thrust_lbf", -1, stage.vacuum_thrust_lbf.size(),
-                        "points", exactly(0), "no thrust table in a coast");
+      return check.fail(Status::kPropulsionInCoast, 30, code, "vacuum_thrust_lbf", -1,
+                        stage.vacuum_thrust_lbf.size(), "points", exactly(0), "no thrust table in a coast");
     }
     TOLIP_CHECK(check.range(stage.nozzle_exit_area_ft2, exactly(0.0), Status::kPropulsionInCoast, 39, code,
                             "nozzle_exit_area_ft2", "ft^2"));
@@ -375,27 +386,29 @@ Status check_stage(const StageData& stage, int code, double time_epsilon_s, cons
   TOLIP_CHECK(table_shape(thrust, check, 30, code, "vacuum_thrust_time_s", "s", "vacuum_thrust_lbf", "lbf"));
   if (!thrust.finalized()) return check.fail(Status::kMissingThrustTable, 30, code, "vacuum_thrust_lbf");
   if (weight.empty()) return check.fail(Status::kMissingWeightTable, 38, code, "consumable_weight_lb");
-  TOLIP_CHECK(table_shape(weight, check, 38, code, "consumable_weight_time_s", "s", "consumable_weight_lb", "lb"));
+  TOLIP_CHECK(
+      table_shape(weight, check, 38, code, "consumable_weight_time_s", "s", "consumable_weight_lb", "lb"));
   if (!weight.finalized()) {
     return check.fail(Status::kMissingWeightTable, 38, code, "consumable_weight_lb");
   }
-  TOLIP_CHECK(check.range(thrust.first_x(), at_least(0.0), Status::kTableTimeNegative, 30, code, "vacuum_thrust_time_s",
-                          "s", 0));
+  TOLIP_CHECK(check.range(thrust.first_x(), at_least(0.0), Status::kTableTimeNegative, 30, code,
+                          "vacuum_thrust_time_s", "s", 0));
   TOLIP_CHECK(check.range(weight.first_x(), at_least(0.0), Status::kTableTimeNegative, 38, code,
                           "consumable_weight_time_s", "s", 0));
   for (int i = 0; i < thrust.size(); ++i) {
-    TOLIP_CHECK(check.range(thrust.y(i), at_least(0.0), Status::kNegativeThrust, 30, code, "vacuum_thrust_lbf", "lbf",
-                            i));
+    TOLIP_CHECK(check.range(thrust.y(i), at_least(0.0), Status::kNegativeThrust, 30, code,
+                            "vacuum_thrust_lbf", "lbf", i));
   }
   for (int i = 0; i < weight.size(); ++i) {
-    TOLIP_CHECK(check.range(weight.y(i), at_least(0.0), Status::kNegativeWeight, 38, code, "consumable_weight_lb", "lb",
-                            i));
+    TOLIP_CHECK(check.range(weight.y(i), at_least(0.0), Status::kNegativeWeight, 38, code,
+                            "consumable_weight_lb", "lb", i));
   }
   // Propellant is consumed, never made: the weight remaining never increases.
   for (int i = 1; i < weight.size(); ++i) {
     if (weight.y(i) > weight.y(i - 1)) {
-      return check.fail(Status::kConsumableWeightIncreases, 38, code, "consumable_weight_lb", i, weight.y(i), "lb",
-                        at_most(weight.y(i - 1)), "no more than the weight remaining at the point before");
+      return check.fail(Status::kConsumableWeightIncreases, 38, code, "consumable_weight_lb", i, weight.y(i),
+                        "lb", at_most(weight.y(i - 1)),
+                        "no more than the weight remaining at the point before");
     }
   }
   if (std::fabs(thrust.last_x() - weight.last_x()) > time_epsilon_s) {
@@ -406,13 +419,13 @@ Status check_stage(const StageData& stage, int code, double time_epsilon_s, cons
   bool thrusts = false;
   for (int i = 0; i < thrust.size(); ++i) thrusts = thrusts || thrust.y(i) > 0.0;
   if (thrusts && !(weight.y(0) > 0.0)) {
-    return check.fail(Status::kThrustWithoutPropellant, 38, code, "consumable_weight_lb", 0, weight.y(0), "lb",
-                      above(0.0), "propellant for the thrust of data block 30");
+    return check.fail(Status::kThrustWithoutPropellant, 38, code, "consumable_weight_lb", 0, weight.y(0),
+                      "lb", above(0.0), "propellant for the thrust of data block 30");
   }
   for (int i = 0; i + 1 < thrust.size(); ++i) {
     if (thrust.y(i) > 0.0 && !(weight(thrust.x(i)) > 0.0)) {
-      return check.fail(Status::kThrustWithoutPropellant, 30, code, "vacuum_thrust_lbf", i, thrust.y(i), "lbf",
-                        exactly(0.0), "no thrust once the consumable weight of data block 38 is gone");
+      return check.fail(Status::kThrustWithoutPropellant, 30, code, "vacuum_thrust_lbf", i, thrust.y(i),
+                        "lbf", exactly(0.0), "no thrust once the consumable weight of data block 38 is gone");
     }
   }
   if (std::fabs(stage.duration_s - thrust.last_x()) > time_epsilon_s) {
@@ -480,8 +493,8 @@ Status check_vehicle(const Vehicle& vehicle, const Constants& constants, const C
   // The payload rides in the jettison weight of the last powered stage (Sec. 14).
   const int last_powered = last_powered_stage(sequence);
   TOLIP_CHECK(check.finite(vehicle.payload_lb, 39, last_powered, "payload_lb", "lb"));
-  TOLIP_CHECK(check.range(vehicle.payload_lb, at_least(0.0), Status::kNegativeWeight, 39, last_powered, "payload_lb",
-                          "lb"));
+  TOLIP_CHECK(check.range(vehicle.payload_lb, at_least(0.0), Status::kNegativeWeight, 39, last_powered,
+                          "payload_lb", "lb"));
   return Status::kOk;
 }
 
@@ -500,20 +513,23 @@ Status check_launch(const LaunchConditions& l, const Vehicle& vehicle, const Che
   const Status bad = Status::kLaunchConditionOutOfRange;
   // The integration starts from the lift-off's end state: at V = 0 (no lift-off) the equations of
   // motion are singular, so the closed-form lift-off must last a while.
-  TOLIP_CHECK(check.range(l.liftoff_duration_s, above(0.0), Status::kLiftoffNotPositive, 20, 0, "liftoff_duration_s",
-                          "s"));
+  TOLIP_CHECK(check.range(l.liftoff_duration_s, above(0.0), Status::kLiftoffNotPositive, 20, 0,
+                          "liftoff_duration_s", "s"));
   const StageData& stage1 = vehicle.stages[stage_index(1)];
   TOLIP_CHECK(check.range(l.liftoff_duration_s, below(above(0.0), stage1.duration_s),
                           Status::kLiftoffLongerThanStage1, 20, 1, "liftoff_duration_s", "s"));
-  TOLIP_CHECK(check.range(l.altitude_ft, between(kLowestLaunchAltitude_ft, kHighestLaunchAltitude_ft), bad, 21, 0,
-                          "altitude_ft", "ft"));
-  TOLIP_CHECK(check.range(l.longitude_rad, between(-kFullTurn_rad, kFullTurn_rad), bad, 21, 0, "longitude_rad", "rad"));
+  TOLIP_CHECK(check.range(l.altitude_ft, between(kLowestLaunchAltitude_ft, kHighestLaunchAltitude_ft), bad,
+                          21, 0, "altitude_ft", "ft"));
+  TOLIP_CHECK(check.range(l.longitude_rad, between(-kFullTurn_rad, kFullTurn_rad), bad, 21, 0,
+                          "longitude_rad", "rad"));
   TOLIP_CHECK(check.range(l.geocentric_latitude_rad, between(-0.5 * kPi, 0.5 * kPi), bad, 21, 0,
                           "geocentric_latitude_rad", "rad"));
-  TOLIP_CHECK(check.range(l.velocity_ft_s, exactly(0.0), Status::kInitialConditionsInvalid, 21, 0, "velocity_ft_s",
-                          "ft/s"));
-  TOLIP_CHECK(check.range(l.azimuth_rad, between(-kFullTurn_rad, kFullTurn_rad), bad, 21, 0, "azimuth_rad", "rad"));
-  TOLIP_CHECK(check.range(l.flight_path_angle_rad, between(0.5 * kPi - kAngleTolerance_rad, 0.5 * kPi + kAngleTolerance_rad),
+  TOLIP_CHECK(check.range(l.velocity_ft_s, exactly(0.0), Status::kInitialConditionsInvalid, 21, 0,
+                          "velocity_ft_s", "ft/s"));
+  TOLIP_CHECK(
+      check.range(l.azimuth_rad, between(-kFullTurn_rad, kFullTurn_rad), bad, 21, 0, "azimuth_rad", "rad"));
+  TOLIP_CHECK(check.range(l.flight_path_angle_rad,
+                          between(0.5 * kPi - kAngleTolerance_rad, 0.5 * kPi + kAngleTolerance_rad),
                           Status::kInitialConditionsInvalid, 21, 0, "flight_path_angle_rad", "rad"));
   TOLIP_CHECK(check.range(l.heading_hold_until_s, at_least(0.0), bad, 21, 0, "heading_hold_until_s", "s"));
   return Status::kOk;
@@ -528,53 +544,59 @@ Status check_control(const ControlConstraints& c, const Options& options, const 
   TOLIP_CHECK(check.finite(c.min_pitch_rate_rad_s, 22, 0, "min_pitch_rate_rad_s", "rad/s"));
   TOLIP_CHECK(check.finite(c.min_pitch_rate_change_rad_s, 22, 0, "min_pitch_rate_change_rad_s", "rad/s"));
   const Status bad = Status::kPitchRateLimitNegative;
-  TOLIP_CHECK(check.range(c.max_pitch_rate_rad_s, at_least(0.0), bad, 22, 0, "max_pitch_rate_rad_s", "rad/s"));
-  TOLIP_CHECK(check.range(c.min_pitch_rate_rad_s, at_least(0.0), bad, 22, 0, "min_pitch_rate_rad_s", "rad/s"));
-  TOLIP_CHECK(check.range(c.min_pitch_rate_change_rad_s, at_least(0.0), bad, 22, 0, "min_pitch_rate_change_rad_s",
-                          "rad/s"));
+  TOLIP_CHECK(
+      check.range(c.max_pitch_rate_rad_s, at_least(0.0), bad, 22, 0, "max_pitch_rate_rad_s", "rad/s"));
+  TOLIP_CHECK(
+      check.range(c.min_pitch_rate_rad_s, at_least(0.0), bad, 22, 0, "min_pitch_rate_rad_s", "rad/s"));
+  TOLIP_CHECK(check.range(c.min_pitch_rate_change_rad_s, at_least(0.0), bad, 22, 0,
+                          "min_pitch_rate_change_rad_s", "rad/s"));
   if (options.zero_alpha_window()) {
     // IP(11): the alpha = 0 window lies inside stage 1 (times from launch).
     const double stage1_end_s = vehicle.stages[stage_index(1)].duration_s + time_epsilon_s;
-    TOLIP_CHECK(check.range(c.zero_alpha_start_s, at_least(0.0), Status::kZeroAlphaWindowInvalid, 22, 0, "zero_alpha_start_s", "s"));
+    TOLIP_CHECK(check.range(c.zero_alpha_start_s, at_least(0.0), Status::kZeroAlphaWindowInvalid, 22, 0,
+                            "zero_alpha_start_s", "s"));
     if (!(c.zero_alpha_end_s > c.zero_alpha_start_s) || c.zero_alpha_end_s > stage1_end_s) {
       ValueRange window = above(c.zero_alpha_start_s);
       window.has_high = true;
       window.high = stage1_end_s;
-      return check.fail(Status::kZeroAlphaWindowInvalid, 22, 1, "zero_alpha_end_s", -1, c.zero_alpha_end_s, "s", window,
-                        "after zero_alpha_start_s, by the end of stage 1 within CT1(10)");
+      return check.fail(Status::kZeroAlphaWindowInvalid, 22, 1, "zero_alpha_end_s", -1, c.zero_alpha_end_s,
+                        "s", window, "after zero_alpha_start_s, by the end of stage 1 within CT1(10)");
     }
   }
   return Status::kOk;
 }
 
 // ---- data block 17 ------------------------------------------------------------------------------
-Status check_misc(const MiscellaneousData& m, const AdjustableParameters& adjustable,
-                  const Check& check) {
+Status check_misc(const MiscellaneousData& m, const AdjustableParameters& adjustable, const Check& check) {
   const NamedWord words[] = {{m.stage4_theta_rad, "stage4_theta_rad", "rad"},
-                        {m.stage4_chi_rad, "stage4_chi_rad", "rad"},
-                        {m.nose_radius_ft, "nose_radius_ft", "ft"},
-                        {m.gyro_uncage_s_before_launch, "gyro_uncage_s_before_launch", "s"},
-                        {m.stage5_theta_rad, "stage5_theta_rad", "rad"},
-                        {m.stage5_chi_rad, "stage5_chi_rad", "rad"},
-                        {m.payload_weighting_factor, "payload_weighting_factor", ""},
-                        {m.coast_change_limit_s, "coast_change_limit_s", "s"},
-                        {m.minimum_coast_s, "minimum_coast_s", "s"}};
+                             {m.stage4_chi_rad, "stage4_chi_rad", "rad"},
+                             {m.nose_radius_ft, "nose_radius_ft", "ft"},
+                             {m.gyro_uncage_s_before_launch, "gyro_uncage_s_before_launch", "s"},
+                             {m.stage5_theta_rad, "stage5_theta_rad", "rad"},
+                             {m.stage5_chi_rad, "stage5_chi_rad", "rad"},
+                             {m.payload_weighting_factor, "payload_weighting_factor", ""},
+                             {m.coast_change_limit_s, "coast_change_limit_s", "s"},
+                             {m.minimum_coast_s, "minimum_coast_s", "s"}};
   for (const NamedWord& word : words) TOLIP_CHECK(check.finite(word.value, 17, 0, word.field, word.unit));
   const Status bad = Status::kMiscellaneousDataOutOfRange;
   // The spun-stage attitudes are angles: within one turn either way.
   const int angles[] = {0, 1, 4, 5};
   for (int i : angles) {
-    TOLIP_CHECK(check.range(words[i].value, between(-kFullTurn_rad, kFullTurn_rad), bad, 17, 0, words[i].field, "rad"));
+    TOLIP_CHECK(check.range(words[i].value, between(-kFullTurn_rad, kFullTurn_rad), bad, 17, 0,
+                            words[i].field, "rad"));
   }
   TOLIP_CHECK(check.range(m.nose_radius_ft, at_least(0.0), bad, 17, 0, "nose_radius_ft", "ft"));
-  TOLIP_CHECK(check.range(m.gyro_uncage_s_before_launch, at_least(0.0), bad, 17, 0, "gyro_uncage_s_before_launch", "s"));
-  TOLIP_CHECK(check.range(m.payload_weighting_factor, above(0.0), bad, 17, 0, "payload_weighting_factor", ""));
+  TOLIP_CHECK(check.range(m.gyro_uncage_s_before_launch, at_least(0.0), bad, 17, 0,
+                          "gyro_uncage_s_before_launch", "s"));
+  TOLIP_CHECK(
+      check.range(m.payload_weighting_factor, above(0.0), bad, 17, 0, "payload_weighting_factor", ""));
   TOLIP_CHECK(check.range(m.coast_change_limit_s, at_least(0.0), bad, 17, 0, "coast_change_limit_s", "s"));
   TOLIP_CHECK(check.range(m.minimum_coast_s, at_least(0.0), bad, 17, 0, "minimum_coast_s", "s"));
   // DA2(16) "must be input if any coast is used as an adjustable parameter".
   for (int i = 0; i < adjustable.count && i < kMaxAdjustableParameters; ++i) {
     if (coast_adjustable_code(adjustable.codes[i]) && !(m.coast_change_limit_s > 0.0)) {
-      return check.fail(Status::kCoastChangeLimitMissing, 17, 0, "coast_change_limit_s", -1, m.coast_change_limit_s, "s", above(0.0),
+      return check.fail(Status::kCoastChangeLimitMissing, 17, 0, "coast_change_limit_s", -1,
+                        m.coast_change_limit_s, "s", above(0.0),
                         "> 0 when a coast is an adjustable parameter (data block 6)");
     }
   }
@@ -588,13 +610,15 @@ Status check_constraints(const ConstraintList& c, const Options& options, const 
                          const Check& check) {
   if (c.count > kMaxConstraints) return check.fail(Status::kTooManyConstraints, 8, 0, "count");
   TOLIP_CHECK(check.range(c.count, at_least(1), Status::kNoPayoffConstraint, 8, 0, "count", ""));
-  for (int i = 0; i < kMaxConstraints + 1; ++i) TOLIP_CHECK(check.finite(c.desired[i], 19, 0, "desired", "", i));
+  for (int i = 0; i < kMaxConstraints + 1; ++i)
+    TOLIP_CHECK(check.finite(c.desired[i], 19, 0, "desired", "", i));
   for (int j = 0; j < kMaxConstraints; ++j) {
     TOLIP_CHECK(check.finite(c.deadband_optimization[j], 29, 0, "deadband_optimization", "", j + 1));
     TOLIP_CHECK(check.finite(c.deadband_linearization[j], 29, 0, "deadband_linearization", "", j + 1));
   }
   constexpr const char* kKnownCodes =
-      "a known code: 0-13 (terminal; 0 payload as the payoff only), 14 (heating, last), X5-X9 (at the end of stage X "
+      "a known code: 0-13 (terminal; 0 payload as the payoff only), 14 (heating, last), X5-X9 (at the end of "
+      "stage X "
       "of the sequence) or 100-102";
   for (int i = 0; i < c.count; ++i) {
     const int code = c.codes[i];
@@ -627,13 +651,15 @@ Status check_constraints(const ConstraintList& c, const Options& options, const 
   // The heating code 14 follows the counted list exactly when IP(2) = 1.
   const bool heating_listed = c.count < kMaxConstraints + 1 && c.codes[c.count] == 14;
   if (options.heating_constraint() != heating_listed) {
-    return check.fail(Status::kHeatingCodeMismatch, 8, 0, "codes", c.count, c.codes[c.count], "", ValueRange{},
+    return check.fail(Status::kHeatingCodeMismatch, 8, 0, "codes", c.count, c.codes[c.count], "",
+                      ValueRange{},
                       "the heating code 14 after the counted constraints exactly when IP(2) = 1");
   }
   // The optimizer appends the heating constraint to the counted list when it activates (Sec. 13),
   // so with it the counted list holds at most 12.
   if (heating_listed && c.count + 1 > kMaxConstraints) {
-    return check.fail(Status::kTooManyConstraints, 8, 0, "count", -1, c.count, "", at_most(kMaxConstraints - 1),
+    return check.fail(Status::kTooManyConstraints, 8, 0, "count", -1, c.count, "",
+                      at_most(kMaxConstraints - 1),
                       "at most 12 counted constraints with the heating constraint (13 in all)");
   }
   // Every constraint after the payoff is scaled by its optimization deadband (it must be > 0);
@@ -645,8 +671,8 @@ Status check_constraints(const ConstraintList& c, const Options& options, const 
                             "deadband_optimization", "", j + 1));
     const int code = c.codes[j + 1];
     const bool fitted = options.linearization() && j + 1 < c.count && code != 10 && code != 12;
-    TOLIP_CHECK(check.range(c.deadband_linearization[j], fitted ? above(0.0) : at_least(0.0), Status::kDeadbandNotPositive,
-                            29, 0, "deadband_linearization", "", j + 1));
+    TOLIP_CHECK(check.range(c.deadband_linearization[j], fitted ? above(0.0) : at_least(0.0),
+                            Status::kDeadbandNotPositive, 29, 0, "deadband_linearization", "", j + 1));
   }
   return Status::kOk;
 }
@@ -658,10 +684,12 @@ Status check_adjustable(const AdjustableParameters& a, const Options& options, c
     return check.fail(Status::kTooManyAdjustableParameters, 6, 0, "count");
   }
   TOLIP_CHECK(check.range(a.count, at_least(0), Status::kNegativeCount, 6, 0, "count", ""));
-  for (int i = 0; i < kMaxAdjustableParameters; ++i) TOLIP_CHECK(check.finite(a.weights[i], 27, 0, "weights", "", i));
+  for (int i = 0; i < kMaxAdjustableParameters; ++i)
+    TOLIP_CHECK(check.finite(a.weights[i], 27, 0, "weights", "", i));
   for (int i = 0; i < a.count; ++i) {
     const int code = a.codes[i];
-    TOLIP_CHECK(check.range(code, between(1, 11), Status::kUnknownAdjustableParameterCode, 6, 0, "codes", "", i));
+    TOLIP_CHECK(
+        check.range(code, between(1, 11), Status::kUnknownAdjustableParameterCode, 6, 0, "codes", "", i));
     for (int j = 0; j < i; ++j) {
       if (a.codes[j] == code) {
         return check.fail(Status::kDuplicateAdjustableParameterCode, 6, 0, "codes", i, code, "", ValueRange{},
@@ -679,20 +707,25 @@ Status check_adjustable(const AdjustableParameters& a, const Options& options, c
     // spun apart from it (IP(9) = 2). A continuous stage's attitude is its pitch program.
     AdjustableParameter parameter = AdjustableParameter::kStage4Theta;
     decode_adjustable_parameter(code, &parameter);
-    const bool stage4_attitude = parameter == AdjustableParameter::kStage4Theta || parameter == AdjustableParameter::kStage4Chi;
-    const bool stage5_attitude = parameter == AdjustableParameter::kStage5Theta || parameter == AdjustableParameter::kStage5Chi;
+    const bool stage4_attitude =
+        parameter == AdjustableParameter::kStage4Theta || parameter == AdjustableParameter::kStage4Chi;
+    const bool stage5_attitude =
+        parameter == AdjustableParameter::kStage5Theta || parameter == AdjustableParameter::kStage5Chi;
     if (stage4_attitude || stage5_attitude) {
       const int stage = stage4_attitude ? 4 : 5;
-      const bool own = stage4_attitude ? options.stage_is_spun(4) : options.stage_is_spun(5) && !options.stage_is_spun(4);
+      const bool own =
+          stage4_attitude ? options.stage_is_spun(4) : options.stage_is_spun(5) && !options.stage_is_spun(4);
       if (!vehicle.stages[stage_index(stage)].in_sequence || !own) {
         return check.fail(Status::kAdjustableAttitudeNotSpun, 6, stage, "codes", i, code, "", ValueRange{},
-                          stage4_attitude ? "codes 1, 2 (spun stage-4 attitudes) only with stage 4 flown and "
-                                            "IP(9) = 1"
-                                          : "codes 8, 9 (spun stage-5 attitudes) only with stage 5 flown and "
-                                            "IP(9) = 2 (with IP(9) = 1 stage 5 flies stage 4's attitudes: codes 1, 2)");
+                          stage4_attitude
+                              ? "codes 1, 2 (spun stage-4 attitudes) only with stage 4 flown and "
+                                "IP(9) = 1"
+                              : "codes 8, 9 (spun stage-5 attitudes) only with stage 5 flown and "
+                                "IP(9) = 2 (with IP(9) = 1 stage 5 flies stage 4's attitudes: codes 1, 2)");
       }
     }
-    TOLIP_CHECK(check.range(a.weights[i], above(0.0), Status::kWeightingFactorNotPositive, 27, 0, "weights", "", i));
+    TOLIP_CHECK(
+        check.range(a.weights[i], above(0.0), Status::kWeightingFactorNotPositive, 27, 0, "weights", "", i));
   }
   return Status::kOk;
 }
@@ -713,27 +746,30 @@ Status check_linearization(const LinearizationData& l, const Options& options, c
   for (int i = 0; i < kMaxLinearSegments + 1; ++i) {
     TOLIP_CHECK(check.finite(l.coded_start_times[i], 18, 0, "coded_start_times", "", i));
   }
-  for (int i = 0; i < kMaxLinearSegments; ++i) TOLIP_CHECK(check.finite(l.segment_weights[i], 26, 0, "segment_weights", "", i));
+  for (int i = 0; i < kMaxLinearSegments; ++i)
+    TOLIP_CHECK(check.finite(l.segment_weights[i], 26, 0, "segment_weights", "", i));
   int times = 0;
   while (times < kMaxLinearSegments + 1 && l.coded_start_times[times] != 0.0) ++times;
   for (int i = times; i < kMaxLinearSegments + 1; ++i) {
     if (l.coded_start_times[i] != 0.0) {
-      return check.fail(Status::kCodedTimeAfterUnusedEntry, 18, 0, "coded_start_times", i, l.coded_start_times[i], "",
-                        exactly(0.0), "0 after the first unused entry");
+      return check.fail(Status::kCodedTimeAfterUnusedEntry, 18, 0, "coded_start_times", i,
+                        l.coded_start_times[i], "", exactly(0.0), "0 after the first unused entry");
     }
   }
   for (int i = 0; i < times; ++i) {
     const double coded = l.coded_start_times[i];
     const double stage = std::floor(coded / 100.0);
-    const int code = stage >= 1.0 && stage <= static_cast<double>(kMaxPoweredStages) ? static_cast<int>(stage) : 0;
+    const int code =
+        stage >= 1.0 && stage <= static_cast<double>(kMaxPoweredStages) ? static_cast<int>(stage) : 0;
     if (code == 0 || !vehicle.stages[stage_index(code)].in_sequence) {
-      return check.fail(Status::kCodedTimeStageInvalid, 18, 0, "coded_start_times", i, coded, "", ValueRange{},
-                        "100 n + t with n a powered stage of the sequence");
+      return check.fail(Status::kCodedTimeStageInvalid, 18, 0, "coded_start_times", i, coded, "",
+                        ValueRange{}, "100 n + t with n a powered stage of the sequence");
     }
     // Segments belong to the stages that fly the pitch program (IP(9)): a spun stage holds its
     // data block 17 attitudes.
     if (!options.stage_is_steered(code)) {
-      return check.fail(Status::kCodedTimeInSpunStage, 18, code, "coded_start_times", i, coded, "", ValueRange{},
+      return check.fail(Status::kCodedTimeInSpunStage, 18, code, "coded_start_times", i, coded, "",
+                        ValueRange{},
                         "100 n + t with n a stage that flies the pitch program (IP(9) spins this one)");
     }
     if (i > 0 && !(coded > l.coded_start_times[i - 1])) {
@@ -744,12 +780,13 @@ Status check_linearization(const LinearizationData& l, const Options& options, c
     // 100 (n+1) + 0 are the same instant: a segment of no length.
     if (i > 0) {
       const int previous_code = static_cast<int>(std::floor(l.coded_start_times[i - 1] / 100.0));
-      if (previous_code != code &&
-          !(stage_ignition_s(vehicle, code) + (coded - 100.0 * code) >
-            stage_ignition_s(vehicle, previous_code) + (l.coded_start_times[i - 1] - 100.0 * previous_code))) {
-        return check.fail(Status::kTableNotMonotonic, 18, 0, "coded_start_times", i, coded, "", ValueRange{},
-                          "later in flight than the coded time before it (a stage that ignites at the burnout "
-                          "of the one before, with no coast between, starts at that burnout: list one of the two)");
+      if (previous_code != code && !(stage_ignition_s(vehicle, code) + (coded - 100.0 * code) >
+                                     stage_ignition_s(vehicle, previous_code) +
+                                         (l.coded_start_times[i - 1] - 100.0 * previous_code))) {
+        return check.fail(
+            Status::kTableNotMonotonic, 18, 0, "coded_start_times", i, coded, "", ValueRange{},
+            "later in flight than the coded time before it (a stage that ignites at the burnout "
+            "of the one before, with no coast between, starts at that burnout: list one of the two)");
       }
     }
   }
@@ -758,15 +795,18 @@ Status check_linearization(const LinearizationData& l, const Options& options, c
   // flies the pitch program (stages 4 and 5 too when IP(9) steers them) has its coded times, or
   // the linearized trajectory would fly it at the last break's value.
   if (options.linearization()) {
-    TOLIP_CHECK(check.range(l.segment_count, at_least(1), Status::kLinearizationWithoutSegments, 18, 0, "segment_count", ""));
+    TOLIP_CHECK(check.range(l.segment_count, at_least(1), Status::kLinearizationWithoutSegments, 18, 0,
+                            "segment_count", ""));
     for (int code = 1; code <= kMaxPoweredStages; ++code) {
       if (!vehicle.stages[stage_index(code)].in_sequence || !options.stage_is_steered(code)) continue;
       bool listed = false;
       for (int i = 0; i < times; ++i) listed = listed || std::floor(l.coded_start_times[i] / 100.0) == code;
       if (!listed) {
-        return check.fail(Status::kSteeredStageWithoutSegments, 18, code, "coded_start_times", -1, 100.0 * code, "", ValueRange{},
-                          "coded times 100 n + t in every stage that flies the pitch program (its ignition "
-                          "100 n and burnout 100 n + duration), IP(9) counting stages 4 and 5 when continuous");
+        return check.fail(
+            Status::kSteeredStageWithoutSegments, 18, code, "coded_start_times", -1, 100.0 * code, "",
+            ValueRange{},
+            "coded times 100 n + t in every stage that flies the pitch program (its ignition "
+            "100 n and burnout 100 n + duration), IP(9) counting stages 4 and 5 when continuous");
       }
     }
   }
@@ -775,7 +815,8 @@ Status check_linearization(const LinearizationData& l, const Options& options, c
                       exactly(times > 0 ? times - 1 : 0), "the number of coded times - 1");
   }
   for (int i = 0; i < l.segment_count; ++i) {
-    TOLIP_CHECK(check.range(l.segment_weights[i], above(0.0), Status::kWeightingFactorNotPositive, 26, 0, "segment_weights", "", i));
+    TOLIP_CHECK(check.range(l.segment_weights[i], above(0.0), Status::kWeightingFactorNotPositive, 26, 0,
+                            "segment_weights", "", i));
   }
   return Status::kOk;
 }
@@ -785,10 +826,13 @@ Status check_convergence(const ConvergenceData& c, const Check& check) {
   TOLIP_CHECK(check.finite(c.initial_payoff_improvement, 28, 0, "initial_payoff_improvement", ""));
   TOLIP_CHECK(check.finite(c.stop_improvement, 28, 0, "stop_improvement", ""));
   const Status bad = Status::kConvergenceDataOutOfRange;
-  TOLIP_CHECK(check.range(c.initial_payoff_improvement, at_least(0.0), bad, 28, 0, "initial_payoff_improvement", ""));
+  TOLIP_CHECK(
+      check.range(c.initial_payoff_improvement, at_least(0.0), bad, 28, 0, "initial_payoff_improvement", ""));
   TOLIP_CHECK(check.range(c.stop_improvement, at_least(0.0), bad, 28, 0, "stop_improvement", ""));
-  TOLIP_CHECK(check.range(c.max_forward_trajectories, at_least(1), bad, 28, 0, "max_forward_trajectories", ""));
-  TOLIP_CHECK(check.range(c.max_linearization_iterations, at_least(0), bad, 28, 0, "max_linearization_iterations", ""));
+  TOLIP_CHECK(
+      check.range(c.max_forward_trajectories, at_least(1), bad, 28, 0, "max_forward_trajectories", ""));
+  TOLIP_CHECK(check.range(c.max_linearization_iterations, at_least(0), bad, 28, 0,
+                          "max_linearization_iterations", ""));
   return Status::kOk;
 }
 
@@ -806,8 +850,8 @@ Status check_output(const OutputFrequency& o, const Check& check) {
 // ---- data blocks 33-37 (6D) --------------------------------------------------------------------
 // A table a 6D run needs: given, well formed and finalized.
 template <int N>
-Status required_table(const Table<N>& table, const Check& check, int data_block, int stage_code, const char* x_field,
-                      const char* x_unit, const char* y_field, const char* y_unit) {
+Status required_table(const Table<N>& table, const Check& check, int data_block, int stage_code,
+                      const char* x_field, const char* x_unit, const char* y_field, const char* y_unit) {
   if (table.empty()) return check.fail(Status::kBodyDynamicsDataMissing, data_block, stage_code, y_field);
   return optional_table(table, check, data_block, stage_code, x_field, x_unit, y_field, y_unit);
 }
@@ -821,7 +865,8 @@ Status check_body_dynamics(const Mission& mission, const Check& check) {
     TOLIP_CHECK(check.finite(b.rate_gain_s[k], 33, 0, "rate_gain_s", "s", k));
     TOLIP_CHECK(check.finite(b.control_station_ft[k], 33, 0, "control_station_ft", "ft", k));
   }
-  TOLIP_CHECK(check.finite(b.jet_vane_effectiveness_per_rad, 33, 0, "jet_vane_effectiveness_per_rad", "per rad"));
+  TOLIP_CHECK(
+      check.finite(b.jet_vane_effectiveness_per_rad, 33, 0, "jet_vane_effectiveness_per_rad", "per rad"));
   TOLIP_CHECK(check.finite(b.moment_reference_station_ft, 33, 0, "moment_reference_station_ft", "ft"));
   TOLIP_CHECK(check.finite(b.reference_length_ft, 33, 0, "reference_length_ft", "ft"));
   TOLIP_CHECK(check.finite(b.reference_area_ft2, 33, 0, "reference_area_ft2", "ft^2"));
@@ -831,18 +876,22 @@ Status check_body_dynamics(const Mission& mission, const Check& check) {
   const Status bad = Status::kBodyDynamicsValueOutOfRange;
   TOLIP_CHECK(check.range(b.position_gain[0], above(0.0), bad, 33, 1, "position_gain", "", 0));
   TOLIP_CHECK(check.range(b.rate_gain_s[0], at_least(0.0), bad, 33, 1, "rate_gain_s", "s", 0));
-  TOLIP_CHECK(check.range(b.jet_vane_effectiveness_per_rad, at_least(0.0), bad, 33, 0, "jet_vane_effectiveness_per_rad",
-                          "per rad"));
+  TOLIP_CHECK(check.range(b.jet_vane_effectiveness_per_rad, at_least(0.0), bad, 33, 0,
+                          "jet_vane_effectiveness_per_rad", "per rad"));
   TOLIP_CHECK(check.range(b.reference_length_ft, above(0.0), bad, 33, 0, "reference_length_ft", "ft"));
   TOLIP_CHECK(check.range(b.reference_area_ft2, above(0.0), bad, 33, 0, "reference_area_ft2", "ft^2"));
-  TOLIP_CHECK(check.range(b.control_surfaces_per_plane, above(0.0), bad, 33, 0, "control_surfaces_per_plane", ""));
-  TOLIP_CHECK(required_table(b.fin_normal_force_per_rad, check, 34, 0, "mach", "", "fin_normal_force_per_rad", "per rad"));
-  TOLIP_CHECK(required_table(b.pitching_moment_per_rad, check, 35, 0, "mach", "", "pitching_moment_per_rad", "per rad"));
-  TOLIP_CHECK(required_table(b.fin_pitching_moment_per_rad, check, 36, 0, "mach", "", "fin_pitching_moment_per_rad",
+  TOLIP_CHECK(
+      check.range(b.control_surfaces_per_plane, above(0.0), bad, 33, 0, "control_surfaces_per_plane", ""));
+  TOLIP_CHECK(required_table(b.fin_normal_force_per_rad, check, 34, 0, "mach", "", "fin_normal_force_per_rad",
                              "per rad"));
+  TOLIP_CHECK(required_table(b.pitching_moment_per_rad, check, 35, 0, "mach", "", "pitching_moment_per_rad",
+                             "per rad"));
+  TOLIP_CHECK(required_table(b.fin_pitching_moment_per_rad, check, 36, 0, "mach", "",
+                             "fin_pitching_moment_per_rad", "per rad"));
   TOLIP_CHECK(required_table(b.cg_station_ft[0], check, 37, 1, "stage_time_s", "s", "cg_station_ft", "ft"));
   for (int k = 1; k < kCgTableStages; ++k) {
-    TOLIP_CHECK(optional_table(b.cg_station_ft[k], check, 37, k + 1, "stage_time_s", "s", "cg_station_ft", "ft"));
+    TOLIP_CHECK(
+        optional_table(b.cg_station_ft[k], check, 37, k + 1, "stage_time_s", "s", "cg_station_ft", "ft"));
   }
   // F_CNL = M_alpha alpha / (X_delta - X_CG) (Sec. 11): the stage-1 c.g. (piecewise linear, its
   // values held past the ends) stays within its tabulated range, so X_delta must lie outside it.
@@ -874,8 +923,8 @@ Status validate_mission(const Mission& mission, MissionFault* fault) {
   TOLIP_CHECK(check_atmosphere(mission.atmosphere, check));
   TOLIP_CHECK(check_vehicle(mission.vehicle, mission.constants, check));
   TOLIP_CHECK(check_launch(mission.launch, mission.vehicle, check));
-  TOLIP_CHECK(check_control(mission.control, mission.options, mission.vehicle, mission.constants.time_epsilon_s,
-                            check));
+  TOLIP_CHECK(check_control(mission.control, mission.options, mission.vehicle,
+                            mission.constants.time_epsilon_s, check));
   TOLIP_CHECK(check_misc(mission.misc, mission.adjustable, check));
   TOLIP_CHECK(check_constraints(mission.constraints, mission.options, mission.vehicle, check));
   TOLIP_CHECK(check_adjustable(mission.adjustable, mission.options, mission.vehicle, check));
@@ -888,8 +937,8 @@ Status validate_mission(const Mission& mission, MissionFault* fault) {
   if (pitch.empty()) return check.fail(Status::kTableEmpty, 40, 0, "pitch_program_rad");
   TOLIP_CHECK(optional_table(pitch, check, 40, 0, "pitch_program_time_s", "s", "pitch_program_rad", "rad"));
   for (int i = 0; i < pitch.size(); ++i) {
-    TOLIP_CHECK(check.range(pitch.y(i), between(-kFullTurn_rad, kFullTurn_rad), Status::kPitchAttitudeOutOfRange, 40, 0,
-                            "pitch_program_rad", "rad", i));
+    TOLIP_CHECK(check.range(pitch.y(i), between(-kFullTurn_rad, kFullTurn_rad),
+                            Status::kPitchAttitudeOutOfRange, 40, 0, "pitch_program_rad", "rad", i));
   }
 
   // Data blocks 33-37 when a 6D trajectory is asked for (IP(6) = 1 or 2).
@@ -923,8 +972,7 @@ double vehicle_weight_lb(const Vehicle& vehicle, int code, double stage_time_s) 
     weight += stage.jettison_weight_lb;
     if (stage_code == last_powered) weight += vehicle.payload_lb;
     if (!is_powered_stage(stage_code) || stage.consumable_weight_lb.empty()) continue;
-    weight += (k == position) ? stage.consumable_weight_lb(stage_time_s)
-                              : stage.consumable_weight_lb.y(0);
+    weight += (k == position) ? stage.consumable_weight_lb(stage_time_s) : stage.consumable_weight_lb.y(0);
   }
   return weight;
 }

@@ -14,7 +14,7 @@ namespace tolip {
 namespace {
 
 using StateJacobian = Eigen::Matrix<double, 6, 6>;
-using StateRows = Eigen::Matrix<double, 6, kMaxConstraints>;   // adjoint of the 6 states, per constraint
+using StateRows = Eigen::Matrix<double, 6, kMaxConstraints>;  // adjoint of the 6 states, per constraint
 using MassRow = Eigen::Matrix<double, 1, kMaxConstraints>;
 
 // One-sided difference steps: about 1e-8 of each variable's scale, where the truncation error of
@@ -43,16 +43,15 @@ struct Linearization {
 
 class Linearizer {
  public:
-  Linearizer(const Mission& mission, const PreparedCase& prepared)
-      : mission_(mission), prepared_(prepared) {}
+  Linearizer(const Mission& mission, const PreparedCase& prepared) : mission_(mission), prepared_(prepared) {}
 
   // The psi of a vertical-flight step's first point (tolip/dynamics/vertical_flight.hpp).
   void set_heading_reference(double heading_rad) { heading_reference_rad_ = heading_rad; }
 
   // `x` is the state, or for a vertical-flight step its regular coordinates (and f, df_dx and the
   // other partials are then those of their derivative).
-  void linearize(const StageContext& stage, const StepCommand& command, double t,
-                 const StateVector& x, Linearization* out) const {
+  void linearize(const StageContext& stage, const StepCommand& command, double t, const StateVector& x,
+                 Linearization* out) const {
     out->f = f(stage, command, t, x, 0.0);
     const double* steps = command.vertical_flight ? kVerticalStep : kStateStep;
     for (int i = 0; i < 6; ++i) {
@@ -62,12 +61,13 @@ class Linearizer {
     }
     // Without thrust and aerodynamics the mass and the attitude act on nothing.
     const bool forces_depend_on_attitude = stage.thrust != nullptr || stage.data->uses_lift_table;
-    const bool forces_depend_on_mass = stage.thrust != nullptr || !stage.data->drag_coefficient.empty() ||
-                                       stage.data->uses_lift_table;
+    const bool forces_depend_on_mass =
+        stage.thrust != nullptr || !stage.data->drag_coefficient.empty() || stage.data->uses_lift_table;
     // d/dm = g0 d/dW: the mass enters as weight / g0.
     out->df_dm.setZero();
     if (forces_depend_on_mass) {
-      out->df_dm = (f(stage, command, t, x, kWeightStepLb) - out->f) / kWeightStepLb * mission_.constants.g0_ft_s2;
+      out->df_dm =
+          (f(stage, command, t, x, kWeightStepLb) - out->f) / kWeightStepLb * mission_.constants.g0_ft_s2;
     }
     out->df_dtheta.setZero();
     out->df_dchi.setZero();
@@ -143,10 +143,10 @@ void accumulate(const Linearization& lin, const StateRows& a, int count, Contrib
 
 class BackwardSweep {
  public:
-  BackwardSweep(const Mission& mission, const PreparedCase& prepared, const Trajectory& trajectory,
-                int count, const ConstraintTerminal* terminals, BackwardRun* out)
-      : mission_(mission), prepared_(prepared), trajectory_(trajectory), count_(count),
-        terminals_(terminals), out_(out), linearizer_(mission, prepared) {}
+  BackwardSweep(const Mission& mission, const PreparedCase& prepared, const Trajectory& trajectory, int count,
+                const ConstraintTerminal* terminals, BackwardRun* out)
+      : mission_(mission), prepared_(prepared), trajectory_(trajectory), count_(count), terminals_(terminals),
+        out_(out), linearizer_(mission, prepared) {}
 
   Status run();
 
@@ -195,7 +195,8 @@ StateVector BackwardSweep::heat_integral_gradient(int k) const {
   const double before = (k > 0) ? trajectory_.points[k - 1].time_s : p.time_s;
   const double after = (k + 1 < trajectory_.point_count) ? trajectory_.points[k + 1].time_s : p.time_s;
   const double weight = 0.5 * (after - before);
-  if (!(weight > 0.0) || !(mission_.misc.nose_radius_ft > 0.0) || p.altitude_ft > mission_.constants.haero_ft) {
+  if (!(weight > 0.0) || !(mission_.misc.nose_radius_ft > 0.0) ||
+      p.altitude_ft > mission_.constants.haero_ft) {
     return StateVector::Zero();
   }
   const ConstraintPoint point = constraint_point_at(mission_, trajectory_, k);
@@ -220,7 +221,8 @@ void BackwardSweep::attribute_theta(const StepRecord& step, const ConstraintVect
   const StepCommand& c = step.command;
   if (c.mode == AttitudeMode::kHeld) {
     const int code = prepared_.timeline[step.stage_slot].code;
-    if (mission_.options.stage_is_spun(code)) out_->spun_theta.head(count_) += start.head(count_) + end.head(count_);
+    if (mission_.options.stage_is_spun(code))
+      out_->spun_theta.head(count_) += start.head(count_) + end.head(count_);
     return;
   }
   if (c.mode != AttitudeMode::kLinear) return;
@@ -274,10 +276,12 @@ void BackwardSweep::rk4_step(const StepRecord& step) {
   accumulate(l2, a2, n, &c2);
   accumulate(l3, a3, n, &c3);
   accumulate(l4, a4, n, &c4);
-  state_.leftCols(n) += c1.state.leftCols(n) + c2.state.leftCols(n) + c3.state.leftCols(n) + c4.state.leftCols(n);
+  state_.leftCols(n) +=
+      c1.state.leftCols(n) + c2.state.leftCols(n) + c3.state.leftCols(n) + c4.state.leftCols(n);
   if (command.vertical_flight) state_.leftCols(n) = vertical_jacobian(x0).transpose() * state_.leftCols(n);
   mass_.leftCols(n) += c1.mass.leftCols(n) + c2.mass.leftCols(n) + c3.mass.leftCols(n) + c4.mass.leftCols(n);
-  if (command.mode == AttitudeMode::kHeld) out_->spun_chi.head(n) += c1.chi.head(n) + c2.chi.head(n) + c3.chi.head(n) + c4.chi.head(n);
+  if (command.mode == AttitudeMode::kHeld)
+    out_->spun_chi.head(n) += c1.chi.head(n) + c2.chi.head(n) + c3.chi.head(n) + c4.chi.head(n);
   // theta(t) = theta_start + fraction (theta_end - theta_start), fraction 0, 1/2, 1/2, 1.
   ConstraintVector start = c1.theta + 0.5 * (c2.theta + c3.theta);
   ConstraintVector end = c4.theta + 0.5 * (c2.theta + c3.theta);
@@ -399,7 +403,8 @@ Status run_backward(const Mission& mission, const PreparedCase& prepared, const 
   if (constraint_count < 1 || constraint_count > kMaxConstraints) return Status::kTooManyConstraints;
   if (trajectory.status != Status::kOk || trajectory.point_count < 2) return Status::kNotPrepared;
   for (int j = 0; j < constraint_count; ++j) {
-    if (terminals[j].point < 0 || terminals[j].point >= trajectory.point_count) return Status::kValueOutOfRange;
+    if (terminals[j].point < 0 || terminals[j].point >= trajectory.point_count)
+      return Status::kValueOutOfRange;
     if (!terminals[j].partials.allFinite()) return Status::kValueNotFinite;
   }
   BackwardSweep sweep(mission, prepared, trajectory, constraint_count, terminals, out);

@@ -37,7 +37,7 @@ constexpr double kMinEccentricity = 1e-10;
 constexpr double kMinSinDownrange = 1e-12;
 constexpr double kMinHorizontalFraction = 1e-12;  // horizontal inertial speed / V_I
 constexpr double kMinCosDeclination = 1e-12;
-constexpr double kMinInertialSpeed_ft_s = 1e-6;   // as compute_orbit_elements
+constexpr double kMinInertialSpeed_ft_s = 1e-6;  // as compute_orbit_elements
 
 constexpr double kSecondsPerDay = 86400.0;
 // Herget: right ascension of Greenwich = 99.659967 + 0.98564743 tG + 360 frac(tG) deg.
@@ -73,10 +73,8 @@ bool needs_orbit(ConstraintQuantity kind) {
     case ConstraintQuantity::kArgumentOfPerigee:
     case ConstraintQuantity::kHyperbolicExcessVelocity:
     case ConstraintQuantity::kAsymptoteRightAscension:
-    case ConstraintQuantity::kAsymptoteDeclination:
-      return true;
-    default:
-      return false;
+    case ConstraintQuantity::kAsymptoteDeclination: return true;
+    default: return false;
   }
 }
 
@@ -133,7 +131,7 @@ struct OrbitPartials {
   OrbitElements elements;
   double sin_i = 0.0;
   double cos_i = 0.0;
-  double eccentricity = 0.0;   // sqrt(X^2 + Y^2), X = e cos zeta, Y = e sin zeta
+  double eccentricity = 0.0;  // sqrt(X^2 + Y^2), X = e cos zeta, Y = e sin zeta
   InertialRow d_twice_energy = InertialRow::Zero();
   InertialRow d_angular_momentum = InertialRow::Zero();
   InertialRow d_inclination = InertialRow::Zero();
@@ -230,20 +228,14 @@ Status orbit_constraint_row(const Constants& constants, const StateVector& x, Co
   const bool equatorial = p.sin_i < kMinSinInclination;
   const bool circular = p.eccentricity < kMinEccentricity;
   switch (kind) {
-    case ConstraintQuantity::kInertialVelocity:
-      g(kQVelocity) = 1.0;
-      break;
-    case ConstraintQuantity::kInertialFlightPathAngle:
-      g(kQGamma) = 1.0;
-      break;
+    case ConstraintQuantity::kInertialVelocity: g(kQVelocity) = 1.0; break;
+    case ConstraintQuantity::kInertialFlightPathAngle: g(kQGamma) = 1.0; break;
     case ConstraintQuantity::kVelocityOverCircular:
       // V_ORB = V_I - sqrt(mu/r): d/dr = (1/(2r)) sqrt(mu/r) beyond dV_I/dr (printed).
       g(kQVelocity) = 1.0;
       g(kQRadius) = 0.5 * std::sqrt(mu / r) / r;
       break;
-    case ConstraintQuantity::kTwiceEnergy:
-      g = p.d_twice_energy;
-      break;
+    case ConstraintQuantity::kTwiceEnergy: g = p.d_twice_energy; break;
     case ConstraintQuantity::kInclination:
       if (equatorial) return Status::kConstraintSingular;
       g = p.d_inclination;
@@ -308,8 +300,7 @@ Status orbit_constraint_row(const Constants& constants, const StateVector& x, Co
       }
       break;
     }
-    default:
-      return Status::kUnknownConstraintCode;
+    default: return Status::kUnknownConstraintCode;
   }
   *row = g;
   return Status::kOk;
@@ -364,7 +355,8 @@ double oblate_radius_latitude_derivative_ft_per_rad(const Constants& constants,
 
 double constraint_deviation(const ConstraintCode& code, double value, double desired) {
   const double difference = value - desired;
-  if (code.kind == ConstraintQuantity::kNodeLongitude || code.kind == ConstraintQuantity::kArgumentOfPerigee ||
+  if (code.kind == ConstraintQuantity::kNodeLongitude ||
+      code.kind == ConstraintQuantity::kArgumentOfPerigee ||
       code.kind == ConstraintQuantity::kAsymptoteRightAscension) {
     const double two_pi = 2.0 * kPi;
     double wrapped = std::fmod(difference + kPi, two_pi);
@@ -423,8 +415,7 @@ Status constraint_value(const Constants& constants, const LaunchConditions& laun
       case ConstraintQuantity::kInertialVelocity: result = e.inertial.velocity_ft_s; break;
       case ConstraintQuantity::kInertialFlightPathAngle: result = e.inertial.flight_path_angle_rad; break;
       case ConstraintQuantity::kVelocityOverCircular:
-        result = e.inertial.velocity_ft_s -
-                 std::sqrt(constants.gravitational_parameter_ft3_s2 / x(kStateR));
+        result = e.inertial.velocity_ft_s - std::sqrt(constants.gravitational_parameter_ft3_s2 / x(kStateR));
         break;
       case ConstraintQuantity::kTwiceEnergy: result = e.twice_energy_ft2_s2; break;
       case ConstraintQuantity::kInclination: result = e.inclination_rad; break;
@@ -452,9 +443,9 @@ Status constraint_value(const Constants& constants, const LaunchConditions& laun
         result = oblate_altitude_ft(constants, x(kStateR), x(kStateLambda));
         break;
       case ConstraintQuantity::kDownrange:
-        result = kNauticalMilesPerRadian *
-                 downrange_angle_rad(launch.geocentric_latitude_rad, launch.longitude_rad,
-                                     x(kStateLambda), earth_fixed_longitude_rad(constants, point));
+        result = kNauticalMilesPerRadian * downrange_angle_rad(launch.geocentric_latitude_rad,
+                                                               launch.longitude_rad, x(kStateLambda),
+                                                               earth_fixed_longitude_rad(constants, point));
         break;
       case ConstraintQuantity::kTotalHeating: result = point.total_heating_btu_ft2; break;
       case ConstraintQuantity::kDynamicPressure:
@@ -492,8 +483,8 @@ Status constraint_partials(const Constants& constants, const LaunchConditions& l
     if (sj == Status::kConstraintSingular && speed_only) {
       const InertialComponents c = inertial_components(constants, x);
       jacobian.setZero();
-      jacobian.row(0) = (c.up_ft_s * c.d_up + c.north_ft_s * c.d_north + c.east_ft_s * c.d_east) /
-                        e.inertial.velocity_ft_s;
+      jacobian.row(0) =
+          (c.up_ft_s * c.d_up + c.north_ft_s * c.d_north + c.east_ft_s * c.d_east) / e.inertial.velocity_ft_s;
     } else if (sj != Status::kOk) {
       return sj;
     }
@@ -509,15 +500,9 @@ Status constraint_partials(const Constants& constants, const LaunchConditions& l
         // The payoff weight W = g0 m at the final point: d W / d m = g0 (lb per slug).
         out(kAdjointMass) = constants.g0_ft_s2;
         break;
-      case ConstraintQuantity::kRadius:
-        out(kStateR) = 1.0;
-        break;
-      case ConstraintQuantity::kAerodynamicVelocity:
-        out(kStateV) = 1.0;
-        break;
-      case ConstraintQuantity::kAerodynamicFlightPathAngle:
-        out(kStateGamma) = 1.0;
-        break;
+      case ConstraintQuantity::kRadius: out(kStateR) = 1.0; break;
+      case ConstraintQuantity::kAerodynamicVelocity: out(kStateV) = 1.0; break;
+      case ConstraintQuantity::kAerodynamicFlightPathAngle: out(kStateGamma) = 1.0; break;
       case ConstraintQuantity::kAltitude:
         out(kStateR) = 1.0;
         out(kStateLambda) = -oblate_radius_latitude_derivative_ft_per_rad(constants, x(kStateLambda));
@@ -529,13 +514,13 @@ Status constraint_partials(const Constants& constants, const LaunchConditions& l
         const double lat0 = launch.geocentric_latitude_rad;
         const double lat = x(kStateLambda);
         const double d_lon = earth_fixed_longitude_rad(constants, point) - launch.longitude_rad;
-        const double dr = downrange_angle_rad(lat0, launch.longitude_rad, lat,
-                                              earth_fixed_longitude_rad(constants, point));
+        const double dr =
+            downrange_angle_rad(lat0, launch.longitude_rad, lat, earth_fixed_longitude_rad(constants, point));
         const double sin_dr = std::sin(dr);
         if (sin_dr < kMinSinDownrange) return Status::kConstraintSingular;
-        out(kStateLambda) = kNauticalMilesPerRadian *
-                            (std::cos(lat0) * std::sin(lat) * std::cos(d_lon) -
-                             std::sin(lat0) * std::cos(lat)) / sin_dr;
+        out(kStateLambda) =
+            kNauticalMilesPerRadian *
+            (std::cos(lat0) * std::sin(lat) * std::cos(d_lon) - std::sin(lat0) * std::cos(lat)) / sin_dr;
         out(kStateTau) = kNauticalMilesPerRadian * std::cos(lat0) * std::cos(lat) * std::sin(d_lon) / sin_dr;
         break;
       }
@@ -553,8 +538,7 @@ Status constraint_partials(const Constants& constants, const LaunchConditions& l
         out(kStateLambda) = -dq_dh * oblate_radius_latitude_derivative_ft_per_rad(constants, x(kStateLambda));
         break;
       }
-      default:
-        return Status::kUnknownConstraintCode;
+      default: return Status::kUnknownConstraintCode;
     }
   }
   if (!out.allFinite()) return Status::kNonFiniteState;
@@ -563,8 +547,7 @@ Status constraint_partials(const Constants& constants, const LaunchConditions& l
 }
 
 Status stagnation_heating_rate_partials(const Constants& constants, double nose_radius_ft,
-                                        double sea_level_density_slug_ft3,
-                                        const ConstraintPoint& point,
+                                        double sea_level_density_slug_ft3, const ConstraintPoint& point,
                                         Eigen::Matrix<double, 6, 1>* partials) {
   if (partials == nullptr) return Status::kValueOutOfRange;
   const StateVector& x = point.state;

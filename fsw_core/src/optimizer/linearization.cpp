@@ -22,7 +22,7 @@ constexpr int kKktSize = kLinearizationKktSize;
 // ---- the constraints imposed during linearization --------------------------------------------
 
 struct LinearConstraints {
-  int count = 0;                           // constraints imposed (payoff, inclination, node left out)
+  int count = 0;  // constraints imposed (payoff, inclination, node left out)
   ConstraintCode codes[kMaxConstraints];
   double desired[kMaxConstraints] = {};
   double deadband[kMaxConstraints] = {};
@@ -43,12 +43,14 @@ Status select_constraints(const Mission& mission, LinearConstraints* out) {
     ConstraintCode code;
     const Status status = decode_constraint_code(list.codes[i], &code);
     if (!ok(status)) return status;
-    if (code.kind == ConstraintQuantity::kInclination || code.kind == ConstraintQuantity::kNodeLongitude) continue;
+    if (code.kind == ConstraintQuantity::kInclination || code.kind == ConstraintQuantity::kNodeLongitude)
+      continue;
     const int j = out->count++;
     out->codes[j] = code;
     out->desired[j] = list.desired[i];
     out->deadband[j] = list.deadband_linearization[i - 1];
-    out->inequality[j] = code.kind == ConstraintQuantity::kDynamicPressure && mission.options.qbar_constraint_type() == 1;
+    out->inequality[j] =
+        code.kind == ConstraintQuantity::kDynamicPressure && mission.options.qbar_constraint_type() == 1;
     if (!(out->deadband[j] > 0.0)) return Status::kValueOutOfRange;
   }
   return Status::kOk;
@@ -63,8 +65,8 @@ Status evaluate(const LinearConstraints& c, const Mission& mission, const Trajec
   for (int j = 0; j < c.count; ++j) {
     const int index = constraint_point_index(c.codes[j], t);
     if (index < 0) return Status::kValueOutOfRange;
-    const Status status =
-        constraint_value(mission.constants, mission.launch, c.codes[j], constraint_point_at(mission, t, index), &achieved[j]);
+    const Status status = constraint_value(mission.constants, mission.launch, c.codes[j],
+                                           constraint_point_at(mission, t, index), &achieved[j]);
     if (!ok(status)) return status;
   }
   return Status::kOk;
@@ -87,9 +89,11 @@ double stage_start_s(const PreparedCase& prepared, int code) {
 }
 
 // Data block 18's coded times (100 n + t) moved to the nearest integration point of stage n.
-Status break_times(const Mission& mission, const PreparedCase& prepared, const Trajectory& t, LinearProgram* p) {
+Status break_times(const Mission& mission, const PreparedCase& prepared, const Trajectory& t,
+                   LinearProgram* p) {
   const LinearizationData& data = mission.linearization;
-  if (data.segment_count < 1 || data.segment_count > kMaxLinearSegments) return Status::kTooManyLinearSegments;
+  if (data.segment_count < 1 || data.segment_count > kMaxLinearSegments)
+    return Status::kTooManyLinearSegments;
   p->segment_count = data.segment_count;
   for (int b = 0; b <= data.segment_count; ++b) {
     const double coded = data.coded_start_times[b];
@@ -110,7 +114,8 @@ Status break_times(const Mission& mission, const PreparedCase& prepared, const T
     p->break_time_s[b] = best;
     if (b > 0 && !(p->break_time_s[b] > p->break_time_s[b - 1])) return Status::kTableNotMonotonic;
   }
-  for (int s = 0; s < p->segment_count; ++s) p->eta[s] = data.segment_weights[s] > 0.0 ? data.segment_weights[s] : 1.0;
+  for (int s = 0; s < p->segment_count; ++s)
+    p->eta[s] = data.segment_weights[s] > 0.0 ? data.segment_weights[s] : 1.0;
   return Status::kOk;
 }
 
@@ -133,14 +138,16 @@ void sample(const LinearProgram& p, const Trajectory& t, const ControlProgram& o
     if (s >= 0) {
       out->theta_rad[k] = p.theta_rad[s] + f * (p.theta_rad[s + 1] - p.theta_rad[s]);
     } else {
-      out->theta_rad[k] = (t.points[k].time_s < p.break_time_s[0]) ? optimum.theta_rad[k] : p.theta_rad[p.segment_count];
+      out->theta_rad[k] =
+          (t.points[k].time_s < p.break_time_s[0]) ? optimum.theta_rad[k] : p.theta_rad[p.segment_count];
     }
   }
 }
 
 void update_rates_and_stages(const Trajectory& t, LinearProgram* p) {
   for (int s = 0; s < p->segment_count; ++s) {
-    p->rate_rad_s[s] = (p->theta_rad[s + 1] - p->theta_rad[s]) / (p->break_time_s[s + 1] - p->break_time_s[s]);
+    p->rate_rad_s[s] =
+        (p->theta_rad[s + 1] - p->theta_rad[s]) / (p->break_time_s[s + 1] - p->break_time_s[s]);
     // The stage flown at the segment's start (at a staging instant, the stage that starts).
     for (int k = t.point_count - 1; k >= 0; --k) {
       if (t.points[k].time_s <= p->break_time_s[s] + 1e-9) {
@@ -302,7 +309,6 @@ double segment_rate(const LinearProgram& p, int s) {
   return (p.theta_rad[s + 1] - p.theta_rad[s]) / (p.break_time_s[s + 1] - p.break_time_s[s]);
 }
 
-
 // Adds the first repair the program needs, in the order of Sec. 10 (maximum rate, a single positive
 // rate, minimum rate, minimum change of rate); returns false when it meets every limit or no repair
 // is possible. A repair fixes the rate of a segment's merge group, or merges two adjacent segments
@@ -319,8 +325,8 @@ bool exempt_from_minimum_rates(const LinearProgram& p, int s) {
   return s >= 0 && s < p.segment_count && (p.stage_code[s] == 8 || p.stage_code[s] == 9);
 }
 
-bool repair_rate_limits(const Mission& mission, const LinearConstraints& c, double coast_rate_rad_s_after_last,
-                        LinearProgram* p) {
+bool repair_rate_limits(const Mission& mission, const LinearConstraints& c,
+                        double coast_rate_rad_s_after_last, LinearProgram* p) {
   if (p->rate_repair_count >= kMaxRateRepairs) return false;
   // Every repair takes one degree of freedom of the fit; the constraints need one each. A repair
   // that would leave fewer than that makes the system singular: the violation stays instead, and
@@ -344,8 +350,9 @@ bool repair_rate_limits(const Mission& mission, const LinearConstraints& c, doub
     return true;
   };
   for (int s = 0; s < k; ++s) {
-    if (limits.max_pitch_rate_rad_s > 0.0 && std::fabs(rate(s)) > limits.max_pitch_rate_rad_s * (1.0 + 1e-9) &&
-        !merge_group(*p, s).rate_fixed && !determined(s)) {
+    if (limits.max_pitch_rate_rad_s > 0.0 &&
+        std::fabs(rate(s)) > limits.max_pitch_rate_rad_s * (1.0 + 1e-9) && !merge_group(*p, s).rate_fixed &&
+        !determined(s)) {
       return impose(s, false, (rate(s) < 0.0 ? -1.0 : 1.0) * limits.max_pitch_rate_rad_s);
     }
   }
@@ -358,8 +365,9 @@ bool repair_rate_limits(const Mission& mission, const LinearConstraints& c, doub
     }
   }
   for (int s = 0; s < k; ++s) {
-    if (limits.min_pitch_rate_rad_s > 0.0 && std::fabs(rate(s)) < limits.min_pitch_rate_rad_s * (1.0 - 1e-9) &&
-        !merge_group(*p, s).rate_fixed && !determined(s) && !exempt_from_minimum_rates(*p, s)) {
+    if (limits.min_pitch_rate_rad_s > 0.0 &&
+        std::fabs(rate(s)) < limits.min_pitch_rate_rad_s * (1.0 - 1e-9) && !merge_group(*p, s).rate_fixed &&
+        !determined(s) && !exempt_from_minimum_rates(*p, s)) {
       return impose(s, false, (rate(s) > 0.0 ? 1.0 : -1.0) * limits.min_pitch_rate_rad_s);
     }
   }
@@ -380,14 +388,16 @@ bool meets_rate_limits(const Mission& mission, double coast_rate_after_last, con
   int positives = coast_rate_after_last > kPositiveRateRadS ? 1 : 0;
   for (int s = 0; s < p.segment_count; ++s) {
     const double r = segment_rate(p, s);
-    if (limits.max_pitch_rate_rad_s > 0.0 && std::fabs(r) > limits.max_pitch_rate_rad_s * (1.0 + 1e-6)) return false;
+    if (limits.max_pitch_rate_rad_s > 0.0 && std::fabs(r) > limits.max_pitch_rate_rad_s * (1.0 + 1e-6))
+      return false;
     if (limits.min_pitch_rate_rad_s > 0.0 && std::fabs(r) < limits.min_pitch_rate_rad_s * (1.0 - 1e-6) &&
         !exempt_from_minimum_rates(p, s)) {
       return false;
     }
     if (r > kPositiveRateRadS && !rate_continues_previous(p, s)) ++positives;
-    if (s + 1 < p.segment_count && limits.min_pitch_rate_change_rad_s > 0.0 && !rate_continues_previous(p, s + 1) &&
-        !exempt_from_minimum_rates(p, s) && !exempt_from_minimum_rates(p, s + 1) &&
+    if (s + 1 < p.segment_count && limits.min_pitch_rate_change_rad_s > 0.0 &&
+        !rate_continues_previous(p, s + 1) && !exempt_from_minimum_rates(p, s) &&
+        !exempt_from_minimum_rates(p, s + 1) &&
         std::fabs(segment_rate(p, s + 1) - r) < limits.min_pitch_rate_change_rad_s * (1.0 - 1e-6)) {
       return false;
     }
@@ -398,7 +408,8 @@ bool meets_rate_limits(const Mission& mission, double coast_rate_after_last, con
 // Rate over the coast from the last stage that flies the pitch program into the first spun one
 // (coast 8 before a spun stage 4 under IP(9) = 1, coast 9 before a spun stage 5 under IP(9) = 2):
 // from the program's last value to the spun attitude. -1 (no positive rate) without such a coast.
-double coast_rate_after_program(const Mission& mission, const PreparedCase& prepared, const LinearProgram& p) {
+double coast_rate_after_program(const Mission& mission, const PreparedCase& prepared,
+                                const LinearProgram& p) {
   const Options& options = mission.options;
   for (int k = 0; k + 1 < prepared.stage_count; ++k) {
     const StageTimeline& line = prepared.timeline[k];
@@ -406,8 +417,8 @@ double coast_rate_after_program(const Mission& mission, const PreparedCase& prep
     const int next = line.code - 4;  // the powered stage after coast n + 5
     if (!options.stage_is_steered(next - 1) || !options.stage_is_spun(next)) continue;
     // IP(9) = 1 spins stage 5 on stage 4's attitudes.
-    const double spun_theta_rad =
-        (next == 4 || options.stage_is_spun(4)) ? mission.misc.stage4_theta_rad : mission.misc.stage5_theta_rad;
+    const double spun_theta_rad = (next == 4 || options.stage_is_spun(4)) ? mission.misc.stage4_theta_rad
+                                                                          : mission.misc.stage5_theta_rad;
     return (spun_theta_rad - p.theta_rad[p.segment_count]) / line.duration_s;
   }
   return -1.0;
@@ -425,7 +436,8 @@ Status linearized_payoff(const Mission& mission, const Trajectory& trajectory, d
   }
   const int index = constraint_point_index(code, trajectory);
   if (index < 0) return Status::kValueOutOfRange;
-  return constraint_value(mission.constants, mission.launch, code, constraint_point_at(mission, trajectory, index), payoff);
+  return constraint_value(mission.constants, mission.launch, code,
+                          constraint_point_at(mission, trajectory, index), payoff);
 }
 
 // A forward linearization run: the sampled program, with body dynamics in stage 1 and the coast
@@ -463,12 +475,14 @@ void check_coast7_rates(const Mission& mission, const LinearProgram& p, Lineariz
       if (later < 1 || later >= p.segment_count || !(limits.min_pitch_rate_change_rad_s > 0.0)) continue;
       if (rate_continues_previous(p, later)) continue;
       const double change = std::fabs(segment_rate(p, later) - segment_rate(p, later - 1));
-      if (change < limits.min_pitch_rate_change_rad_s * (1.0 - 1e-6)) out->coast7_below_min_rate_change = true;
+      if (change < limits.min_pitch_rate_change_rad_s * (1.0 - 1e-6))
+        out->coast7_below_min_rate_change = true;
     }
   }
 }
 
-Status linearize_pitch_program(const OptimizerWorkspace& optimized, LinearizationWorkspace* ws, LinearizationResult* out) {
+Status linearize_pitch_program(const OptimizerWorkspace& optimized, LinearizationWorkspace* ws,
+                               LinearizationResult* out) {
   out->forward_runs = 0;
   out->backward_runs = 0;
   out->programs_computed = 0;
@@ -483,7 +497,8 @@ Status linearize_pitch_program(const OptimizerWorkspace& optimized, Linearizatio
   ws->prepared = optimized.prepared;
   const Trajectory& optimum_trajectory = optimized.nominal;
   ws->optimum.point_count = optimum_trajectory.point_count;
-  for (int k = 0; k < optimum_trajectory.point_count; ++k) ws->optimum.theta_rad[k] = optimum_trajectory.points[k].theta_rad;
+  for (int k = 0; k < optimum_trajectory.point_count; ++k)
+    ws->optimum.theta_rad[k] = optimum_trajectory.points[k].theta_rad;
 
   LinearConstraints c;
   Status status = select_constraints(ws->mission, &c);
@@ -497,7 +512,8 @@ Status linearize_pitch_program(const OptimizerWorkspace& optimized, Linearizatio
   // (the optimum's attitude there); alpha = 0 at stage-2 ignition (the optimum's attitude there).
   const auto optimum_theta_at = [&](double t) {
     for (int k = 1; k < optimum_trajectory.point_count; ++k) {
-      if (std::fabs(optimum_trajectory.points[k].time_s - t) < 1e-6) return optimum_trajectory.points[k].theta_rad;
+      if (std::fabs(optimum_trajectory.points[k].time_s - t) < 1e-6)
+        return optimum_trajectory.points[k].theta_rad;
     }
     return optimum_trajectory.points[1].theta_rad;
   };
@@ -512,7 +528,8 @@ Status linearize_pitch_program(const OptimizerWorkspace& optimized, Linearizatio
       if (std::fabs(base.break_time_s[b] - ignition) < 1e-6) {
         base.fixed[b] = true;
         for (int k = 0; k < optimum_trajectory.point_count; ++k) {
-          if (optimum_trajectory.points[k].stage_code == 2 && std::fabs(optimum_trajectory.points[k].time_s - ignition) < 1e-6) {
+          if (optimum_trajectory.points[k].stage_code == 2 &&
+              std::fabs(optimum_trajectory.points[k].time_s - ignition) < 1e-6) {
             base.theta_rad[b] = optimum_trajectory.points[k].theta_rad;
           }
         }
@@ -524,7 +541,9 @@ Status linearize_pitch_program(const OptimizerWorkspace& optimized, Linearizatio
   const double max_rate = ws->mission.control.max_pitch_rate_rad_s;
   if (max_rate > 0.0 && base.segment_count > 1) {
     double end_of_max_rate = -1.0;
-    for (int k = 2; k < optimum_trajectory.point_count && optimum_trajectory.points[k].time_s < base.break_time_s[2]; ++k) {
+    for (int k = 2;
+         k < optimum_trajectory.point_count && optimum_trajectory.points[k].time_s < base.break_time_s[2];
+         ++k) {
       const TrajectoryPoint& a = optimum_trajectory.points[k - 1];
       const TrajectoryPoint& b = optimum_trajectory.points[k];
       const double dt = b.time_s - a.time_s;
@@ -559,7 +578,8 @@ Status linearize_pitch_program(const OptimizerWorkspace& optimized, Linearizatio
       terminals[j].point = constraint_point_index(c.codes[j], ws->nominal);
       terminals[j].heat_integral = c.codes[j].kind == ConstraintQuantity::kTotalHeating;
       status = constraint_partials(ws->mission.constants, ws->mission.launch, c.codes[j],
-                                   constraint_point_at(ws->mission, ws->nominal, terminals[j].point), &terminals[j].partials);
+                                   constraint_point_at(ws->mission, ws->nominal, terminals[j].point),
+                                   &terminals[j].partials);
       if (!ok(status)) return out->status = status;
     }
     status = run_backward(ws->mission, ws->prepared, ws->nominal, c.count, terminals, &ws->backward);
@@ -584,7 +604,8 @@ Status linearize_pitch_program(const OptimizerWorkspace& optimized, Linearizatio
                              &program, &payload_change_lb);
       if (!ok(status)) return out->status = status;
       ++out->programs_computed;
-      if (!repair_rate_limits(ws->mission, c, coast_rate_after_program(ws->mission, ws->prepared, program), &program)) {
+      if (!repair_rate_limits(ws->mission, c, coast_rate_after_program(ws->mission, ws->prepared, program),
+                              &program)) {
         break;
       }
     }
@@ -600,7 +621,8 @@ Status linearize_pitch_program(const OptimizerWorkspace& optimized, Linearizatio
     status = evaluate(c, ws->mission, ws->candidate, achieved);
     if (!ok(status)) return out->status = status;
     ws->nominal = ws->candidate;
-    out->rate_limits_met = meets_rate_limits(ws->mission, coast_rate_after_program(ws->mission, ws->prepared, program), program);
+    out->rate_limits_met =
+        meets_rate_limits(ws->mission, coast_rate_after_program(ws->mission, ws->prepared, program), program);
     out->constraints_met = within_deadbands(c, achieved);
     success = out->rate_limits_met && out->constraints_met;
 

@@ -33,7 +33,7 @@ struct Problem {
   double desired[kMaxConstraints] = {};
   double scale[kMaxConstraints] = {};  // deadband (payoff: 1): constraints are steered in deadbands
   bool payload_is_control = false;
-  double payload_weight = 1.0;         // DA2(15)
+  double payload_weight = 1.0;  // DA2(15)
   int adjustable_count = 0;
   AdjustableParameter adjustable[kMaxAdjustableParameters] = {};
   double adjustable_weight[kMaxAdjustableParameters] = {};
@@ -119,7 +119,8 @@ Status evaluate_constraints(const Problem& problem, const Mission& mission, cons
     const int index = constraint_point_index(problem.codes[i], trajectory);
     if (index < 0) return Status::kValueOutOfRange;
     const ConstraintPoint point = constraint_point_at(mission, trajectory, index);
-    const Status status = constraint_value(mission.constants, mission.launch, problem.codes[i], point, &achieved[i]);
+    const Status status =
+        constraint_value(mission.constants, mission.launch, problem.codes[i], point, &achieved[i]);
     if (!ok(status)) return status;
   }
   // The payload payoff is the payload itself (the final weight is the inert weight plus it).
@@ -430,7 +431,8 @@ void shape_program(const Mission& mission, const Trajectory& nominal, const Poin
     const double t1 = nominal.points[after].time_s;
     for (int k = coast.first_point; k <= coast.last_point; ++k) {
       const double fraction = (t1 > t0) ? (nominal.points[k].time_s - t0) / (t1 - t0) : 0.0;
-      program->theta_rad[k] = program->theta_rad[before] + fraction * (program->theta_rad[after] - program->theta_rad[before]);
+      program->theta_rad[k] =
+          program->theta_rad[before] + fraction * (program->theta_rad[after] - program->theta_rad[before]);
     }
   }
 }
@@ -482,7 +484,8 @@ class ClosedLoopSteering final : public PitchFeedback {
     for (int j = point; j < backward_.point_count; ++j) {
       const double w = backward_.quadrature_weight_s[j];
       if (!(w > 0.0) || !roles_.free[j]) continue;
-      program->theta_rad[j] = nominal_program_.theta_rad[j] + scaled(problem_, backward_.theta_gradient[j], steering_).dot(nu) / w;
+      program->theta_rad[j] = nominal_program_.theta_rad[j] +
+                              scaled(problem_, backward_.theta_gradient[j], steering_).dot(nu) / w;
     }
     shape_program(mission_, nominal_, roles_, program);
   }
@@ -535,13 +538,15 @@ class Iteration {
 
 ConstraintVector Iteration::corrections(const double achieved[kMaxConstraints]) const {
   ConstraintVector d = ConstraintVector::Zero();
-  for (int i = 1; i < problem_.constraint_count; ++i) d(i) = correction(problem_, i, achieved) / problem_.scale[i];
+  for (int i = 1; i < problem_.constraint_count; ++i)
+    d(i) = correction(problem_, i, achieved) / problem_.scale[i];
   return d;
 }
 
 double Iteration::corrected_payoff(const double achieved[kMaxConstraints]) const {
   double corrected = achieved[0];
-  for (int i = 1; i < problem_.constraint_count; ++i) corrected += partials_[i] * correction(problem_, i, achieved);
+  for (int i = 1; i < problem_.constraint_count; ++i)
+    corrected += partials_[i] * correction(problem_, i, achieved);
   return corrected;
 }
 
@@ -594,7 +599,8 @@ Status Iteration::fly_nominal_from_table() {
   Status status = fly_trajectory(ws_->mission, ws_->prepared, &ws_->nominal);
   if (!ok(status)) return status;
   ws_->program.point_count = ws_->nominal.point_count;
-  for (int k = 0; k < ws_->nominal.point_count; ++k) ws_->program.theta_rad[k] = ws_->nominal.points[k].theta_rad;
+  for (int k = 0; k < ws_->nominal.point_count; ++k)
+    ws_->program.theta_rad[k] = ws_->nominal.points[k].theta_rad;
   classify_points(ws_->mission, ws_->nominal, &roles_);
   activate_heating_if_exceeded(ws_->nominal, &problem_);
   status = evaluate_constraints(problem_, ws_->mission, ws_->nominal, nominal_achieved_);
@@ -609,7 +615,8 @@ Status Iteration::launch_sensitivities() {
   launch_columns_ = LaunchColumns();
   bool azimuth = false;
   for (int p = 0; p < problem_.adjustable_count; ++p) {
-    if (problem_.adjustable[p] == AdjustableParameter::kLaunchAzimuth) azimuth = problem_.adjustable_active[p];
+    if (problem_.adjustable[p] == AdjustableParameter::kLaunchAzimuth)
+      azimuth = problem_.adjustable_active[p];
   }
   for (int i = 0; i < problem_.constraint_count; ++i) {
     launch_columns_.launch_time(i) = constraint_partial_wrt_launch_time(problem_.codes[i]);
@@ -623,13 +630,15 @@ Status Iteration::launch_sensitivities() {
     ws_->candidate_mission.launch.azimuth_rad += (side == 0 ? 1.0 : -1.0) * kAzimuthStepRad;
     ws_->candidate_prepared = ws_->prepared;
     prepare_launch_geometry(ws_->candidate_mission, &ws_->candidate_prepared);
-    Status status = fly_trajectory(ws_->candidate_mission, ws_->candidate_prepared, ws_->program, &ws_->candidate);
-    if (ok(status)) status = evaluate_constraints(problem_, ws_->candidate_mission, ws_->candidate, achieved[side]);
+    Status status =
+        fly_trajectory(ws_->candidate_mission, ws_->candidate_prepared, ws_->program, &ws_->candidate);
+    if (ok(status))
+      status = evaluate_constraints(problem_, ws_->candidate_mission, ws_->candidate, achieved[side]);
     if (!ok(status)) return status;
   }
   for (int i = 0; i < problem_.constraint_count; ++i) {
-    launch_columns_.azimuth(i) = -constraint_deviation(problem_.codes[i], achieved[1][i], achieved[0][i]) /
-                                 (2.0 * kAzimuthStepRad);
+    launch_columns_.azimuth(i) =
+        -constraint_deviation(problem_.codes[i], achieved[1][i], achieved[0][i]) / (2.0 * kAzimuthStepRad);
   }
   return Status::kOk;
 }
@@ -638,7 +647,8 @@ Status Iteration::backward(int first, Steering* steering) {
   ConstraintTerminal terminals[kMaxConstraints];
   Status status = constraint_terminals(problem_, ws_->mission, ws_->nominal, terminals);
   if (!ok(status)) return status;
-  status = run_backward(ws_->mission, ws_->prepared, ws_->nominal, problem_.constraint_count, terminals, &ws_->backward);
+  status = run_backward(ws_->mission, ws_->prepared, ws_->nominal, problem_.constraint_count, terminals,
+                        &ws_->backward);
   if (!ok(status)) return status;
   ++result_->backward_runs;
   status = launch_sensitivities();
@@ -647,8 +657,8 @@ Status Iteration::backward(int first, Steering* steering) {
   // the same constraints: their pivots are taken before the payoff's.
   const double dp2 = typical_control_measure();
   Steering optimization;
-  status = build_steering(problem_, ws_->backward, launch_columns_, roles_.free, ws_->mission.constants.g0_ft_s2, 0,
-                          dp2, &optimization);
+  status = build_steering(problem_, ws_->backward, launch_columns_, roles_.free,
+                          ws_->mission.constants.g0_ft_s2, 0, dp2, &optimization);
   if (ok(status)) payoff_partials(problem_, optimization.matrix, partials_);
   if (first == 0) {
     *steering = optimization;
@@ -666,7 +676,8 @@ Status Iteration::backward(int first, Steering* steering) {
 
 // Eqs. 9-3, 9-4 (the open-loop law, K evaluated at launch with dx = 0): the change of every control
 // that yields the requested constraint changes d psi with the least control measure.
-Status Iteration::fly_candidate(const Steering& steering, const ConstraintVector& dpsi, double step_fraction) {
+Status Iteration::fly_candidate(const Steering& steering, const ConstraintVector& dpsi,
+                                double step_fraction) {
   const ConstraintVector nu = step_fraction * steering.cholesky.solve(steered_part(steering, dpsi));
   const BackwardRun& b = ws_->backward;
   ws_->candidate_program = ws_->program;
@@ -682,8 +693,9 @@ Status Iteration::fly_candidate(const Steering& steering, const ConstraintVector
   bool launch_changed = false;
   for (int p = 0; p < problem_.adjustable_count; ++p) {
     if (!problem_.adjustable_active[p]) continue;
-    const double change = scaled(problem_, parameter_column(problem_, b, launch_columns_, p), steering).dot(nu) /
-                          problem_.adjustable_weight[p];
+    const double change =
+        scaled(problem_, parameter_column(problem_, b, launch_columns_, p), steering).dot(nu) /
+        problem_.adjustable_weight[p];
     const AdjustableParameter parameter = problem_.adjustable[p];
     switch (parameter) {
       case AdjustableParameter::kStage4Theta: m.misc.stage4_theta_rad += change; break;
@@ -721,7 +733,8 @@ Status Iteration::fly_candidate(const Steering& steering, const ConstraintVector
     if (!ok(status)) return status;
   }
   if (launch_changed) prepare_launch_geometry(m, &ws_->candidate_prepared);
-  const double mass_change_slug = (m.vehicle.payload_lb - ws_->mission.vehicle.payload_lb) / m.constants.g0_ft_s2;
+  const double mass_change_slug =
+      (m.vehicle.payload_lb - ws_->mission.vehicle.payload_lb) / m.constants.g0_ft_s2;
   ClosedLoopSteering closed_loop(problem_, b, roles_, ws_->mission, ws_->nominal, ws_->program, steering,
                                  step_fraction * dpsi, mass_change_slug);
   FlightInputs inputs;
@@ -764,7 +777,8 @@ Status Iteration::run(const Mission& input) {
   // reports kGuidanceDidNotConverge with the last good nominal.
   Steering steering;
   bool guidance_stuck = false;
-  while (!guidance_stuck && !within_deadbands(problem_, nominal_achieved_) && result_->forward_runs < budget - 1) {
+  while (!guidance_stuck && !within_deadbands(problem_, nominal_achieved_) &&
+         result_->forward_runs < budget - 1) {
     status = backward(1, &steering);
     if (!ok(status)) return status;
     const double before = error_norm(problem_, nominal_achieved_);
@@ -797,8 +811,8 @@ Status Iteration::run(const Mission& input) {
     best_corrected = corrected_payoff(nominal_achieved_);
     const ConstraintVector dphi = corrections(nominal_achieved_);
     if (first_attempt) {
-      if (!initial_payoff_improvement(problem_, steering, steered_part(steering, dphi), typical_control_measure(),
-                                      &attempt_size)) {
+      if (!initial_payoff_improvement(problem_, steering, steered_part(steering, dphi),
+                                      typical_control_measure(), &attempt_size)) {
         attempt_size = ws_->mission.convergence.initial_payoff_improvement;
         result_->initial_improvement_from_da13_1 = true;
       }
@@ -825,8 +839,9 @@ Status Iteration::run(const Mission& input) {
   // Once guidance has succeeded every nominal is feasible, so the phase ends by one of Sec. 22's
   // two rules; which one is told by the budget.
   if (result_->optimization_runs > 0) {
-    result_->optimization_stop = result_->forward_runs >= budget - 1 ? OptimizationStop::kForwardRunBudget
-                                                                     : OptimizationStop::kImprovementBelowMinimum;
+    result_->optimization_stop = result_->forward_runs >= budget - 1
+                                     ? OptimizationStop::kForwardRunBudget
+                                     : OptimizationStop::kImprovementBelowMinimum;
   }
 
   // Final backward and forward guidance run. A feasible nominal is replaced only by a feasible
@@ -837,9 +852,9 @@ Status Iteration::run(const Mission& input) {
   if (!ok(status)) ++result_->crashed_runs;  // the feasible nominal stays the reported trajectory
   result_->final_guidance_met = ok(status) && within_deadbands(problem_, candidate_achieved_);
   const bool nominal_feasible = within_deadbands(problem_, nominal_achieved_);
-  const bool final_accepted =
-      nominal_feasible ? result_->final_guidance_met
-                       : ok(status) && error_norm(problem_, candidate_achieved_) <= error_norm(problem_, nominal_achieved_);
+  const bool final_accepted = nominal_feasible ? result_->final_guidance_met
+                                               : ok(status) && error_norm(problem_, candidate_achieved_) <=
+                                                                   error_norm(problem_, nominal_achieved_);
   record(RunKind::kFinalGuidance, status, result_->final_guidance_met, 0.0);
   if (final_accepted) accept_candidate();
 
@@ -872,13 +887,16 @@ Status Iteration::run(const Mission& input) {
       case AdjustableParameter::kStage5Chi: value = misc.stage5_chi_rad; break;
       case AdjustableParameter::kLaunchAzimuth: value = launch.azimuth_rad; break;
       case AdjustableParameter::kLaunchTime: value = launch.launch_space_age_date_days; break;
-      default: value = ws_->mission.vehicle.stages[stage_index(adjusted_coast_stage_code(parameter))].duration_s; break;
+      default:
+        value = ws_->mission.vehicle.stages[stage_index(adjusted_coast_stage_code(parameter))].duration_s;
+        break;
     }
     result_->adjustable_values[p] = value;
   }
   if (!guidance_converged) return Status::kGuidanceDidNotConverge;
   if (result_->optimization_runs == 0) return Status::kOptimizationNotStarted;
-  if (result_->optimization_stop == OptimizationStop::kForwardRunBudget) return Status::kOptimizationBudgetExhausted;
+  if (result_->optimization_stop == OptimizationStop::kForwardRunBudget)
+    return Status::kOptimizationBudgetExhausted;
   if (!result_->final_guidance_met) return Status::kFinalGuidanceFailed;
   return Status::kOk;
 }

@@ -24,13 +24,26 @@ double wrap_two_pi(double angle_rad) {
 }
 
 bool all_finite(const OrbitElements& e) {
-  const double values[] = {e.inertial.velocity_ft_s, e.inertial.flight_path_angle_rad,
-                           e.inertial.azimuth_rad, e.twice_energy_ft2_s2, e.angular_momentum_ft2_s,
-                           e.perigee_radius_ft, e.inclination_rad, e.right_ascension_rad, e.nu_rad,
-                           e.node_longitude_rad, e.in_plane_angle_from_node_rad, e.true_anomaly_rad,
-                           e.argument_of_perigee_rad, e.eccentricity, e.semi_major_axis_ft,
-                           e.period_s, e.apogee_radius_ft, e.hyperbolic_excess_velocity_ft_s,
-                           e.asymptote_right_ascension_rad, e.asymptote_declination_rad};
+  const double values[] = {e.inertial.velocity_ft_s,
+                           e.inertial.flight_path_angle_rad,
+                           e.inertial.azimuth_rad,
+                           e.twice_energy_ft2_s2,
+                           e.angular_momentum_ft2_s,
+                           e.perigee_radius_ft,
+                           e.inclination_rad,
+                           e.right_ascension_rad,
+                           e.nu_rad,
+                           e.node_longitude_rad,
+                           e.in_plane_angle_from_node_rad,
+                           e.true_anomaly_rad,
+                           e.argument_of_perigee_rad,
+                           e.eccentricity,
+                           e.semi_major_axis_ft,
+                           e.period_s,
+                           e.apogee_radius_ft,
+                           e.hyperbolic_excess_velocity_ft_s,
+                           e.asymptote_right_ascension_rad,
+                           e.asymptote_declination_rad};
   for (double v : values) {
     if (!std::isfinite(v)) return false;
   }
@@ -63,8 +76,7 @@ InertialVelocity inertial_velocity(const Constants& constants, const StateVector
 double launch_greenwich_right_ascension_rad(double launch_space_age_date_days) {
   const double t_g = launch_space_age_date_days;
   const double time_of_day_fraction = t_g - std::floor(t_g);
-  const double angle_deg =
-      std::fmod(99.659967 + 0.98564743 * t_g + 360.0 * time_of_day_fraction, 360.0);
+  const double angle_deg = std::fmod(99.659967 + 0.98564743 * t_g + 360.0 * time_of_day_fraction, 360.0);
   return wrap_two_pi(angle_deg * kDegToRad);
 }
 
@@ -154,8 +166,8 @@ Status compute_orbit_elements(const Constants& constants, const StateVector& sta
   return Status::kOk;
 }
 
-double downrange_angle_rad(double launch_latitude_rad, double launch_longitude_rad,
-                           double latitude_rad, double longitude_rad) {
+double downrange_angle_rad(double launch_latitude_rad, double launch_longitude_rad, double latitude_rad,
+                           double longitude_rad) {
   // The manual's cos(DR) = sin lambda0 sin lambda + cos lambda0 cos lambda cos(dtau), evaluated as
   // atan2(|n0 x n|, n0 . n): acos loses half the digits near lift-off, where DR is tiny.
   const double d_lon = longitude_rad - launch_longitude_rad;
@@ -201,8 +213,8 @@ Status stagnation_heating_rate_checked(double nose_radius_ft, double density_slu
       velocity_ft_s < 0.0) {
     return Status::kValueOutOfRange;
   }
-  *heating_rate_btu_ft2_s = stagnation_heating_rate(nose_radius_ft, density_slug_ft3,
-                                                    sea_level_density_slug_ft3, velocity_ft_s);
+  *heating_rate_btu_ft2_s =
+      stagnation_heating_rate(nose_radius_ft, density_slug_ft3, sea_level_density_slug_ft3, velocity_ft_s);
   return Status::kOk;
 }
 

@@ -29,7 +29,8 @@ Status GuidanceExecutor::stage_event(int code, double time_since_liftoff_s) {
     // A repeated event for the stage in force (e.g. a re-sent ignition signal) changes nothing.
     return time_since_liftoff_s == stage_start_s_[code - 1] ? Status::kOk : Status::kStageEventOutOfOrder;
   }
-  if (order < flight_order_index(current_stage_) || time_since_liftoff_s < stage_start_s_[current_stage_ - 1]) {
+  if (order < flight_order_index(current_stage_) ||
+      time_since_liftoff_s < stage_start_s_[current_stage_ - 1]) {
     return Status::kStageEventOutOfOrder;
   }
   stage_start_s_[code - 1] = time_since_liftoff_s;
@@ -79,7 +80,7 @@ Status GuidanceExecutor::step(double t, GuidanceCommand* command) const {
     if (i >= table->segment_count) break;
     const GuidanceSegment& segment = table->segments[i];
     const int order = flight_order_index(segment.stage_code);
-    if (order > order_now) break;  // segments are in flight order (validated)
+    if (order > order_now) break;                           // segments are in flight order (validated)
     if (!stage_started_[segment.stage_code - 1]) continue;  // its stage was skipped
     double since_start;
     if (order == order_now) {

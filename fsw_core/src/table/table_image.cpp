@@ -97,9 +97,7 @@ double get_f64_le(const std::uint8_t* at) { return std::bit_cast<double>(get_u64
 
 std::uint32_t stored_table_crc(const std::uint8_t* image) { return get_u32_le(image + kOffsetCrc); }
 
-void reseal_table_image(std::uint8_t* image) {
-  put_u32_le(image + kOffsetCrc, crc32(image, kOffsetCrc));
-}
+void reseal_table_image(std::uint8_t* image) { put_u32_le(image + kOffsetCrc, crc32(image, kOffsetCrc)); }
 
 // ---- stage codes ---------------------------------------------------------------------------------
 
@@ -124,14 +122,16 @@ Status validate_guidance_table(const GuidanceTable& t) {
   }
 
   // Every double finite first, so that a NaN is reported as such and not as a range fault.
-  const double scalars[] = {t.liftoff_duration_s,   t.max_pitch_rate_rad_s, t.min_pitch_rate_rad_s,
-                            t.min_pitch_rate_change_rad_s, t.max_deflection_rad, t.stage4_theta_rad,
-                            t.stage4_chi_rad,       t.stage5_theta_rad,     t.stage5_chi_rad};
+  const double scalars[] = {
+      t.liftoff_duration_s, t.max_pitch_rate_rad_s, t.min_pitch_rate_rad_s, t.min_pitch_rate_change_rad_s,
+      t.max_deflection_rad, t.stage4_theta_rad,     t.stage4_chi_rad,       t.stage5_theta_rad,
+      t.stage5_chi_rad};
   for (double value : scalars) {
     if (!std::isfinite(value)) return Status::kValueNotFinite;
   }
   for (int i = 0; i < kMaxStages; ++i) {
-    if (!std::isfinite(t.gains[i].k_theta) || !std::isfinite(t.gains[i].k_q_s)) return Status::kValueNotFinite;
+    if (!std::isfinite(t.gains[i].k_theta) || !std::isfinite(t.gains[i].k_q_s))
+      return Status::kValueNotFinite;
   }
   for (int i = 0; i < t.segment_count; ++i) {
     const GuidanceSegment& s = t.segments[i];
@@ -162,7 +162,8 @@ Status validate_guidance_table(const GuidanceTable& t) {
     if (!in_range(value, -kTableMaxAttitudeRad, kTableMaxAttitudeRad)) return Status::kValueOutOfRange;
   }
   for (int i = 0; i < kMaxStages; ++i) {
-    if (!in_range(t.gains[i].k_theta, 0.0, kTableMaxGain) || !in_range(t.gains[i].k_q_s, 0.0, kTableMaxGain)) {
+    if (!in_range(t.gains[i].k_theta, 0.0, kTableMaxGain) ||
+        !in_range(t.gains[i].k_q_s, 0.0, kTableMaxGain)) {
       return Status::kValueOutOfRange;
     }
   }

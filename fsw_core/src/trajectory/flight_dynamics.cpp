@@ -11,7 +11,7 @@
 namespace tolip {
 
 StageContext make_stage_context(const Mission& mission, const PreparedCase& prepared,
-                                 const StageTimeline& line) {
+                                const StageTimeline& line) {
   StageContext stage;
   stage.code = line.code;
   stage.start_s = line.start_s;
@@ -26,8 +26,8 @@ StageContext make_stage_context(const Mission& mission, const PreparedCase& prep
 bool attitude_set_in_flight(const Mission& mission, int stage_code, double stage_start_s, double t) {
   // Step-start times are sums of fixed steps; half of TIMEP (CT1(10)) absorbs their round-off.
   const double eps = 0.5 * mission.constants.time_epsilon_s;
-  const bool window_end = mission.options.zero_alpha_window() &&
-                          std::fabs(t - mission.control.zero_alpha_end_s) < eps;
+  const bool window_end =
+      mission.options.zero_alpha_window() && std::fabs(t - mission.control.zero_alpha_end_s) < eps;
   const bool stage2_ignition = mission.options.alpha_zero_at_stage2_ignition() && stage_code == 2 &&
                                std::fabs(t - stage_start_s) < eps;
   return window_end || stage2_ignition;
@@ -38,8 +38,8 @@ double zero_alpha_theta_rad(const PreparedCase& prepared, const StateVector& sta
 }
 
 void evaluate_flight(const Mission& mission, const PreparedCase& prepared, const StageContext& stage,
-                     const StepCommand& command, double t, const StateVector& state,
-                     double weight_offset_lb, Evaluation* out) {
+                     const StepCommand& command, double t, const StateVector& state, double weight_offset_lb,
+                     Evaluation* out) {
   const Constants& constants = mission.constants;
   const StageData& data = *stage.data;
   const double stage_time = t - stage.start_s;
@@ -70,9 +70,7 @@ void evaluate_flight(const Mission& mission, const PreparedCase& prepared, const
   const Matrix3 platform_to_local = inertial_to_local(trig) * prepared.platform_to_inertial;
   out->chi_rad = command.chi_rad;
   switch (command.mode) {
-    case AttitudeMode::kHeld:
-      out->theta_rad = command.theta_start_rad;
-      break;
+    case AttitudeMode::kHeld: out->theta_rad = command.theta_start_rad; break;
     case AttitudeMode::kZeroAlpha:
       out->theta_rad = theta_for_zero_alpha_rad(platform_to_local, command.chi_rad);
       break;
@@ -127,8 +125,9 @@ void evaluate_flight(const Mission& mission, const PreparedCase& prepared, const
     body.command.chi_rad = command.chi_rad;
     body.command.chi_rate_rad_s = 0.0;
     // F_alpha: the point-mass model's own normal-force slope (block 32 table, the stage's area).
-    body.normal_force_lbf_per_rad =
-        (aero && data.uses_lift_table) ? out->dynamic_pressure_lbf_ft2 * data.reference_area_ft2 * c_n_alpha : 0.0;
+    body.normal_force_lbf_per_rad = (aero && data.uses_lift_table)
+                                        ? out->dynamic_pressure_lbf_ft2 * data.reference_area_ft2 * c_n_alpha
+                                        : 0.0;
     body.platform_to_local = platform_to_local;
     Matrix3 air_platform_to_local;
     if (windy) {
@@ -165,8 +164,8 @@ void evaluate_flight(const Mission& mission, const PreparedCase& prepared, const
     if (windy) {
       // Drag against the air-relative velocity, lift along a_z: given to the equations as local
       // force components (the manual's F_j increment, then D = 0).
-      wind_force_local = -out->drag_lbf * local_to_air.row(1).transpose() +
-                         out->lift_lbf * local_to_air.row(2).transpose();
+      wind_force_local =
+          -out->drag_lbf * local_to_air.row(1).transpose() + out->lift_lbf * local_to_air.row(2).transpose();
     }
   }
 

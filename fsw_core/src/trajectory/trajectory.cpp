@@ -45,8 +45,8 @@ class Flight {
                          const StateVector& state);
   void perturb_command(const StageContext& stage, double t, StepCommand* command) const;
   double program_theta(int point, double t) const;
-  Status record(const StageContext& stage, double t, const StateVector& state,
-                const StepCommand& command, const Evaluation& eval);
+  Status record(const StageContext& stage, double t, const StateVector& state, const StepCommand& command,
+                const Evaluation& eval);
   Status record_pad_point();
   Status resume(StateVector* state);
 
@@ -182,9 +182,9 @@ Status Flight::record(const StageContext& stage, double t, const StateVector& st
           ? stagnation_heating_rate(mission_.misc.nose_radius_ft, eval.density_slug_ft3,
                                     mission_.atmosphere.base_density_slug_ft3[0], state[kStateV])
           : 0.0;
-  p.downrange_rad = downrange_angle_rad(mission_.launch.geocentric_latitude_rad,
-                                        mission_.launch.longitude_rad, state[kStateLambda],
-                                        p.earth_longitude_rad);
+  p.downrange_rad =
+      downrange_angle_rad(mission_.launch.geocentric_latitude_rad, mission_.launch.longitude_rad,
+                          state[kStateLambda], p.earth_longitude_rad);
   p.inertial = inertial_velocity(constants, state);
   p.heading_hold = command.heading_hold;
   p.alpha_zero = command.mode == AttitudeMode::kZeroAlpha;
@@ -246,7 +246,8 @@ Status Flight::record_pad_point() {
   eval.altitude_ft = mission_.launch.altitude_ft;
   eval.weight_lb = vehicle_weight_lb(mission_.vehicle, 1, 0.0);
   eval.vacuum_thrust_lbf = (*stage1.thrust)(0.0);
-  eval.net_thrust_lbf = eval.vacuum_thrust_lbf - liftoff.pad_pressure_lbf_ft2 * stage1.data->nozzle_exit_area_ft2;
+  eval.net_thrust_lbf =
+      eval.vacuum_thrust_lbf - liftoff.pad_pressure_lbf_ft2 * stage1.data->nozzle_exit_area_ft2;
   eval.theta_rad = kHalfPi;
   eval.theta_command_rad = kHalfPi;
   StepCommand command;
@@ -287,7 +288,8 @@ Status Flight::fly_stage(int slot, StateVector* state) {
     if (!ok(status)) return status;
     if (eval.altitude_ft < kImpactAltitudeFt) return Status::kAltitudeBelowSurface;
     if (!ok(eval.body_status)) return eval.body_status;
-    last_theta_step_rad = (command.mode == AttitudeMode::kLinear) ? command.theta_end_rad - command.theta_start_rad : 0.0;
+    last_theta_step_rad =
+        (command.mode == AttitudeMode::kLinear) ? command.theta_end_rad - command.theta_start_rad : 0.0;
 
     StepRecord& step = trajectory_->steps[trajectory_->step_count++];
     step.point = point;
@@ -295,8 +297,8 @@ Status Flight::fly_stage(int slot, StateVector* state) {
     step.adams = !powered && i >= kRkadStartSteps;
     // Near the vertical a deck without the heading hold (the manual's decks) integrates the step in
     // regular coordinates; with the hold the steps are the reference oracle's, bit for bit.
-    command.vertical_flight = !step.adams && !(mission_.launch.heading_hold_until_s > 0.0) &&
-                              starts_near_vertical(*state);
+    command.vertical_flight =
+        !step.adams && !(mission_.launch.heading_hold_until_s > 0.0) && starts_near_vertical(*state);
     const double heading_reference_rad = (*state)[kStatePsi];
     step.command = command;
 
@@ -332,7 +334,8 @@ Status Flight::fly_stage(int slot, StateVector* state) {
   StepCommand command = command_at(stage, trajectory_->point_count, t_end, line.step_s, *state);
   perturb_command(stage, t_end, &command);
   if (command.mode == AttitudeMode::kLinear) {
-    command.theta_end_rad = body_dynamics ? command.theta_start_rad + last_theta_step_rad : command.theta_start_rad;
+    command.theta_end_rad =
+        body_dynamics ? command.theta_start_rad + last_theta_step_rad : command.theta_start_rad;
   }
   command.body_dynamics = body_dynamics;
   evaluate_flight(mission_, prepared_, stage, command, t_end, *state, 0.0, &eval);
@@ -426,8 +429,8 @@ Status fly_trajectory(const Mission& mission, const PreparedCase& prepared, Traj
   return fly_trajectory(mission, prepared, FlightInputs{}, trajectory);
 }
 
-Status fly_trajectory(const Mission& mission, const PreparedCase& prepared,
-                      const ControlProgram& program, Trajectory* trajectory) {
+Status fly_trajectory(const Mission& mission, const PreparedCase& prepared, const ControlProgram& program,
+                      Trajectory* trajectory) {
   FlightInputs inputs;
   inputs.program = &program;
   return fly_trajectory(mission, prepared, inputs, trajectory);
@@ -439,8 +442,7 @@ int trajectory_point_count(const PreparedCase& prepared) {
   return count;
 }
 
-bool is_output_point(const Mission& mission, const Trajectory& trajectory, int index,
-                     TrajectoryKind kind) {
+bool is_output_point(const Mission& mission, const Trajectory& trajectory, int index, TrajectoryKind kind) {
   for (int k = 0; k < trajectory.stage_count; ++k) {
     const StageEvent& event = trajectory.stages[k];
     if (index < event.first_point || index > event.last_point) continue;

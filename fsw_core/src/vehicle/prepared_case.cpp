@@ -13,8 +13,7 @@ namespace {
 // Ideal-velocity integrand g0 T / W at stage time t, with the total vehicle weight (case payload
 // included), as Sec. 14 integrates "thrust/weight".
 template <typename ThrustLookup>
-double thrust_per_mass(const Vehicle& vehicle, int code, double g0, const ThrustLookup& thrust,
-                       double t) {
+double thrust_per_mass(const Vehicle& vehicle, int code, double g0, const ThrustLookup& thrust, double t) {
   return g0 * thrust(t) / vehicle_weight_lb(vehicle, code, t);
 }
 
@@ -59,8 +58,8 @@ Status build_timeline(const Mission& mission, PreparedCase* prepared) {
 // Sec. 14: re-tabulate the vacuum thrust at the integration times, remove the initial pulse by a
 // replacement T(0) that keeps the impulse of the first integration interval, and scale every entry so the
 // stage's ideal velocity equals that of the input table.
-Status modify_thrust_table(const Mission& mission, const StageTimeline& line,
-                           ModifiedThrustTable* table, ThrustModification* modification) {
+Status modify_thrust_table(const Mission& mission, const StageTimeline& line, ModifiedThrustTable* table,
+                           ThrustModification* modification) {
   const Vehicle& vehicle = mission.vehicle;
   const StageData& stage = vehicle.stages[stage_index(line.code)];
   const ThrustTable& input = stage.vacuum_thrust_lbf;
@@ -68,9 +67,7 @@ Status modify_thrust_table(const Mission& mission, const StageTimeline& line,
   const int code = line.code;
 
   // A: over the input entries.
-  const auto input_integrand = [&](double t) {
-    return thrust_per_mass(vehicle, code, g0, input, t);
-  };
+  const auto input_integrand = [&](double t) { return thrust_per_mass(vehicle, code, g0, input, t); };
   double ideal_input = 0.0;
   for (int i = 0; i + 1 < input.size(); ++i) {
     ideal_input += simpson(input_integrand, input.x(i), input.x(i + 1));
@@ -78,9 +75,8 @@ Status modify_thrust_table(const Mission& mission, const StageTimeline& line,
 
   // The grid: 0, the first step time (TL in stage 1), then every step to the end of the stage.
   table->clear();
-  const double first_grid_time = (line.first_step_stage_time_s > 0.0)
-                                     ? line.first_step_stage_time_s
-                                     : line.step_s;
+  const double first_grid_time =
+      (line.first_step_stage_time_s > 0.0) ? line.first_step_stage_time_s : line.step_s;
   const double new_initial_thrust =
       2.0 * input_impulse(input, first_grid_time) / first_grid_time - input(first_grid_time);
   Status status = table->append(0.0, new_initial_thrust);
@@ -88,17 +84,14 @@ Status modify_thrust_table(const Mission& mission, const StageTimeline& line,
     status = table->append(line.first_step_stage_time_s, input(line.first_step_stage_time_s));
   }
   for (int i = 1; i <= line.steps && ok(status); ++i) {
-    const double t = (i == line.steps) ? line.duration_s
-                                       : line.first_step_stage_time_s + i * line.step_s;
+    const double t = (i == line.steps) ? line.duration_s : line.first_step_stage_time_s + i * line.step_s;
     status = table->append(t, input(t));
   }
   if (ok(status)) status = table->finalize();
   if (!ok(status)) return status;
 
   // B: over the grid table, then scale to make B = A.
-  const auto grid_integrand = [&](double t) {
-    return thrust_per_mass(vehicle, code, g0, *table, t);
-  };
+  const auto grid_integrand = [&](double t) { return thrust_per_mass(vehicle, code, g0, *table, t); };
   double ideal_grid = 0.0;
   for (int i = 0; i + 1 < table->size(); ++i) {
     ideal_grid += simpson(grid_integrand, table->x(i), table->x(i + 1));
@@ -127,8 +120,7 @@ void prepare_launch_geometry(const Mission& mission, PreparedCase* prepared) {
   prepared->delta_lambda_rad = delta_lambda_rad(constants, latitude, prepared->pad_radius_ft);
   prepared->geocentric_to_inertial =
       geocentric_to_inertial(launch.azimuth_rad, latitude, launch.longitude_rad);
-  prepared->platform_to_geocentric =
-      platform_to_geocentric(launch.azimuth_rad, prepared->delta_lambda_rad);
+  prepared->platform_to_geocentric = platform_to_geocentric(launch.azimuth_rad, prepared->delta_lambda_rad);
   prepared->platform_to_inertial = prepared->geocentric_to_inertial * prepared->platform_to_geocentric;
   prepared->pad_state << launch.velocity_ft_s, launch.flight_path_angle_rad, prepared->pad_radius_ft,
       launch.azimuth_rad, latitude, launch.longitude_rad;

@@ -24,8 +24,8 @@ bool write_file_atomically(const std::string& path, std::string_view contents, s
 
 // Renders the contents with `render` (into memory), then writes them as above. When `render`
 // returns false, throws, or leaves the stream failed, nothing is written at all.
-bool write_file_atomically(const std::string& path,
-                           const std::function<bool(std::ostream&)>& render, std::string* error);
+bool write_file_atomically(const std::string& path, const std::function<bool(std::ostream&)>& render,
+                           std::string* error);
 
 // True when `path` does not exist or is a regular file (not followed through a symbolic link);
 // otherwise false with *error "refusing to replace 'PATH': it is <kind>; ...". Every write above

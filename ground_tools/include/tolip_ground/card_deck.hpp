@@ -36,8 +36,8 @@ const char* deck_format_name(DeckFormat format);  // "TOML deck", "card deck"
 
 // One case of a deck.
 struct DeckCase {
-  int number = 1;        // 1-based
-  int first_card = 0;    // card decks: the case's first card (0 for TOML decks)
+  int number = 1;                    // 1-based
+  int first_card = 0;                // card decks: the case's first card (0 for TOML decks)
   std::unique_ptr<Mission> mission;  // validated (validate_mission)
   DeckExtras extras;
   // The case word by word as data blocks (card decks: as punched, with card and columns; TOML

@@ -26,8 +26,7 @@ struct AtmosphereCommandOptions {
   double altitude_ft = 0.0;  // geometric altitude
   bool json = false;
 };
-int run_atmosphere_command(const AtmosphereCommandOptions& options, std::ostream& out,
-                           std::ostream& err);
+int run_atmosphere_command(const AtmosphereCommandOptions& options, std::ostream& out, std::ostream& err);
 
 // `tolip simulate DECK [--csv FILE] [--json]`
 struct SimulateCommandOptions {
@@ -35,8 +34,7 @@ struct SimulateCommandOptions {
   std::string csv_path;  // empty: no CSV
   bool json = false;
 };
-int run_simulate_command(const SimulateCommandOptions& options, std::ostream& out,
-                         std::ostream& err);
+int run_simulate_command(const SimulateCommandOptions& options, std::ostream& out, std::ostream& err);
 
 // `tolip optimize DECK [--csv FILE] [--json] [--progress|--no-progress]`: every case of the deck in
 // order. A deck of one case prints one JSON document, a deck of several a JSON array of one per case.
@@ -48,15 +46,14 @@ struct OptimizeCommandOptions {
   bool json = false;
   ProgressMode progress = ProgressMode::kAuto;  // the forward-run status line on stderr
 };
-int run_optimize_command(const OptimizeCommandOptions& options, std::ostream& out,
-                         std::ostream& err);
+int run_optimize_command(const OptimizeCommandOptions& options, std::ostream& out, std::ostream& err);
 
 // `tolip convert DECK --to OUT [--format toml|cards] [--case N]`: a card deck to TOML and back.
 struct ConvertCommandOptions {
   std::string deck_path;
   std::string out_path;
-  std::string format;    // "toml", "cards" or empty (from the extension of out_path)
-  int case_number = 0;   // card deck -> TOML: the case (0: the deck must hold one)
+  std::string format;   // "toml", "cards" or empty (from the extension of out_path)
+  int case_number = 0;  // card deck -> TOML: the case (0: the deck must hold one)
 };
 int run_convert_command(const ConvertCommandOptions& options, std::ostream& out, std::ostream& err);
 

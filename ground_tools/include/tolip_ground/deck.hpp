@@ -15,17 +15,17 @@ namespace tolip::ground {
 
 struct DeckError {
   std::string file;
-  int line = 0;            // 0 when unknown; for a card deck the card number (1-based line)
-  int data_block = 0;      // manual data block number, 0 when not tied to one
-  std::string field;       // TOML key path, e.g. "stage.2.thrust.time_s[5]"
-  std::string message;     // what is wrong and what was expected
+  int line = 0;         // 0 when unknown; for a card deck the card number (1-based line)
+  int data_block = 0;   // manual data block number, 0 when not tied to one
+  std::string field;    // TOML key path, e.g. "stage.2.thrust.time_s[5]"
+  std::string message;  // what is wrong and what was expected
   // Card decks (card_deck.hpp) only: where on the card and in the data block.
   bool card_deck = false;  // true: to_string() uses the card form below
   int first_column = 0;    // columns of the field on card `line` (0 when not tied to a field)
   int last_column = 0;
-  int case_number = 0;     // 1-based case of the deck (0 when not tied to a case)
-  int stage_code = 0;      // header field 4 (stage code; dispersion code for block 46)
-  int word = 0;            // word of the data block (1-based), 0 when not tied to one
+  int case_number = 0;  // 1-based case of the deck (0 when not tied to a case)
+  int stage_code = 0;   // header field 4 (stage code; dispersion code for block 46)
+  int word = 0;         // word of the data block (1-based), 0 when not tied to one
   // TOML: "file:line: data block N, field F: message"
   // cards: "file: card L, columns A-B: case C, data block N, stage code S, word W: message"
   std::string to_string() const;
@@ -35,8 +35,7 @@ struct DeckError {
 bool load_toml_deck(const std::string& path, Mission* mission, DeckError* error);
 
 // The same from text already in memory (path is used in messages only).
-bool parse_toml_deck(const std::string& text, const std::string& path, Mission* mission,
-                     DeckError* error);
+bool parse_toml_deck(const std::string& text, const std::string& path, Mission* mission, DeckError* error);
 
 // Mission is large (fixed-capacity tables); ground tools keep it on the heap.
 inline std::unique_ptr<Mission> make_mission() { return std::make_unique<Mission>(); }

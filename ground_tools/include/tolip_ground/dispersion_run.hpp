@@ -16,14 +16,15 @@ namespace tolip::ground {
 // Where fill_dispersion_data() found deck data the core cannot hold.
 struct DispersionMappingFault {
   int data_block = 0;
-  int code = 0;          // dispersion code of the block 46 card
-  std::string field;     // deck key path, e.g. "dispersion[3].thrust"
+  int code = 0;       // dispersion code of the block 46 card
+  std::string field;  // deck key path, e.g. "dispersion[3].thrust"
   std::string message;
 };
 
 // Deck data blocks 46-55 -> core (stations inches -> ft; angles are already rad). False with *fault
 // when a table is longer than the core's capacity (blocks 30/38: 120 points, 35: 20, 53-54: 32).
-bool fill_dispersion_data(const std::vector<DispersionCase>& deck, DispersionData* data, DispersionMappingFault* fault);
+bool fill_dispersion_data(const std::vector<DispersionCase>& deck, DispersionData* data,
+                          DispersionMappingFault* fault);
 
 struct DispersionStep {
   StepOutcome outcome = StepOutcome::kNotRequested;
@@ -42,7 +43,7 @@ bool final_dispersion_nominal(const Mission& mission, const OptimizationRun& run
 // Runs the analysis about the job's final nominal when the case asks for it (IP(21) = 1). Skipped
 // (with the failing step's status) when the optimization did not converge, or, under IP(7) = 1,
 // when the linearization did not finish. `data` must already be filled (fill_dispersion_data).
-void run_dispersion_step(const Mission& mission, const OptimizationRun& run, std::unique_ptr<DispersionData> data,
-                         DispersionStep* step);
+void run_dispersion_step(const Mission& mission, const OptimizationRun& run,
+                         std::unique_ptr<DispersionData> data, DispersionStep* step);
 
 }  // namespace tolip::ground

@@ -38,7 +38,7 @@ inline constexpr const char* kTableLinkerSection = ".tolip_table";
 inline constexpr const char* kDefaultTableSymbol = "tolip_pitch_table";
 
 struct TableBuildOptions {
-  std::string mission_id;          // empty: default_mission_id()
+  std::string mission_id;           // empty: default_mission_id()
   std::int64_t created_unix_s = 0;  // creation stamp
 };
 
@@ -52,8 +52,8 @@ std::string default_mission_id(const Mission& mission);
 // false and sets *error (a sentence naming the data block) on any fault; the table then fails
 // validate_guidance_table() or the case cannot be represented.
 bool build_guidance_table(const Mission& mission, const DeckExtras& extras, const PreparedCase& prepared,
-                          const LinearProgram* linearized, const TableBuildOptions& options, GuidanceTable* table,
-                          std::string* error);
+                          const LinearProgram* linearized, const TableBuildOptions& options,
+                          GuidanceTable* table, std::string* error);
 
 // The C header holding `image` as a const array named `symbol`, placed in kTableLinkerSection.
 // `origin` is a comment line naming the source (deck path).

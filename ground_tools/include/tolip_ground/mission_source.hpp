@@ -16,6 +16,7 @@ namespace tolip::ground {
 // Source defining `tolip::Status <function_name>(tolip::Mission* mission)` in namespace
 // tolip::flight; the function fills a default-constructed Mission and returns
 // validate_mission()'s status. `origin` names the deck in a comment.
-std::string mission_cpp_source(const Mission& mission, const std::string& function_name, const std::string& origin);
+std::string mission_cpp_source(const Mission& mission, const std::string& function_name,
+                               const std::string& origin);
 
 }  // namespace tolip::ground

@@ -31,8 +31,8 @@ struct OptimizationReport {
   // of the trajectory and orbit elements alone (kOk when both exist), so the listing reports a
   // trajectory failure but not a failure to converge.
   SimulationReport final_trajectory;
-  const Mission* initial_mission = nullptr;   // the deck as loaded (initial parameter values)
-  const OptimizerResult* result = nullptr;    // required
+  const Mission* initial_mission = nullptr;  // the deck as loaded (initial parameter values)
+  const OptimizerResult* result = nullptr;   // required
   // The run's status: the optimizer's (kOk when converged; kGuidanceDidNotConverge,
   // kOptimizationNotStarted, kFinalGuidanceFailed, or the core failure that stopped it), or, when
   // that is kOk, the final trajectory's or orbit's failure.
@@ -67,7 +67,6 @@ struct OptimizationReport {
   // The dispersion analysis (IP(21) = 1, Sec. 15; dispersion_report.hpp): null unless asked for.
   const DispersionStep* dispersions = nullptr;
 };
-
 
 // One adjustable parameter of data block 6: degrees for attitudes and the launch azimuth,
 // seconds for coast durations and for the launch time (code 7: seconds after 0h UT of the deck's

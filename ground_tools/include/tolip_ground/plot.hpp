@@ -86,9 +86,9 @@ struct KeyEntry {
 
 // One figure: one PNG and one SVG named after `name`.
 struct Figure {
-  std::string name;      // file stem, e.g. "altitude_downrange"
-  std::string title;     // first title line
-  std::string x_label;   // with its unit: "downrange (n.mi.)"
+  std::string name;     // file stem, e.g. "altitude_downrange"
+  std::string title;    // first title line
+  std::string x_label;  // with its unit: "downrange (n.mi.)"
   std::string y_label;
   std::vector<PlotSeries> series;
   std::vector<std::string> subtitle;  // further title lines: the case title, heading and run status
@@ -96,7 +96,7 @@ struct Figure {
   bool y_log = false;
   bool y2_log = false;
   double aspect_ratio = std::numeric_limits<double>::quiet_NaN();  // plot height / width; NaN: the terminal's
-  double x_min = std::numeric_limits<double>::quiet_NaN();  // the ranges drawn; NaN: gnuplot's
+  double x_min = std::numeric_limits<double>::quiet_NaN();         // the ranges drawn; NaN: gnuplot's
   double x_max = std::numeric_limits<double>::quiet_NaN();
   double y_min = std::numeric_limits<double>::quiet_NaN();
   double y_max = std::numeric_limits<double>::quiet_NaN();

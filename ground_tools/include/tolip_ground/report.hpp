@@ -26,32 +26,32 @@ struct DeckListingOptions;  // tolip_ground/deck_extras.hpp
 // ft/s, n.mi., ft^2/s^2, Btu/ft^2, lbf/ft^2).
 struct ConstraintSummary {
   int code = 0;
-  std::string name;        // snake_case quantity: "altitude", "inertial_flight_path_angle", ...
-  int stage = 0;           // X of a stage-point code 10 X + 5..9; 0 for a terminal constraint
-  std::string unit;        // data block 19 unit: "ft", "rad", "ft/s", "nmi", ...
-  bool angle = false;      // unit "rad" (the listing adds degrees)
+  std::string name;    // snake_case quantity: "altitude", "inertial_flight_path_angle", ...
+  int stage = 0;       // X of a stage-point code 10 X + 5..9; 0 for a terminal constraint
+  std::string unit;    // data block 19 unit: "ft", "rad", "ft/s", "nmi", ...
+  bool angle = false;  // unit "rad" (the listing adds degrees)
   double desired = 0.0;
-  double achieved = 0.0;   // on the trajectory; NaN when it could not be evaluated
-  double error = 0.0;      // achieved - desired (angles 12, 13, 101 wrapped into [-pi, pi))
-  double tolerance = 0.0;  // data block 29 optimization deadband
+  double achieved = 0.0;        // on the trajectory; NaN when it could not be evaluated
+  double error = 0.0;           // achieved - desired (angles 12, 13, 101 wrapped into [-pi, pi))
+  double tolerance = 0.0;       // data block 29 optimization deadband
   double payoff_partial = 0.0;  // d payoff / d constraint (eq. 9-22), payoff unit per `unit`
   // An upper limit, not an equality: total heating (14, Sec. 13) and the dynamic pressure X9
   // under IP(13) = 1. Only an excess (error > 0) counts.
   bool inequality = false;
-  bool met = false;        // |error| <= tolerance (inequality: error <= tolerance)
+  bool met = false;  // |error| <= tolerance (inequality: error <= tolerance)
 };
 
 // What `simulate` computed. `trajectory` may be partial (status not kOk): its points are those
 // flown up to the failure. The orbit elements exist only when the trajectory completed.
 struct SimulationReport {
-  const Mission* mission = nullptr;         // required
+  const Mission* mission = nullptr;  // required
   // Data block 10 words 8-9 (the deck's DeckExtras::listing); null: the nominal page layout.
   const DeckListingOptions* listing = nullptr;
-  const Trajectory* trajectory = nullptr;   // required (point_count 0 when prepare_case failed)
-  Status status = Status::kNotPrepared;     // first failure of prepare/fly/orbit, or kOk
+  const Trajectory* trajectory = nullptr;  // required (point_count 0 when prepare_case failed)
+  Status status = Status::kNotPrepared;    // first failure of prepare/fly/orbit, or kOk
   bool has_orbit = false;
-  OrbitElements orbit;                      // meaningful when has_orbit
-  std::string deck_path;                    // echoed in the JSON document
+  OrbitElements orbit;    // meaningful when has_orbit
+  std::string deck_path;  // echoed in the JSON document
   // `simulate`: the deck's constraints on this trajectory (deck_constraint_summaries), listed after
   // the terminal conditions and in the JSON member "constraints". Empty for optimize's final
   // trajectory, whose summary reports them against the optimizer's deadbands.
@@ -60,16 +60,17 @@ struct SimulationReport {
 
 // The deck's constraints (data blocks 8, 19, 29: code, desired value, optimization deadband) as
 // the optimizer evaluates them, on a trajectory that may have stopped early (then NaN achieved).
-std::vector<ConstraintSummary> deck_constraint_summaries(const Mission& mission, const Trajectory& trajectory);
+std::vector<ConstraintSummary> deck_constraint_summaries(const Mission& mission,
+                                                         const Trajectory& trajectory);
 // Their JSON array (docs/cli.md: `constraints` of simulate and optimize).
 nlohmann::ordered_json constraints_json(const std::vector<ConstraintSummary>& constraints);
 
 // One column of the point table (CSV header, JSON point keys).
 enum class ColumnKind : int { kReal, kInteger, kFlag };
 struct PointColumn {
-  const char* name;      // snake_case, unit suffix: "velocity_ft_s"
-  const char* unit;      // for documentation: "ft/s"
-  const char* meaning;   // for documentation
+  const char* name;     // snake_case, unit suffix: "velocity_ft_s"
+  const char* unit;     // for documentation: "ft/s"
+  const char* meaning;  // for documentation
   ColumnKind kind;
   double (*value)(const TrajectoryPoint& point);  // flags give 0 or 1
 };
@@ -99,8 +100,8 @@ struct OrbitSummary {
   PathClass path = PathClass::kOrbit;
   double perigee_altitude_ft = 0.0;
   double apogee_altitude_ft = 0.0;
-  double perigee_latitude_rad = 0.0;        // geocentric
-  bool perigee_in_atmosphere = false;       // above the surface but below CT1(7) HAERO
+  double perigee_latitude_rad = 0.0;   // geocentric
+  bool perigee_in_atmosphere = false;  // above the surface but below CT1(7) HAERO
 };
 OrbitSummary summarize_orbit(const Constants& constants, const OrbitElements& orbit);
 

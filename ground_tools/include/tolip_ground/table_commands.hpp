@@ -14,10 +14,10 @@ namespace tolip::ground {
 //  [--created-unix-s N]`
 struct ExportCommandOptions {
   std::string deck_path;
-  std::string out_path;        // the binary image (required)
-  std::string c_header_path;   // empty: no C header
-  std::string symbol = "tolip_pitch_table";  // C array name in the header
-  std::string mission_id;      // empty: from the case title (data block 1)
+  std::string out_path;                        // the binary image (required)
+  std::string c_header_path;                   // empty: no C header
+  std::string symbol = "tolip_pitch_table";    // C array name in the header
+  std::string mission_id;                      // empty: from the case title (data block 1)
   std::optional<std::int64_t> created_unix_s;  // empty: SOURCE_DATE_EPOCH, else the current time
 };
 int run_export_command(const ExportCommandOptions& options, std::ostream& out, std::ostream& err);

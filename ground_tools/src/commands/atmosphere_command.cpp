@@ -23,10 +23,9 @@ std::string line(const char* label, const char* pattern, double value, const cha
 
 }  // namespace
 
-int run_atmosphere_command(const AtmosphereCommandOptions& options, std::ostream& out,
-                           std::ostream& err) {
-  const Constants constants;           // data block 10 defaults
-  const AtmosphereTable table;         // data blocks 11-14 defaults (Sec. 19)
+int run_atmosphere_command(const AtmosphereCommandOptions& options, std::ostream& out, std::ostream& err) {
+  const Constants constants;                                      // data block 10 defaults
+  const AtmosphereTable table;                                    // data blocks 11-14 defaults (Sec. 19)
   const double radius_ft = constants.earth_equatorial_radius_ft;  // CT1(3)
   const double altitude_ft = options.altitude_ft;
   if (!std::isfinite(altitude_ft)) {
@@ -35,9 +34,11 @@ int run_atmosphere_command(const AtmosphereCommandOptions& options, std::ostream
   }
   if (!(altitude_ft >= kAtmosphereLowestAltitude_ft && altitude_ft <= kAtmosphereHighestAltitude_ft)) {
     char text[160];
-    std::snprintf(text, sizeof text, "%.15g ft is outside the model's range: expected %.15g <= altitude <= %.15g",
-                  altitude_ft, kAtmosphereLowestAltitude_ft, kAtmosphereHighestAltitude_ft);
-    err << "tolip: --altitude-ft = " << text << " ft (the 1962 standard atmosphere starts at -5 km; above 1,000,000 ft the extended last layer"
+    std::snprintf(text, sizeof text,
+                  "%.15g ft is outside the model's range: expected %.15g <= altitude <= %.15g", altitude_ft,
+                  kAtmosphereLowestAltitude_ft, kAtmosphereHighestAltitude_ft);
+    err << "tolip: --altitude-ft = " << text
+        << " ft (the 1962 standard atmosphere starts at -5 km; above 1,000,000 ft the extended last layer"
         << " of Sec. 19 describes no atmosphere)\n";
     return kExitBadInput;
   }

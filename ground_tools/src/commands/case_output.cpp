@@ -39,8 +39,9 @@ std::string case_message_prefix(int case_number, std::size_t cases) {
   return cases > 1 ? "case " + std::to_string(case_number) + ": " : "";
 }
 
-void write_case_outputs(std::ostream& out, std::ostream& err, bool json, const nlohmann::ordered_json& documents,
-                        const std::string& listing, const std::vector<std::string>& failures) {
+void write_case_outputs(std::ostream& out, std::ostream& err, bool json,
+                        const nlohmann::ordered_json& documents, const std::string& listing,
+                        const std::vector<std::string>& failures) {
   if (json) {
     out << dump_json(documents.size() == 1 ? documents[0] : documents);
   } else {

@@ -28,7 +28,8 @@ std::string case_message_prefix(int case_number, std::size_t cases);
 // deck of one case, an array for several (`json`), else the collected listing; then stderr gets
 // each case's failure line, in case order.
 // `documents` is the JSON array of the cases' documents.
-void write_case_outputs(std::ostream& out, std::ostream& err, bool json, const nlohmann::ordered_json& documents,
-                        const std::string& listing, const std::vector<std::string>& failures);
+void write_case_outputs(std::ostream& out, std::ostream& err, bool json,
+                        const nlohmann::ordered_json& documents, const std::string& listing,
+                        const std::vector<std::string>& failures);
 
 }  // namespace tolip::ground

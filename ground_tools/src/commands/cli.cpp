@@ -75,13 +75,12 @@ CLI::Validator not_blank(const std::string& expected) {
 
 // tolip atmosphere: the 1962 ARDC atmosphere at one altitude.
 CLI::App* add_atmosphere_command(CLI::App& app, AtmosphereCommandOptions* options) {
-  CLI::App* atmosphere = app.add_subcommand(
-      "atmosphere",
-      "Evaluate the 1962 ARDC standard atmosphere of manual\n"
-      "Sec. 19 at one geometric altitude: density (slug/ft^3),\n"
-      "pressure (lbf/ft^2), speed of sound (ft/s) and molecular-\n"
-      "scale temperature (deg R). The geopotential altitude uses\n"
-      "the equatorial radius CT1(3) = 20,925,696 ft.");
+  CLI::App* atmosphere = app.add_subcommand("atmosphere",
+                                            "Evaluate the 1962 ARDC standard atmosphere of manual\n"
+                                            "Sec. 19 at one geometric altitude: density (slug/ft^3),\n"
+                                            "pressure (lbf/ft^2), speed of sound (ft/s) and molecular-\n"
+                                            "scale temperature (deg R). The geopotential altitude uses\n"
+                                            "the equatorial radius CT1(3) = 20,925,696 ft.");
   atmosphere->footer(
       "Examples:\n"
       "  tolip atmosphere --altitude-ft 0\n"
@@ -90,8 +89,7 @@ CLI::App* add_atmosphere_command(CLI::App& app, AtmosphereCommandOptions* option
       "unparsable or non-finite altitude, or outside -16404 to 1000000 ft).\n"
       "Full reference: docs/cli.md, 'tolip atmosphere'.");
   atmosphere
-      ->add_option("--altitude-ft", options->altitude_ft,
-                   "Geometric altitude, ft, -16404 (-5 km) to 1000000")
+      ->add_option("--altitude-ft", options->altitude_ft, "Geometric altitude, ft, -16404 (-5 km) to 1000000")
       ->required()
       ->check(not_blank("an altitude in ft"))
       ->type_name("FT");
@@ -105,16 +103,15 @@ CLI::App* add_atmosphere_command(CLI::App& app, AtmosphereCommandOptions* option
 
 // tolip simulate: fly each case of a deck and report it.
 CLI::App* add_simulate_command(CLI::App& app, SimulateCommandOptions* options) {
-  CLI::App* simulate = app.add_subcommand(
-      "simulate",
-      "Load a case deck (TOML, or a heritage card deck recognised by\n"
-      "its content), fly the forward trajectory of each case (no\n"
-      "optimization) and report it: a manual-style listing (page\n"
-      "titles of data blocks 1-3, the points data block 9 selects,\n"
-      "stage events, terminal conditions and orbit elements; with\n"
-      "IP(17) the input data first), or one JSON document (--json;\n"
-      "an array of one per case for a deck of several cases);\n"
-      "--csv FILE adds every point (FILE.caseN.csv per case).");
+  CLI::App* simulate = app.add_subcommand("simulate",
+                                          "Load a case deck (TOML, or a heritage card deck recognised by\n"
+                                          "its content), fly the forward trajectory of each case (no\n"
+                                          "optimization) and report it: a manual-style listing (page\n"
+                                          "titles of data blocks 1-3, the points data block 9 selects,\n"
+                                          "stage events, terminal conditions and orbit elements; with\n"
+                                          "IP(17) the input data first), or one JSON document (--json;\n"
+                                          "an array of one per case for a deck of several cases);\n"
+                                          "--csv FILE adds every point (FILE.caseN.csv per case).");
   simulate->footer(
       "Examples:\n"
       "  tolip simulate examples/scout/mission.toml\n"
@@ -125,9 +122,10 @@ CLI::App* add_simulate_command(CLI::App& app, SimulateCommandOptions* options) {
       "any case (everything is still printed) or the CSV not written\n"
       "(nothing printed); 2 bad command line or deck.\n"
       "Full reference: docs/cli.md, 'tolip simulate'.");
-  simulate->add_option("DECK", options->deck_path,
-                       "TOML deck or card deck of one or more cases, recognised\n"
-                       "by content (docs/deck-format.md)")
+  simulate
+      ->add_option("DECK", options->deck_path,
+                   "TOML deck or card deck of one or more cases, recognised\n"
+                   "by content (docs/deck-format.md)")
       ->required()
       ->type_name("FILE");
   simulate
@@ -149,21 +147,20 @@ CLI::App* add_simulate_command(CLI::App& app, SimulateCommandOptions* options) {
 
 // tolip optimize: optimize each case of a deck.
 CLI::App* add_optimize_command(CLI::App& app, OptimizeCommandOptions* options) {
-  CLI::App* optimize = app.add_subcommand(
-      "optimize",
-      "Load a case deck (TOML, or a card deck of one or more\n"
-      "cases) and optimize each case in order: closed-loop steepest\n"
-      "descent (manual Sec. 5, 9, 22) from the data block 40 pitch\n"
-      "program: guidance runs into the data block 29 deadbands,\n"
-      "optimization runs improving the payoff (IP(1): payload,\n"
-      "velocity or altitude), a final guidance run. Prints the\n"
-      "iteration history (per forward run: kind, success,\n"
-      "constraint corrections, attempted payoff increment, payoff,\n"
-      "corrected payoff, payload and its increment, partials of\n"
-      "payoff with respect to each constraint), the final\n"
-      "trajectory listed as by 'simulate', and a summary\n"
-      "(constraints desired/achieved/tolerance, adjustable\n"
-      "parameters; exchange ratios with IP(3)).");
+  CLI::App* optimize = app.add_subcommand("optimize",
+                                          "Load a case deck (TOML, or a card deck of one or more\n"
+                                          "cases) and optimize each case in order: closed-loop steepest\n"
+                                          "descent (manual Sec. 5, 9, 22) from the data block 40 pitch\n"
+                                          "program: guidance runs into the data block 29 deadbands,\n"
+                                          "optimization runs improving the payoff (IP(1): payload,\n"
+                                          "velocity or altitude), a final guidance run. Prints the\n"
+                                          "iteration history (per forward run: kind, success,\n"
+                                          "constraint corrections, attempted payoff increment, payoff,\n"
+                                          "corrected payoff, payload and its increment, partials of\n"
+                                          "payoff with respect to each constraint), the final\n"
+                                          "trajectory listed as by 'simulate', and a summary\n"
+                                          "(constraints desired/achieved/tolerance, adjustable\n"
+                                          "parameters; exchange ratios with IP(3)).");
   optimize->footer(
       "Examples:\n"
       "  tolip optimize examples/scout/mission.toml\n"
@@ -179,9 +176,10 @@ CLI::App* add_optimize_command(CLI::App& app, OptimizeCommandOptions* options) {
       "2 bad command line, deck, or a case the optimizer rejects\n"
       "(unsupported payoff, adjustable parameter or constraint code).\n"
       "Full reference: docs/cli.md, 'tolip optimize'.");
-  optimize->add_option("DECK", options->deck_path,
-                       "TOML deck or card deck of one or more cases, recognised\n"
-                       "by content (docs/deck-format.md)")
+  optimize
+      ->add_option("DECK", options->deck_path,
+                   "TOML deck or card deck of one or more cases, recognised\n"
+                   "by content (docs/deck-format.md)")
       ->required()
       ->type_name("FILE");
   optimize
@@ -221,22 +219,21 @@ CLI::App* add_optimize_command(CLI::App& app, OptimizeCommandOptions* options) {
 
 // tolip plot: draw the figures of a JSON result with gnuplot.
 CLI::App* add_plot_command(CLI::App& app, PlotCommandOptions* options) {
-  CLI::App* plot = app.add_subcommand(
-      "plot",
-      "Draw the figures of a result - the JSON printed by\n"
-      "'simulate --json' or 'optimize --json' - as PNG and SVG with\n"
-      "gnuplot: altitude (n.mi.) vs downrange (ascent and full\n"
-      "flight), velocity, flight-path angle, q-bar, alpha, q-bar x\n"
-      "alpha, pitch attitude theta (ascent and full flight; with\n"
-      "optimize the optimum, and the linearized program over it when\n"
-      "the result has one) and weight vs time, the ground track, and\n"
-      "the optimizer's convergence (payoff and constraint error /\n"
-      "deadband per forward run). Stage ignitions and burnouts, max q\n"
-      "and the zero-alpha window are marked; titles carry the case\n"
-      "heading and run status. A plot whose data the result lacks is\n"
-      "skipped, and so is one whose data hold no finite value (all\n"
-      "null, or beyond 1e30 in magnitude), with a note on stderr\n"
-      "naming it.");
+  CLI::App* plot = app.add_subcommand("plot",
+                                      "Draw the figures of a result - the JSON printed by\n"
+                                      "'simulate --json' or 'optimize --json' - as PNG and SVG with\n"
+                                      "gnuplot: altitude (n.mi.) vs downrange (ascent and full\n"
+                                      "flight), velocity, flight-path angle, q-bar, alpha, q-bar x\n"
+                                      "alpha, pitch attitude theta (ascent and full flight; with\n"
+                                      "optimize the optimum, and the linearized program over it when\n"
+                                      "the result has one) and weight vs time, the ground track, and\n"
+                                      "the optimizer's convergence (payoff and constraint error /\n"
+                                      "deadband per forward run). Stage ignitions and burnouts, max q\n"
+                                      "and the zero-alpha window are marked; titles carry the case\n"
+                                      "heading and run status. A plot whose data the result lacks is\n"
+                                      "skipped, and so is one whose data hold no finite value (all\n"
+                                      "null, or beyond 1e30 in magnitude), with a note on stderr\n"
+                                      "naming it.");
   plot->footer(
       "Files: DIR/NAME.png and DIR/NAME.svg, NAME =\n"
       "altitude_downrange_ascent, altitude_downrange, velocity_time,\n"
@@ -272,14 +269,14 @@ CLI::App* add_plot_command(CLI::App& app, PlotCommandOptions* options) {
 
 // tolip export: write the guidance table image of a case (docs/table-format.md).
 CLI::App* add_export_command(CLI::App& app, ExportCommandOptions* options) {
-  CLI::App* export_command = app.add_subcommand(
-      "export",
-      "Build the guidance-computer table image (docs/table-format.md)\n"
-      "from a case deck (TOML or cards) and write it atomically:\n"
-      "the pitch segments (the linearized optimum when the deck\n"
-      "asks for linearization, IP(7) = 1, the case being optimized\n"
-      "first; else the data block 40 pitch table), lift-off,\n"
-      "spun-stage attitudes, autopilot gains, limits, CRC-32.");
+  CLI::App* export_command =
+      app.add_subcommand("export",
+                         "Build the guidance-computer table image (docs/table-format.md)\n"
+                         "from a case deck (TOML or cards) and write it atomically:\n"
+                         "the pitch segments (the linearized optimum when the deck\n"
+                         "asks for linearization, IP(7) = 1, the case being optimized\n"
+                         "first; else the data block 40 pitch table), lift-off,\n"
+                         "spun-stage attitudes, autopilot gains, limits, CRC-32.");
   export_command->footer(
       "Examples:\n"
       "  tolip export examples/scout/mission.toml --out table.bin\n"
@@ -297,45 +294,49 @@ CLI::App* add_export_command(CLI::App& app, ExportCommandOptions* options) {
       "naming one file, or the deck), deck, or a case the image cannot\n"
       "carry (the message names the data block).\n"
       "Full reference: docs/cli.md, 'tolip export'; docs/table-format.md.");
-  export_command->add_option("DECK", options->deck_path,
-                             "TOML deck or card deck of one case\n"
-                             "(docs/deck-format.md)")
+  export_command
+      ->add_option("DECK", options->deck_path,
+                   "TOML deck or card deck of one case\n"
+                   "(docs/deck-format.md)")
       ->required()
       ->type_name("FILE");
   export_command->add_option("--out", options->out_path, "The binary image (812 bytes)")
       ->required()
       ->type_name("FILE");
-  export_command->add_option("--c-header", options->c_header_path,
-                             "Also write the image as a C const array NAME in the\n"
-                             "linker section .tolip_table, with the macros\n"
-                             "TOLIP_TABLE_IMAGE_<SYMBOL>_H_SIZE (812u) and\n"
-                             "TOLIP_TABLE_IMAGE_<SYMBOL>_H_CRC32, <SYMBOL> = NAME\n"
-                             "upper-cased (include guard TOLIP_TABLE_IMAGE_<SYMBOL>_H)")
+  export_command
+      ->add_option("--c-header", options->c_header_path,
+                   "Also write the image as a C const array NAME in the\n"
+                   "linker section .tolip_table, with the macros\n"
+                   "TOLIP_TABLE_IMAGE_<SYMBOL>_H_SIZE (812u) and\n"
+                   "TOLIP_TABLE_IMAGE_<SYMBOL>_H_CRC32, <SYMBOL> = NAME\n"
+                   "upper-cased (include guard TOLIP_TABLE_IMAGE_<SYMBOL>_H)")
       ->type_name("FILE");
-  export_command->add_option("--symbol", options->symbol,
-                             "C array name in the header, a C identifier\n"
-                             "(default tolip_pitch_table)")
+  export_command
+      ->add_option("--symbol", options->symbol,
+                   "C array name in the header, a C identifier\n"
+                   "(default tolip_pitch_table)")
       ->type_name("NAME");
-  export_command->add_option("--mission-id", options->mission_id,
-                             "Mission identifier, 1-32 printable ASCII characters\n"
-                             "(default: the case title, data block 1)")
+  export_command
+      ->add_option("--mission-id", options->mission_id,
+                   "Mission identifier, 1-32 printable ASCII characters\n"
+                   "(default: the case title, data block 1)")
       ->check(not_blank("1-32 printable ASCII characters (leave the option out for the case title)"))
       ->type_name("TEXT");
-  export_command->add_option("--created-unix-s", options->created_unix_s,
-                             "Creation stamp, s since 1970-01-01Z, 0-253402300799\n"
-                             "(default: SOURCE_DATE_EPOCH, else the current time);\n"
-                             "fix it for byte-identical repeated exports")
+  export_command
+      ->add_option("--created-unix-s", options->created_unix_s,
+                   "Creation stamp, s since 1970-01-01Z, 0-253402300799\n"
+                   "(default: SOURCE_DATE_EPOCH, else the current time);\n"
+                   "fix it for byte-identical repeated exports")
       ->type_name("N");
   return export_command;
 }
 
 // tolip inspect: validate and print a guidance table image.
 CLI::App* add_inspect_command(CLI::App& app, InspectCommandOptions* options) {
-  CLI::App* inspect = app.add_subcommand(
-      "inspect",
-      "Validate a guidance table image with the flight-side loader's\n"
-      "checks and print it in engineering units; a bad image is\n"
-      "named by its fault (exit 2).");
+  CLI::App* inspect = app.add_subcommand("inspect",
+                                         "Validate a guidance table image with the flight-side loader's\n"
+                                         "checks and print it in engineering units; a bad image is\n"
+                                         "named by its fault (exit 2).");
   inspect->footer(
       "Prints the format version, size, CRC-32, mission id, creation stamp,\n"
       "lift-off duration, rate limits, maximum deflection, spun attitudes,\n"
@@ -358,15 +359,14 @@ CLI::App* add_inspect_command(CLI::App& app, InspectCommandOptions* options) {
 
 // tolip convert: card deck to TOML deck and back.
 CLI::App* add_convert_command(CLI::App& app, ConvertCommandOptions* options) {
-  CLI::App* convert = app.add_subcommand(
-      "convert",
-      "Convert a deck between the heritage card format (80-column\n"
-      "card images, manual Sec. 22) and the TOML deck: DECK (either\n"
-      "format, recognised by content) is read and checked like any\n"
-      "deck, converted, read back, and written atomically to the\n"
-      "--to FILE.\n"
-      "A card deck of several cases needs --case N for TOML; cards\n"
-      "write every case (later cases as their changes).");
+  CLI::App* convert = app.add_subcommand("convert",
+                                         "Convert a deck between the heritage card format (80-column\n"
+                                         "card images, manual Sec. 22) and the TOML deck: DECK (either\n"
+                                         "format, recognised by content) is read and checked like any\n"
+                                         "deck, converted, read back, and written atomically to the\n"
+                                         "--to FILE.\n"
+                                         "A card deck of several cases needs --case N for TOML; cards\n"
+                                         "write every case (later cases as their changes).");
   convert->footer(
       "Examples:\n"
       "  tolip convert examples/scout/mission.toml --to mission.dat\n"
@@ -379,17 +379,18 @@ CLI::App* add_convert_command(CLI::App& app, ConvertCommandOptions* options) {
       "cards cannot hold.\n"
       "Full reference: docs/cli.md, 'tolip convert'; docs/deck-format.md.");
   convert->add_option("DECK", options->deck_path, "Card deck or TOML deck")->required()->type_name("FILE");
-  convert->add_option("--to", options->out_path,
-                      "The converted deck; its format follows the name\n"
-                      "(*.toml: TOML; *.dat, *.cards, *.crd: card deck)")
+  convert
+      ->add_option("--to", options->out_path,
+                   "The converted deck; its format follows the name\n"
+                   "(*.toml: TOML; *.dat, *.cards, *.crd: card deck)")
       ->required()
       ->type_name("FILE");
-  convert->add_option("--format", options->format,
-                      "Output format regardless of the name: toml or cards")
+  convert->add_option("--format", options->format, "Output format regardless of the name: toml or cards")
       ->type_name("FORMAT");
-  convert->add_option("--case", options->case_number,
-                      "Case of a several-case card deck to write as TOML\n"
-                      "(1-based; a TOML deck holds one case)")
+  convert
+      ->add_option("--case", options->case_number,
+                   "Case of a several-case card deck to write as TOML\n"
+                   "(1-based; a TOML deck holds one case)")
       ->type_name("N");
   return convert;
 }

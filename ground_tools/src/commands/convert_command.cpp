@@ -10,7 +10,8 @@ namespace tolip::ground {
 namespace {
 
 bool ends_with(const std::string& text, const std::string& suffix) {
-  return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+  return text.size() >= suffix.size() &&
+         text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 }  // namespace
@@ -74,7 +75,8 @@ int run_convert_command(const ConvertCommandOptions& options, std::ostream& out,
   out << "wrote " << options.out_path << ": " << deck_format_name(target) << " of " << cases << " case"
       << (cases == 1 ? "" : "s") << " from the " << deck_format_name(deck.format) << " " << options.deck_path;
   if (target == DeckFormat::kToml && deck.cases.size() > 1) {
-    out << " (case " << (options.case_number == 0 ? 1 : options.case_number) << " of " << deck.cases.size() << ")";
+    out << " (case " << (options.case_number == 0 ? 1 : options.case_number) << " of " << deck.cases.size()
+        << ")";
   }
   if (rounded > 0) {
     out << "; " << rounded << " value" << (rounded == 1 ? " was" : "s were")

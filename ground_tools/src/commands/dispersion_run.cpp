@@ -31,12 +31,14 @@ bool fill_table(const DeckTable& deck, Table<N>* table, int block, int code, con
 
 }  // namespace
 
-bool fill_dispersion_data(const std::vector<DispersionCase>& deck, DispersionData* data, DispersionMappingFault* fault) {
+bool fill_dispersion_data(const std::vector<DispersionCase>& deck, DispersionData* data,
+                          DispersionMappingFault* fault) {
   data->count = 0;
   if (deck.size() > static_cast<std::size_t>(kMaxDispersionSources)) {
     fault->data_block = 46;
     fault->field = "dispersion";
-    fault->message = "at most " + std::to_string(kMaxDispersionSources) + " dispersed trajectories (codes 1-38, 40)";
+    fault->message =
+        "at most " + std::to_string(kMaxDispersionSources) + " dispersed trajectories (codes 1-38, 40)";
     return false;
   }
   for (std::size_t k = 0; k < deck.size(); ++k) {
@@ -48,9 +50,10 @@ bool fill_dispersion_data(const std::vector<DispersionCase>& deck, DispersionDat
     std::strncpy(s.title, d.title.c_str(), sizeof(s.title) - 1);
     const std::string path = "dispersion[" + std::to_string(k) + "]";
     if (!fill_table(d.vacuum_thrust_lbf, &s.vacuum_thrust_lbf, 30, d.code, path + ".thrust", fault) ||
-        !fill_table(d.consumable_weight_lb, &s.consumable_weight_lb, 38, d.code, path + ".consumable_weight", fault) ||
-        !fill_table(d.pitching_moment_per_rad, &s.pitching_moment_per_rad, 35, d.code, path + ".pitching_moment",
+        !fill_table(d.consumable_weight_lb, &s.consumable_weight_lb, 38, d.code, path + ".consumable_weight",
                     fault) ||
+        !fill_table(d.pitching_moment_per_rad, &s.pitching_moment_per_rad, 35, d.code,
+                    path + ".pitching_moment", fault) ||
         !fill_table(d.wind_speed_ft_s, &s.wind.speed_ft_s, 53, d.code, path + ".wind_speed", fault) ||
         !fill_table(d.wind_azimuth_rad, &s.wind.azimuth_rad, 54, d.code, path + ".wind_azimuth", fault)) {
       return false;
@@ -96,8 +99,8 @@ bool final_dispersion_nominal(const Mission& mission, const OptimizationRun& run
   return true;
 }
 
-void run_dispersion_step(const Mission& mission, const OptimizationRun& run, std::unique_ptr<DispersionData> data,
-                         DispersionStep* step) {
+void run_dispersion_step(const Mission& mission, const OptimizationRun& run,
+                         std::unique_ptr<DispersionData> data, DispersionStep* step) {
   if (!mission.options.dispersions()) return;
   step->data = std::move(data);
   DispersionNominal nominal;

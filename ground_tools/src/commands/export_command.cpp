@@ -91,7 +91,8 @@ int run_export_command(const ExportCommandOptions& options, std::ostream& out, s
   std::unique_ptr<Mission> mission = make_mission();
   auto extras = std::make_unique<DeckExtras>();
   DeckError deck_error;
-  if (!load_single_case_deck(options.deck_path, mission.get(), extras.get(), &deck_error)) {  // TOML or card deck
+  if (!load_single_case_deck(options.deck_path, mission.get(), extras.get(),
+                             &deck_error)) {  // TOML or card deck
     err << "tolip: " << deck_error.to_string() << '\n';
     return kExitBadInput;
   }
@@ -116,9 +117,11 @@ int run_export_command(const ExportCommandOptions& options, std::ostream& out, s
     // not exported.
     const JobVerdict verdict = optimization_job_verdict(run);
     if (!ok(verdict.status)) {
-      err << "tolip: " << options.deck_path << ": no table exported: the deck asks for the linearized pitch program "
-          << "(IP(7) = 1) and its " << verdict.failed_step << " did not succeed: " << status_name(verdict.status)
-          << ": " << status_message(verdict.status) << '\n';
+      err << "tolip: " << options.deck_path
+          << ": no table exported: the deck asks for the linearized pitch program "
+          << "(IP(7) = 1) and its " << verdict.failed_step
+          << " did not succeed: " << status_name(verdict.status) << ": " << status_message(verdict.status)
+          << '\n';
       return kExitFailure;
     }
     table_mission = &run.linearization.workspace->mission;
@@ -131,7 +134,8 @@ int run_export_command(const ExportCommandOptions& options, std::ostream& out, s
   build.created_unix_s = stamp;
   auto table = std::make_unique<GuidanceTable>();
   std::string build_error;
-  if (!build_guidance_table(*table_mission, *extras, *table_case, linearized, build, table.get(), &build_error)) {
+  if (!build_guidance_table(*table_mission, *extras, *table_case, linearized, build, table.get(),
+                            &build_error)) {
     err << "tolip: " << options.deck_path << ": " << build_error << '\n';
     return kExitBadInput;
   }
@@ -145,8 +149,8 @@ int run_export_command(const ExportCommandOptions& options, std::ostream& out, s
   auto check = std::make_unique<GuidanceTable>();
   const Status decoded = decode_table_image(image, sizeof image, check.get());
   if (!ok(decoded)) {
-    err << "tolip: the encoded image does not decode: " << status_name(decoded) << ": " << status_message(decoded)
-        << '\n';
+    err << "tolip: the encoded image does not decode: " << status_name(decoded) << ": "
+        << status_message(decoded) << '\n';
     return kExitFailure;
   }
 
@@ -157,7 +161,8 @@ int run_export_command(const ExportCommandOptions& options, std::ostream& out, s
           : table_image_c_header(image, sizeof image, options.symbol, options.deck_path);
   std::string write_error;
   if (!write_file_atomically(options.out_path,
-                             std::string_view(reinterpret_cast<const char*>(image), sizeof image), &write_error)) {
+                             std::string_view(reinterpret_cast<const char*>(image), sizeof image),
+                             &write_error)) {
     err << "tolip: " << write_error << '\n';
     return kExitFailure;
   }
@@ -169,8 +174,9 @@ int run_export_command(const ExportCommandOptions& options, std::ostream& out, s
   char crc[16];
   std::snprintf(crc, sizeof crc, "0x%08X", static_cast<unsigned>(stored_table_crc(image)));
   out << "wrote " << options.out_path << " (" << sizeof image << " bytes, CRC-32 " << crc << ", "
-      << table->segment_count << " segments from " << (linearized != nullptr ? "the linearized program" : "data block 40")
-      << ", mission id '" << table->mission_id << "')\n";
+      << table->segment_count << " segments from "
+      << (linearized != nullptr ? "the linearized program" : "data block 40") << ", mission id '"
+      << table->mission_id << "')\n";
   if (!options.c_header_path.empty()) {
     out << "wrote " << options.c_header_path << " (C array " << options.symbol << " in section "
         << kTableLinkerSection << ")\n";

@@ -10,8 +10,8 @@
 
 namespace tolip::ground {
 
-Status run_monte_carlo(const DispersionNominal& nominal, const DispersionData& data, std::uint64_t seed, int count,
-                       int threads, MonteCarloSamples* out) {
+Status run_monte_carlo(const DispersionNominal& nominal, const DispersionData& data, std::uint64_t seed,
+                       int count, int threads, MonteCarloSamples* out) {
   out->samples.assign(static_cast<std::size_t>(std::max(count, 0)), DispersedTrajectory{});
   const int workers = std::max(1, std::min(threads, std::max(count, 1)));
   std::vector<std::unique_ptr<DispersionWorkspace>> workspaces;
@@ -22,8 +22,8 @@ Status run_monte_carlo(const DispersionNominal& nominal, const DispersionData& d
   }
   DispersionWorkspace& first = *workspaces.front();
   out->nominal = DispersedTrajectory{};
-  Status status = record_dispersed_trajectory(*nominal.mission, first.nominal_prepared, first.nominal, first.nominal,
-                                              nullptr, &out->nominal);
+  Status status = record_dispersed_trajectory(*nominal.mission, first.nominal_prepared, first.nominal,
+                                              first.nominal, nullptr, &out->nominal);
   out->nominal.status = status;
   if (!ok(status)) return out->status = status;
   // Sample i on worker i mod K: which worker flies a sample does not change it (counter draws).
@@ -41,7 +41,8 @@ Status run_monte_carlo(const DispersionNominal& nominal, const DispersionData& d
   return out->status = Status::kOk;
 }
 
-MonteCarloStatistic monte_carlo_statistic(const MonteCarloSamples& samples, int column, StagingVariable variable) {
+MonteCarloStatistic monte_carlo_statistic(const MonteCarloSamples& samples, int column,
+                                          StagingVariable variable) {
   MonteCarloStatistic s;
   std::vector<double> values;
   const int i = static_cast<int>(variable);
@@ -67,7 +68,8 @@ MonteCarloStatistic monte_carlo_statistic(const MonteCarloSamples& samples, int 
   return s;
 }
 
-nlohmann::ordered_json monte_carlo_json(const MonteCarloSamples& samples, std::uint64_t seed, const std::string& kind) {
+nlohmann::ordered_json monte_carlo_json(const MonteCarloSamples& samples, std::uint64_t seed,
+                                        const std::string& kind) {
   struct Variable {
     StagingVariable variable;
     const char* key;

@@ -48,7 +48,8 @@ void run_optimization(const Mission& mission, OptimizerObserver* observer, Optim
       step.outcome = StepOutcome::kRun;
       step.scratch = std::make_unique<ExchangeRatioScratch>();
       step.ratios = std::make_unique<ExchangeRatios>();
-      step.status = compute_exchange_ratios(*run->workspace, *run->result, step.scratch.get(), step.ratios.get());
+      step.status =
+          compute_exchange_ratios(*run->workspace, *run->result, step.scratch.get(), step.ratios.get());
     }
   }
 

@@ -44,10 +44,10 @@ bool rejects_problem(Status status) {
 // Where one case's work goes. The listing or JSON document is collected, not printed, so that
 // stdout stays empty when a later case stops the command (a CSV failure, a rejected case).
 struct CaseOutput {
-  std::string csv_path;       // empty: no CSV
+  std::string csv_path;              // empty: no CSV
   std::string dispersions_csv_path;  // empty: no dispersion CSV
   bool json = false;
-  std::string prefix;         // before the case's diagnostics ("case N: " in a several-case deck)
+  std::string prefix;  // before the case's diagnostics ("case N: " in a several-case deck)
   std::ostream* listing = nullptr;
   nlohmann::ordered_json document;
   Status failure = Status::kOk;  // the status to report once stdout is written (kOk: none)
@@ -67,8 +67,8 @@ int optimize_case(const Deck& deck, const DeckCase& deck_case, OptimizerObserver
     dispersion_data = std::make_unique<DispersionData>();
     DispersionMappingFault fault;
     if (!fill_dispersion_data(deck_case.extras.dispersions, dispersion_data.get(), &fault)) {
-      err << "tolip: " << output->prefix << deck.path << ": data block " << fault.data_block << ", dispersion code "
-          << fault.code << ", " << fault.field << ": " << fault.message << '\n';
+      err << "tolip: " << output->prefix << deck.path << ": data block " << fault.data_block
+          << ", dispersion code " << fault.code << ", " << fault.field << ": " << fault.message << '\n';
       output->stop = true;
       return kExitBadInput;
     }
@@ -107,7 +107,8 @@ int optimize_case(const Deck& deck, const DeckCase& deck_case, OptimizerObserver
     trajectory_status = optimizer_status;
   } else {
     trajectory_status = trajectory.status;
-    if (ok(trajectory_status) && stored_point_count(trajectory) == 0) trajectory_status = Status::kNotPrepared;
+    if (ok(trajectory_status) && stored_point_count(trajectory) == 0)
+      trajectory_status = Status::kNotPrepared;
   }
   if (ok(trajectory_status)) {
     trajectory_status = compute_orbit_elements(workspace->mission.constants, trajectory.final_point().state,
@@ -202,8 +203,7 @@ int optimize_case(const Deck& deck, const DeckCase& deck_case, OptimizerObserver
 
 }  // namespace
 
-int run_optimize_command(const OptimizeCommandOptions& options, std::ostream& out,
-                         std::ostream& err) {
+int run_optimize_command(const OptimizeCommandOptions& options, std::ostream& out, std::ostream& err) {
   Deck deck;
   DeckError deck_error;
   if (!load_deck(options.deck_path, &deck, &deck_error)) {  // TOML or card deck, every case checked
@@ -226,18 +226,20 @@ int run_optimize_command(const OptimizeCommandOptions& options, std::ostream& ou
   std::vector<std::string> failures;
   int exit_code = kExitOk;
   for (const DeckCase& deck_case : deck.cases) {
-    if (cases > 1) progress.set_prefix("case " + std::to_string(deck_case.number) + "/" + std::to_string(cases));
+    if (cases > 1)
+      progress.set_prefix("case " + std::to_string(deck_case.number) + "/" + std::to_string(cases));
     OptimizerProgress observer(progress, *deck_case.mission);
     CaseOutput output;
-    output.csv_path = options.csv_path.empty() ? "" : case_file_path(options.csv_path, deck_case.number, cases);
+    output.csv_path =
+        options.csv_path.empty() ? "" : case_file_path(options.csv_path, deck_case.number, cases);
     output.dispersions_csv_path = options.dispersions_csv_path.empty()
                                       ? ""
                                       : case_file_path(options.dispersions_csv_path, deck_case.number, cases);
     output.json = options.json;
     output.prefix = case_message_prefix(deck_case.number, cases);
     output.listing = &listing;
-    const int case_exit = optimize_case(deck, deck_case, progress.enabled() ? &observer : nullptr, progress,
-                                        &output, err);
+    const int case_exit =
+        optimize_case(deck, deck_case, progress.enabled() ? &observer : nullptr, progress, &output, err);
     // A case the optimizer rejects is bad input and a CSV that cannot be written a reason to stop:
     // like a deck error, nothing goes to stdout.
     if (output.stop) return case_exit;

@@ -59,8 +59,8 @@ void simulate_case(const Mission& mission, const DeckListingOptions& listing, co
   }
   if (ok(status)) {
     const TrajectoryPoint& final_point = trajectory->final_point();
-    status = compute_orbit_elements(mission.constants, final_point.state, mission.launch.launch_space_age_date_days,
-                                    &report.orbit);
+    status = compute_orbit_elements(mission.constants, final_point.state,
+                                    mission.launch.launch_space_age_date_days, &report.orbit);
     report.has_orbit = ok(status);
   }
   report.status = status;
@@ -70,8 +70,7 @@ void simulate_case(const Mission& mission, const DeckListingOptions& listing, co
 
 }  // namespace
 
-int run_simulate_command(const SimulateCommandOptions& options, std::ostream& out,
-                         std::ostream& err) {
+int run_simulate_command(const SimulateCommandOptions& options, std::ostream& out, std::ostream& err) {
   Deck deck;
   DeckError deck_error;
   if (!load_deck(options.deck_path, &deck, &deck_error)) {

@@ -53,18 +53,18 @@ std::vector<BlockSpec> make_blocks() {
       {27, "OPTIMIZATION PARAMETER WEIGHTS DA12", F::kReal, 11, S::kWords, kOpt, 0, "", "", false},
       {28, "CONVERGENCE DATA DA13", F::kReal, 6, S::kWords, kOpt, 0, "", "", false},
       {29, "CONSTRAINT DEVIATIONS DA14", F::kReal, 26, S::kWords, kOpt, 0, "", "", false},
-      {30, "VACUUM THRUST TABLE", F::kReal, 250, S::kPairs, kOpt | kDispersionGroup, kPowered, "STAGE TIME, S",
-       "VACUUM THRUST, LB", false},
+      {30, "VACUUM THRUST TABLE", F::kReal, 250, S::kPairs, kOpt | kDispersionGroup, kPowered,
+       "STAGE TIME, S", "VACUUM THRUST, LB", false},
       {31, "DRAG COEFFICIENT TABLE (ALPHA = 0)", F::kReal, kTableWords, S::kTable, kOpt, kAllStages, "MACH",
        "CD", false},
       {32, "LIFT COEFFICIENT PER ALPHA TABLE TL1", F::kReal, kTableWords, S::kTable, kOpt, 0, "MACH",
        "CL ALPHA, PER RAD", false},
-      {33, "DATA FOR 6D SIMULATION DA6D", F::kReal, 20, S::kWords, kOpt | kHardoverGroup | kImpactGroup, 0, "", "",
-       false},
+      {33, "DATA FOR 6D SIMULATION DA6D", F::kReal, 20, S::kWords, kOpt | kHardoverGroup | kImpactGroup, 0,
+       "", "", false},
       {34, "FIN NORMAL FORCE COEFFICIENT PER DELTA", F::kReal, kTableWords, S::kTable, kOpt, 0, "MACH",
        "CN DELTA, PER RAD PER FIN", false},
-      {35, "PITCHING MOMENT COEFFICIENT PER ALPHA", F::kReal, kTableWords, S::kTable, kOpt | kDispersionGroup, 0,
-       "MACH", "CM ALPHA, PER RAD", false},
+      {35, "PITCHING MOMENT COEFFICIENT PER ALPHA", F::kReal, kTableWords, S::kTable, kOpt | kDispersionGroup,
+       0, "MACH", "CM ALPHA, PER RAD", false},
       {36, "FIN PITCHING MOMENT COEFFICIENT PER DELTA", F::kReal, kTableWords, S::kTable, kOpt, 0, "MACH",
        "CM DELTA, PER RAD PER FIN", false},
       {37, "STAGE CENTER OF GRAVITY HISTORY", F::kReal, kTableWords, S::kTable, kOpt | kHardoverGroup,
@@ -72,22 +72,26 @@ std::vector<BlockSpec> make_blocks() {
       {38, "CONSUMABLE WEIGHT REMAINING TABLE", F::kReal, 250, S::kPairs, kOpt | kDispersionGroup, kPowered,
        "STAGE TIME, S", "WEIGHT REMAINING, LB", false},
       {39, "STAGE DATA SG", F::kReal, 3, S::kWords, kOpt, kAllStages, "", "", false},
-      {40, "THETA HISTORY FOR NOMINAL TRAJECTORY TTH", F::kReal, 32, S::kTable, kOpt, 0, "TIME FROM LAUNCH, S",
-       "THETA, DEG", false},
+      {40, "THETA HISTORY FOR NOMINAL TRAJECTORY TTH", F::kReal, 32, S::kTable, kOpt, 0,
+       "TIME FROM LAUNCH, S", "THETA, DEG", false},
       {41, "RADAR STATION LOCATIONS", F::kStation, 5, S::kWords, kRadarGroup, 0, "", "", false},
-      {42, "IMPACT FAILURE MODE DRAG TABLE", F::kReal, kTableWords, S::kTable, kImpactGroup, bits({1, 2, 3}), "MACH",
-       "CD", false},
-      {43, "IMPACT EXPENDED CASING DRAG TABLE", F::kReal, kTableWords, S::kTable, kImpactGroup, bits({1, 2, 3}),
+      {42, "IMPACT FAILURE MODE DRAG TABLE", F::kReal, kTableWords, S::kTable, kImpactGroup, bits({1, 2, 3}),
        "MACH", "CD", false},
-      {44, "HARDOVER IYY (STAGES 1-3) OR CMQ (CODE 4) TABLE", F::kReal, kTableWords, S::kTable, kHardoverGroup,
-       bits({1, 2, 3, 4}), "STAGE TIME, S / MACH", "IYY, SLUG FT2 / CMQ, PER RAD", false},
+      {43, "IMPACT EXPENDED CASING DRAG TABLE", F::kReal, kTableWords, S::kTable, kImpactGroup,
+       bits({1, 2, 3}), "MACH", "CD", false},
+      {44, "HARDOVER IYY (STAGES 1-3) OR CMQ (CODE 4) TABLE", F::kReal, kTableWords, S::kTable,
+       kHardoverGroup, bits({1, 2, 3, 4}), "STAGE TIME, S / MACH", "IYY, SLUG FT2 / CMQ, PER RAD", false},
       {45, "HARDOVER DATA", F::kReal, 26, S::kWords, kHardoverGroup, 0, "", "", false},
-      {46, "DISPERSION TRAJECTORY CODE AND TITLE", F::kText, 2, S::kWords, kDispersionGroup, 0, "", "", false},
-      {47, "STAGE WEIGHT INCREMENT", F::kReal, 1, S::kWords, kDispersionGroup, bits({1, 2, 3, 4}), "", "", false},
+      {46, "DISPERSION TRAJECTORY CODE AND TITLE", F::kText, 2, S::kWords, kDispersionGroup, 0, "", "",
+       false},
+      {47, "STAGE WEIGHT INCREMENT", F::kReal, 1, S::kWords, kDispersionGroup, bits({1, 2, 3, 4}), "", "",
+       false},
       {48, "PERCENTAGE DRAG VARIATION", F::kReal, 1, S::kWords, kDispersionGroup, 0, "", "", false},
       {49, "STAGE 1 THRUST MISALIGNMENT", F::kReal, 2, S::kWords, kDispersionGroup, bits({1}), "", "", false},
-      {50, "CONTROL SYSTEM DEADBAND ANGLE", F::kReal, 1, S::kWords, kDispersionGroup, bits({2, 3}), "", "", false},
-      {51, "FOURTH OR FIFTH STAGE TIPOFF", F::kReal, 1, S::kWords, kDispersionGroup, bits({4, 5}), "", "", false},
+      {50, "CONTROL SYSTEM DEADBAND ANGLE", F::kReal, 1, S::kWords, kDispersionGroup, bits({2, 3}), "", "",
+       false},
+      {51, "FOURTH OR FIFTH STAGE TIPOFF", F::kReal, 1, S::kWords, kDispersionGroup, bits({4, 5}), "", "",
+       false},
       {52, "LAUNCH DISPERSIONS", F::kReal, 1, S::kWords, kDispersionGroup, 0, "", "", false},
       {53, "WIND VELOCITY WINDVL", F::kReal, kTableWords, S::kTable, kDispersionGroup, 0, "ALTITUDE, FT",
        "WIND SPEED, FT/S", false},
@@ -192,14 +196,18 @@ std::string word_description(int block, int stage, int word) {
   if (spec->shape == Shape::kPairs) return word % 2 == 1 ? spec->x_name : spec->y_name;
   int index = 0;
   int code = 0;
-  if (const deck_detail::FieldDescription* field = deck_detail::find_field(block, stage, word, &index, &code)) {
+  if (const deck_detail::FieldDescription* field =
+          deck_detail::find_field(block, stage, word, &index, &code)) {
     return deck_detail::card_text_of(*field, code, index);
   }
   switch (block) {
-    case 1: case 2: case 3: case 46:
-      return "CHARACTERS " + std::to_string(6 * word - 5) + "-" + std::to_string(6 * word);
+    case 1:
+    case 2:
+    case 3:
+    case 46: return "CHARACTERS " + std::to_string(6 * word - 5) + "-" + std::to_string(6 * word);
     case 5: return numbered("STAGE CODE (0 ENDS), FLIGHT POSITION", word);
-    case 6: return word == 1 ? "NUMBER OF ADJUSTABLE PARAMETERS" : numbered("ADJUSTABLE PARAMETER CODE", word - 1);
+    case 6:
+      return word == 1 ? "NUMBER OF ADJUSTABLE PARAMETERS" : numbered("ADJUSTABLE PARAMETER CODE", word - 1);
     case 8:
       if (word == 1) return "NUMBER OF CONSTRAINTS WITH PAYOFF";
       return word == 2 ? "PAYOFF CODE" : numbered("CONSTRAINT CODE", word - 1);
@@ -209,11 +217,14 @@ std::string word_description(int block, int stage, int word) {
                                            "FINAL: EVERY N-TH POINT", "STAGE CODE"};
       return std::string(kKinds[(word - 1) % 4]) + ", GROUP " + std::to_string(group);
     }
-    case 15: return word == 1 ? "PAYLOAD, LB (EXTENSION)" : word == 3 ? "LIFT TABLE STAGES 0/1/6/16 (EXT.)" : "";
-    case 18: return word == 1 ? "NUMBER OF LINEAR SEGMENTS" : numbered("CODED TIME 100N+T, BOUNDARY", word - 1);
+    case 15:
+      return word == 1 ? "PAYLOAD, LB (EXTENSION)" : word == 3 ? "LIFT TABLE STAGES 0/1/6/16 (EXT.)" : "";
+    case 18:
+      return word == 1 ? "NUMBER OF LINEAR SEGMENTS" : numbered("CODED TIME 100N+T, BOUNDARY", word - 1);
     case 19: return numbered("DESIRED VALUE (FT,RAD,NMI), CONSTR.", word);
     case 23: {
-      static const char* const kWords[] = {"FAILURE DRAG REF. AREA, FT2 (EXT.)", "CASING DRAG REF. AREA, FT2 (EXT.)",
+      static const char* const kWords[] = {"FAILURE DRAG REF. AREA, FT2 (EXT.)",
+                                           "CASING DRAG REF. AREA, FT2 (EXT.)",
                                            "CASING WEIGHT, LB (EXTENSION)"};
       return kWords[word - 1];
     }
@@ -224,8 +235,8 @@ std::string word_description(int block, int stage, int word) {
       return word < 13 ? numbered("OPTIMIZATION DEADBAND, CONSTRAINT", word + 1)
                        : numbered("LINEARIZATION DEADBAND, CONSTRAINT", word - 12);
     case 41: {
-      static const char* const kWords[] = {"STATION IDENTIFICATION", "GEODETIC LATITUDE, DEG", "LONGITUDE, DEG EAST",
-                                           "ALTITUDE, FT", "DESCRIPTION (EXTENSION)"};
+      static const char* const kWords[] = {"STATION IDENTIFICATION", "GEODETIC LATITUDE, DEG",
+                                           "LONGITUDE, DEG EAST", "ALTITUDE, FT", "DESCRIPTION (EXTENSION)"};
       return kWords[word - 1];
     }
     case 47: return "JETTISON WEIGHT INCREMENT, LB";
@@ -317,14 +328,17 @@ bool parse_real_field(const std::string& field, double* value, std::string* prob
     }
   }
   if (i < text.size()) {
-    if (text[i] == ' ') *problem = "blank inside the number " + quote(text) + " (FORTRAN would read it as a 0)";
+    if (text[i] == ' ')
+      *problem = "blank inside the number " + quote(text) + " (FORTRAN would read it as a 0)";
     else *problem = bad_character(text[i], text, kKind);
     return false;
   }
   if (!point && nonzero) {
     const std::size_t mantissa_end = text.find_first_of("EeDd+-", 1);
-    const std::string mantissa = text.substr(0, mantissa_end == std::string::npos ? text.size() : mantissa_end);
-    *problem = quote(text) + " has no decimal point: in an E12.8 field FORTRAN scales such a number by 1.0E-8; write " +
+    const std::string mantissa =
+        text.substr(0, mantissa_end == std::string::npos ? text.size() : mantissa_end);
+    *problem = quote(text) +
+               " has no decimal point: in an E12.8 field FORTRAN scales such a number by 1.0E-8; write " +
                quote(mantissa + "." + (mantissa_end == std::string::npos ? "" : text.substr(mantissa_end))) +
                " for the whole number";
     return false;
@@ -368,7 +382,8 @@ bool parse_integer_field(const std::string& field, int* value, std::string* prob
   for (; i < text.size(); ++i) {
     const char c = text[i];
     if (c == ' ') {
-      *problem = "blank inside the integer " + quote(field) + " (FORTRAN would read it as a 0): expected " + kKind;
+      *problem =
+          "blank inside the integer " + quote(field) + " (FORTRAN would read it as a 0): expected " + kKind;
       return false;
     }
     if (!is_digit(c)) {
@@ -379,8 +394,10 @@ bool parse_integer_field(const std::string& field, int* value, std::string* prob
     result = result * 10 + (c - '0');
   }
   if (end < field.size()) {
-    *problem = "integer " + quote(field) + " is not right-justified: FORTRAN reads the trailing blanks as zeros (" +
-               quote(text + std::string(field.size() - end, '0')) + "); expected the number to end in the field's last column";
+    *problem = "integer " + quote(field) +
+               " is not right-justified: FORTRAN reads the trailing blanks as zeros (" +
+               quote(text + std::string(field.size() - end, '0')) +
+               "); expected the number to end in the field's last column";
     return false;
   }
   *value = negative ? -result : result;

@@ -101,7 +101,9 @@ bool guarded(const std::string& path, DeckError* error, Body body) {
   } catch (const std::bad_alloc&) {
     if (error != nullptr) *error = internal_error(path, "out of memory while reading the deck");
   } catch (const std::exception& exception) {
-    if (error != nullptr) *error = internal_error(path, std::string("internal error while reading the deck: ") + exception.what());
+    if (error != nullptr)
+      *error =
+          internal_error(path, std::string("internal error while reading the deck: ") + exception.what());
   } catch (...) {
     if (error != nullptr) *error = internal_error(path, "internal error while reading the deck");
   }
@@ -153,7 +155,9 @@ DeckFormat detect_deck_format(std::string_view text) {
   return DeckFormat::kToml;
 }
 
-const char* deck_format_name(DeckFormat format) { return format == DeckFormat::kCards ? "card deck" : "TOML deck"; }
+const char* deck_format_name(DeckFormat format) {
+  return format == DeckFormat::kCards ? "card deck" : "TOML deck";
+}
 
 bool parse_card_deck(const std::string& text, const std::string& path, Deck* deck, DeckError* error) {
   return guarded(path, error, [&]() {
@@ -243,13 +247,15 @@ bool deck_to_toml(const Deck& deck, int case_number, std::string* toml, DeckErro
     }
     const DeckCase& chosen = deck.cases[static_cast<std::size_t>(index - 1)];
     if (!chosen.words) {
-      if (error != nullptr) *error = internal_error(deck.path, "the deck's words are not available for conversion");
+      if (error != nullptr)
+        *error = internal_error(deck.path, "the deck's words are not available for conversion");
       return false;
     }
     const TomlDeck pretty = card_detail::card_case_to_toml(*chosen.words, deck.path, false);
     auto check = make_mission();
     DeckError check_error;
-    if (!parse_toml_deck(pretty.text, deck.path + " (converted to TOML)", check.get(), nullptr, &check_error)) {
+    if (!parse_toml_deck(pretty.text, deck.path + " (converted to TOML)", check.get(), nullptr,
+                         &check_error)) {
       if (error != nullptr) {
         *error = internal_error(deck.path, "internal error: the converted TOML deck does not read back: " +
                                                check_error.to_string());
@@ -266,7 +272,8 @@ bool deck_to_cards(const Deck& deck, std::string* cards, int* rounded, DeckError
     std::vector<CardCase> cases;
     for (const DeckCase& one : deck.cases) {
       if (!one.words) {
-        if (error != nullptr) *error = internal_error(deck.path, "the deck's words are not available for conversion");
+        if (error != nullptr)
+          *error = internal_error(deck.path, "the deck's words are not available for conversion");
         return false;
       }
       cases.push_back(*one.words);
@@ -288,8 +295,8 @@ bool deck_to_cards(const Deck& deck, std::string* cards, int* rounded, DeckError
     if (!parse_card_deck(text, deck.path + " (converted to cards)", &check, &check_error)) {
       if (error != nullptr) {
         *error = internal_error(deck.path, "the card deck written from it does not read back (" +
-                                               std::to_string(count) + " values rounded to 12 columns): " +
-                                               check_error.to_string());
+                                               std::to_string(count) +
+                                               " values rounded to 12 columns): " + check_error.to_string());
       }
       return false;
     }

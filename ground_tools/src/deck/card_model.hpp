@@ -18,8 +18,8 @@
 namespace tolip::ground::card_detail {
 
 inline constexpr int kCardColumns = 80;
-inline constexpr double kTableEnd = 1.0e10;   // the manual's table terminator (any x >= 1.0E10)
-inline constexpr int kTableWords = 42;        // blank + 20 pairs + 1.0E10 (42E12.8)
+inline constexpr double kTableEnd = 1.0e10;  // the manual's table terminator (any x >= 1.0E10)
+inline constexpr int kTableWords = 42;       // blank + 20 pairs + 1.0E10 (42E12.8)
 
 // Where a word (or a header) was punched. card 0: not from a card (a default, or a TOML deck).
 struct Origin {
@@ -55,15 +55,15 @@ enum Group : unsigned {
 
 struct BlockSpec {
   int number = 0;
-  const char* title = "";   // upper case, for messages, header comments and the IP(17) echo
+  const char* title = "";  // upper case, for messages, header comments and the IP(17) echo
   Format format = Format::kReal;
-  int size = 0;             // words (of one stage code); block 39 coasts: 2
+  int size = 0;  // words (of one stage code); block 39 coasts: 2
   Shape shape = Shape::kWords;
   unsigned groups = 0;      // Group bits where the block may appear
   unsigned stages = 0;      // bit c set: stage code c allowed; 0: no stage code (header field 4 blank)
   const char* x_name = "";  // tables: the abscissa and ordinate, for the echo
   const char* y_name = "";
-  bool extension = false;   // not a block of the manual (this project's words: blocks 15 and 23)
+  bool extension = false;  // not a block of the manual (this project's words: blocks 15 and 23)
 };
 
 // The block of that number, or nullptr (blocks 7, 24, 25 are not defined; numbers outside 1-55).
@@ -92,7 +92,8 @@ struct BlockData {
     return false;
   }
   const Word* at(int word) const {
-    return word >= 1 && word <= static_cast<int>(words.size()) ? &words[static_cast<std::size_t>(word - 1)] : nullptr;
+    return word >= 1 && word <= static_cast<int>(words.size()) ? &words[static_cast<std::size_t>(word - 1)]
+                                                               : nullptr;
   }
 };
 
@@ -118,24 +119,25 @@ inline const Word* find_word(const BlockSet& set, int block, int stage, int word
 struct Dispersion {
   int code = 0;
   Origin header;
-  BlockData title;   // block 46: 2 words of 6 characters
-  BlockSet blocks;   // 30, 38, 55, 47-54, 35 of this trajectory
+  BlockData title;  // block 46: 2 words of 6 characters
+  BlockSet blocks;  // 30, 38, 55, 47-54, 35 of this trajectory
 };
 
 // One case: the optimization data as they stand after this case's cards (successive cases start
 // from the previous case's words), and the optional groups read for this case only.
 struct CardCase {
-  int number = 0;        // 1-based
-  int first_card = 0;    // first card of the case (TOML decks: 0)
+  int number = 0;      // 1-based
+  int first_card = 0;  // first card of the case (TOML decks: 0)
   BlockSet optimization;
   bool dispersion_group = false;  // the groups read after the blank card (selected by IP(21)-IP(24))
   bool hardover_group = false;
   bool impact_group = false;
   bool radar_group = false;
   std::vector<Dispersion> dispersions;
-  BlockSet hardover;     // 44, 45, 33, 37: laid over the optimization data for this case
-  BlockSet impact;       // 42, 43, 23, 33
-  std::vector<BlockData> radar;  // one per station card: id (text), latitude, longitude, altitude, name (text)
+  BlockSet hardover;  // 44, 45, 33, 37: laid over the optimization data for this case
+  BlockSet impact;    // 42, 43, 23, 33
+  std::vector<BlockData>
+      radar;  // one per station card: id (text), latitude, longitude, altitude, name (text)
 };
 
 // Thrown inside the card code, caught at the public entry points.

@@ -11,8 +11,8 @@
 #include <string_view>
 #include <vector>
 
-#include "card_model.hpp"
 #include "card_internal.hpp"
+#include "card_model.hpp"
 #include "deck_common.hpp"
 #include "field_description.hpp"
 
@@ -104,9 +104,10 @@ class CardReader {
                        std::to_string(last_.block) + ", took ";
     if (last_.data_cards == 0) return hint + "no data cards: is a data card missing?)";
     hint += std::to_string(last_.data_cards) + " data card" + (last_.data_cards == 1 ? "" : "s") + ", ";
-    if (last_.data_cards == 1) return hint + "card " + std::to_string(last_.first_data) + ": is a data card missing or extra?)";
-    return hint + "cards " + std::to_string(last_.first_data) + "-" + std::to_string(last_.first_data + last_.data_cards - 1) +
-           ": is a data card missing or extra?)";
+    if (last_.data_cards == 1)
+      return hint + "card " + std::to_string(last_.first_data) + ": is a data card missing or extra?)";
+    return hint + "cards " + std::to_string(last_.first_data) + "-" +
+           std::to_string(last_.first_data + last_.data_cards - 1) + ": is a data card missing or extra?)";
   }
 
   Header parse_header(const std::string& text, int number) const {
@@ -129,8 +130,10 @@ class CardReader {
     const int number = header->card;
     if (header->block == 0) {
       fail(number, 1, 3, 0, 0, 0,
-           "expected a header card with the data block number in columns 1-3 (or a blank card ending the data, or "
-           "the 999 card); columns 1-3 are blank" + previous_header_hint());
+           "expected a header card with the data block number in columns 1-3 (or a blank card ending the "
+           "data, or "
+           "the 999 card); columns 1-3 are blank" +
+               previous_header_hint());
     }
     const BlockSpec* spec = find_block(header->block);
     if (spec == nullptr) {
@@ -138,22 +141,24 @@ class CardReader {
       fail(number, 1, 3, header->block, 0, 0,
            undefined ? "data block " + std::to_string(header->block) +
                            " is not defined in the manual (blocks 7, 24 and 25 are not used): expected 1-55"
-                     : "unknown data block " + std::to_string(header->block) + ": expected 1-55 (the manual's data blocks)" +
-                           previous_header_hint());
+                     : "unknown data block " + std::to_string(header->block) +
+                           ": expected 1-55 (the manual's data blocks)" + previous_header_hint());
     }
     if ((spec->groups & group) == 0) {
-      fail(number, 1, 3, header->block, 0, 0,
-           "data block " + std::to_string(header->block) + " (" + spec->title + ") belongs to " +
-               group_name(spec->groups) + ", not to " + group_name(group) +
-               (group == kOptimizationGroup
-                    ? std::string("; the optional groups follow the blank card ending the optimization data, when their option is set")
-                    : std::string("; each group ends with a blank card")));
+      fail(
+          number, 1, 3, header->block, 0, 0,
+          "data block " + std::to_string(header->block) + " (" + spec->title + ") belongs to " +
+              group_name(spec->groups) + ", not to " + group_name(group) +
+              (group == kOptimizationGroup ? std::string("; the optional groups follow the blank card ending "
+                                                         "the optimization data, when their option is set")
+                                           : std::string("; each group ends with a blank card")));
     }
     const int block = header->block;
     if (block == 41) {
       if (header->stage < 1 || header->stage > kMaxRadarStations) {
         fail(number, 10, 12, block, header->stage, 0,
-             "data block 41 header: columns 10-12 give the number of station cards that follow, expected 1-20, got " +
+             "data block 41 header: columns 10-12 give the number of station cards that follow, expected "
+             "1-20, got " +
                  std::to_string(header->stage));
       }
       return *spec;  // fields 2 and 3 are not used: one card per station
@@ -161,7 +166,8 @@ class CardReader {
     if (block == 46) {
       if (deck_detail::dispersion_name(header->stage) == nullptr) {
         fail(number, 10, 12, block, header->stage, 0,
-             "data block 46 header: columns 10-12 give the dispersion trajectory code, expected 1-38 or 40, got " +
+             "data block 46 header: columns 10-12 give the dispersion trajectory code, expected 1-38 or 40, "
+             "got " +
                  std::to_string(header->stage));
       }
       if (header->first == 0 && header->last == 0) {
@@ -171,40 +177,44 @@ class CardReader {
     } else if (spec->stages == 0) {
       if (header->stage != 0) {
         fail(number, 10, 12, block, header->stage, 0,
-             "data block " + std::to_string(block) + " takes no stage code: columns 10-12 must be blank, got " +
-                 std::to_string(header->stage));
+             "data block " + std::to_string(block) +
+                 " takes no stage code: columns 10-12 must be blank, got " + std::to_string(header->stage));
       }
     } else if (header->stage < 1 || header->stage > 10 || (spec->stages & (1u << header->stage)) == 0) {
       fail(number, 10, 12, block, header->stage, 0,
-           "data block " + std::to_string(block) + " (" + spec->title + ") needs a stage code in columns 10-12: expected " +
-               stage_list(spec->stages) + ", got " + (header->stage == 0 ? std::string("blank") : std::to_string(header->stage)));
+           "data block " + std::to_string(block) + " (" + spec->title +
+               ") needs a stage code in columns 10-12: expected " + stage_list(spec->stages) + ", got " +
+               (header->stage == 0 ? std::string("blank") : std::to_string(header->stage)));
     }
     const int size = block_size(*spec, block == 46 ? 0 : header->stage);
-    const std::string size_text = "data block " + std::to_string(block) +
-                                  (spec->stages != 0 ? " (stage code " + std::to_string(header->stage) + ")" : std::string()) +
-                                  " has " + std::to_string(size) + " word" + (size == 1 ? "" : "s");
+    const std::string size_text =
+        "data block " + std::to_string(block) +
+        (spec->stages != 0 ? " (stage code " + std::to_string(header->stage) + ")" : std::string()) +
+        " has " + std::to_string(size) + " word" + (size == 1 ? "" : "s");
     if (header->first < 1) {
       fail(number, 4, 6, block, header->stage, 0,
-           "header card: the first word to fill (columns 4-6) must be 1 or more, got " + std::to_string(header->first) +
-               "; " + size_text);
+           "header card: the first word to fill (columns 4-6) must be 1 or more, got " +
+               std::to_string(header->first) + "; " + size_text);
     }
     if (header->last < header->first) {
       fail(number, 7, 9, block, header->stage, 0,
            "header card: the last word to fill (columns 7-9) is " + std::to_string(header->last) +
-               ", before the first word " + std::to_string(header->first) + "; expected first <= last <= " +
-               std::to_string(size));
+               ", before the first word " + std::to_string(header->first) +
+               "; expected first <= last <= " + std::to_string(size));
     }
     if (header->first > size || header->last > size) {
       fail(number, header->first > size ? 4 : 7, header->first > size ? 6 : 9, block, header->stage,
            header->first > size ? header->first : header->last,
-           "header range beyond the block: words " + std::to_string(header->first) + "-" + std::to_string(header->last) +
-               " asked but " + size_text);
+           "header range beyond the block: words " + std::to_string(header->first) + "-" +
+               std::to_string(header->last) + " asked but " + size_text);
     }
     if ((spec->shape == Shape::kComplete || spec->shape == Shape::kPairs) && header->first != 1) {
       fail(number, 4, 6, block, header->stage, header->first,
            "data block " + std::to_string(block) + " is input complete (the manual: the entire " +
-               (spec->shape == Shape::kPairs ? std::string("table for the given stage") : std::string("list")) +
-               " must be re-input to change it): the first word must be 1, got " + std::to_string(header->first));
+               (spec->shape == Shape::kPairs ? std::string("table for the given stage")
+                                             : std::string("list")) +
+               " must be re-input to change it): the first word must be 1, got " +
+               std::to_string(header->first));
     }
     return *spec;
   }
@@ -213,7 +223,8 @@ class CardReader {
     int fields[4] = {0, 0, 0, 0};
     for (int k = 0; k < 4; ++k) {
       std::string problem;
-      if (!parse_integer_field(text.substr(static_cast<std::size_t>(3 * k), 3), &fields[k], &problem)) return false;
+      if (!parse_integer_field(text.substr(static_cast<std::size_t>(3 * k), 3), &fields[k], &problem))
+        return false;
     }
     const BlockSpec* spec = find_block(fields[0]);
     return spec != nullptr && fields[1] >= 1 && fields[2] >= fields[1] && fields[2] <= spec->size;
@@ -236,8 +247,8 @@ class CardReader {
       if (at_end()) {
         fail(static_cast<int>(lines_.size()), 0, 0, header.block, header.stage, 0,
              "the deck ends inside data block " + std::to_string(header.block) + ": the header on card " +
-                 std::to_string(header.card) + " asks for " + range + ", " + std::to_string(cards) + " data card" +
-                 (cards == 1 ? "" : "s") + "; found " + std::to_string(c));
+                 std::to_string(header.card) + " asks for " + range + ", " + std::to_string(cards) +
+                 " data card" + (cards == 1 ? "" : "s") + "; found " + std::to_string(c));
       }
       const int number = next_number();
       const std::string text = card(next_);
@@ -258,12 +269,11 @@ class CardReader {
         word.given = true;
         const int first_column = f * width + 1;
         word.origin = Origin{number, first_column, first_column + width - 1};
-        const std::string field = text.substr(static_cast<std::size_t>(f * width), static_cast<std::size_t>(width));
+        const std::string field =
+            text.substr(static_cast<std::size_t>(f * width), static_cast<std::size_t>(width));
         std::string problem;
         switch (spec.format) {
-          case Format::kText:
-            word.text = field;
-            break;
+          case Format::kText: word.text = field; break;
           case Format::kDigit:
           case Format::kInteger: {
             int value = 0;
@@ -283,8 +293,7 @@ class CardReader {
             word.number = value;
             break;
           }
-          case Format::kStation:
-            break;  // read_station
+          case Format::kStation: break;  // read_station
         }
       }
     }
@@ -296,8 +305,9 @@ class CardReader {
   BlockData read_station(const Header& header, int index) {
     if (at_end()) {
       fail(static_cast<int>(lines_.size()), 0, 0, 41, header.stage, 0,
-           "the deck ends inside data block 41: the header on card " + std::to_string(header.card) + " announces " +
-               std::to_string(header.stage) + " station cards; found " + std::to_string(index));
+           "the deck ends inside data block 41: the header on card " + std::to_string(header.card) +
+               " announces " + std::to_string(header.stage) + " station cards; found " +
+               std::to_string(index));
     }
     const int number = next_number();
     const std::string text = card(next_);
@@ -353,7 +363,8 @@ void CardReader::read_group(unsigned group, int option, CardCase* result) {
     if (at_end()) {
       fail(static_cast<int>(lines_.size()), 0, 0, 0, 0, 0,
            "the deck ends inside " + name + " of case " + std::to_string(case_number_) + ": IP(" +
-               std::to_string(option) + ") = 1 selects it; expected its data blocks, a blank card, then the 999 card");
+               std::to_string(option) +
+               ") = 1 selects it; expected its data blocks, a blank card, then the 999 card");
     }
     const int number = next_number();
     const std::string text = card(next_);
@@ -365,7 +376,8 @@ void CardReader::read_group(unsigned group, int option, CardCase* result) {
     if (is_999(text)) {
       fail(number, 1, 3, 0, 0, 0,
            "999 card where " + name + " of case " + std::to_string(case_number_) + " was expected: IP(" +
-               std::to_string(option) + ") = 1 selects it; expected its data blocks and a blank card (or IP(" +
+               std::to_string(option) +
+               ") = 1 selects it; expected its data blocks and a blank card (or IP(" +
                std::to_string(option) + ") = 0)");
     }
     Header header = parse_header(text, number);
@@ -387,7 +399,8 @@ void CardReader::read_group(unsigned group, int option, CardCase* result) {
       if (current == nullptr) {
         fail(number, 1, 3, header.block, header.stage, 0,
              "data block " + std::to_string(header.block) +
-                 " before the first data block 46: each dispersed trajectory starts with a block 46 header (its code "
+                 " before the first data block 46: each dispersed trajectory starts with a block 46 header "
+                 "(its code "
                  "in columns 10-12) and its title card, followed by its data");
       }
       const int stage = deck_detail::dispersion_stage(current->code, header.block);  // -1: stage 4 or 5
@@ -400,9 +413,10 @@ void CardReader::read_group(unsigned group, int option, CardCase* result) {
       }
       if (stage > 0 && header.stage != stage) {
         fail(number, 10, 12, header.block, header.stage, 0,
-             "dispersion code " + std::to_string(current->code) + " (" + deck_detail::dispersion_name(current->code) +
-                 ") applies to stage " + std::to_string(stage) + ": expected stage code " + std::to_string(stage) +
-                 " in columns 10-12, got " + std::to_string(header.stage));
+             "dispersion code " + std::to_string(current->code) + " (" +
+                 deck_detail::dispersion_name(current->code) + ") applies to stage " + std::to_string(stage) +
+                 ": expected stage code " + std::to_string(stage) + " in columns 10-12, got " +
+                 std::to_string(header.stage));
       }
       BlockData& data = current->blocks[BlockKey{header.block, spec.stages != 0 ? header.stage : 0}];
       read_words(header, spec, &data);
@@ -421,24 +435,30 @@ std::vector<CardCase> CardReader::read() {
     if (at_end()) {
       if (cases.empty()) {
         fail(0, 0, 0, 0, 0, 0,
-             "empty card deck: expected header cards (4I3: data block, first word, last word, stage code) with their "
+             "empty card deck: expected header cards (4I3: data block, first word, last word, stage code) "
+             "with their "
              "data cards, a blank card ending the case, and a card with 999 in columns 1-3");
       }
       case_number_ = 0;
       fail(static_cast<int>(lines_.size()), 0, 0, 0, 0, 0,
-           "the deck ends without the 999 card: expected a card with 999 in columns 1-3 after the blank card ending "
-           "the last case (case " + std::to_string(cases.size()) + ")");
+           "the deck ends without the 999 card: expected a card with 999 in columns 1-3 after the blank card "
+           "ending "
+           "the last case (case " +
+               std::to_string(cases.size()) + ")");
     }
     const int number = next_number();
     const std::string text = card(next_);
     if (is_999(text)) {
-      if (cases.empty()) fail(number, 1, 3, 0, 0, 0, "the 999 card ends the deck before any case: expected the data of case 1 first");
+      if (cases.empty())
+        fail(number, 1, 3, 0, 0, 0,
+             "the 999 card ends the deck before any case: expected the data of case 1 first");
       break;
     }
     if (is_blank(text)) {
       fail(number, 0, 0, 0, 0, 0,
            "blank card where case " + std::to_string(cases.size() + 1) +
-               " should start: a case starts with a header card, and one blank card ends it (two blank cards in a row?)");
+               " should start: a case starts with a header card, and one blank card ends it (two blank cards "
+               "in a row?)");
     }
     CardCase result;
     result.number = ++case_number_;
@@ -459,7 +479,8 @@ std::vector<CardCase> CardReader::read() {
       if (is_999(card_text)) {
         fail(card_number, 1, 3, 0, 0, 0,
              "999 card inside case " + std::to_string(case_number_) +
-                 ": the case's data must be ended by a blank card before the 999 card" + previous_header_hint());
+                 ": the case's data must be ended by a blank card before the 999 card" +
+                 previous_header_hint());
       }
       Header header = parse_header(card_text, card_number);
       ++next_;

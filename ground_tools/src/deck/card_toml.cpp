@@ -110,7 +110,8 @@ class Builder {
   }
   void blank() {
     const std::size_t size = out_.text.size();
-    if (!located_ && size > 0 && !(size >= 2 && out_.text.compare(size - 2, 2, "\n\n") == 0)) line("", WordRef{});
+    if (!located_ && size > 0 && !(size >= 2 && out_.text.compare(size - 2, 2, "\n\n") == 0))
+      line("", WordRef{});
   }
   void comment(const std::string& text) {
     if (!located_) line(rtrim("# " + text), WordRef{});
@@ -122,7 +123,8 @@ class Builder {
     std::string text = "block " + str(ref.block);
     if (ref.stage > 0) text += (ref.block == 46 ? " code " : " stage ") + str(ref.stage);
     const BlockSpec* spec = find_block(ref.block);
-    if (spec != nullptr && spec->format == Format::kText) return text + (spec->size == 12 ? ", 12A6" : ", 2A6");
+    if (spec != nullptr && spec->format == Format::kText)
+      return text + (spec->size == 12 ? ", 12A6" : ", 2A6");
     if (ref.word > 0) {
       text += " word " + str(ref.word);
       const std::string meaning = word_description(ref.block, ref.stage, ref.word);
@@ -131,7 +133,8 @@ class Builder {
     return text;
   }
 
-  void table_header(const std::string& path, const WordRef& ref, bool array = false, const std::string& extra = "") {
+  void table_header(const std::string& path, const WordRef& ref, bool array = false,
+                    const std::string& extra = "") {
     blank();
     std::string text = (array ? "[[" : "[") + path + (array ? "]]" : "]");
     if (!located_) {
@@ -142,7 +145,8 @@ class Builder {
     remember(path, ref);
   }
 
-  void scalar(const std::string& section, const std::string& key, const std::string& literal, const WordRef& ref) {
+  void scalar(const std::string& section, const std::string& key, const std::string& literal,
+              const WordRef& ref) {
     std::string text = key + " = " + literal;
     if (!located_) {
       const std::string what = note(ref);
@@ -159,7 +163,8 @@ class Builder {
              const std::vector<WordRef>& refs, const WordRef& key_ref) {
     const std::string path = section.empty() ? key : section + "." + key;
     remember(path, key_ref);
-    for (std::size_t i = 0; i < literals.size(); ++i) remember(path + "[" + str(static_cast<int>(i)) + "]", refs[i]);
+    for (std::size_t i = 0; i < literals.size(); ++i)
+      remember(path + "[" + str(static_cast<int>(i)) + "]", refs[i]);
     if (located_) {
       line(key + " = [", key_ref);
       for (std::size_t i = 0; i < literals.size(); ++i) line(literals[i] + ",", refs[i]);
@@ -277,7 +282,8 @@ class Builder {
           if (word_description(key.block, key.stage, number).empty()) {
             fail(ref_in(set, key.block, key.stage, number),
                  std::string(key.block == 4 ? "IP(" + str(number) + ")" : "word " + str(number)) +
-                     " is not used by the manual: expected blank or 0, got " + deck_detail::format_number(word.number));
+                     " is not used by the manual: expected blank or 0, got " +
+                     deck_detail::format_number(word.number));
           }
         }
       }
@@ -301,8 +307,9 @@ class Builder {
         if (x == nullptr || !x->given || x->number >= kTableEnd) break;
         const Word* y = data->at(i + 1);
         if (y == nullptr || !y->given) {
-          fail(at(i), "word " + str(i) + " (" + spec->x_name + ") has no value after it: the table is pairs of " +
-                          spec->x_name + " and " + spec->y_name + ", an even number of words");
+          fail(at(i), "word " + str(i) + " (" + spec->x_name +
+                          ") has no value after it: the table is pairs of " + spec->x_name + " and " +
+                          spec->y_name + ", an even number of words");
         }
         table.x.push_back(x->number);
         table.y.push_back(y->number);
@@ -314,25 +321,28 @@ class Builder {
     const std::string shape = "the manual's sequence: blank, x, y, x, y, ..., 1.0E10";
     const Word* first = data->at(1);
     if (first != nullptr && first->given && first->number != 0.0) {
-      fail(at(1), "word 1 of the table must be blank (" + shape + "), got " + deck_detail::format_number(first->number) +
-                      ": are the pairs shifted by one word?");
+      fail(at(1), "word 1 of the table must be blank (" + shape + "), got " +
+                      deck_detail::format_number(first->number) + ": are the pairs shifted by one word?");
     }
     for (int i = 2;; i += 2) {
       if (i > size) {
-        fail(WordRef{block, stage, 0, {}, data->header},
-             "table without its 1.0E10 terminator within the block's " + str(size) + " words (" + shape + ")");
+        fail(
+            WordRef{block, stage, 0, {}, data->header},
+            "table without its 1.0E10 terminator within the block's " + str(size) + " words (" + shape + ")");
       }
       const Word* x = data->at(i);
       if (!x->given) {
-        fail(at(i), "word " + str(i) + " not given: the table needs an abscissa or the 1.0E10 terminator here (" +
-                        shape + ")");
+        fail(at(i), "word " + str(i) +
+                        " not given: the table needs an abscissa or the 1.0E10 terminator here (" + shape +
+                        ")");
       }
       if (x->number >= kTableEnd) break;
       if (i + 1 > size) {
         fail(at(i), "abscissa in the block's last word: no room for its ordinate and the 1.0E10 terminator");
       }
       const Word* y = data->at(i + 1);
-      if (!y->given) fail(at(i + 1), "word " + str(i + 1) + " not given: the ordinate paired with word " + str(i));
+      if (!y->given)
+        fail(at(i + 1), "word " + str(i + 1) + " not given: the ordinate paired with word " + str(i));
       table.x.push_back(x->number);
       table.y.push_back(y->number);
       table.x_refs.push_back(at(i));
@@ -344,7 +354,8 @@ class Builder {
   // [path] with the x and y arrays of a table block (nothing when the block is not punched; the
   // path is remembered so a missing table is put on its block).
   void table_section(const std::string& path, const BlockSet& set, int block, int stage, const char* x_key,
-                     const char* y_key, const std::vector<std::pair<std::string, std::pair<std::string, WordRef>>>& extra = {}) {
+                     const char* y_key,
+                     const std::vector<std::pair<std::string, std::pair<std::string, WordRef>>>& extra = {}) {
     const WordRef block_ref = ref_in(set, block, stage, 0);
     if (!block_given(set, block, stage) && extra.empty()) {
       remember(path, block_ref);
@@ -362,7 +373,8 @@ class Builder {
   static std::vector<const deck_detail::FieldDescription*> fields_of(const std::string& section) {
     std::vector<const deck_detail::FieldDescription*> fields;
     for (const deck_detail::FieldDescription& field : deck_detail::field_descriptions()) {
-      if (field.stage_coding == deck_detail::StageCoding::kNone && section == field.section) fields.push_back(&field);
+      if (field.stage_coding == deck_detail::StageCoding::kNone && section == field.section)
+        fields.push_back(&field);
     }
     return fields;
   }
@@ -372,7 +384,8 @@ class Builder {
     bool any = always;
     WordRef section_ref;
     for (const deck_detail::FieldDescription* field : fields_of(section)) {
-      for (int i = 0; i < field->count; ++i) any = any || given(set, field->block, 0, field->word + i) != nullptr;
+      for (int i = 0; i < field->count; ++i)
+        any = any || given(set, field->block, 0, field->word + i) != nullptr;
       if (section_ref.block == 0 || (!section_ref.header.known() && block_given(set, field->block))) {
         section_ref = ref_in(set, field->block, 0, 0);
       }
@@ -390,14 +403,15 @@ class Builder {
 
   // One described field of stage `code` (0: not stage-coded): a scalar, or an array whose words
   // not punched take their default; nothing (the key path remembered) when no word is punched.
-  void field_words(const std::string& section, const deck_detail::FieldDescription& field, const BlockSet& set,
-                   int code) {
+  void field_words(const std::string& section, const deck_detail::FieldDescription& field,
+                   const BlockSet& set, int code) {
     const int stage = deck_detail::card_stage(field, code);
     const int first = deck_detail::card_word(field, code);
     const WordRef key_ref = ref_in(set, field.block, stage, first);
     if (field.count == 1) {
       if (const Word* word = given(set, field.block, stage, first)) {
-        scalar(section, field.key, field.integer ? toml_integer(word->number) : toml_number(word->number), key_ref);
+        scalar(section, field.key, field.integer ? toml_integer(word->number) : toml_number(word->number),
+               key_ref);
       } else {
         remember(section + "." + field.key, key_ref);
       }
@@ -420,7 +434,8 @@ class Builder {
   }
 
   void scalar_words(const std::string& section, const BlockSet& set) {
-    for (const deck_detail::FieldDescription* field : fields_of(section)) field_words(section, *field, set, 0);
+    for (const deck_detail::FieldDescription* field : fields_of(section))
+      field_words(section, *field, set, 0);
   }
 
   // ---- data blocks 1-40 -------------------------------------------------------------------------
@@ -475,13 +490,15 @@ class Builder {
       const std::vector<int> codes = sequence();
       std::vector<double> values(codes.begin(), codes.end());
       std::vector<WordRef> refs;
-      for (std::size_t k = 0; k < codes.size(); ++k) refs.push_back(ref_in(opt(), 5, 0, static_cast<int>(k) + 1));
+      for (std::size_t k = 0; k < codes.size(); ++k)
+        refs.push_back(ref_in(opt(), 5, 0, static_cast<int>(k) + 1));
       numbers("vehicle", "sequence", values, refs, ref_in(opt(), 5, 0, 1), true);
     } else {
       remember("vehicle.sequence", ref_in(opt(), 5, 0, 1));
     }
     const Word* payload = given(opt(), 15, 0, 1);
-    scalar("vehicle", "payload_lb", toml_number(payload != nullptr ? payload->number : 0.0), ref_in(opt(), 15, 0, 1));
+    scalar("vehicle", "payload_lb", toml_number(payload != nullptr ? payload->number : 0.0),
+           ref_in(opt(), 15, 0, 1));
     if (block_given(opt(), 32)) {
       table_section("vehicle.lift_curve_slope", opt(), 32, 0, "mach", "cl_alpha_per_rad");
       if (const Word* word = given(opt(), 15, 0, 3)) {
@@ -491,10 +508,13 @@ class Builder {
         else if (word->number == 6.0) stages = {"6"};
         else if (word->number == 16.0) stages = {"1", "6"};
         else if (word->number != 0.0) {
-          fail(ref, "the stages using the lift table (block 15 word 3, an extension) are coded 0 none, 1 stage 1, "
-                    "6 coast 6, 16 both; got " + deck_detail::format_number(word->number));
+          fail(ref,
+               "the stages using the lift table (block 15 word 3, an extension) are coded 0 none, 1 stage 1, "
+               "6 coast 6, 16 both; got " +
+                   deck_detail::format_number(word->number));
         }
-        array("vehicle.lift_curve_slope", "used_in_stages", stages, std::vector<WordRef>(stages.size(), ref), ref);
+        array("vehicle.lift_curve_slope", "used_in_stages", stages, std::vector<WordRef>(stages.size(), ref),
+              ref);
       }
     } else {
       remember("vehicle.lift_curve_slope", ref_in(opt(), 32, 0, 0));
@@ -522,7 +542,9 @@ class Builder {
                    (powered ? "powered stage " : "coast ") + str(code) + ": blocks 16, 39" +
                        (powered ? ", 30, 38" : "") + (block_given(opt(), 31, code) ? ", 31" : ""));
       for (const deck_detail::FieldDescription& field : deck_detail::field_descriptions()) {
-        if (field.stage_coding == deck_detail::StageCoding::kNone || !deck_detail::applies_to_stage(field, code)) continue;
+        if (field.stage_coding == deck_detail::StageCoding::kNone ||
+            !deck_detail::applies_to_stage(field, code))
+          continue;
         field_words(path, field, opt(), code);
       }
       if (powered) {
@@ -538,17 +560,20 @@ class Builder {
     remember("constraint", count_ref);
     if (!block_given(opt(), 8)) return;
     const Word* count_word = given(opt(), 8, 0, 1);
-    if (count_word == nullptr) fail(count_ref, "IB3(1), the number of constraints (the payoff included), not given");
+    if (count_word == nullptr)
+      fail(count_ref, "IB3(1), the number of constraints (the payoff included), not given");
     const int count = static_cast<int>(count_word->number);
     if (count < 0 || count > kMaxConstraints) {
-      fail(count_ref, "IB3(1) = " + str(count) + " constraints: expected 1-13, the payoff included (data block 8 "
-                      "holds the count and at most 13 codes)");
+      fail(count_ref, "IB3(1) = " + str(count) +
+                          " constraints: expected 1-13, the payoff included (data block 8 "
+                          "holds the count and at most 13 codes)");
     }
     const bool heating = value_of(given(opt(), 4, 0, 2)) == 1.0;
     const int entries = count + (heating && count > 0 ? 1 : 0);
     if (entries + 1 > 14) {
       fail(count_ref, "IP(2) = 1 needs the heating code 14 after the " + str(count) +
-                          " constraint codes, in word " + str(count + 2) + ", beyond data block 8's 14 words");
+                          " constraint codes, in word " + str(count + 2) +
+                          ", beyond data block 8's 14 words");
     }
     for (int e = 0; e < entries; ++e) {
       const std::string path = "constraint[" + str(e) + "]";
@@ -556,7 +581,8 @@ class Builder {
       const Word* code_word = given(opt(), 8, 0, e + 2);
       if (code_word == nullptr) {
         fail(code_ref, "word " + str(e + 2) + " not given: IB3(1) = " + str(count) +
-                           (e == count ? " and IP(2) = 1 need the heating code 14 here" : " needs a constraint code here"));
+                           (e == count ? " and IP(2) = 1 need the heating code 14 here"
+                                       : " needs a constraint code here"));
       }
       blank();
       line(located_ ? "[[constraint]]" : "[[constraint]]  # " + note(code_ref), code_ref);
@@ -591,7 +617,8 @@ class Builder {
     if (count_word == nullptr) fail(count_ref, "IB1(1), the number of adjustable parameters, not given");
     const int count = static_cast<int>(count_word->number);
     if (count < 0 || count > kMaxAdjustableParameters) {
-      fail(count_ref, "IB1(1) = " + str(count) + " adjustable parameters: expected 0-11 (codes in words 2-12)");
+      fail(count_ref,
+           "IB1(1) = " + str(count) + " adjustable parameters: expected 0-11 (codes in words 2-12)");
     }
     // Data block 27 is by code number (Sec. 22: DA12(1)-DA12(11) "for adjustable parameters
     // identified by code number as listed for Data Block 6"; the nomenclature's ST2(23)-(25) =
@@ -603,15 +630,18 @@ class Builder {
       const WordRef code_ref = ref_in(opt(), 6, 0, i + 2);
       const Word* code_word = given(opt(), 6, 0, i + 2);
       if (code_word == nullptr) {
-        fail(code_ref, "word " + str(i + 2) + " not given: IB1(1) = " + str(count) + " needs a parameter code here");
+        fail(code_ref,
+             "word " + str(i + 2) + " not given: IB1(1) = " + str(count) + " needs a parameter code here");
       }
       const double code_value = code_word->number;
-      if (!(code_value >= 1.0 && code_value <= kMaxAdjustableParameters) || code_value != std::floor(code_value)) {
+      if (!(code_value >= 1.0 && code_value <= kMaxAdjustableParameters) ||
+          code_value != std::floor(code_value)) {
         fail(code_ref, "IB1(" + str(i + 2) + ") = " + deck_detail::format_number(code_value) +
                            ": an adjustable parameter code is a whole number 1-11 (Sec. 22, data block 6)");
       }
       const int code = static_cast<int>(code_value);
-      if (selected[code]) fail(code_ref, "IB1(" + str(i + 2) + ") = " + str(code) + ": code selected twice in data block 6");
+      if (selected[code])
+        fail(code_ref, "IB1(" + str(i + 2) + ") = " + str(code) + ": code selected twice in data block 6");
       selected[code] = true;
       blank();
       line(located_ ? "[[adjustable_parameter]]" : "[[adjustable_parameter]]  # " + note(code_ref), code_ref);
@@ -628,9 +658,11 @@ class Builder {
       const Word* weight = given(opt(), 27, 0, code);
       if (selected[code] || weight == nullptr || weight->number == 0.0) continue;
       fail(ref_in(opt(), 27, 0, code),
-           "DA12(" + str(code) + ") = " + deck_detail::format_number(weight->number) + " weights adjustable parameter code " +
-               str(code) + ", which data block 6 does not select: block 27 words are by code number (Sec. 22: word k "
-               "weights code k; the words of unselected codes are blank or zero). Decks written by tolip 0.1.0's convert "
+           "DA12(" + str(code) + ") = " + deck_detail::format_number(weight->number) +
+               " weights adjustable parameter code " + str(code) +
+               ", which data block 6 does not select: block 27 words are by code number (Sec. 22: word k "
+               "weights code k; the words of unselected codes are blank or zero). Decks written by tolip "
+               "0.1.0's convert "
                "put the weights in block 6's order instead: move each weight to the word of its code");
     }
   }
@@ -643,8 +675,9 @@ class Builder {
     const double count_value = value_of(count_word);
     if (count_word == nullptr || count_value != std::floor(count_value) || count_value < 0.0 ||
         count_value > kMaxLinearSegments) {
-      fail(count_ref, "TLIN(1), the number of linear segments, must be a whole number 1-15; got " +
-                          (count_word == nullptr ? std::string("nothing") : deck_detail::format_number(count_value)));
+      fail(count_ref,
+           "TLIN(1), the number of linear segments, must be a whole number 1-15; got " +
+               (count_word == nullptr ? std::string("nothing") : deck_detail::format_number(count_value)));
     }
     const int segments = static_cast<int>(count_value);
     table_header("linearization", ref_in(opt(), 18, 0, 0), false, "blocks 18 (TLIN) and 26 (ETALIN)");
@@ -655,8 +688,8 @@ class Builder {
       const WordRef ref = ref_in(opt(), 18, 0, w);
       const Word* word = given(opt(), 18, 0, w);
       if (word == nullptr) {
-        fail(ref, "word " + str(w) + " not given: TLIN(1) = " + str(segments) + " segments need " + str(segments + 1) +
-                      " coded times in words 2-" + str(segments + 2));
+        fail(ref, "word " + str(w) + " not given: TLIN(1) = " + str(segments) + " segments need " +
+                      str(segments + 1) + " coded times in words 2-" + str(segments + 2));
       }
       times.push_back(word->number);
       refs.push_back(ref);
@@ -691,8 +724,8 @@ class Builder {
         for (int k = 0; k < 3; ++k) {
           if (value_of(given(opt(), 9, 0, 4 * g + 1 + k)) != 0.0) {
             fail(ref_in(opt(), 9, 0, 4 * g + 1 + k),
-                 "IB4(" + str(4 * g + 1) + "-" + str(4 * g + 3) + ") give output frequencies but IB4(" + str(4 * g + 4) +
-                     "), the stage code they apply to, is blank");
+                 "IB4(" + str(4 * g + 1) + "-" + str(4 * g + 3) + ") give output frequencies but IB4(" +
+                     str(4 * g + 4) + "), the stage code they apply to, is blank");
           }
         }
         continue;
@@ -707,14 +740,16 @@ class Builder {
         if (word == nullptr) continue;
         if (word->number < 1.0) {
           fail(ref_in(opt(), 9, 0, 4 * g + 1 + k),
-               "output frequency must be at least 1 (every computed point), got " + deck_detail::format_number(word->number));
+               "output frequency must be at least 1 (every computed point), got " +
+                   deck_detail::format_number(word->number));
         }
         values[k][static_cast<std::size_t>(stage - 1)] = word->number;
         refs[k][static_cast<std::size_t>(stage - 1)] = ref_in(opt(), 9, 0, 4 * g + 1 + k);
       }
     }
     table_header("output_frequency", ref_in(opt(), 9, 0, 0), false, "block 9, by stage code 1-10");
-    for (int k = 0; k < 3; ++k) numbers("output_frequency", kKeys[k], values[k], refs[k], ref_in(opt(), 9, 0, 0), true);
+    for (int k = 0; k < 3; ++k)
+      numbers("output_frequency", kKeys[k], values[k], refs[k], ref_in(opt(), 9, 0, 0), true);
   }
 
   void pitch_program_section() { table_section("pitch_program", opt(), 40, 0, "time_s", "theta_deg"); }
@@ -779,8 +814,8 @@ class Builder {
         };
         add(group.block == 42 ? 1 : 2, "reference_area_ft2");
         if (group.block == 43) add(3, "casing_weight_lb");
-        table_section(std::string("impact.") + group.group + "." + str(stage), set, group.block, stage, "mach", "cd",
-                      extra);
+        table_section(std::string("impact.") + group.group + "." + str(stage), set, group.block, stage,
+                      "mach", "cd", extra);
       }
     }
   }
@@ -789,7 +824,8 @@ class Builder {
     const BlockSet& set = case_.hardover;
     remember("hardover", ref_in(set, 44, 1, 0));
     bool any = false;
-    for (const auto& [key, data] : set) any = any || ((key.block == 44 || key.block == 45) && data.any_given());
+    for (const auto& [key, data] : set)
+      any = any || ((key.block == 44 || key.block == 45) && data.any_given());
     if (!case_.hardover_group || !any) return;
     remember("hardover.pitch_inertia", ref_in(set, 44, 1, 0));
     for (int stage = 1; stage <= 3; ++stage) {
@@ -812,13 +848,15 @@ class Builder {
       const WordRef code_ref{46, d.code, 0, d.header, d.header};
       blank();
       line(located_ ? "[[dispersion]]"
-                    : "[[dispersion]]  # block 46 code " + str(d.code) + ": " + deck_detail::dispersion_name(d.code),
+                    : "[[dispersion]]  # block 46 code " + str(d.code) + ": " +
+                          deck_detail::dispersion_name(d.code),
            code_ref);
       remember(path, code_ref);
       scalar(path, "code", str(d.code), code_ref);
       const std::string title = trim(text_of(&d.title, 2));
       if (!title.empty()) {
-        WordRef title_ref{46, d.code, 1, d.title.words.empty() ? Origin{} : d.title.words[0].origin, d.header};
+        WordRef title_ref{46, d.code, 1, d.title.words.empty() ? Origin{} : d.title.words[0].origin,
+                          d.header};
         scalar(path, "title", toml_string(title), title_ref);
       }
       const BlockSet& set = d.blocks;
@@ -859,8 +897,9 @@ class Builder {
         const bool four = block_given(set, 51, 4);
         const bool five = block_given(set, 51, 5);
         if (four && five) {
-          fail(ref(51, 5, 0), "dispersion code " + str(code) +
-                                  ": data block 51 given for stage codes 4 and 5; expected one tip-off stage");
+          fail(ref(51, 5, 0),
+               "dispersion code " + str(code) +
+                   ": data block 51 given for stage codes 4 and 5; expected one tip-off stage");
         }
         stage = five ? 5 : 4;
         if (four || five) scalar(path, "stage", str(stage), ref(51, stage, 0));

@@ -101,11 +101,14 @@ class FromToml {
     target.given = true;
     target.number = value;
   }
-  static void set_text(BlockSet* set, int block, int stage, int first_word, int words, const std::string& text) {
+  static void set_text(BlockSet* set, int block, int stage, int first_word, int words,
+                       const std::string& text) {
     for (int w = 0; w < words; ++w) {
       Word& target = slot(set, block, stage, first_word + w);
       target.given = true;
-      target.text = text.size() > static_cast<std::size_t>(6 * w) ? text.substr(static_cast<std::size_t>(6 * w), 6) : "";
+      target.text = text.size() > static_cast<std::size_t>(6 * w)
+                        ? text.substr(static_cast<std::size_t>(6 * w), 6)
+                        : "";
       target.text.resize(6, ' ');
     }
   }
@@ -138,8 +141,10 @@ class FromToml {
   void case_words() {
     const toml::table* section = find_table(root_, "case");
     set_text(opt(), 1, 0, 1, 12, text_of(section, "title"));
-    if (section != nullptr && section->get("heading") != nullptr) set_text(opt(), 2, 0, 1, 12, text_of(section, "heading"));
-    if (section != nullptr && section->get("date") != nullptr) set_text(opt(), 3, 0, 1, 2, text_of(section, "date"));
+    if (section != nullptr && section->get("heading") != nullptr)
+      set_text(opt(), 2, 0, 1, 12, text_of(section, "heading"));
+    if (section != nullptr && section->get("date") != nullptr)
+      set_text(opt(), 3, 0, 1, 2, text_of(section, "date"));
   }
 
   // Every described field of one TOML table (field_description.hpp) into its words; stage
@@ -148,12 +153,13 @@ class FromToml {
     if (section == nullptr) return;
     for (const deck_detail::FieldDescription& field : deck_detail::field_descriptions()) {
       if ((field.stage_coding == deck_detail::StageCoding::kNone) != (code == 0)) continue;
-      if (!deck_detail::applies_to_stage(field, code) || deck_detail::section_of(field, code) != section_path) continue;
+      if (!deck_detail::applies_to_stage(field, code) || deck_detail::section_of(field, code) != section_path)
+        continue;
       const std::vector<double> values = numbers_of(section->get(field.key));
       for (std::size_t i = 0; i < values.size() && i < static_cast<std::size_t>(field.count); ++i) {
         const int index = static_cast<int>(i);
-        set(target, field.block, deck_detail::card_stage(field, code), deck_detail::card_word(field, code, index),
-            values[i]);
+        set(target, field.block, deck_detail::card_stage(field, code),
+            deck_detail::card_word(field, code, index), values[i]);
       }
     }
   }
@@ -161,12 +167,14 @@ class FromToml {
   void options() {
     const toml::table* section = find_table(root_, "options");
     if (section == nullptr) return;
-    for (int ip = 1; ip <= 24; ++ip) set(opt(), 4, 0, ip, 0.0);  // block 4 is punched whole: unused IP words 0
+    for (int ip = 1; ip <= 24; ++ip)
+      set(opt(), 4, 0, ip, 0.0);  // block 4 is punched whole: unused IP words 0
     fields(opt(), section, "options");
   }
 
   void scalars() {
-    for (const char* name : {"constants", "atmosphere", "launch", "control_constraints", "misc", "convergence"}) {
+    for (const char* name :
+         {"constants", "atmosphere", "launch", "control_constraints", "misc", "convergence"}) {
       fields(opt(), find_table(root_, name), name);
     }
   }
@@ -278,7 +286,8 @@ class FromToml {
       for (int stage = 1; stage <= kMaxStages; ++stage) {
         double value = 1.0;
         if (values.size() == 1) value = values[0];
-        if (values.size() == static_cast<std::size_t>(kMaxStages)) value = values[static_cast<std::size_t>(stage - 1)];
+        if (values.size() == static_cast<std::size_t>(kMaxStages))
+          value = values[static_cast<std::size_t>(stage - 1)];
         set(opt(), 9, 0, 4 * (stage - 1) + 1 + k, value);
         set(opt(), 9, 0, 4 * stage, stage);
       }
@@ -289,7 +298,8 @@ class FromToml {
     const toml::table* section = find_table(root_, "body_dynamics");
     if (section == nullptr) return;
     fields(opt(), section, "body_dynamics");
-    if (find_data(result_.optimization, 33) == nullptr) result_.optimization[BlockKey{33, 0}].words.resize(20);
+    if (find_data(result_.optimization, 33) == nullptr)
+      result_.optimization[BlockKey{33, 0}].words.resize(20);
     table(opt(), 34, 0, table_of(section->get("fin_normal_force")), "mach", "cn_delta_per_rad_per_fin");
     table(opt(), 35, 0, table_of(section->get("pitching_moment")), "mach", "cm_alpha_per_rad");
     table(opt(), 36, 0, table_of(section->get("fin_pitching_moment")), "mach", "cm_delta_per_rad_per_fin");
@@ -337,7 +347,8 @@ class FromToml {
         if (const toml::node* area = entry->get("reference_area_ft2")) {
           set(&result_.impact, 23, stage, group.area_word, number_of(area));
         }
-        if (const toml::node* weight = entry->get("casing_weight_lb")) set(&result_.impact, 23, stage, 3, number_of(weight));
+        if (const toml::node* weight = entry->get("casing_weight_lb"))
+          set(&result_.impact, 23, stage, 3, number_of(weight));
       }
     }
   }
@@ -347,7 +358,8 @@ class FromToml {
     if (section == nullptr) return;
     if (const toml::table* inertia = table_of(section->get("pitch_inertia"))) {
       for (int stage = 1; stage <= 3; ++stage) {
-        table(&result_.hardover, 44, stage, table_of(inertia->get(str(stage))), "stage_time_s", "iyy_slug_ft2");
+        table(&result_.hardover, 44, stage, table_of(inertia->get(str(stage))), "stage_time_s",
+              "iyy_slug_ft2");
       }
     }
     table(&result_.hardover, 44, 4, table_of(section->get("pitch_damping")), "mach", "cmq_per_rad");
@@ -423,7 +435,8 @@ class Punch {
   std::string header(int block, int first, int last, int stage, const std::string& note) {
     char buffer[16];
     for (int value : {block, first, last, stage}) {
-      if (value < -99 || value > 999) fail(block, stage, 0, "a header field does not fit its 3 columns: " + str(value));
+      if (value < -99 || value > 999)
+        fail(block, stage, 0, "a header field does not fit its 3 columns: " + str(value));
     }
     std::snprintf(buffer, sizeof buffer, "%3d%3d%3d", block, first, last);
     std::string text(buffer);
@@ -453,7 +466,8 @@ class Punch {
         if (value != std::floor(value) || value < low || value > high) {
           fail(spec.number, stage, word_number,
                "value " + deck_detail::format_number(value) + " does not fit its " +
-                   (spec.format == Format::kDigit ? std::string("I1 field (0-9)") : std::string("I3 field (-99 to 999)")));
+                   (spec.format == Format::kDigit ? std::string("I1 field (0-9)")
+                                                  : std::string("I3 field (-99 to 999)")));
         }
         char buffer[8];
         std::snprintf(buffer, sizeof buffer, "%*d", width, static_cast<int>(value));
@@ -466,8 +480,7 @@ class Punch {
         if (!exact && rounded_ != nullptr) ++*rounded_;
         return std::string(static_cast<std::size_t>(width) - text.size(), ' ') + text;
       }
-      case Format::kStation:
-        break;
+      case Format::kStation: break;
     }
     return std::string(static_cast<std::size_t>(width), ' ');
   }
@@ -477,9 +490,11 @@ class Punch {
     const int size = block_size(spec, spec.number == 46 ? 0 : stage);
     if (last > size) {
       fail(spec.number, stage, last,
-           "data block " + str(spec.number) + (stage > 0 ? " (stage code " + str(stage) + ")" : std::string()) +
-               " needs " + str(last) + " words but holds " + str(size) +
-               (spec.shape == Shape::kTable ? " (at most " + str((size - 2) / 2) + " table points)" : std::string()));
+           "data block " + str(spec.number) +
+               (stage > 0 ? " (stage code " + str(stage) + ")" : std::string()) + " needs " + str(last) +
+               " words but holds " + str(size) +
+               (spec.shape == Shape::kTable ? " (at most " + str((size - 2) / 2) + " table points)"
+                                            : std::string()));
     }
     std::string note = spec.title;
     if (spec.number == 46) note = std::string("DISPERSION ") + deck_detail::dispersion_name(header_stage);
@@ -531,7 +546,8 @@ class Punch {
       return;
     }
     bool differ = data.words.size() != before->words.size();
-    for (std::size_t i = 0; !differ && i < data.words.size(); ++i) differ = !same(data.words[i], before->words[i]);
+    for (std::size_t i = 0; !differ && i < data.words.size(); ++i)
+      differ = !same(data.words[i], before->words[i]);
     if (!differ) return;
     if (spec.shape != Shape::kWords) {
       block(spec, stage, data);
@@ -541,7 +557,8 @@ class Punch {
     int w = 1;
     while (w <= count) {
       const std::size_t i = static_cast<std::size_t>(w - 1);
-      const bool changed = data.words[i].given && (i >= before->words.size() || !same(data.words[i], before->words[i]));
+      const bool changed =
+          data.words[i].given && (i >= before->words.size() || !same(data.words[i], before->words[i]));
       if (!changed) {
         ++w;
         continue;
@@ -549,7 +566,8 @@ class Punch {
       int end = w;
       while (end < count) {
         const std::size_t j = static_cast<std::size_t>(end);
-        if (!data.words[j].given || (j < before->words.size() && same(data.words[j], before->words[j]))) break;
+        if (!data.words[j].given || (j < before->words.size() && same(data.words[j], before->words[j])))
+          break;
         ++end;
       }
       words(spec, stage, data, w, end, stage);
@@ -561,7 +579,8 @@ class Punch {
     std::string text = data.words[0].text;
     text.resize(12, ' ');
     const BlockSpec& spec = *find_block(10);  // E12.8 words
-    for (int w = 2; w <= 4; ++w) text += field(spec, 0, w, data.words[static_cast<std::size_t>(w - 1)], false);
+    for (int w = 2; w <= 4; ++w)
+      text += field(spec, 0, w, data.words[static_cast<std::size_t>(w - 1)], false);
     text += ' ';  // column 49 blank, the description in columns 50-80
     text += data.words[4].text.substr(0, 31);
     card(text);
@@ -590,7 +609,8 @@ void group(Punch* punch, const CardCase& card_case, const BlockSet& set, int fir
     if (const BlockSpec* spec = find_block(key.block)) punch->block(*spec, key.stage, data);
   }
   BlockData body;
-  if (const BlockData* base = find_data(card_case.optimization, 33)) body = only_words(*base, first_33, last_33);
+  if (const BlockData* base = find_data(card_case.optimization, 33))
+    body = only_words(*base, first_33, last_33);
   if (const BlockData* own = find_data(set, 33)) {
     if (body.words.size() < own->words.size()) body.words.resize(own->words.size());
     for (std::size_t i = 0; i < own->words.size(); ++i) {
@@ -620,7 +640,8 @@ std::string write_card_images(const std::vector<CardCase>& cases, int* rounded) 
     for (const auto& [key, data] : card_case.optimization) {
       const BlockSpec* spec = find_block(key.block);
       if (spec == nullptr) continue;
-      const BlockData* before = previous != nullptr ? find_data(previous->optimization, key.block, key.stage) : nullptr;
+      const BlockData* before =
+          previous != nullptr ? find_data(previous->optimization, key.block, key.stage) : nullptr;
       punch.changes(*spec, key.stage, data, before);
     }
     punch.blank_card();

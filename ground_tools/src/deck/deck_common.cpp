@@ -1,9 +1,9 @@
 // Deck vocabulary shared by both deck formats (deck_common.hpp).
 #include "deck_common.hpp"
 
+#include "field_description.hpp"
 #include "tolip/core/constants.hpp"
 #include "tolip_ground/capped_read.hpp"
-#include "field_description.hpp"
 
 namespace tolip::ground::deck_detail {
 

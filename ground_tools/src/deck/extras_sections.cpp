@@ -40,13 +40,14 @@ constexpr double kFtPerInch = 1.0 / 12.0;
 
 // A table the deck gave, into the core's fixed-capacity table (y scaled to core units).
 template <int N>
-void fill_core_table(Section& section, const DeckTable& deck, double y_scale, int block, const std::string& field,
-                     const std::string& what, Table<N>* table) {
+void fill_core_table(Section& section, const DeckTable& deck, double y_scale, int block,
+                     const std::string& field, const std::string& what, Table<N>* table) {
   table->clear();
   if (deck.empty()) return;
   if (deck.size() > N) {
-    section.fail(block, field, what + " has " + std::to_string(deck.size()) + " points; the core holds at most " +
-                                   std::to_string(N));
+    section.fail(block, field,
+                 what + " has " + std::to_string(deck.size()) + " points; the core holds at most " +
+                     std::to_string(N));
   }
   for (int i = 0; i < deck.size(); ++i) {
     const std::size_t at = static_cast<std::size_t>(i);
@@ -65,9 +66,9 @@ void read_body_dynamics(Section& root, Mission* mission, const FieldTarget& targ
     if (six_d || hardover || impact) {
       root.fail(33, "body_dynamics",
                 std::string("missing [body_dynamics] (data blocks 33-37): required by ") +
-                    (six_d ? "options.body_dynamics_6d / options.dispersions (IP(6), IP(21))"
-                           : hardover ? "options.hardover (IP(22): block 33 words 7, 10, 11, 16 and block 37)"
-                                      : "options.impact (IP(23): block 33 words 17-19)"));
+                    (six_d      ? "options.body_dynamics_6d / options.dispersions (IP(6), IP(21))"
+                     : hardover ? "options.hardover (IP(22): block 33 words 7, 10, 11, 16 and block 37)"
+                                : "options.impact (IP(23): block 33 words 17-19)"));
     }
     return;
   }
@@ -79,13 +80,14 @@ void read_body_dynamics(Section& root, Mission* mission, const FieldTarget& targ
   read_fields(*section, "body_dynamics", target, *mission);
   // S of Sec. 11: DA6D has no word for the area blocks 34-36 are referred to; stage 1's SG1(2).
   body.reference_area_ft2 = mission->vehicle.stages[stage_index(1)].reference_area_ft2;
-  auto table = [&](std::string_view key, int block, std::string_view y_key, const std::string& y_what, bool required,
-                   const std::string& what, AeroTable* out) {
+  auto table = [&](std::string_view key, int block, std::string_view y_key, const std::string& y_what,
+                   bool required, const std::string& what, AeroTable* out) {
     DeckTable read;
     if (required) {
       read = read_table(*section, key, block, "mach", y_key, "Mach number", y_what, 1.0,
                         "data block " + str(block) + ": mach and " + std::string(y_key) + " arrays");
-    } else if (auto optional = read_optional_table(*section, key, block, "mach", y_key, "Mach number", y_what, 1.0)) {
+    } else if (auto optional =
+                   read_optional_table(*section, key, block, "mach", y_key, "Mach number", y_what, 1.0)) {
       read = *optional;
     }
     fill_core_table(*section, read, 1.0, block, "body_dynamics." + std::string(key), what, out);
@@ -102,15 +104,18 @@ void read_body_dynamics(Section& root, Mission* mission, const FieldTarget& targ
     for (auto&& [key, value] : cg->table()) {
       const std::string name(key.str());
       if (name != "1" && name != "2" && name != "3" && name != "4") {
-        cg->fail_at(name, 37, "unknown stage '" + name + "': data block 37 has c.g. tables for stages 1-4 ([body_dynamics.cg.N])");
+        cg->fail_at(name, 37,
+                    "unknown stage '" + name +
+                        "': data block 37 has c.g. tables for stages 1-4 ([body_dynamics.cg.N])");
       }
     }
     for (int stage = 1; stage <= kCgTableStages; ++stage) {
-      if (auto read = read_optional_table(*cg, str(stage), 37, "stage_time_s", "station_in", "stage time in s",
-                                          "c.g. body station in inches", 1.0)) {
+      if (auto read = read_optional_table(*cg, str(stage), 37, "stage_time_s", "station_in",
+                                          "stage time in s", "c.g. body station in inches", 1.0)) {
         // The deck's inches become the core's ft here, at the edge.
         fill_core_table(*section, *read, kFtPerInch, 37, "body_dynamics.cg." + str(stage),
-                        "the stage " + str(stage) + " c.g. history (data block 37)", &body.cg_station_ft[stage - 1]);
+                        "the stage " + str(stage) + " c.g. history (data block 37)",
+                        &body.cg_station_ft[stage - 1]);
       }
     }
     cg->finish();
@@ -121,8 +126,8 @@ void read_body_dynamics(Section& root, Mission* mission, const FieldTarget& targ
   for (int stage = 1; stage <= needed; ++stage) {
     if (body.cg_station_ft[stage - 1].size() == 0) {
       section->fail(37, section->key_path("cg." + str(stage)),
-                    "missing [body_dynamics.cg." + str(stage) + "]: data block 37 c.g. history of stage " + str(stage) +
-                        " (stage_time_s, station_in) is required by the selected options");
+                    "missing [body_dynamics.cg." + str(stage) + "]: data block 37 c.g. history of stage " +
+                        str(stage) + " (stage_time_s, station_in) is required by the selected options");
     }
   }
   section->finish();
@@ -132,19 +137,23 @@ void read_body_dynamics(Section& root, Mission* mission, const FieldTarget& targ
 void read_radar(Section& root, const Options& options, std::vector<RadarStation>* stations) {
   std::vector<Section> entries = root.array_of_tables("radar_station", 41);
   if (options.radar() && entries.empty()) {
-    root.fail(41, "radar_station", "options.radar (IP(24)) is set: at least one [[radar_station]] (data block 41) is required");
+    root.fail(41, "radar_station",
+              "options.radar (IP(24)) is set: at least one [[radar_station]] (data block 41) is required");
   }
   if (static_cast<int>(entries.size()) > kMaxRadarStations) {
-    entries[kMaxRadarStations].fail(41, entries[kMaxRadarStations].path(),
-                                    "too many radar stations (" + str(static_cast<int>(entries.size())) + "): at most 20");
+    entries[kMaxRadarStations].fail(
+        41, entries[kMaxRadarStations].path(),
+        "too many radar stations (" + str(static_cast<int>(entries.size())) + "): at most 20");
   }
   for (Section& entry : entries) {
     RadarStation station;
     const std::optional<std::string> id = entry.optional_text("id", 41, "station identification, 2A6", 12);
     if (!id || id->empty()) entry.missing("id", 41, "the station identification (up to 12 characters)");
     station.id = *id;
-    station.name = entry.optional_text("name", 41, "station description (not a manual word)", 200).value_or("");
-    station.geodetic_latitude_rad = entry.number("geodetic_latitude_deg", 41, "geodetic latitude, deg") * kDegToRad;
+    station.name =
+        entry.optional_text("name", 41, "station description (not a manual word)", 200).value_or("");
+    station.geodetic_latitude_rad =
+        entry.number("geodetic_latitude_deg", 41, "geodetic latitude, deg") * kDegToRad;
     station.longitude_rad = entry.number("longitude_deg", 41, "longitude, deg east") * kDegToRad;
     station.altitude_ft = entry.number("altitude_ft", 41, "station altitude, ft");
     if (std::abs(station.geodetic_latitude_rad) > 0.5 * kPi) {
@@ -163,8 +172,9 @@ void read_impact_group(Section& impact, std::string_view key, int block, bool ca
     for (auto&& [name_key, value] : group->table()) {
       const std::string name(name_key.str());
       if (name != "1" && name != "2" && name != "3") {
-        group->fail_at(name, block, "unknown stage '" + name + "': data block " + str(block) +
-                                        " has drag tables for stages 1-3 only");
+        group->fail_at(name, block,
+                       "unknown stage '" + name + "': data block " + str(block) +
+                           " has drag tables for stages 1-3 only");
       }
     }
   }
@@ -175,27 +185,33 @@ void read_impact_group(Section& impact, std::string_view key, int block, bool ca
     if (!section) {
       if (required && data.in_sequence) {
         impact.fail(block, impact.key_path(std::string(key) + "." + str(stage)),
-                    "missing [" + impact.key_path(std::string(key) + "." + str(stage)) + "]: options.impact (IP(23)) needs the data block " +
-                        str(block) + " drag table of every stage 1-3 in the sequence");
+                    "missing [" + impact.key_path(std::string(key) + "." + str(stage)) +
+                        "]: options.impact (IP(23)) needs the data block " + str(block) +
+                        " drag table of every stage 1-3 in the sequence");
       }
       continue;
     }
     const ReadTable read = section->xy("mach", "cd", block, "Mach number", "drag coefficient", 2);
     if (read.x.front() != 0.0) {
-      section->fail_at("mach", block, "impact drag tables must start at Mach 0 (manual, data blocks 42-43), got " +
-                                          format_number(read.x.front()));
+      section->fail_at("mach", block,
+                       "impact drag tables must start at Mach 0 (manual, data blocks 42-43), got " +
+                           format_number(read.x.front()));
     }
     table.present = true;
     table.cd_vs_mach = to_deck_table(read);
-    table.reference_area_ft2 = section->number_or(
-        "reference_area_ft2", block, "reference area of the table, ft^2 (extension; default the stage's block 39 area)",
-        data.reference_area_ft2);
-    if (!(table.reference_area_ft2 > 0.0)) section->fail_at("reference_area_ft2", block, "reference area must be positive");
+    table.reference_area_ft2 =
+        section->number_or("reference_area_ft2", block,
+                           "reference area of the table, ft^2 (extension; default the stage's block 39 area)",
+                           data.reference_area_ft2);
+    if (!(table.reference_area_ft2 > 0.0))
+      section->fail_at("reference_area_ft2", block, "reference area must be positive");
     if (casing) {
       table.casing_weight_lb = section->number_or(
-          "casing_weight_lb", block, "weight of the expended casing, lb (extension; default the stage's jettison weight)",
+          "casing_weight_lb", block,
+          "weight of the expended casing, lb (extension; default the stage's jettison weight)",
           data.jettison_weight_lb);
-      if (table.casing_weight_lb < 0.0) section->fail_at("casing_weight_lb", block, "casing weight must not be negative");
+      if (table.casing_weight_lb < 0.0)
+        section->fail_at("casing_weight_lb", block, "casing weight must not be negative");
     }
     section->finish();
   }
@@ -207,8 +223,9 @@ void read_impact(Section& root, const Mission& mission, ImpactData* impact) {
   const bool required = mission.options.impact();
   if (!section) {
     if (required) {
-      root.fail(42, "impact", "options.impact (IP(23)) is set: [impact] with failure_drag and casing_drag tables "
-                              "(data blocks 42-43) is required");
+      root.fail(42, "impact",
+                "options.impact (IP(23)) is set: [impact] with failure_drag and casing_drag tables "
+                "(data blocks 42-43) is required");
     }
     return;
   }
@@ -224,23 +241,27 @@ void read_hardover(Section& root, const Mission& mission, const FieldTarget& tar
   std::optional<Section> section = root.optional_table("hardover", 44);
   if (!section) {
     if (mission.options.hardover()) {
-      root.fail(44, "hardover", "options.hardover (IP(22)) is set: [hardover] (data blocks 44-45) is required");
+      root.fail(44, "hardover",
+                "options.hardover (IP(22)) is set: [hardover] (data blocks 44-45) is required");
     }
     return;
   }
   hardover->present = true;
   std::optional<Section> inertia = section->optional_table("pitch_inertia", 44);
-  if (!inertia) section->missing("pitch_inertia", 44, "[hardover.pitch_inertia.N] I_yy tables of stages 1-3 (data block 44)");
+  if (!inertia)
+    section->missing("pitch_inertia", 44,
+                     "[hardover.pitch_inertia.N] I_yy tables of stages 1-3 (data block 44)");
   for (auto&& [key, value] : inertia->table()) {
     const std::string name(key.str());
     if (name != "1" && name != "2" && name != "3") {
-      inertia->fail_at(name, 44, "unknown stage '" + name + "': data block 44 has I_yy tables for stages 1-3");
+      inertia->fail_at(name, 44,
+                       "unknown stage '" + name + "': data block 44 has I_yy tables for stages 1-3");
     }
   }
   for (int stage = 1; stage <= 3; ++stage) {
     if (!mission.vehicle.stages[stage_index(stage)].in_sequence) {
-      if (auto read = read_optional_table(*inertia, str(stage), 44, "stage_time_s", "iyy_slug_ft2", "stage time in s",
-                                          "pitch moment of inertia in slug ft^2", 1.0)) {
+      if (auto read = read_optional_table(*inertia, str(stage), 44, "stage_time_s", "iyy_slug_ft2",
+                                          "stage time in s", "pitch moment of inertia in slug ft^2", 1.0)) {
         hardover->pitch_inertia_slug_ft2[static_cast<std::size_t>(stage - 1)] = *read;
       }
       continue;
@@ -283,12 +304,13 @@ void read_dispersion(Section& entry, int code, DispersionCase* out) {
     case DispersionKind::kThrust: {
       out->stage = card_stage;
       const std::string stage = "stage " + str(out->stage);
-      out->vacuum_thrust_lbf = read_table(entry, item(30).key, 30, item(30).x_key, item(30).y_key, "stage time in s",
-                                          "vacuum thrust in lbf", 1.0,
-                                          "data block 30 replacement thrust table of " + stage + " for " + label);
-      out->consumable_weight_lb = read_table(entry, item(38).key, 38, item(38).x_key, item(38).y_key,
-                                             "stage time in s", "consumable weight remaining in lb", 1.0,
-                                             "data block 38 replacement weight table of " + stage + " for " + label);
+      out->vacuum_thrust_lbf = read_table(
+          entry, item(30).key, 30, item(30).x_key, item(30).y_key, "stage time in s", "vacuum thrust in lbf",
+          1.0, "data block 30 replacement thrust table of " + stage + " for " + label);
+      out->consumable_weight_lb =
+          read_table(entry, item(38).key, 38, item(38).x_key, item(38).y_key, "stage time in s",
+                     "consumable weight remaining in lb", 1.0,
+                     "data block 38 replacement weight table of " + stage + " for " + label);
       if (dispersion_takes(code, 55)) {
         if (auto durations = entry.optional_numbers(item(55).key, 55, "stage 4 and 5 durations, s", 2)) {
           out->has_stage_durations = true;
@@ -310,23 +332,26 @@ void read_dispersion(Section& entry, int code, DispersionCase* out) {
       break;
     case DispersionKind::kPitchingMoment:
       out->stage = 1;  // block 35 is stage 1's (no stage code on the card)
-      out->pitching_moment_per_rad = read_table(entry, item(35).key, 35, item(35).x_key, item(35).y_key, "Mach number",
-                                                "C_M per radian of alpha about X_FS", 1.0,
+      out->pitching_moment_per_rad = read_table(entry, item(35).key, 35, item(35).x_key, item(35).y_key,
+                                                "Mach number", "C_M per radian of alpha about X_FS", 1.0,
                                                 "the complete data block 35 table for " + label);
       break;
     case DispersionKind::kMisalignment:
       out->stage = card_stage;
-      out->misalignment_rad = entry.number(item(49).key, 49, "thrust misalignment angle (signed), deg") * kDegToRad;
+      out->misalignment_rad =
+          entry.number(item(49).key, 49, "thrust misalignment angle (signed), deg") * kDegToRad;
       out->thrust_station_in = entry.number(item(49, 2).key, 49, "thrust application station, in");
       break;
     case DispersionKind::kDeadband:
       out->stage = card_stage;
-      out->deadband_rad = entry.number(item(50).key, 50, "control system deadband angle (signed), deg") * kDegToRad;
+      out->deadband_rad =
+          entry.number(item(50).key, 50, "control system deadband angle (signed), deg") * kDegToRad;
       break;
     case DispersionKind::kTipoff:
       out->stage = entry.optional_integer("stage", 51, "spun stage of the tip-off, 4 or 5").value_or(4);
       if (out->stage != 4 && out->stage != 5) entry.fail_at("stage", 51, "tip-off applies to stage 4 or 5");
-      out->tipoff_rad = entry.number(item(51).key, 51, "effective attitude change from tip-off (signed), deg") * kDegToRad;
+      out->tipoff_rad =
+          entry.number(item(51).key, 51, "effective attitude change from tip-off (signed), deg") * kDegToRad;
       break;
     case DispersionKind::kLaunchAzimuth:
       out->stage = 1;  // a launch condition: stage 1 flies it
@@ -339,33 +364,36 @@ void read_dispersion(Section& entry, int code, DispersionCase* out) {
           entry.number(item(52).key, 52, "launch attitude change (signed), deg") * kDegToRad;
       break;
     case DispersionKind::kWinds:
-      out->wind_speed_ft_s = read_table(entry, item(53).key, 53, item(53).x_key, item(53).y_key, "altitude in ft",
-                                        "wind speed in ft/s", 1.0, "data block 53 WINDVL table for " + label);
-      out->wind_azimuth_rad = read_table(entry, item(54).key, 54, item(54).x_key, item(54).y_key, "altitude in ft",
-                                         "azimuth of the wind vector in deg from north", kDegToRad,
-                                         "data block 54 WINDAZ table for " + label);
+      out->wind_speed_ft_s =
+          read_table(entry, item(53).key, 53, item(53).x_key, item(53).y_key, "altitude in ft",
+                     "wind speed in ft/s", 1.0, "data block 53 WINDVL table for " + label);
+      out->wind_azimuth_rad = read_table(entry, item(54).key, 54, item(54).x_key, item(54).y_key,
+                                         "altitude in ft", "azimuth of the wind vector in deg from north",
+                                         kDegToRad, "data block 54 WINDAZ table for " + label);
       break;
-    case DispersionKind::kSummary:
-      break;
+    case DispersionKind::kSummary: break;
   }
 }
 
 void read_dispersions(Section& root, const Options& options, std::vector<DispersionCase>* dispersions) {
   std::vector<Section> entries = root.array_of_tables("dispersion", 46);
   if (options.dispersions() && entries.empty()) {
-    root.fail(46, "dispersion", "options.dispersions (IP(21)) is set: at least one [[dispersion]] (data block 46) is required");
+    root.fail(46, "dispersion",
+              "options.dispersions (IP(21)) is set: at least one [[dispersion]] (data block 46) is required");
   }
   int previous = 0;
   for (Section& entry : entries) {
     DispersionCase dispersion;
     dispersion.code = entry.integer("code", 46, "dispersion trajectory code 1-38 or 40");
     if (dispersion_name(dispersion.code) == nullptr) {
-      entry.fail_at("code", 46, "unknown dispersion code " + str(dispersion.code) +
-                                    ": expected 1-38 (the manual's dispersion table) or 40 (three-sigma summary)");
+      entry.fail_at("code", 46,
+                    "unknown dispersion code " + str(dispersion.code) +
+                        ": expected 1-38 (the manual's dispersion table) or 40 (three-sigma summary)");
     }
     if (dispersion.code <= previous) {
-      entry.fail_at("code", 46, "dispersion codes must be given in increasing order: " + str(dispersion.code) +
-                                    " follows " + str(previous));
+      entry.fail_at("code", 46,
+                    "dispersion codes must be given in increasing order: " + str(dispersion.code) +
+                        " follows " + str(previous));
     }
     previous = dispersion.code;
     dispersion.title = entry.optional_text("title", 46, "data block 46 title, 2A6", 12).value_or("");

@@ -51,9 +51,9 @@ enum class StageCoding {
 };
 
 enum class Presence {
-  kOptional,      // absent: the default (or the target's own value when the field has none)
-  kRequired,      // the TOML reader demands the key
-  kRequiredWhen,  // required when required_when(mission) holds; otherwise optional
+  kOptional,            // absent: the default (or the target's own value when the field has none)
+  kRequired,            // the TOML reader demands the key
+  kRequiredWhen,        // required when required_when(mission) holds; otherwise optional
   kRequiredForPowered,  // stage fields: required for powered stages 1-5, optional for coasts
 };
 
@@ -69,26 +69,26 @@ enum class Range {
 enum class StageSet { kAll, kPowered };
 
 struct FieldDescription {
-  int block = 0;             // manual data block on the cards
-  int word = 0;              // first word (kWordPerStage: of stage code 1)
-  int count = 1;             // > 1: words word..word+count-1 are one TOML array
+  int block = 0;  // manual data block on the cards
+  int word = 0;   // first word (kWordPerStage: of stage code 1)
+  int count = 1;  // > 1: words word..word+count-1 are one TOML array
   StageCoding stage_coding = StageCoding::kNone;
   StageSet stages = StageSet::kAll;
-  const char* section = "";  // TOML table; "stage.{n}" for stage-coded fields
-  const char* key = "";      // TOML key, the unit in its name
+  const char* section = "";    // TOML table; "stage.{n}" for stage-coded fields
+  const char* key = "";        // TOML key, the unit in its name
   const char* card_text = "";  // the word's meaning on the card (IP(17) echo, convert comments)
   // The quantity and its unit in the TOML reader's messages. {w}: the word, {n}: the stage code,
   // {kind}: "powered stage n" or "coast n".
   const char* what = "";
-  int message_block = 0;     // data block the TOML reader names (0: `block`)
+  int message_block = 0;  // data block the TOML reader names (0: `block`)
   Conversion conversion = Conversion::kNone;
-  bool integer = false;      // the TOML reader wants an integer
+  bool integer = false;  // the TOML reader wants an integer
   Presence presence = Presence::kOptional;
   bool (*required_when)(const Mission&) = nullptr;
   bool has_default = false;  // absent: default_value (deck units); otherwise the target keeps its value
   double default_value = 0.0;
   Range range = Range::kAny;
-  int low = 0;               // kChoice
+  int low = 0;  // kChoice
   int high = 0;
   // C++ member path in the Mission for the source emitter ("constants.haero_ft";
   // "vehicle.stages[{i}].duration_s"); "" when the value does not live in the Mission.
@@ -121,7 +121,8 @@ int message_block(const FieldDescription& field);
 
 // The value of element `index` (core units) in the target, and storing one (integers truncated).
 double field_value(const FieldDescription& field, const FieldTarget& target, int stage, int index);
-void set_field_value(const FieldDescription& field, const FieldTarget& target, int stage, int index, double value);
+void set_field_value(const FieldDescription& field, const FieldTarget& target, int stage, int index,
+                     double value);
 // The same for a read-only Mission (the source emitter and the echo's nominal values).
 double field_value(const FieldDescription& field, const Mission& mission, int stage, int index);
 
@@ -137,9 +138,9 @@ std::vector<int> stage_codes(const FieldDescription& field);
 // One datum a dispersion code takes: a word of a block, or a whole table block.
 struct DispersionItem {
   int block = 0;
-  int word = 0;              // 0: a table block (x_key, y_key)
-  int count = 1;             // words: > 1 is a TOML array of words word..word+count-1
-  const char* key = "";      // TOML key in [[dispersion]] (a sub-table for table blocks)
+  int word = 0;          // 0: a table block (x_key, y_key)
+  int count = 1;         // words: > 1 is a TOML array of words word..word+count-1
+  const char* key = "";  // TOML key in [[dispersion]] (a sub-table for table blocks)
   const char* x_key = "";
   const char* y_key = "";
 };
@@ -164,8 +165,8 @@ struct DispersionCodes {
   int first = 0;
   int last = 0;
   DispersionKind kind = DispersionKind::kSummary;
-  const char* name = "";     // the kind of dispersed trajectory
-  const char* blocks = "";   // what the cards must give, for messages
+  const char* name = "";    // the kind of dispersed trajectory
+  const char* blocks = "";  // what the cards must give, for messages
   std::vector<DispersionItem> items;
   // The stage code the code's data blocks carry: 0 none; -1 4 or 5 (the tip-off); otherwise fixed.
   int (*stage_of)(int code) = nullptr;

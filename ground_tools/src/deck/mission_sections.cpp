@@ -10,7 +10,6 @@
 namespace tolip::ground::deck_detail {
 namespace {
 
-
 std::string str(int value) { return std::to_string(value); }
 
 void copy_text(const std::string& text, char* destination, std::size_t capacity) {
@@ -62,8 +61,9 @@ void read_options(Section& root, const FieldTarget& target) {
   section->finish();
   const Options& options = target.mission->options;
   if (options.ip[6] == 1 && options.ip[7] != 1) {
-    section->fail_at("body_dynamics_6d", 4,
-                     "IP(6) = 1 (6D after successful linearization) requires linearization = true (IP(7) = 1)");
+    section->fail_at(
+        "body_dynamics_6d", 4,
+        "IP(6) = 1 (6D after successful linearization) requires linearization = true (IP(7) = 1)");
   }
 }
 
@@ -81,11 +81,14 @@ void read_vehicle(Section& root, Vehicle* vehicle) {
   std::vector<int> codes = section.integers("sequence", 5, "stage codes in flight order");
   if (!codes.empty() && codes.back() == 0) codes.pop_back();  // the card's terminating 0
   if (codes.empty()) {
-    section.fail_at("sequence", 5, "empty stage sequence: expected at least stage 1 (the order 1 6 2 7 3 8 4 9 5 10, coasts optional)");
+    section.fail_at(
+        "sequence", 5,
+        "empty stage sequence: expected at least stage 1 (the order 1 6 2 7 3 8 4 9 5 10, coasts optional)");
   }
   if (static_cast<int>(codes.size()) > kMaxStages) {
-    section.fail_at("sequence", 5, "too many stages (" + str(static_cast<int>(codes.size())) +
-                                       "): at most 10 codes, in the order 1 6 2 7 3 8 4 9 5 10");
+    section.fail_at("sequence", 5,
+                    "too many stages (" + str(static_cast<int>(codes.size())) +
+                        "): at most 10 codes, in the order 1 6 2 7 3 8 4 9 5 10");
   }
   Reader& reader = section.reader();
   for (std::size_t k = 0; k < codes.size(); ++k) {
@@ -105,7 +108,7 @@ void read_vehicle(Section& root, Vehicle* vehicle) {
       std::string expected = "1";
       if (is_powered_stage(previous)) {
         expected = previous < kMaxPoweredStages ? str(previous + 1) + " or its coast " + str(previous + 5)
-                                                 : "its coast " + str(previous + 5);
+                                                : "its coast " + str(previous + 5);
       } else if (previous != 0) {
         expected = str(previous - 4);
       }
@@ -127,7 +130,8 @@ void read_vehicle(Section& root, Vehicle* vehicle) {
 
   if (std::optional<Section> lift = section.optional_table("lift_curve_slope", 32)) {
     const ReadTable read = lift->xy("mach", "cl_alpha_per_rad", 32, "Mach number", "C_L per radian of alpha");
-    fill_table(*lift, "mach", read, 1.0, 32, "data block 32, 42E12.8: 20 pairs", &vehicle->lift_curve_slope_per_rad);
+    fill_table(*lift, "mach", read, 1.0, 32, "data block 32, 42E12.8: 20 pairs",
+               &vehicle->lift_curve_slope_per_rad);
     std::vector<int> used = {1, 6};
     if (lift->has("used_in_stages")) {
       used = lift->integers("used_in_stages", 32, "stage codes using the lift table (1 and/or 6)");
@@ -136,7 +140,8 @@ void read_vehicle(Section& root, Vehicle* vehicle) {
       if (used[i] != 1 && used[i] != 6) {
         section.reader().fail(lift->element_line("used_in_stages", i), 32,
                               lift->key_path("used_in_stages") + "[" + str(static_cast<int>(i)) + "]",
-                              "stage " + str(used[i]) + " cannot use the lift table: data block 32 is used in stages 1 and 6 only");
+                              "stage " + str(used[i]) +
+                                  " cannot use the lift table: data block 32 is used in stages 1 and 6 only");
       }
       vehicle->stages[stage_index(used[i])].uses_lift_table = true;
     }
@@ -162,24 +167,27 @@ void read_stage(Section& section, int code, const FieldTarget& target, StageData
   if (powered) {
     read_field(section, stage_field("nozzle_exit_area_ft2"), target, options, code);
   } else if (section.has("nozzle_exit_area_ft2")) {
-    section.fail_at("nozzle_exit_area_ft2", 39,
-                    "a coast has no nozzle: data block 39 gives coasts only the jettison weight and the reference area");
+    section.fail_at(
+        "nozzle_exit_area_ft2", 39,
+        "a coast has no nozzle: data block 39 gives coasts only the jettison weight and the reference area");
   }
   read_field(section, stage_field("reference_area_ft2"), target, options, code);
 
   if (powered) {
-    Section thrust = section.table("thrust", 30, "data block 30: time_s and vacuum_thrust_lbf arrays of " + kind);
-    const ReadTable thrust_read = thrust.xy("time_s", "vacuum_thrust_lbf", 30, "stage time in s", "vacuum thrust in lbf", 2);
-    fill_table(thrust, "time_s", thrust_read, 1.0, 30, "data block 30: 120 thrust points for all stages together",
-               &stage->vacuum_thrust_lbf);
+    Section thrust =
+        section.table("thrust", 30, "data block 30: time_s and vacuum_thrust_lbf arrays of " + kind);
+    const ReadTable thrust_read =
+        thrust.xy("time_s", "vacuum_thrust_lbf", 30, "stage time in s", "vacuum thrust in lbf", 2);
+    fill_table(thrust, "time_s", thrust_read, 1.0, 30,
+               "data block 30: 120 thrust points for all stages together", &stage->vacuum_thrust_lbf);
     thrust.finish();
 
-    Section weight = section.table("consumable_weight", 38,
-                                   "data block 38: time_s and remaining_lb arrays of " + kind);
-    const ReadTable weight_read = weight.xy("time_s", "remaining_lb", 38, "stage time in s",
-                                            "consumable weight remaining in lb", 2);
-    fill_table(weight, "time_s", weight_read, 1.0, 38, "data block 38: 120 weight points for all stages together",
-               &stage->consumable_weight_lb);
+    Section weight =
+        section.table("consumable_weight", 38, "data block 38: time_s and remaining_lb arrays of " + kind);
+    const ReadTable weight_read =
+        weight.xy("time_s", "remaining_lb", 38, "stage time in s", "consumable weight remaining in lb", 2);
+    fill_table(weight, "time_s", weight_read, 1.0, 38,
+               "data block 38: 120 weight points for all stages together", &stage->consumable_weight_lb);
     weight.finish();
 
     // A powered stage burns to the end of its thrust table unless the deck says otherwise.
@@ -190,7 +198,8 @@ void read_stage(Section& section, int code, const FieldTarget& target, StageData
     for (const char* key : {"thrust", "consumable_weight"}) {
       if (section.has(key)) {
         section.fail_at(key, std::string(key) == "thrust" ? 30 : 38,
-                        "a coast has no thrust or consumable-weight table (data blocks 30 and 38 are for powered stages 1-5)");
+                        "a coast has no thrust or consumable-weight table (data blocks 30 and 38 are for "
+                        "powered stages 1-5)");
       }
     }
     const FieldDescription& duration = stage_field("duration_s");  // a coast has no table to end it
@@ -210,8 +219,9 @@ void read_stage(Section& section, int code, const FieldTarget& target, StageData
 
 void read_stages(Section& root, const FieldTarget& target) {
   Vehicle* vehicle = &target.mission->vehicle;
-  Section stages = root.table("stage", 16,
-                              "one [stage.N] table for every stage code N of the sequence (data blocks 16, 30, 31, 38, 39)");
+  Section stages = root.table(
+      "stage", 16,
+      "one [stage.N] table for every stage code N of the sequence (data blocks 16, 30, 31, 38, 39)");
   for (auto&& [key, value] : stages.table()) {
     const std::string name(key.str());
     bool known = false;
@@ -219,9 +229,10 @@ void read_stages(Section& root, const FieldTarget& target) {
     if (!known) {
       int line = static_cast<int>(key.source().begin.line);
       if (line == 0) line = line_of_node(value);
-      stages.reader().fail(line, 16, stages.key_path(name),
-                           "unknown stage code '" + name +
-                               "': expected [stage.N] with N = 1-5 (powered stages) or 6-10 (the coasts after stages 1-5)");
+      stages.reader().fail(
+          line, 16, stages.key_path(name),
+          "unknown stage code '" + name +
+              "': expected [stage.N] with N = 1-5 (powered stages) or 6-10 (the coasts after stages 1-5)");
     }
   }
   for (int code = 1; code <= kMaxStages; ++code) {
@@ -233,8 +244,9 @@ void read_stages(Section& root, const FieldTarget& target) {
       stages.fail(16, stages.key_path(str(code)),
                   "stage " + str(code) + " is in the sequence (data block 5) but [stage." + str(code) +
                       "] is missing: expected its duration and integration steps (data block 16)" +
-                      (is_powered_stage(code) ? ", jettison weight (39), thrust (30) and consumable weight (38) tables"
-                                              : ""));
+                      (is_powered_stage(code)
+                           ? ", jettison weight (39), thrust (30) and consumable weight (38) tables"
+                           : ""));
     }
   }
   stages.finish();
@@ -242,7 +254,8 @@ void read_stages(Section& root, const FieldTarget& target) {
 
 // ---- data blocks 20, 21 -------------------------------------------------------------------------
 bool read_launch(Section& root, const FieldTarget& target) {
-  Section section = root.table("launch", 20, "data blocks 20-21: lift-off time, launch date and initial conditions");
+  Section section =
+      root.table("launch", 20, "data blocks 20-21: lift-off time, launch date and initial conditions");
   read_fields(section, "launch", target, *target.mission);
   const bool has_date = section.has("space_age_date_days");
   section.finish();
@@ -269,9 +282,10 @@ bool read_constraints(Section& root, const Options& options, const Vehicle& vehi
   }
   std::vector<Section> entries = root.array_of_tables("constraint", 8);
   if (entries.empty()) {
-    root.fail(8, "constraint",
-              "missing [[constraint]] entries: data block 8 needs at least the payoff (code 0 payload, 1 or 5 "
-              "velocity, 7 altitude) as the first entry");
+    root.fail(
+        8, "constraint",
+        "missing [[constraint]] entries: data block 8 needs at least the payoff (code 0 payload, 1 or 5 "
+        "velocity, 7 altitude) as the first entry");
   }
   std::vector<int> codes;
   for (Section& entry : entries) codes.push_back(entry.integer("code", 8, "data block 8 constraint code"));
@@ -279,8 +293,9 @@ bool read_constraints(Section& root, const Options& options, const Vehicle& vehi
   const int count = static_cast<int>(codes.size()) - (heating_listed ? 1 : 0);
   if (count > kMaxConstraints) {
     entries[kMaxConstraints].fail_at("code", 8,
-                                     "too many constraints (" + str(count) + "): data block 8 takes at most 13 "
-                                     "including the payoff (IB3(2..14)), plus the heating code 14 last");
+                                     "too many constraints (" + str(count) +
+                                         "): data block 8 takes at most 13 "
+                                         "including the payoff (IB3(2..14)), plus the heating code 14 last");
   }
   bool needs_date = false;
   for (std::size_t i = 0; i < entries.size(); ++i) {
@@ -288,18 +303,22 @@ bool read_constraints(Section& root, const Options& options, const Vehicle& vehi
     const int code = codes[i];
     ConstraintUnit unit{};
     const bool stage_point = code >= 15 && code <= 99;
-    if (!constraint_unit(code, &unit) || (stage_point && !vehicle.stages[stage_index(code / 10)].in_sequence)) {
+    if (!constraint_unit(code, &unit) ||
+        (stage_point && !vehicle.stages[stage_index(code / 10)].in_sequence)) {
       const std::string why = stage_point && constraint_unit(code, &unit)
                                   ? " (stage " + str(code / 10) + " is not in the sequence " + sequence + ")"
                                   : "";
-      entry.fail_at("code", 8, "unknown constraint code " + str(code) + why +
-                                   ": expected 0-13 (terminal), 14 (heating, last), X5-X9 (at the end of stage X of "
-                                   "the sequence " + sequence + ") or 100-102");
+      entry.fail_at("code", 8,
+                    "unknown constraint code " + str(code) + why +
+                        ": expected 0-13 (terminal), 14 (heating, last), X5-X9 (at the end of stage X of "
+                        "the sequence " +
+                        sequence + ") or 100-102");
     }
     if (code == 14 && i + 1 != entries.size()) {
       entry.fail_at("code", 8, "the heating constraint (code 14) must be the last entry");
     }
-    if (code == 0 && i != 0) entry.fail_at("code", 8, "payload (code 0) can only be the payoff, the first entry");
+    if (code == 0 && i != 0)
+      entry.fail_at("code", 8, "payload (code 0) can only be the payoff, the first entry");
     for (std::size_t j = 0; j < i; ++j) {
       if (codes[j] == code) entry.fail_at("code", 8, "constraint code " + str(code) + " is listed twice");
     }
@@ -312,28 +331,34 @@ bool read_constraints(Section& root, const Options& options, const Vehicle& vehi
       const bool consistent = (payoff == 0 && code == 0) || (payoff == 1 && (code == 1 || code == 5)) ||
                               (payoff == 2 && code == 7);
       if (!consistent) {
-        entry.fail_at("code", 8, "the first entry is the payoff and must match options.payoff (IP(1) = " + str(payoff) +
-                                     "): expected code " +
-                                     (payoff == 0 ? std::string("0 (payload)")
-                                                  : payoff == 1 ? std::string("1 or 5 (velocity)")
-                                                                : std::string("7 (altitude)")) +
-                                     ", got " + str(code));
+        entry.fail_at("code", 8,
+                      "the first entry is the payoff and must match options.payoff (IP(1) = " + str(payoff) +
+                          "): expected code " +
+                          (payoff == 0   ? std::string("0 (payload)")
+                           : payoff == 1 ? std::string("1 or 5 (velocity)")
+                                         : std::string("7 (altitude)")) +
+                          ", got " + str(code));
       }
       list->desired[0] =
-          entry.number_or(desired_key, 19, "DA4(1), the payoff entry (a placeholder) in " + std::string(unit.suffix), 0.0) *
+          entry.number_or(desired_key, 19,
+                          "DA4(1), the payoff entry (a placeholder) in " + std::string(unit.suffix), 0.0) *
           unit.to_core;
       for (const std::string& key : {optimization_key, linearization_key}) {
         if (entry.has(key)) {
-          entry.fail_at(key, 29, "the payoff has no deadband: data block 29 lists the constraints after the payoff");
+          entry.fail_at(key, 29,
+                        "the payoff has no deadband: data block 29 lists the constraints after the payoff");
         }
       }
     } else {
       const std::string name = std::string(unit.name) + " (code " + str(code) + ")";
-      list->desired[i] = entry.number(desired_key, 19, "DA4 desired " + name + " in " + unit.suffix) * unit.to_core;
+      list->desired[i] =
+          entry.number(desired_key, 19, "DA4 desired " + name + " in " + unit.suffix) * unit.to_core;
       list->deadband_optimization[i - 1] =
-          entry.number(optimization_key, 29, "DA14 allowed deviation of " + name + " during optimization, " + unit.suffix) *
+          entry.number(optimization_key, 29,
+                       "DA14 allowed deviation of " + name + " during optimization, " + unit.suffix) *
           unit.to_core;
-      const std::string lin_what = "DA14(13+n) allowed deviation of " + name + " during linearization, " + unit.suffix;
+      const std::string lin_what =
+          "DA14(13+n) allowed deviation of " + name + " during linearization, " + unit.suffix;
       list->deadband_linearization[i - 1] =
           (options.linearization() ? entry.number(linearization_key, 29, lin_what)
                                    : entry.number_or(linearization_key, 29, lin_what, 0.0)) *
@@ -345,10 +370,12 @@ bool read_constraints(Section& root, const Options& options, const Vehicle& vehi
   list->count = count;
   if (options.heating_constraint() && !heating_listed) {
     root.fail(8, "constraint",
-              "options.heating_constraint (IP(2)) is set: the heating constraint code 14 must be the last [[constraint]]");
+              "options.heating_constraint (IP(2)) is set: the heating constraint code 14 must be the last "
+              "[[constraint]]");
   }
   if (heating_listed && !options.heating_constraint()) {
-    entries.back().fail_at("code", 8, "the heating constraint (code 14) needs options.heating_constraint = true (IP(2))");
+    entries.back().fail_at(
+        "code", 8, "the heating constraint (code 14) needs options.heating_constraint = true (IP(2))");
   }
   return needs_date;
 }
@@ -358,21 +385,25 @@ void read_adjustable(Section& root, AdjustableParameters* adjustable) {
   std::vector<Section> entries = root.array_of_tables("adjustable_parameter", 6);
   if (static_cast<int>(entries.size()) > kMaxAdjustableParameters) {
     entries[kMaxAdjustableParameters].fail_at(
-        "code", 6, "too many adjustable parameters (" + str(static_cast<int>(entries.size())) + "): at most 11");
+        "code", 6,
+        "too many adjustable parameters (" + str(static_cast<int>(entries.size())) + "): at most 11");
   }
   for (std::size_t i = 0; i < entries.size(); ++i) {
     Section& entry = entries[i];
     const int code = entry.integer("code", 6, "data block 6 adjustable parameter code 1-11");
     if (code < 1 || code > 11) {
-      entry.fail_at("code", 6, "unknown adjustable parameter code " + str(code) +
-                                   ": expected 1-11 (1/2 stage-4 theta/chi, 3/4/5 coasts after stages 3/2/1, 6 launch "
-                                   "azimuth, 7 launch time, 8/9 stage-5 theta/chi, 10/11 coasts after stages 4/5)");
+      entry.fail_at("code", 6,
+                    "unknown adjustable parameter code " + str(code) +
+                        ": expected 1-11 (1/2 stage-4 theta/chi, 3/4/5 coasts after stages 3/2/1, 6 launch "
+                        "azimuth, 7 launch time, 8/9 stage-5 theta/chi, 10/11 coasts after stages 4/5)");
     }
     for (std::size_t j = 0; j < i; ++j) {
-      if (adjustable->codes[j] == code) entry.fail_at("code", 6, "adjustable parameter code " + str(code) + " is listed twice");
+      if (adjustable->codes[j] == code)
+        entry.fail_at("code", 6, "adjustable parameter code " + str(code) + " is listed twice");
     }
     const double weight = entry.number("weight", 27, "data block 27 DA12 weighting constant");
-    if (!(weight > 0.0)) entry.fail_at("weight", 27, "weighting constant must be positive, got " + format_number(weight));
+    if (!(weight > 0.0))
+      entry.fail_at("weight", 27, "weighting constant must be positive, got " + format_number(weight));
     adjustable->codes[i] = code;
     adjustable->weights[i] = weight;
     entry.finish();
@@ -386,18 +417,20 @@ void read_linearization(Section& root, const Mission& mission, LinearizationData
   if (!section) {
     if (mission.options.linearization()) {
       root.fail(18, "linearization",
-                "options.linearization (IP(7)) is set: [linearization] with coded_times (data block 18) is required");
+                "options.linearization (IP(7)) is set: [linearization] with coded_times (data block 18) is "
+                "required");
     }
     return;
   }
-  const std::vector<double> times =
-      section->numbers("coded_times", 18, "TLIN times coded 100 n + t (n powered stage, t s from its ignition)");
+  const std::vector<double> times = section->numbers(
+      "coded_times", 18, "TLIN times coded 100 n + t (n powered stage, t s from its ignition)");
   if (times.size() < 2) {
     section->fail_at("coded_times", 18, "expected at least 2 coded times (the start and end of one segment)");
   }
   if (static_cast<int>(times.size()) > kMaxLinearSegments + 1) {
-    section->fail_at("coded_times", 18, "too many coded times (" + str(static_cast<int>(times.size())) +
-                                            "): at most 16 (15 segments, data block 18)");
+    section->fail_at("coded_times", 18,
+                     "too many coded times (" + str(static_cast<int>(times.size())) +
+                         "): at most 16 (15 segments, data block 18)");
   }
   Reader& reader = section->reader();
   for (std::size_t i = 0; i < times.size(); ++i) {
@@ -415,17 +448,19 @@ void read_linearization(Section& root, const Mission& mission, LinearizationData
     const double duration = mission.vehicle.stages[stage_index(code)].duration_s;
     if (duration > 0.0 && t > duration + mission.constants.time_epsilon_s) {
       reader.fail(line, 18, field,
-                  "coded time " + format_number(times[i]) + " is " + format_number(t) + " s into stage " + str(code) +
-                      ", after its burnout at " + format_number(duration) + " s");
+                  "coded time " + format_number(times[i]) + " is " + format_number(t) + " s into stage " +
+                      str(code) + ", after its burnout at " + format_number(duration) + " s");
     }
     if (i > 0 && !(times[i] > times[i - 1])) {
       reader.fail(line, 18, field,
-                  "coded times must increase: " + format_number(times[i]) + " follows " + format_number(times[i - 1]));
+                  "coded times must increase: " + format_number(times[i]) + " follows " +
+                      format_number(times[i - 1]));
     }
     linearization->coded_start_times[i] = times[i];
   }
   const int segments = static_cast<int>(times.size()) - 1;
-  if (const std::optional<int> count = section->optional_integer("segment_count", 18, "TLIN(1) number of linear segments")) {
+  if (const std::optional<int> count =
+          section->optional_integer("segment_count", 18, "TLIN(1) number of linear segments")) {
     if (*count != segments) {
       section->fail_at("segment_count", 18,
                        "TLIN(1) = " + str(*count) + " but " + str(static_cast<int>(times.size())) +
@@ -435,10 +470,12 @@ void read_linearization(Section& root, const Mission& mission, LinearizationData
   }
   linearization->segment_count = segments;
   for (int i = 0; i < kMaxLinearSegments; ++i) linearization->segment_weights[i] = i < segments ? 1.0 : 0.0;
-  if (const auto weights = section->optional_numbers("segment_weights", 26, "ETALIN weighting constant per segment")) {
+  if (const auto weights =
+          section->optional_numbers("segment_weights", 26, "ETALIN weighting constant per segment")) {
     if (static_cast<int>(weights->size()) != segments) {
       section->fail_at("segment_weights", 26,
-                       "expected one weight per segment (" + str(segments) + "), got " + str(static_cast<int>(weights->size())));
+                       "expected one weight per segment (" + str(segments) + "), got " +
+                           str(static_cast<int>(weights->size())));
     }
     for (int i = 0; i < segments; ++i) {
       const double weight = (*weights)[static_cast<std::size_t>(i)];
@@ -476,14 +513,16 @@ void read_output_frequency(Section& root, OutputFrequency* output) {
     } else {
       values = section->integers(entry.key, 9, std::string(entry.what) + ", per stage code 1-10");
       if (static_cast<int>(values.size()) != kMaxStages) {
-        section->fail_at(entry.key, 9, "expected one integer for all stages or an array of 10 (stage codes 1-10), got " +
-                                           str(static_cast<int>(values.size())) + " values");
+        section->fail_at(entry.key, 9,
+                         "expected one integer for all stages or an array of 10 (stage codes 1-10), got " +
+                             str(static_cast<int>(values.size())) + " values");
       }
     }
     for (int i = 0; i < kMaxStages; ++i) {
       if (values[static_cast<std::size_t>(i)] < 1) {
-        section->fail_at(entry.key, 9, "output frequency must be at least 1 (every computed point), got " +
-                                           str(values[static_cast<std::size_t>(i)]));
+        section->fail_at(entry.key, 9,
+                         "output frequency must be at least 1 (every computed point), got " +
+                             str(values[static_cast<std::size_t>(i)]));
       }
       entry.values[i] = values[static_cast<std::size_t>(i)];
     }
@@ -493,8 +532,10 @@ void read_output_frequency(Section& root, OutputFrequency* output) {
 
 // ---- data block 40 ------------------------------------------------------------------------------
 void read_pitch_program(Section& root, PitchTable* pitch) {
-  Section section = root.table("pitch_program", 40, "data block 40: time_s (from launch) and theta_deg arrays");
-  const ReadTable read = section.xy("time_s", "theta_deg", 40, "time from launch in s", "pitch attitude theta in deg");
+  Section section =
+      root.table("pitch_program", 40, "data block 40: time_s (from launch) and theta_deg arrays");
+  const ReadTable read =
+      section.xy("time_s", "theta_deg", 40, "time from launch in s", "pitch attitude theta in deg");
   fill_table(section, "time_s", read, kDegToRad, 40, "data block 40, 32E12.8: 15 pairs", pitch);
   section.finish();
 }

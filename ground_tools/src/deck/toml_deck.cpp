@@ -18,9 +18,9 @@
 
 #include "card_internal.hpp"
 #include "deck_common.hpp"
-#include "toml_reader.hpp"
 #include "tolip_ground/deck.hpp"
 #include "tolip_ground/deck_extras.hpp"
+#include "toml_reader.hpp"
 
 namespace tolip::ground {
 
@@ -41,7 +41,9 @@ std::string DeckError::to_string() const {
     if (case_number > 0) add("case " + std::to_string(case_number));
     if (data_block > 0) add("data block " + std::to_string(data_block));
     if (data_block > 0 && stage_code > 0) {
-      add((data_block == 46 ? "dispersion code " : data_block == 41 ? "station count " : "stage code ") +
+      add((data_block == 46   ? "dispersion code "
+           : data_block == 41 ? "station count "
+                              : "stage code ") +
           std::to_string(stage_code));
     }
     if (word > 0) add("word " + std::to_string(word));
@@ -77,10 +79,26 @@ using deck_detail::Reader;
 using deck_detail::Section;
 
 // Every top-level table of the deck (docs/deck-format.md).
-constexpr const char* kTopLevelKeys[] = {
-    "case", "options", "constants", "atmosphere", "vehicle", "stage", "launch", "control_constraints", "misc",
-    "constraint", "adjustable_parameter", "linearization", "convergence", "output_frequency", "pitch_program",
-    "body_dynamics", "radar_station", "impact", "hardover", "dispersion"};
+constexpr const char* kTopLevelKeys[] = {"case",
+                                         "options",
+                                         "constants",
+                                         "atmosphere",
+                                         "vehicle",
+                                         "stage",
+                                         "launch",
+                                         "control_constraints",
+                                         "misc",
+                                         "constraint",
+                                         "adjustable_parameter",
+                                         "linearization",
+                                         "convergence",
+                                         "output_frequency",
+                                         "pitch_program",
+                                         "body_dynamics",
+                                         "radar_station",
+                                         "impact",
+                                         "hardover",
+                                         "dispersion"};
 
 void check_top_level(const toml::table& root, Reader& reader) {
   for (auto&& [key, value] : root) {
@@ -91,8 +109,9 @@ void check_top_level(const toml::table& root, Reader& reader) {
     for (const char* name : kTopLevelKeys) expected += (expected.empty() ? "" : ", ") + std::string(name);
     int line = static_cast<int>(key.source().begin.line);
     if (line == 0) line = deck_detail::line_of_node(value);
-    reader.fail(line, 0, std::string(key.str()),
-                "unknown key '" + std::string(key.str()) + "' at the top level; expected one of: " + expected);
+    reader.fail(
+        line, 0, std::string(key.str()),
+        "unknown key '" + std::string(key.str()) + "' at the top level; expected one of: " + expected);
   }
 }
 
@@ -100,12 +119,12 @@ void check_top_level(const toml::table& root, Reader& reader) {
 std::string deck_key(const std::string& core_field) {
   std::string key = core_field;
   const std::size_t at = key.rfind("_rad");
-  if (at != std::string::npos && (at + 4 == key.size() || key.compare(at + 4, std::string::npos, "_s") == 0)) {
+  if (at != std::string::npos &&
+      (at + 4 == key.size() || key.compare(at + 4, std::string::npos, "_s") == 0)) {
     key.replace(at, 4, "_deg");
   }
   return key;
 }
-
 
 std::string element(const std::string& path, int index) {
   return index >= 0 ? path + "[" + std::to_string(index) + "]" : path;
@@ -150,18 +169,27 @@ std::string fault_path(const MissionFault& fault, const Mission& mission) {
   switch (fault.data_block) {
     case 4: return "options";  // an IP(n) without a key (the described ones are found above)
     case 5: return field == "sequence" ? element("vehicle.sequence", index) : "vehicle.sequence";
-    case 6: return index >= 0 ? "adjustable_parameter[" + std::to_string(index) + "].code" : "adjustable_parameter";
-    case 27: return index >= 0 ? "adjustable_parameter[" + std::to_string(index) + "].weight" : "adjustable_parameter";
-    case 8: case 19: case 29: return constraint_key(fault, mission);
+    case 6:
+      return index >= 0 ? "adjustable_parameter[" + std::to_string(index) + "].code" : "adjustable_parameter";
+    case 27:
+      return index >= 0 ? "adjustable_parameter[" + std::to_string(index) + "].weight"
+                        : "adjustable_parameter";
+    case 8:
+    case 19:
+    case 29: return constraint_key(fault, mission);
     case 9: return "output_frequency." + std::string(field == "final_trajectory" ? "final" : field);
     case 10: return field == "constants" ? "constants" : "constants." + field;
-    case 11: case 12: case 13: case 14: return element("atmosphere." + field, index);
+    case 11:
+    case 12:
+    case 13:
+    case 14: return element("atmosphere." + field, index);
     case 16: return staged ? stage + "." + field : "stage";
     case 17: return field == "misc" ? "misc" : "misc." + deck_key(field);
     case 18:
       if (field == "segment_count") return "linearization.segment_count";
       return element("linearization.coded_times", index);
-    case 20: case 21:
+    case 20:
+    case 21:
       if (field == "launch_space_age_date_days") return "launch.space_age_date_days";
       return "launch." + deck_key(field);
     case 22: return field == "control" ? "control_constraints" : "control_constraints." + deck_key(field);
@@ -235,7 +263,8 @@ std::string value_detail(const MissionFault& fault, const Mission& mission, cons
   };
   if (fault.data_block == 19 || fault.data_block == 29) {
     deck_detail::ConstraintUnit constraint{};
-    const int code = fault.index >= 0 && fault.index <= kMaxConstraints ? mission.constraints.codes[fault.index] : -1;
+    const int code =
+        fault.index >= 0 && fault.index <= kMaxConstraints ? mission.constraints.codes[fault.index] : -1;
     if (deck_detail::constraint_unit(code, &constraint)) {
       to_deck = 1.0 / constraint.to_core;
       unit = constraint.suffix;  // ft_s -> ft/s, lb_ft2 -> lb/ft2
@@ -250,7 +279,8 @@ std::string value_detail(const MissionFault& fault, const Mission& mission, cons
   } else if (unit == "ft" && ends_with("_in")) {
     to_deck = 12.0;
     unit = "in";
-  } else if (fault.data_block == 33 && fault.field != nullptr && std::strcmp(fault.field, "position_gain") == 0) {
+  } else if (fault.data_block == 33 && fault.field != nullptr &&
+             std::strcmp(fault.field, "position_gain") == 0) {
     unit = "deg/deg";
   }
   const std::string with_unit = unit.empty() || unit == "points" ? "" : " " + unit;
@@ -260,10 +290,12 @@ std::string value_detail(const MissionFault& fault, const Mission& mission, cons
   } else if (fault.field != nullptr && *fault.field != '\0' && key.find('[') == std::string::npos) {
     key = fault.field;  // a whole table ([[constraint]]): the core's word, e.g. its count
   }
-  std::string out = key + " = " + deck_number(fault.value, to_deck) + (unit == "points" ? " points" : with_unit);
+  std::string out =
+      key + " = " + deck_number(fault.value, to_deck) + (unit == "points" ? " points" : with_unit);
   const ValueRange& range = fault.range;
   std::string expected;
-  if (range.has_low && range.has_high && range.low == range.high && range.low_inclusive && range.high_inclusive) {
+  if (range.has_low && range.has_high && range.low == range.high && range.low_inclusive &&
+      range.high_inclusive) {
     expected = deck_number(range.low, to_deck) + with_unit;
   } else if (range.has_low && range.has_high) {
     expected = deck_number(range.low, to_deck) + (range.low_inclusive ? " <= " : " < ") + key +
@@ -271,7 +303,8 @@ std::string value_detail(const MissionFault& fault, const Mission& mission, cons
   } else if (range.has_low) {
     expected = std::string(range.low_inclusive ? ">= " : "> ") + deck_number(range.low, to_deck) + with_unit;
   } else if (range.has_high) {
-    expected = std::string(range.high_inclusive ? "<= " : "< ") + deck_number(range.high, to_deck) + with_unit;
+    expected =
+        std::string(range.high_inclusive ? "<= " : "< ") + deck_number(range.high, to_deck) + with_unit;
   }
   const std::string phrase = fault.expected != nullptr ? fault.expected : "";
   if (!expected.empty() && !phrase.empty()) return out + "; expected " + expected + " (" + phrase + ")";
@@ -302,24 +335,26 @@ std::string fault_detail(Status status, const MissionFault& fault, const Mission
              " s; expected them equal within CT1(10) = " + eps + " s";
     case Status::kThrustWeightTimesDiffer:
       if (stage == nullptr) break;
-      return "stage " + std::to_string(code) + " thrust table ends at " + format_number(stage->vacuum_thrust_lbf.last_x()) +
-             " s, consumable weight table at " + format_number(stage->consumable_weight_lb.last_x()) +
+      return "stage " + std::to_string(code) + " thrust table ends at " +
+             format_number(stage->vacuum_thrust_lbf.last_x()) + " s, consumable weight table at " +
+             format_number(stage->consumable_weight_lb.last_x()) +
              " s; expected the same end time within CT1(10) = " + eps + " s";
     case Status::kNegativeWeight:
       if (std::strcmp(fault.field, "payload_lb") == 0) {
         return "payload_lb = " + format_number(mission.vehicle.payload_lb) + "; expected >= 0";
       }
       if (stage != nullptr && fault.data_block == 39) {
-        return "stage " + std::to_string(code) + " jettison_weight_lb = " + format_number(stage->jettison_weight_lb) +
-               "; expected >= 0";
+        return "stage " + std::to_string(code) +
+               " jettison_weight_lb = " + format_number(stage->jettison_weight_lb) + "; expected >= 0";
       }
       break;
     case Status::kLiftoffLongerThanStage1:
-      return "liftoff_duration_s = " + format_number(mission.launch.liftoff_duration_s) + " s but stage 1 lasts " +
-             format_number(mission.vehicle.stages[0].duration_s) + " s; expected 0 <= lift-off < stage 1 duration";
+      return "liftoff_duration_s = " + format_number(mission.launch.liftoff_duration_s) +
+             " s but stage 1 lasts " + format_number(mission.vehicle.stages[0].duration_s) +
+             " s; expected 0 <= lift-off < stage 1 duration";
     case Status::kInitialConditionsInvalid:
-      return "velocity_ft_s = " + format_number(mission.launch.velocity_ft_s) + ", flight_path_angle_deg = " +
-             format_number(mission.launch.flight_path_angle_rad * kRadToDeg) +
+      return "velocity_ft_s = " + format_number(mission.launch.velocity_ft_s) +
+             ", flight_path_angle_deg = " + format_number(mission.launch.flight_path_angle_rad * kRadToDeg) +
              "; the manual requires velocity 0 and flight-path angle 90 deg";
     case Status::kTooManyThrustPointsInAllStages:
       return std::to_string(total_points(mission, true)) + " thrust points over all stages; at most " +
@@ -328,8 +363,8 @@ std::string fault_detail(Status status, const MissionFault& fault, const Mission
       return std::to_string(total_points(mission, false)) + " weight points over all stages; at most " +
              std::to_string(kMaxWeightPoints);
     case Status::kTooFewStage1Steps:
-      return "stage 1 has " + std::to_string(mission.vehicle.stages[0].integration_steps) + " integration steps; at least " +
-             std::to_string(kMinStage1Steps);
+      return "stage 1 has " + std::to_string(mission.vehicle.stages[0].integration_steps) +
+             " integration steps; at least " + std::to_string(kMinStage1Steps);
     case Status::kTooManyCoastSteps:
       if (stage == nullptr) break;
       return "coast " + std::to_string(code) + " has " + std::to_string(stage->integration_steps) +
@@ -338,10 +373,12 @@ std::string fault_detail(Status status, const MissionFault& fault, const Mission
     case Status::kTooManyPoweredStepsWithFollowingCoast: {
       int steps = 0;
       for (int c = 1; c <= (status == Status::kTooManyPoweredSteps ? 5 : 6); ++c) {
-        if (mission.vehicle.stages[stage_index(c)].in_sequence) steps += mission.vehicle.stages[stage_index(c)].integration_steps;
+        if (mission.vehicle.stages[stage_index(c)].in_sequence)
+          steps += mission.vehicle.stages[stage_index(c)].integration_steps;
       }
       return std::to_string(steps) + " integration steps; at most " +
-             std::to_string(status == Status::kTooManyPoweredSteps ? kMaxPoweredSteps : kMaxPoweredStepsWithFollowingCoast);
+             std::to_string(status == Status::kTooManyPoweredSteps ? kMaxPoweredSteps
+                                                                   : kMaxPoweredStepsWithFollowingCoast);
     }
     case Status::kControlStationAtCenterOfGravity: {
       const CgTable& cg = mission.body_dynamics.cg_station_ft[0];
@@ -362,18 +399,19 @@ std::string fault_detail(Status status, const MissionFault& fault, const Mission
       return "duration_s = " + format_number(stage->duration_s) + "; expected > 0";
     case Status::kZeroLengthCoast:
       return "duration_s = 0; expected > 0, or coast " + std::to_string(fault.stage_code) +
-             " left out of vehicle.sequence (data block 5), so that stage " + std::to_string(fault.stage_code - 4) +
-             " ignites at the burnout of stage " + std::to_string(fault.stage_code - 5);
+             " left out of vehicle.sequence (data block 5), so that stage " +
+             std::to_string(fault.stage_code - 4) + " ignites at the burnout of stage " +
+             std::to_string(fault.stage_code - 5);
     case Status::kNonPositiveStepCount:
       if (stage == nullptr) break;
       return "integration_steps = " + std::to_string(stage->integration_steps) + "; expected >= 1";
-    default:
-      break;
+    default: break;
   }
   return value_detail(fault, mission, fault_path(fault, mission));
 }
 
-DeckError fault_error(Status status, const MissionFault& fault, const Mission& mission, const Reader& reader) {
+DeckError fault_error(Status status, const MissionFault& fault, const Mission& mission,
+                      const Reader& reader) {
   DeckError error;
   error.file = reader.file();
   error.data_block = fault.data_block;
@@ -395,8 +433,8 @@ bool parse_deck(const std::string& text, const std::string& path, Mission* missi
       root = toml::parse(text, path);
     } catch (const toml::parse_error& parse_error) {
       failure.line = static_cast<int>(parse_error.source().begin.line);
-      failure.message = "TOML syntax error: " + std::string(parse_error.description()) +
-                        " (column " + std::to_string(parse_error.source().begin.column) + ")";
+      failure.message = "TOML syntax error: " + std::string(parse_error.description()) + " (column " +
+                        std::to_string(parse_error.source().begin.column) + ")";
       if (error != nullptr) *error = failure;
       return false;
     }

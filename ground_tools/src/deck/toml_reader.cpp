@@ -98,8 +98,7 @@ const toml::node* Section::node(std::string_view key) {
 }
 
 void Section::fail(int data_block, const std::string& field, const std::string& message) const {
-  reader_->fail(reader_->line_of(field) > 0 ? reader_->line_of(field) : line_, data_block, field,
-                message);
+  reader_->fail(reader_->line_of(field) > 0 ? reader_->line_of(field) : line_, data_block, field, message);
 }
 
 void Section::fail_at(std::string_view key, int data_block, const std::string& message) {
@@ -179,13 +178,11 @@ double Section::number(std::string_view key, int data_block, const std::string& 
   return *value;
 }
 
-double Section::number_or(std::string_view key, int data_block, const std::string& what,
-                          double fallback) {
+double Section::number_or(std::string_view key, int data_block, const std::string& what, double fallback) {
   return optional_number(key, data_block, what).value_or(fallback);
 }
 
-std::optional<int> Section::optional_integer(std::string_view key, int data_block,
-                                             const std::string& what) {
+std::optional<int> Section::optional_integer(std::string_view key, int data_block, const std::string& what) {
   const toml::node* found = node(key);
   if (found == nullptr) return std::nullopt;
   const auto* integer = found->as_integer();
@@ -211,7 +208,8 @@ std::optional<int> Section::optional_flag(std::string_view key, int data_block, 
   if (const auto* boolean = found->as_boolean()) return boolean->get() ? 1 : 0;
   if (const auto* integer = found->as_integer()) {
     if (integer->get() == 0 || integer->get() == 1) return static_cast<int>(integer->get());
-    fail_at(key, data_block, "expected true/false or 0/1 (" + what + "), got " + std::to_string(integer->get()));
+    fail_at(key, data_block,
+            "expected true/false or 0/1 (" + what + "), got " + std::to_string(integer->get()));
   }
   fail_at(key, data_block, "expected true/false or 0/1 (" + what + "), got " + describe_type(*found));
 }
@@ -221,11 +219,13 @@ std::optional<std::string> Section::optional_text(std::string_view key, int data
   const toml::node* found = node(key);
   if (found == nullptr) return std::nullopt;
   const auto* text = found->as_string();
-  if (text == nullptr) fail_at(key, data_block, "expected a string (" + what + "), got " + describe_type(*found));
+  if (text == nullptr)
+    fail_at(key, data_block, "expected a string (" + what + "), got " + describe_type(*found));
   const std::string& value = text->get();
   if (value.size() > max_length) {
-    fail_at(key, data_block, "text too long (" + std::to_string(value.size()) + " characters): " + what +
-                                 " holds at most " + std::to_string(max_length) + " characters");
+    fail_at(key, data_block,
+            "text too long (" + std::to_string(value.size()) + " characters): " + what + " holds at most " +
+                std::to_string(max_length) + " characters");
   }
   for (char c : value) {
     if (c == '\n' || c == '\r' || c == '\t') {
@@ -256,8 +256,9 @@ std::optional<std::vector<double>> Section::optional_numbers(std::string_view ke
     fail_at(key, data_block, "expected an array of numbers (" + what + "), got " + describe_type(*found));
   }
   if (exact_size > 0 && static_cast<int>(array->size()) != exact_size) {
-    fail_at(key, data_block, "expected exactly " + std::to_string(exact_size) + " numbers (" + what +
-                                 "), got " + std::to_string(array->size()));
+    fail_at(key, data_block,
+            "expected exactly " + std::to_string(exact_size) + " numbers (" + what + "), got " +
+                std::to_string(array->size()));
   }
   std::vector<double> values;
   values.reserve(array->size());
@@ -311,8 +312,8 @@ std::optional<Section> Section::optional_table(std::string_view key, int data_bl
   if (found == nullptr) return std::nullopt;
   const toml::table* sub = found->as_table();
   if (sub == nullptr) {
-    fail_at(key, data_block, "expected a table ([" + key_path(key) + "] or an inline table), got " +
-                                 describe_type(*found));
+    fail_at(key, data_block,
+            "expected a table ([" + key_path(key) + "] or an inline table), got " + describe_type(*found));
   }
   return Section(reader_, sub, key_path(key), data_block);
 }
@@ -332,8 +333,8 @@ std::vector<Section> Section::array_of_tables(std::string_view key, int data_blo
   if (found == nullptr) return sections;
   const toml::array* array = found->as_array();
   if (array == nullptr) {
-    fail_at(key, data_block, "expected an array of tables ([[" + key_path(key) + "]]), got " +
-                                 describe_type(*found));
+    fail_at(key, data_block,
+            "expected an array of tables ([[" + key_path(key) + "]]), got " + describe_type(*found));
   }
   for (std::size_t i = 0; i < array->size(); ++i) {
     const toml::node& element = *array->get(i);
@@ -355,24 +356,23 @@ ReadTable Section::xy(std::string_view x_key, std::string_view y_key, int data_b
   result.x = numbers(x_key, data_block, x_what);
   result.y = numbers(y_key, data_block, y_what);
   if (result.x.size() != result.y.size()) {
-    fail_at(y_key, data_block, "'" + std::string(x_key) + "' has " + std::to_string(result.x.size()) +
-                                   " values but '" + std::string(y_key) + "' has " +
-                                   std::to_string(result.y.size()) + "; expected one " + y_what +
-                                   " per " + x_what);
+    fail_at(y_key, data_block,
+            "'" + std::string(x_key) + "' has " + std::to_string(result.x.size()) + " values but '" +
+                std::string(y_key) + "' has " + std::to_string(result.y.size()) + "; expected one " + y_what +
+                " per " + x_what);
   }
   if (static_cast<int>(result.x.size()) < min_points) {
-    fail_at(x_key, data_block, "expected at least " + std::to_string(min_points) + " point" +
-                                   (min_points == 1 ? "" : "s") + " in the table, got " +
-                                   std::to_string(result.x.size()));
+    fail_at(x_key, data_block,
+            "expected at least " + std::to_string(min_points) + " point" + (min_points == 1 ? "" : "s") +
+                " in the table, got " + std::to_string(result.x.size()));
   }
   for (std::size_t i = 1; i < result.x.size(); ++i) {
     if (!(result.x[i] > result.x[i - 1])) {
-      reader_->fail(element_line(x_key, i), data_block,
-                    key_path(x_key) + "[" + std::to_string(i) + "]",
+      reader_->fail(element_line(x_key, i), data_block, key_path(x_key) + "[" + std::to_string(i) + "]",
                     "table not monotonic: " + std::string(x_key) + "[" + std::to_string(i) +
-                        "] = " + format_number(result.x[i]) + " is not greater than " +
-                        std::string(x_key) + "[" + std::to_string(i - 1) + "] = " +
-                        format_number(result.x[i - 1]) + "; expected strictly increasing " + x_what);
+                        "] = " + format_number(result.x[i]) + " is not greater than " + std::string(x_key) +
+                        "[" + std::to_string(i - 1) + "] = " + format_number(result.x[i - 1]) +
+                        "; expected strictly increasing " + x_what);
     }
   }
   return result;
@@ -414,8 +414,7 @@ void check_range(Section& section, const FieldDescription& field, const std::str
   const int block = message_block(field);
   switch (field.range) {
     case Range::kAny:
-    case Range::kFlag:
-      return;
+    case Range::kFlag: return;
     case Range::kPositive:
       if (!(value > 0.0)) {
         section.fail_at(key, block, "expected a positive value (" + what + "), got " + format_number(value));
@@ -424,13 +423,15 @@ void check_range(Section& section, const FieldDescription& field, const std::str
     case Range::kAtLeastOne:
       if (!(value >= 1.0)) {
         if (field.count > 1) section.fail_at(key, block, "every value must be at least 1 (" + what + ")");
-        section.fail_at(key, block, "expected a positive integer (" + what + "), got " + format_number(value));
+        section.fail_at(key, block,
+                        "expected a positive integer (" + what + "), got " + format_number(value));
       }
       return;
     case Range::kChoice:
       if (value < field.low || value > field.high) {
-        section.fail_at(key, block, "value " + format_number(value) + " out of range: expected " +
-                                        std::to_string(field.low) + "-" + std::to_string(field.high) + " (" + what + ")");
+        section.fail_at(key, block,
+                        "value " + format_number(value) + " out of range: expected " +
+                            std::to_string(field.low) + "-" + std::to_string(field.high) + " (" + what + ")");
       }
       return;
   }
@@ -438,8 +439,8 @@ void check_range(Section& section, const FieldDescription& field, const std::str
 
 }  // namespace
 
-void read_field(Section& section, const FieldDescription& field, const FieldTarget& target, const Mission& options_of,
-                int code) {
+void read_field(Section& section, const FieldDescription& field, const FieldTarget& target,
+                const Mission& options_of, int code) {
   const std::string what = what_of(field, code);
   const std::string key = field.key;
   const int block = message_block(field);
@@ -455,15 +456,17 @@ void read_field(Section& section, const FieldDescription& field, const FieldTarg
       if (required) value = section.integer(key, block, what);
       else if (const std::optional<int> read = section.optional_integer(key, block, what)) value = *read;
     } else {
-      value = required ? std::optional<double>(section.number(key, block, what)) : section.optional_number(key, block, what);
+      value = required ? std::optional<double>(section.number(key, block, what))
+                       : section.optional_number(key, block, what);
     }
     if (value) values.push_back(*value);
   } else if (required || section.has(key)) {
     if (field.integer) {
       const std::vector<int> read = section.integers(key, block, what);
       if (static_cast<int>(read.size()) != field.count) {
-        section.fail_at(key, block, "expected " + std::to_string(field.count) + " integers (" + what + "), got " +
-                                        std::to_string(static_cast<int>(read.size())));
+        section.fail_at(key, block,
+                        "expected " + std::to_string(field.count) + " integers (" + what + "), got " +
+                            std::to_string(static_cast<int>(read.size())));
       }
       values.assign(read.begin(), read.end());
     } else {
@@ -481,8 +484,8 @@ void read_field(Section& section, const FieldDescription& field, const FieldTarg
   }
 }
 
-void read_fields(Section& section, const std::string& section_path, const FieldTarget& target, const Mission& options_of,
-                 int code) {
+void read_fields(Section& section, const std::string& section_path, const FieldTarget& target,
+                 const Mission& options_of, int code) {
   for (const FieldDescription& field : field_descriptions()) {
     if (applies_to_stage(field, code) && section_of(field, code) == section_path &&
         (field.stage_coding == StageCoding::kNone) == (code == 0)) {

@@ -15,9 +15,9 @@
 
 #include <toml++/toml.h>
 
+#include "field_description.hpp"
 #include "tolip_ground/deck.hpp"
 #include "tolip_ground/deck_extras.hpp"
-#include "field_description.hpp"
 
 namespace tolip::ground::deck_detail {
 
@@ -87,8 +87,8 @@ class Section {
   // A 0/1 option: true/false or the integers 0/1.
   std::optional<int> optional_flag(std::string_view key, int data_block, const std::string& what);
 
-  std::optional<std::string> optional_text(std::string_view key, int data_block,
-                                           const std::string& what, std::size_t max_length);
+  std::optional<std::string> optional_text(std::string_view key, int data_block, const std::string& what,
+                                           std::size_t max_length);
 
   // Arrays of numbers / integers; `exact_size` > 0 demands that many elements.
   std::vector<double> numbers(std::string_view key, int data_block, const std::string& what,
@@ -106,8 +106,8 @@ class Section {
 
   // Reads this section's x and y arrays as a table: equal lengths, at least min_points points,
   // strictly increasing x. x_what / y_what name the quantities and units for messages.
-  ReadTable xy(std::string_view x_key, std::string_view y_key, int data_block,
-               const std::string& x_what, const std::string& y_what, int min_points = 1);
+  ReadTable xy(std::string_view x_key, std::string_view y_key, int data_block, const std::string& x_what,
+               const std::string& y_what, int min_points = 1);
 
   // Rejects every key not asked for, naming it and listing the keys this table accepts.
   void finish();

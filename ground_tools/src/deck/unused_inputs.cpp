@@ -11,14 +11,16 @@ std::vector<InputWarning> unused_inputs(const Mission& mission, const DeckExtras
   };
   // Data block 4: options of analyses this version does not compute yet, and the 1966 dump.
   if (o.stage5_chi() != 0) {
-    warn(4, "IP(10)", "options.stage5_chi",
-         "the stage-5 yaw option = " + std::to_string(o.stage5_chi()) +
-             (o.stage_is_spun(5) ? " has no effect: stage 5 holds the attitudes of data block 17 as IP(9) says"
-                                 : " has no effect: stage 5 flies the pitch program (IP(9) = " +
-                                       std::to_string(o.spin_stages_4_5()) + ")"));
+    warn(
+        4, "IP(10)", "options.stage5_chi",
+        "the stage-5 yaw option = " + std::to_string(o.stage5_chi()) +
+            (o.stage_is_spun(5) ? " has no effect: stage 5 holds the attitudes of data block 17 as IP(9) says"
+                                : " has no effect: stage 5 flies the pitch program (IP(9) = " +
+                                      std::to_string(o.spin_stages_4_5()) + ")"));
   }
   if (o.memory_dump()) {
-    warn(4, "IP(15)", "options.memory_dump", "the core-memory dump of the 1966 program has no counterpart: ignored");
+    warn(4, "IP(15)", "options.memory_dump",
+         "the core-memory dump of the 1966 program has no counterpart: ignored");
   }
   const struct {
     bool requested;
@@ -33,14 +35,16 @@ std::vector<InputWarning> unused_inputs(const Mission& mission, const DeckExtras
   for (const auto& a : analyses) {
     if (a.requested) {
       warn(4, a.word, a.field,
-           std::string(a.what) + " asked for but not computed by this version; the data blocks are read and checked");
+           std::string(a.what) +
+               " asked for but not computed by this version; the data blocks are read and checked");
     }
   }
   // Data block 9: only the final trajectory is listed.
   for (int i = 0; i < kMaxStages; ++i) {
     if (mission.output.initial[i] != 1 || mission.output.intermediate[i] != 1) {
       warn(9, "initial and intermediate print frequencies", "output_frequency.initial/intermediate",
-           "only the final trajectory is listed (data block 9's third word per stage); the others have no effect");
+           "only the final trajectory is listed (data block 9's third word per stage); the others have no "
+           "effect");
       break;
     }
   }
@@ -57,15 +61,16 @@ std::vector<InputWarning> unused_inputs(const Mission& mission, const DeckExtras
   if (!(stage4_flown && o.stage_is_spun(4)) && (misc.stage4_theta_rad != 0.0 || misc.stage4_chi_rad != 0.0)) {
     warn(17, "DA2(5), DA2(6)", "misc.stage4_theta_deg/stage4_chi_deg",
          "the spun stage-4 attitudes have no effect: " +
-             (stage4_flown ? "with " + ip9 + " stage 4 flies the pitch program" : std::string("stage 4 is not flown")));
+             (stage4_flown ? "with " + ip9 + " stage 4 flies the pitch program"
+                           : std::string("stage 4 is not flown")));
   }
   const bool stage5_own_attitudes = stage5_flown && o.stage_is_spun(5) && !o.stage_is_spun(4);
   if (!stage5_own_attitudes && (misc.stage5_theta_rad != 0.0 || misc.stage5_chi_rad != 0.0)) {
     warn(17, "DA2(9), DA2(10)", "misc.stage5_theta_deg/stage5_chi_deg",
          "the spun stage-5 attitudes have no effect: " +
-             (!stage5_flown           ? std::string("stage 5 is not flown")
-              : o.stage_is_spun(5)    ? "with " + ip9 + " stage 5 holds stage 4's attitudes"
-                                      : "with " + ip9 + " stage 5 flies the pitch program"));
+             (!stage5_flown        ? std::string("stage 5 is not flown")
+              : o.stage_is_spun(5) ? "with " + ip9 + " stage 5 holds stage 4's attitudes"
+                                   : "with " + ip9 + " stage 5 flies the pitch program"));
   }
   // Data block 17: the platform frame is fixed at lift-off here (the launch matrices), not at uncage.
   if (mission.misc.gyro_uncage_s_before_launch != 0.0) {
@@ -104,7 +109,8 @@ void print_input_warnings(std::ostream& err, const std::string& deck_path, int c
 void print_deck_input_warnings(std::ostream& err, const std::string& deck_path, const Deck& deck) {
   const int count = static_cast<int>(deck.cases.size());
   for (const DeckCase& deck_case : deck.cases) {
-    print_input_warnings(err, deck_path, deck_case.number, count, unused_inputs(*deck_case.mission, deck_case.extras));
+    print_input_warnings(err, deck_path, deck_case.number, count,
+                         unused_inputs(*deck_case.mission, deck_case.extras));
   }
 }
 

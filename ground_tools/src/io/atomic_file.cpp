@@ -10,8 +10,8 @@
 #include <cstring>
 #include <exception>
 #include <filesystem>
-#include <system_error>
 #include <sstream>
+#include <system_error>
 
 namespace tolip::ground {
 namespace {
@@ -68,8 +68,8 @@ bool names_same_file(const std::string& a, const std::string& b) {
   // Two names of one existing file (a hard link, a bind mount): the same device and inode.
   struct stat info_a {};
   struct stat info_b {};
-  return ::stat(a.c_str(), &info_a) == 0 && ::stat(b.c_str(), &info_b) == 0 && info_a.st_dev == info_b.st_dev &&
-         info_a.st_ino == info_b.st_ino;
+  return ::stat(a.c_str(), &info_a) == 0 && ::stat(b.c_str(), &info_b) == 0 &&
+         info_a.st_dev == info_b.st_dev && info_a.st_ino == info_b.st_ino;
 }
 
 bool check_replaceable_output(const std::string& path, std::string* error) {
@@ -167,8 +167,8 @@ bool write_file_atomically(const std::string& path, std::string_view contents, s
   return true;
 }
 
-bool write_file_atomically(const std::string& path,
-                           const std::function<bool(std::ostream&)>& render, std::string* error) {
+bool write_file_atomically(const std::string& path, const std::function<bool(std::ostream&)>& render,
+                           std::string* error) {
   std::ostringstream buffer;
   bool rendered = false;
   try {

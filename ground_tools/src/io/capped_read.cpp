@@ -18,8 +18,9 @@ bool read_file_capped(const std::string& path, std::size_t max_bytes, const std:
     if (error != nullptr) *error = message;
     return false;
   };
-  const std::string too_large = "more than " + std::to_string(max_bytes) + " bytes: a " + kind + " is at most " +
-                                std::to_string(max_bytes) + " bytes (docs/cli.md, \"Input limits\")";
+  const std::string too_large = "more than " + std::to_string(max_bytes) + " bytes: a " + kind +
+                                " is at most " + std::to_string(max_bytes) +
+                                " bytes (docs/cli.md, \"Input limits\")";
   if (path.empty()) return fail("cannot open the " + kind + ": the file name is empty");
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NOCTTY);
   if (fd < 0) return fail("cannot open the " + kind + ": " + std::strerror(errno));

@@ -110,15 +110,12 @@ void x_extent(const Figure& figure, double* low, double* high) {
 std::string style_text(SeriesStyle style, int color, int dash_type, int point_type) {
   std::string text;
   switch (style) {
-    case SeriesStyle::kPoints:
-      text = " with points pt " + std::to_string(point_type) + " ps 1.1";
-      break;
+    case SeriesStyle::kPoints: text = " with points pt " + std::to_string(point_type) + " ps 1.1"; break;
     case SeriesStyle::kLinesPoints:
-      text = " with linespoints lw 2 pt " + std::to_string(point_type) + " ps 0.9 dt " + std::to_string(dash_type);
+      text = " with linespoints lw 2 pt " + std::to_string(point_type) + " ps 0.9 dt " +
+             std::to_string(dash_type);
       break;
-    case SeriesStyle::kLines:
-      text = " with lines lw 2 dt " + std::to_string(dash_type);
-      break;
+    case SeriesStyle::kLines: text = " with lines lw 2 dt " + std::to_string(dash_type); break;
   }
   return text + " lc " + (color == 0 ? std::string("rgb \"black\"") : palette_color(color));
 }
@@ -167,7 +164,8 @@ std::string figure_commands(const Figure& figure, const std::vector<std::string>
     const double from = std::max(band.from, low);
     const double to = std::min(band.to, high);
     if (!(to > from)) continue;
-    script << "set object " << ++object << " rectangle from first " << num(from) << ", graph 0 to first " << num(to)
+    script << "set object " << ++object << " rectangle from first " << num(from) << ", graph 0 to first "
+           << num(to)
            << ", graph 1 back fillcolor rgb \"#7fb2e5\" fillstyle transparent solid 0.30 noborder\n";
   }
 
@@ -176,7 +174,8 @@ std::string figure_commands(const Figure& figure, const std::vector<std::string>
   for (const XMarker& marker : figure.x_markers) {
     if (inside(marker.x)) markers.push_back(&marker);
   }
-  std::stable_sort(markers.begin(), markers.end(), [](const XMarker* a, const XMarker* b) { return a->x < b->x; });
+  std::stable_sort(markers.begin(), markers.end(),
+                   [](const XMarker* a, const XMarker* b) { return a->x < b->x; });
   const double close = 0.02 * (high - low);
   int label_number = 0;
   for (std::size_t i = 0; i < markers.size();) {
@@ -191,9 +190,11 @@ std::string figure_commands(const Figure& figure, const std::vector<std::string>
       ++j;
     }
     if (!text.empty()) {
-      script << "set label " << ++label_number << ' ' << gnuplot_string(text) << " at first " << num(markers[i]->x)
-             << ", graph 0.98 right rotate by 90 offset character -0.2, 0 font \",9\" textcolor rgb \"#404040\" "
-                "front\n";
+      script
+          << "set label " << ++label_number << ' ' << gnuplot_string(text) << " at first "
+          << num(markers[i]->x)
+          << ", graph 0.98 right rotate by 90 offset character -0.2, 0 font \",9\" textcolor rgb \"#404040\" "
+             "front\n";
     }
     i = j;
   }
@@ -227,8 +228,8 @@ std::string figure_commands(const Figure& figure, const std::vector<std::string>
       labelled.push_back(&point);
       point_labels.push_back(point.label);
     }
-    script << "set label " << ++label_number << " \"\" at first " << num(point.x) << ", first " << num(point.y)
-           << " point pointtype 7 pointsize 1.4 linecolor "
+    script << "set label " << ++label_number << " \"\" at first " << num(point.x) << ", first "
+           << num(point.y) << " point pointtype 7 pointsize 1.4 linecolor "
            << (point.color == 0 ? std::string("rgb \"black\"") : palette_color(point.color)) << " front\n";
   }
   for (std::size_t k = 0; k < labelled.size(); ++k) {
@@ -244,8 +245,8 @@ std::string figure_commands(const Figure& figure, const std::vector<std::string>
     script << "set arrow from graph 0, " << axis << ' ' << num(line.y) << " to graph 1, " << axis << ' '
            << num(line.y) << " nohead front lw 1.5 dt 2 lc rgb \"#404040\"\n";
     if (!line.label.empty()) {
-      script << "set label " << ++label_number << ' ' << gnuplot_string(line.label) << " at graph 0.01, " << axis << ' '
-             << num(line.y) << " offset 0, character 0.6 font \",9\" front\n";
+      script << "set label " << ++label_number << ' ' << gnuplot_string(line.label) << " at graph 0.01, "
+             << axis << ' ' << num(line.y) << " offset 0, character 0.6 font \",9\" front\n";
     }
   }
 
@@ -262,8 +263,8 @@ std::string figure_commands(const Figure& figure, const std::vector<std::string>
   }
   for (const KeyEntry& entry : figure.key_entries) {
     next();
-    script << "keyentry" << style_text(entry.style, entry.color, entry.dash_type, entry.point_type) << " title "
-           << gnuplot_string(entry.title);
+    script << "keyentry" << style_text(entry.style, entry.color, entry.dash_type, entry.point_type)
+           << " title " << gnuplot_string(entry.title);
   }
   for (std::size_t i = 0; i < figure.series.size(); ++i) {
     const PlotSeries& series = figure.series[i];
@@ -321,7 +322,8 @@ bool run_gnuplot(const std::string& program, const std::string& work_dir, const 
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
+                                   0600);
   posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
   posix_spawn_file_actions_addchdir_np(&actions, work_dir.c_str());
 
@@ -352,8 +354,9 @@ bool run_gnuplot(const std::string& program, const std::string& work_dir, const 
   if (!read_file_capped(log_path, std::size_t{1} << 20, "gnuplot log", &messages, &ignored)) messages.clear();
   while (!messages.empty() && (messages.back() == '\n' || messages.back() == ' ')) messages.pop_back();
   if (messages.size() > 600) messages = "..." + messages.substr(messages.size() - 600);
-  const std::string how = WIFEXITED(status) ? "exit code " + std::to_string(WEXITSTATUS(status))
-                                            : "signal " + std::to_string(WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+  const std::string how = WIFEXITED(status)
+                              ? "exit code " + std::to_string(WEXITSTATUS(status))
+                              : "signal " + std::to_string(WIFSIGNALED(status) ? WTERMSIG(status) : 0);
   *error = "gnuplot ('" + program + "') failed (" + how + ")" + (messages.empty() ? "" : ": " + messages);
   return false;
 }

@@ -133,8 +133,10 @@ std::vector<StageEvent> stage_events(const json& document, std::size_t point_cou
     parsed.stage = integer_or(event, "stage", field, 0);
     const json* kind = member(event, "kind");
     if (kind != nullptr && !kind->is_string()) fail(field + ".kind", "a string", *kind);
-    parsed.powered = kind != nullptr ? kind->get<std::string>() == "powered" : parsed.stage >= 1 && parsed.stage <= 5;
-    if (member(event, "start_time_s") != nullptr) parsed.start_s = required_number(event, "start_time_s", field);
+    parsed.powered =
+        kind != nullptr ? kind->get<std::string>() == "powered" : parsed.stage >= 1 && parsed.stage <= 5;
+    if (member(event, "start_time_s") != nullptr)
+      parsed.start_s = required_number(event, "start_time_s", field);
     if (member(event, "end_time_s") != nullptr) parsed.end_s = required_number(event, "end_time_s", field);
     const auto index = [&](const char* key) {
       const long value = integer_or(event, key, field, -1);
@@ -153,7 +155,7 @@ struct Flight {
   const json* points = nullptr;
   std::vector<double> time;
   std::vector<StageEvent> events;
-  std::size_t max_q = 0;       // index of the largest dynamic pressure
+  std::size_t max_q = 0;  // index of the largest dynamic pressure
   bool has_max_q = false;
   double ascent_end_s = kGap;  // the burnout before the last coast; NaN: no such coast
   long ascent_stage = 0;       // the stage burning out there
@@ -198,7 +200,8 @@ std::vector<XMarker> staging_markers(const Flight& flight) {
   for (const StageEvent& event : flight.events) {
     if (!event.powered) continue;
     double ignition = event.start_s;
-    if (first_powered && std::isfinite(flight.time.front())) ignition = std::min(ignition, flight.time.front());
+    if (first_powered && std::isfinite(flight.time.front()))
+      ignition = std::min(ignition, flight.time.front());
     first_powered = false;
     if (std::isfinite(ignition)) markers.push_back({ignition, stage_name(event.stage) + " ign", 0});
     if (std::isfinite(event.end_s)) markers.push_back({event.end_s, stage_name(event.stage) + " bo", 0});
@@ -216,7 +219,8 @@ std::vector<PointMarker> staging_points(const Flight& flight, const std::vector<
     if (!event.powered) continue;
     const long ignition = first_powered ? 0 : event.first_point;
     first_powered = false;
-    if (ignition >= 0 && ignition > 0) points.push_back({x[ignition], y[ignition], stage_name(event.stage) + " ign", 0});
+    if (ignition >= 0 && ignition > 0)
+      points.push_back({x[ignition], y[ignition], stage_name(event.stage) + " ign", 0});
     if (event.last_point >= 0) {
       points.push_back({x[event.last_point], y[event.last_point], stage_name(event.stage) + " bo", 0});
     }
@@ -297,7 +301,7 @@ std::optional<Figure> altitude_downrange_figure(const json& document, bool ascen
   std::vector<double> altitude = column(*flight->points, "altitude_ft");
   for (double& h : altitude) h /= kFeetPerNauticalMile;
   Figure figure = make_figure(ascent ? "altitude_downrange_ascent" : "altitude_downrange",
-                "Altitude vs downrange", "downrange (n.mi.)", "altitude (n.mi.)");
+                              "Altitude vs downrange", "downrange (n.mi.)", "altitude (n.mi.)");
   figure.points = staging_points(*flight, range, altitude);
   if (flight->has_max_q) {
     figure.points.push_back({range[flight->max_q], altitude[flight->max_q], "max q", 0});
@@ -325,7 +329,9 @@ std::optional<Figure> altitude_downrange_figure(const json& document, bool ascen
 std::optional<Figure> altitude_downrange_ascent(const json& document) {
   return altitude_downrange_figure(document, true);
 }
-std::optional<Figure> altitude_downrange(const json& document) { return altitude_downrange_figure(document, false); }
+std::optional<Figure> altitude_downrange(const json& document) {
+  return altitude_downrange_figure(document, false);
+}
 
 std::optional<Figure> velocity_time(const json& document) {
   const auto flight = flight_of(document);
@@ -341,8 +347,8 @@ std::optional<Figure> velocity_time(const json& document) {
 std::optional<Figure> flight_path_angle_time(const json& document) {
   const auto flight = flight_of(document);
   if (!flight) return std::nullopt;
-  Figure figure =
-      time_figure(*flight, "flight_path_angle_time", "Flight-path angle vs time", "flight-path angle (deg)", true);
+  Figure figure = time_figure(*flight, "flight_path_angle_time", "Flight-path angle vs time",
+                              "flight-path angle (deg)", true);
   figure.series.push_back(time_series(*flight, "GAMMA, Earth-relative", "gamma_deg"));
   PlotSeries inertial = time_series(*flight, "GAMI, inertial", "inertial_gamma_deg");
   inertial.dashed = true;
@@ -389,15 +395,17 @@ std::optional<Figure> ascent_time_figure(const json& document, const char* name,
   }
   if (peak < curve_series.y.size() && curve_series.y[peak] != 0.0) {
     figure.points.push_back({curve_series.x[peak], curve_series.y[peak],
-                             std::string("peak |") + curve + "| " + fixed(std::fabs(curve_series.y[peak]), peak_decimals) +
-                                 " at " + fixed(curve_series.x[peak], 1) + " s",
+                             std::string("peak |") + curve + "| " +
+                                 fixed(std::fabs(curve_series.y[peak]), peak_decimals) + " at " +
+                                 fixed(curve_series.x[peak], 1) + " s",
                              0});
   }
   return figure;
 }
 
 std::optional<Figure> alpha_time(const json& document) {
-  return ascent_time_figure(document, "alpha_time", "Angle of attack vs time", "alpha (deg)", "ALPHA", "alpha_deg", 1);
+  return ascent_time_figure(document, "alpha_time", "Angle of attack vs time", "alpha (deg)", "ALPHA",
+                            "alpha_deg", 1);
 }
 
 std::optional<Figure> qalpha_time(const json& document) {
@@ -425,7 +433,8 @@ std::optional<Figure> ground_track(const json& document) {
   if (!flight) return std::nullopt;
   std::vector<double> longitude = column(*flight->points, "longitude_deg");
   std::vector<double> latitude = column(*flight->points, "geodetic_latitude_deg");
-  Figure figure = make_figure("ground_track", "Ground track", "longitude (deg east)", "geodetic latitude (deg north)");
+  Figure figure =
+      make_figure("ground_track", "Ground track", "longitude (deg east)", "geodetic latitude (deg north)");
   PlotSeries track;
   track.title = "ground track";
   for (std::size_t i = 0; i < longitude.size(); ++i) {
@@ -437,12 +446,14 @@ std::optional<Figure> ground_track(const json& document) {
     track.y.push_back(latitude[i]);
   }
   const auto place = [](double lat, double lon) {
-    return fixed(std::fabs(lat), 2) + (lat < 0 ? " S, " : " N, ") + fixed(std::fabs(lon), 2) + (lon < 0 ? " W" : " E");
+    return fixed(std::fabs(lat), 2) + (lat < 0 ? " S, " : " N, ") + fixed(std::fabs(lon), 2) +
+           (lon < 0 ? " W" : " E");
   };
-  figure.points.push_back({longitude.front(), latitude.front(), "launch site " + place(latitude.front(), longitude.front()), 0});
-  figure.points.push_back({longitude.back(), latitude.back(), "end " + fixed(flight->time.back(), 1) + " s " +
-                                                                  place(latitude.back(), longitude.back()),
-                           0});
+  figure.points.push_back(
+      {longitude.front(), latitude.front(), "launch site " + place(latitude.front(), longitude.front()), 0});
+  figure.points.push_back(
+      {longitude.back(), latitude.back(),
+       "end " + fixed(flight->time.back(), 1) + " s " + place(latitude.back(), longitude.back()), 0});
   // A map of true shape (a degree of longitude cos(latitude) as long as one of latitude), the
   // ranges padded so that the track does not sit in a thin strip.
   double lon_low = HUGE_VAL, lon_high = -HUGE_VAL, lat_low = HUGE_VAL, lat_high = -HUGE_VAL;
@@ -521,7 +532,8 @@ std::optional<PlotSeries> linearized_program(const json& document, double last_t
     const json* stage = member(segment, "stage");
     if (stage == nullptr) throw PlotDataError(field + ": no member 'stage'");
     if (!stage->is_number_integer()) fail(field + ".stage", "an integer", *stage);
-    parsed.push_back({required_number(segment, "start_time_s", field), required_number(segment, "theta_deg", field),
+    parsed.push_back({required_number(segment, "start_time_s", field),
+                      required_number(segment, "theta_deg", field),
                       required_number(segment, "rate_deg_s", field), stage->get<long>()});
   }
 
@@ -562,8 +574,8 @@ std::optional<Figure> theta_figure(const json& document, bool ascent) {
     if (std::isfinite(t)) last_time_s = t;
   }
   const bool optimum = is_optimization(document);
-  Figure figure = time_figure(*flight, ascent ? "theta_time_ascent" : "theta_time", "Pitch attitude theta vs time",
-                              "theta (deg)", true);
+  Figure figure = time_figure(*flight, ascent ? "theta_time_ascent" : "theta_time",
+                              "Pitch attitude theta vs time", "theta (deg)", true);
   figure.series.push_back(time_series(*flight, optimum ? "theta, optimum" : "theta", "theta_deg"));
   if (auto linear = linearized_program(document, last_time_s)) {
     figure.title += ": optimum and linearized program";
@@ -602,9 +614,10 @@ std::optional<Figure> convergence(const json& document) {
       const json* name = member(constraint, "name");
       if (name != nullptr && !name->is_string()) fail(field + ".name", "a string", *name);
       const json* inequality = member(constraint, "inequality");
-      constraints.push_back({name != nullptr ? name->get<std::string>() : "constraint " + std::to_string(i + 1),
-                             required_number(constraint, "tolerance", field),
-                             inequality != nullptr && inequality->is_boolean() && inequality->get<bool>()});
+      constraints.push_back(
+          {name != nullptr ? name->get<std::string>() : "constraint " + std::to_string(i + 1),
+           required_number(constraint, "tolerance", field),
+           inequality != nullptr && inequality->is_boolean() && inequality->get<bool>()});
     }
   }
   std::string unit;
@@ -613,7 +626,7 @@ std::optional<Figure> convergence(const json& document) {
     if (text != nullptr && text->is_string()) unit = text->get<std::string>();
   }
   Figure figure = make_figure("convergence", "Optimizer convergence", "forward run",
-                unit.empty() ? "payoff" : "payoff (" + unit + ")");
+                              unit.empty() ? "payoff" : "payoff (" + unit + ")");
   figure.y2_label = "constraint error / deadband (log scale)";
   figure.y2_log = true;
   PlotSeries payoff;
@@ -657,7 +670,8 @@ std::optional<Figure> convergence(const json& document) {
       // d psi = desired - achieved: an inequality (an upper limit) is exceeded when it is negative.
       const double error = constraints[c].inequality ? std::max(0.0, -correction) : std::fabs(correction);
       errors[c].x.push_back(run);
-      errors[c].y.push_back(error > 0.0 && constraints[c].tolerance > 0.0 ? error / constraints[c].tolerance : kGap);
+      errors[c].y.push_back(error > 0.0 && constraints[c].tolerance > 0.0 ? error / constraints[c].tolerance
+                                                                          : kGap);
     }
   }
   figure.series.push_back(std::move(payoff));
@@ -675,20 +689,24 @@ constexpr PlotKind kCatalogue[] = {
      "altitude (n.mi.) vs downrange (n.mi.) through the burnout before the last coast (Scout: stage 3), "
      "staging points and max q marked",
      altitude_downrange_ascent},
-    {"altitude_downrange", "trajectory", "altitude (n.mi.) vs downrange (n.mi.), the full flight, staging points and max q marked",
+    {"altitude_downrange", "trajectory",
+     "altitude (n.mi.) vs downrange (n.mi.), the full flight, staging points and max q marked",
      altitude_downrange},
     {"velocity_time", "trajectory", "Earth-relative and inertial velocity (ft/s) vs time (s), staging marked",
      velocity_time},
     {"flight_path_angle_time", "trajectory",
-     "Earth-relative and inertial flight-path angle (deg) vs time (s), staging marked, zero-alpha window shaded",
+     "Earth-relative and inertial flight-path angle (deg) vs time (s), staging marked, zero-alpha window "
+     "shaded",
      flight_path_angle_time},
     {"dynamic_pressure_time", "trajectory",
      "dynamic pressure q-bar (lbf/ft^2) vs time (s) over the ascent, max q marked", dynamic_pressure_time},
-    {"alpha_time", "trajectory", "angle of attack (deg) vs time (s) over the ascent, max q marked", alpha_time},
+    {"alpha_time", "trajectory", "angle of attack (deg) vs time (s) over the ascent, max q marked",
+     alpha_time},
     {"qalpha_time", "trajectory", "q-bar x alpha (lbf deg/ft^2) vs time (s) over the ascent, max q marked",
      qalpha_time},
     {"theta_time_ascent", "trajectory",
-     "pitch attitude theta (deg) vs time (s) over the ascent: the optimum (optimize --json) or the program flown, "
+     "pitch attitude theta (deg) vs time (s) over the ascent: the optimum (optimize --json) or the program "
+     "flown, "
      "the linearized program over it when the document has 'linearized'",
      theta_time_ascent},
     {"theta_time", "trajectory", "the same over the full flight", theta_time},
@@ -716,7 +734,8 @@ bool keep_drawable_points(PlotSeries* series) {
   return any;
 }
 
-const char* const kNoDrawableValue = "no finite value to draw (every value null, or beyond 1e30 in magnitude)";
+const char* const kNoDrawableValue =
+    "no finite value to draw (every value null, or beyond 1e30 in magnitude)";
 
 }  // namespace
 
@@ -761,9 +780,10 @@ std::string heading_and_status(const json& document) {
 
 DocumentFigures figures_for_document(const nlohmann::json& document) {
   if (!document.is_object()) {
-    throw PlotDataError(std::string("expected a JSON object (the output of tolip simulate --json or tolip optimize "
-                                    "--json), found ") +
-                        document.type_name());
+    throw PlotDataError(
+        std::string("expected a JSON object (the output of tolip simulate --json or tolip optimize "
+                    "--json), found ") +
+        document.type_name());
   }
   DocumentFigures result;
   for (const PlotKind& kind : plot_catalogue()) {
@@ -774,8 +794,8 @@ DocumentFigures figures_for_document(const nlohmann::json& document) {
         if (keep_drawable_points(&series)) {
           drawable.push_back(std::move(series));
         } else {
-          result.notes.push_back("figure " + std::string(kind.name) + ": curve '" + series.title + "' left out: " +
-                                 kNoDrawableValue);
+          result.notes.push_back("figure " + std::string(kind.name) + ": curve '" + series.title +
+                                 "' left out: " + kNoDrawableValue);
         }
       }
       if (drawable.empty()) {
@@ -789,9 +809,10 @@ DocumentFigures figures_for_document(const nlohmann::json& document) {
       result.figures.push_back(std::move(*figure));
     } else {
       const json* data = member(document, kind.member);
-      result.skipped.push_back(std::string(kind.name) + (data == nullptr || data->is_null()
-                                                             ? " (no member '" + std::string(kind.member) + "')"
-                                                             : " ('" + std::string(kind.member) + "' is empty)"));
+      result.skipped.push_back(std::string(kind.name) +
+                               (data == nullptr || data->is_null()
+                                    ? " (no member '" + std::string(kind.member) + "')"
+                                    : " ('" + std::string(kind.member) + "' is empty)"));
     }
   }
   return result;
@@ -810,7 +831,8 @@ DocumentFigures figures_for_cases(const std::vector<const nlohmann::json*>& docu
   DocumentFigures result;
   for (std::size_t d = 0; d < cases.size(); ++d) {
     const std::string which = std::to_string(d + 1);
-    for (const std::string& skipped : cases[d].skipped) result.skipped.push_back(skipped + " in case " + which);
+    for (const std::string& skipped : cases[d].skipped)
+      result.skipped.push_back(skipped + " in case " + which);
     for (const std::string& note : cases[d].notes) result.notes.push_back("case " + which + ": " + note);
   }
   // The common title (data block 1) of the cases, when they share one.
@@ -838,11 +860,14 @@ DocumentFigures figures_for_cases(const std::vector<const nlohmann::json*>& docu
         any = true;
       } else {
         // The widest x range of the cases.
-        if (std::isfinite(figure.x_min) && std::isfinite(merged.x_min)) merged.x_min = std::min(merged.x_min, figure.x_min);
-        if (std::isfinite(figure.x_max) && std::isfinite(merged.x_max)) merged.x_max = std::max(merged.x_max, figure.x_max);
+        if (std::isfinite(figure.x_min) && std::isfinite(merged.x_min))
+          merged.x_min = std::min(merged.x_min, figure.x_min);
+        if (std::isfinite(figure.x_max) && std::isfinite(merged.x_max))
+          merged.x_max = std::max(merged.x_max, figure.x_max);
       }
-      merged.key_entries.push_back({"case " + std::to_string(d + 1) + ": " + heading_and_status(*documents[d]),
-                                    SeriesStyle::kLines, color, 1, 7});
+      merged.key_entries.push_back(
+          {"case " + std::to_string(d + 1) + ": " + heading_and_status(*documents[d]), SeriesStyle::kLines,
+           color, 1, 7});
       for (std::size_t i = 0; i < figure.series.size(); ++i) {
         PlotSeries series = std::move(figure.series[i]);
         auto place = std::find_if(quantities.begin(), quantities.end(),
@@ -850,9 +875,11 @@ DocumentFigures figures_for_cases(const std::vector<const nlohmann::json*>& docu
         if (place == quantities.end()) {
           // A new quantity: the next dash type among the curves drawn with lines.
           int lines_before = 0;
-          for (const KeyEntry& entry : quantities) lines_before += entry.style != SeriesStyle::kPoints ? 1 : 0;
+          for (const KeyEntry& entry : quantities)
+            lines_before += entry.style != SeriesStyle::kPoints ? 1 : 0;
           quantities.push_back({series.title, series.style, 0,
-                                series.style == SeriesStyle::kPoints ? 1 : lines_before % 5 + 1, series.point_type});
+                                series.style == SeriesStyle::kPoints ? 1 : lines_before % 5 + 1,
+                                series.point_type});
           place = quantities.end() - 1;
         }
         series.title.clear();
@@ -878,7 +905,8 @@ DocumentFigures figures_for_cases(const std::vector<const nlohmann::json*>& docu
     if (!any) continue;
     // One legend entry per quantity when a case has several curves: black, by dash type (points
     // by point type).
-    if (quantities.size() > 1) merged.key_entries.insert(merged.key_entries.end(), quantities.begin(), quantities.end());
+    if (quantities.size() > 1)
+      merged.key_entries.insert(merged.key_entries.end(), quantities.begin(), quantities.end());
     result.figures.push_back(std::move(merged));
   }
   return result;

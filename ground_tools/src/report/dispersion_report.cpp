@@ -40,15 +40,23 @@ struct OrbitText {
   double scale;
 };
 constexpr OrbitText kOrbit[kOrbitDispersionElements] = {
-    {"TWOE FT2/S2", "twoe_ft2_s2", 1.0},   {"EH FT2/S", "eh_ft2_s", 1.0},       {"RP FT", "rp_ft", 1.0},
-    {"EYE DEG", "eye_deg", kRadToDeg},     {"BETAP DEG", "betap_deg", kRadToDeg}, {"OMEGAE DEG", "omegae_deg", kRadToDeg},
+    {"TWOE FT2/S2", "twoe_ft2_s2", 1.0},
+    {"EH FT2/S", "eh_ft2_s", 1.0},
+    {"RP FT", "rp_ft", 1.0},
+    {"EYE DEG", "eye_deg", kRadToDeg},
+    {"BETAP DEG", "betap_deg", kRadToDeg},
+    {"OMEGAE DEG", "omegae_deg", kRadToDeg},
 };
 
 std::string right(const std::string& text, int width) {
-  return (static_cast<int>(text.size()) >= width) ? text : std::string(static_cast<std::size_t>(width) - text.size(), ' ') + text;
+  return (static_cast<int>(text.size()) >= width)
+             ? text
+             : std::string(static_cast<std::size_t>(width) - text.size(), ' ') + text;
 }
 std::string left(const std::string& text, int width) {
-  return (static_cast<int>(text.size()) >= width) ? text : text + std::string(static_cast<std::size_t>(width) - text.size(), ' ');
+  return (static_cast<int>(text.size()) >= width)
+             ? text
+             : text + std::string(static_cast<std::size_t>(width) - text.size(), ' ');
 }
 std::string e_cell(double value, int width) {
   if (!std::isfinite(value)) return right("-", width);
@@ -64,18 +72,20 @@ const char* code_name(int code) {
 const char* plane_name(int code) {
   DispersionCodeInfo info;
   if (!dispersion_code_info(code, &info)) return "";
-  return info.plane == DispersionPlane::kYaw ? "yaw" : info.plane == DispersionPlane::kHighLow ? "high/low" : "none";
+  return info.plane == DispersionPlane::kYaw       ? "yaw"
+         : info.plane == DispersionPlane::kHighLow ? "high/low"
+                                                   : "none";
 }
 
 constexpr double kLbDegPerLbRad = kRadToDeg;
 
-void write_trajectory_block(report_detail::Pager& pager, const DispersionResult& r, const DispersedTrajectory& t,
-                            bool nominal) {
+void write_trajectory_block(report_detail::Pager& pager, const DispersionResult& r,
+                            const DispersedTrajectory& t, bool nominal) {
   const int columns = r.staging_count;
   pager.reserve(6 + 2 * kStagingVariables + 5);
-  std::string head = nominal ? " NOMINAL TRAJECTORY (GIANT PLANE 40)" :
-                               " DISPERSED TRAJECTORY  CODE " + right(std::to_string(t.code), 2) + "  " + left(t.title, 12) +
-                                   "  (" + code_name(t.code) + ")";
+  std::string head = nominal ? " NOMINAL TRAJECTORY (GIANT PLANE 40)"
+                             : " DISPERSED TRAJECTORY  CODE " + right(std::to_string(t.code), 2) + "  " +
+                                   left(t.title, 12) + "  (" + code_name(t.code) + ")";
   pager.emit(head);
   if (!ok(t.status)) {
     pager.emit(std::string("   NOT COMPUTED: ") + status_name(t.status) + ": " + status_message(t.status));
@@ -106,12 +116,13 @@ void write_trajectory_block(report_detail::Pager& pager, const DispersionResult&
   pager.emit(names);
   pager.emit(values);
   if (!nominal) pager.emit(disps);
-  pager.emit("   MAX QBAR*ALPHA " + fixed_cell(t.max_qbar_alpha_lbf_rad_ft2 * kLbDegPerLbRad, 1, 12) + " LB DEG/FT2 AT T =" +
-             fixed_cell(t.max_qbar_alpha_time_s, 2, 10) + " S");
+  pager.emit("   MAX QBAR*ALPHA " + fixed_cell(t.max_qbar_alpha_lbf_rad_ft2 * kLbDegPerLbRad, 1, 12) +
+             " LB DEG/FT2 AT T =" + fixed_cell(t.max_qbar_alpha_time_s, 2, 10) + " S");
   pager.emit("");
 }
 
-void write_group(report_detail::Pager& pager, const DispersionResult& r, const ThreeSigmaGroup& g, const char* title) {
+void write_group(report_detail::Pager& pager, const DispersionResult& r, const ThreeSigmaGroup& g,
+                 const char* title) {
   const int columns = r.staging_count;
   pager.reserve(4 + 2 * kStagingVariables);
   std::string members;
@@ -140,7 +151,8 @@ json matrix_json(const double (&m)[kMaxStagingPoints][kStagingVariables], int co
   json rows = json::array();
   for (int j = 0; j < columns; ++j) {
     json row = json::object();
-    for (int i = 0; i < kStagingVariables; ++i) row[kVariables[i].key] = number(m[j][i] * kVariables[i].scale);
+    for (int i = 0; i < kStagingVariables; ++i)
+      row[kVariables[i].key] = number(m[j][i] * kVariables[i].scale);
     rows.push_back(std::move(row));
   }
   return rows;
@@ -175,7 +187,9 @@ json trajectory_json(const DispersionResult& r, const DispersedTrajectory& t, bo
 json group_json(const DispersionResult& r, const ThreeSigmaGroup& g) {
   json members = json::array();
   for (int k = 0; k < g.member_count; ++k) members.push_back(g.members[k]);
-  return json{{"codes", members}, {"sum", matrix_json(g.sum, r.staging_count)}, {"rss", matrix_json(g.rss, r.staging_count)}};
+  return json{{"codes", members},
+              {"sum", matrix_json(g.sum, r.staging_count)},
+              {"rss", matrix_json(g.rss, r.staging_count)}};
 }
 
 }  // namespace
@@ -202,12 +216,14 @@ void write_dispersion_pages(Pager& pager, const DispersionStep& step) {
   pager.new_page("DISPERSION ANALYSIS", false);
   pager.emit(" DISPERSION ANALYSIS (SEC. 15, IP(21) = 1): DISPERSION = DISPERSED - NOMINAL");
   if (step.outcome != StepOutcome::kRun || step.result == nullptr || !ok(step.status)) {
-    pager.emit(std::string("   NOT COMPUTED: ") + status_name(step.status) + ": " + status_message(step.status));
+    pager.emit(std::string("   NOT COMPUTED: ") + status_name(step.status) + ": " +
+               status_message(step.status));
     pager.emit("");
     return;
   }
   const DispersionResult& r = *step.result;
-  pager.emit("   ABOUT THE FINAL NOMINAL: THE " + std::string(step.nominal_kind == "optimum" ? "OPTIMUM" : "LINEARIZED PROGRAM") +
+  pager.emit("   ABOUT THE FINAL NOMINAL: THE " +
+             std::string(step.nominal_kind == "optimum" ? "OPTIMUM" : "LINEARIZED PROGRAM") +
              ", FROM ITS PAYLOAD; " + std::string(std::to_string(r.count)) + " DISPERSED TRAJECTORIES");
   pager.emit("");
   write_trajectory_block(pager, r, r.nominal, true);
@@ -217,11 +233,14 @@ void write_dispersion_pages(Pager& pager, const DispersionStep& step) {
   pager.new_page("DISPERSION SUMMARY", false);
   const int final_column = r.staging_count - 1;
   pager.emit(" SUMMARY OF INDIVIDUAL DISPERSIONS AT THE FINAL POINT");
-  pager.emit("   CODE  TITLE         PLANE        ALTITUDE FT  VELOCITY FT/S      GAMMA DEG  DOWNRANGE NMI CROSSRANGE NMI"
-             "     RP FT  QBAR*ALPHA");
+  pager.emit(
+      "   CODE  TITLE         PLANE        ALTITUDE FT  VELOCITY FT/S      GAMMA DEG  DOWNRANGE NMI "
+      "CROSSRANGE NMI"
+      "     RP FT  QBAR*ALPHA");
   for (int k = 0; k < r.count; ++k) {
     const DispersedTrajectory& t = r.trajectories[k];
-    std::string line = right(std::to_string(t.code), 7) + "  " + left(t.title, 12) + "  " + left(plane_name(t.code), 9);
+    std::string line =
+        right(std::to_string(t.code), 7) + "  " + left(t.title, 12) + "  " + left(plane_name(t.code), 9);
     if (!ok(t.status)) {
       pager.emit(line + "  NOT COMPUTED: " + status_name(t.status));
       continue;
@@ -229,7 +248,8 @@ void write_dispersion_pages(Pager& pager, const DispersionStep& step) {
     for (int i = 0; i < kStagingVariables; ++i) {
       line += fixed_cell(t.dispersions[final_column][i] * kVariables[i].scale, kVariables[i].decimals, 15);
     }
-    line += fixed_cell(t.orbit_dispersions[2], 0, 10) + fixed_cell(t.max_qbar_alpha_lbf_rad_ft2 * kLbDegPerLbRad, 0, 12);
+    line += fixed_cell(t.orbit_dispersions[2], 0, 10) +
+            fixed_cell(t.max_qbar_alpha_lbf_rad_ft2 * kLbDegPerLbRad, 0, 12);
     pager.emit(line);
   }
   pager.emit("");
@@ -256,7 +276,9 @@ json dispersion_json(const DispersionStep& step) {
   json out = json::object();
   out["status"] = status_name(step.status);
   out["status_message"] = status_message(step.status);
-  out["outcome"] = step.outcome == StepOutcome::kRun ? "run" : step.outcome == StepOutcome::kSkipped ? "skipped" : "not requested";
+  out["outcome"] = step.outcome == StepOutcome::kRun       ? "run"
+                   : step.outcome == StepOutcome::kSkipped ? "skipped"
+                                                           : "not requested";
   if (step.outcome != StepOutcome::kRun || step.result == nullptr || !ok(step.status)) return out;
   const DispersionResult& r = *step.result;
   out["nominal_kind"] = step.nominal_kind;
@@ -300,10 +322,14 @@ void write_dispersion_csv(std::ostream& out, const DispersionStep& step) {
     }
     for (int j = 0; j < r.staging_count; ++j) {
       const bool final_row = j + 1 == r.staging_count;
-      out << t.code << ',' << title << ',' << status_name(t.status) << ',' << staging_point_key(r.staging_stage_code[j]);
-      for (int i = 0; i < kStagingVariables; ++i) out << ',' << round_trip(t.values[j][i] * kVariables[i].scale);
-      for (int i = 0; i < kStagingVariables; ++i) out << ',' << round_trip(t.dispersions[j][i] * kVariables[i].scale);
-      for (int i = 0; i < kOrbitDispersionElements; ++i) out << ',' << (final_row ? round_trip(t.orbit[i] * kOrbit[i].scale) : "");
+      out << t.code << ',' << title << ',' << status_name(t.status) << ','
+          << staging_point_key(r.staging_stage_code[j]);
+      for (int i = 0; i < kStagingVariables; ++i)
+        out << ',' << round_trip(t.values[j][i] * kVariables[i].scale);
+      for (int i = 0; i < kStagingVariables; ++i)
+        out << ',' << round_trip(t.dispersions[j][i] * kVariables[i].scale);
+      for (int i = 0; i < kOrbitDispersionElements; ++i)
+        out << ',' << (final_row ? round_trip(t.orbit[i] * kOrbit[i].scale) : "");
       for (int i = 0; i < kOrbitDispersionElements; ++i) {
         out << ',' << (final_row ? round_trip(t.orbit_dispersions[i] * kOrbit[i].scale) : "");
       }

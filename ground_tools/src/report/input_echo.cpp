@@ -69,12 +69,16 @@ class Echo {
       const Word* word = data != nullptr ? data->at(w) : nullptr;
       line += fixed(word != nullptr && word->given ? word->text : "", 6);
     }
-    pager_.emit("      '" + line.substr(0, line.find_last_not_of(' ') == std::string::npos ? 0 : line.find_last_not_of(' ') + 1) + "'");
+    pager_.emit(
+        "      '" +
+        line.substr(0, line.find_last_not_of(' ') == std::string::npos ? 0 : line.find_last_not_of(' ') + 1) +
+        "'");
   }
 
   void words(const BlockSpec& spec, const BlockData* data, int block, int stage, bool nominal_block) {
     std::vector<std::string> cells;
-    const int size = data != nullptr ? static_cast<int>(data->words.size()) : card_detail::block_size(spec, stage);
+    const int size =
+        data != nullptr ? static_cast<int>(data->words.size()) : card_detail::block_size(spec, stage);
     for (int w = 1; w <= size; ++w) {
       const Word* word = data != nullptr ? data->at(w) : nullptr;
       const bool given = word != nullptr && word->given;
@@ -87,7 +91,8 @@ class Echo {
       }
       char label[16];
       std::snprintf(label, sizeof label, block == 4 ? "IP(%2d)" : "%3d", w);
-      std::string text = fixed(std::string("  ") + label, 9) + fixed(meaning.empty() ? "(NOT USED)" : meaning, 38);
+      std::string text =
+          fixed(std::string("  ") + label, 9) + fixed(meaning.empty() ? "(NOT USED)" : meaning, 38);
       if (spec.format == Format::kReal) {
         text += number(value);
       } else {
@@ -121,7 +126,8 @@ class Echo {
     for (int w = pairs ? 1 : 2; w + 1 <= size; w += 2) {
       const Word* x = data->at(w);
       const Word* y = data->at(w + 1);
-      if (x == nullptr || !x->given || x->number >= card_detail::kTableEnd || y == nullptr || !y->given) break;
+      if (x == nullptr || !x->given || x->number >= card_detail::kTableEnd || y == nullptr || !y->given)
+        break;
       points.emplace_back(x->number, y->number);
     }
     pager_.emit("      " + std::to_string(points.size()) + " POINTS: " + spec.x_name + " VS " + spec.y_name);
@@ -186,8 +192,9 @@ void write_input_echo(std::ostream& out, const Deck& deck, const DeckCase& deck_
       for (const Word& word : d.title.words) title += fixed(word.text, 6);
       const char* name = deck_detail::dispersion_name(d.code);
       pager.reserve(2);
-      pager.emit(" DATA BLOCK 46  DISPERSION CODE " + std::to_string(d.code) + "  " + (name != nullptr ? name : "") +
-                 "  TITLE '" + title.substr(0, title.find_last_not_of(' ') + 1) + "'");
+      pager.emit(" DATA BLOCK 46  DISPERSION CODE " + std::to_string(d.code) + "  " +
+                 (name != nullptr ? name : "") + "  TITLE '" +
+                 title.substr(0, title.find_last_not_of(' ') + 1) + "'");
       echo.set(d.blocks, "   ");
     }
   }

@@ -46,6 +46,7 @@ void write_trajectory_pages(Pager& pager, const SimulationReport& report);
 
 // The constraint table (desired, achieved, error, tolerance in data block 19 units, angles also in
 // deg, MET) under `heading`; shared by optimize's summary and simulate's terminal conditions.
-void write_constraint_table(Pager& pager, const std::vector<ConstraintSummary>& constraints, const std::string& heading);
+void write_constraint_table(Pager& pager, const std::vector<ConstraintSummary>& constraints,
+                            const std::string& heading);
 
 }  // namespace tolip::ground::report_detail

@@ -9,8 +9,8 @@
 
 #include "tolip/core/constants.hpp"
 #include "tolip/core/state.hpp"
-#include "tolip_ground/optimization_report.hpp"
 #include "tolip_ground/dispersion_report.hpp"
+#include "tolip_ground/optimization_report.hpp"
 
 namespace tolip::ground {
 namespace {

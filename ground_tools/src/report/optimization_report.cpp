@@ -16,8 +16,8 @@
 #include "tolip/earth/earth_model.hpp"
 #include "tolip/mission/adjustable_parameter.hpp"
 #include "tolip/optimizer/constraint_parameters.hpp"
-#include "tolip_ground/optimization_report.hpp"
 #include "tolip_ground/dispersion_report.hpp"
+#include "tolip_ground/optimization_report.hpp"
 
 namespace tolip::ground {
 namespace {
@@ -28,11 +28,11 @@ using report_detail::Pager;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 struct QuantityText {
-  const char* name;     // JSON (snake_case)
-  const char* heading;  // listing
-  const char* unit;     // data block 19 unit (JSON)
+  const char* name;          // JSON (snake_case)
+  const char* heading;       // listing
+  const char* unit;          // data block 19 unit (JSON)
   const char* unit_heading;  // listing
-  int decimals;         // listing decimals in data block 19 units
+  int decimals;              // listing decimals in data block 19 units
 };
 
 QuantityText quantity_text(ConstraintQuantity kind) {
@@ -53,8 +53,7 @@ QuantityText quantity_text(ConstraintQuantity kind) {
     case ConstraintQuantity::kTwiceEnergy: return {"twice_energy", "2E", "ft2/s2", "FT2/SEC2", 1};
     case ConstraintQuantity::kInclination: return {"inclination", "INCLINATION", "rad", "RAD", 8};
     case ConstraintQuantity::kPerigeeRadius: return {"perigee_radius", "PERIGEE RADIUS", "ft", "FT", 3};
-    case ConstraintQuantity::kNodeLongitude:
-      return {"node_longitude", "NODE LONGITUDE", "rad", "RAD", 8};
+    case ConstraintQuantity::kNodeLongitude: return {"node_longitude", "NODE LONGITUDE", "rad", "RAD", 8};
     case ConstraintQuantity::kArgumentOfPerigee:
       return {"argument_of_perigee", "ARGUMENT OF PERIGEE", "rad", "RAD", 8};
     case ConstraintQuantity::kTotalHeating:
@@ -112,7 +111,8 @@ double adjustable_value(const Mission& mission, int code, double launch_day) {
     case AdjustableParameter::kStage4Theta: return misc.stage4_theta_rad * kRadToDeg;
     case AdjustableParameter::kStage4Chi: return misc.stage4_chi_rad * kRadToDeg;
     case AdjustableParameter::kLaunchAzimuth: return mission.launch.azimuth_rad * kRadToDeg;
-    case AdjustableParameter::kLaunchTime: return (mission.launch.launch_space_age_date_days - launch_day) * 86400.0;
+    case AdjustableParameter::kLaunchTime:
+      return (mission.launch.launch_space_age_date_days - launch_day) * 86400.0;
     case AdjustableParameter::kStage5Theta: return misc.stage5_theta_rad * kRadToDeg;
     case AdjustableParameter::kStage5Chi: return misc.stage5_chi_rad * kRadToDeg;
     default: return mission.vehicle.stages[stage_index(adjusted_coast_stage_code(parameter))].duration_s;
@@ -222,8 +222,9 @@ void write_problem(Pager& pager, const OptimizationReport& report,
   pager.emit("   PAYOFF: " + upper(payoff_kind_name(ip1)) + " (IP(1) = " + std::to_string(ip1) +
              ", DATA BLOCK 8 CODE " + std::to_string(mission.constraints.codes[0]) + ")");
   pager.emit("   CONSTRAINTS (DATA BLOCKS 8, 19, 29; UNITS OF DATA BLOCK 19)");
-  pager.emit("    NO.  CODE  PARAMETER                          DESIRED        DEADBAND  UNIT"
-             "              DESIRED      DEADBAND  UNIT");
+  pager.emit(
+      "    NO.  CODE  PARAMETER                          DESIRED        DEADBAND  UNIT"
+      "              DESIRED      DEADBAND  UNIT");
   for (std::size_t i = 0; i < constraints.size(); ++i) {
     const ConstraintSummary& c = constraints[i];
     ConstraintCode decoded;
@@ -233,7 +234,8 @@ void write_problem(Pager& pager, const OptimizationReport& report,
     line += number_cell(c.desired, text.decimals, 16) + number_cell(c.tolerance, text.decimals, 16);
     line += "  " + left(text.unit_heading, 9);
     if (c.angle) {
-      line += number_cell(c.desired * kRadToDeg, 6, 16) + number_cell(c.tolerance * kRadToDeg, 6, 14) + "  DEG";
+      line +=
+          number_cell(c.desired * kRadToDeg, 6, 16) + number_cell(c.tolerance * kRadToDeg, 6, 14) + "  DEG";
     }
     pager.emit(line);
   }
@@ -244,7 +246,8 @@ void write_problem(Pager& pager, const OptimizationReport& report,
   pager.emit("    NO.  CODE  PARAMETER                    INITIAL VALUE  UNIT        WEIGHT");
   for (std::size_t p = 0; p < adjustable.size(); ++p) {
     const AdjustableSummary& a = adjustable[p];
-    const double weight = p < static_cast<std::size_t>(kMaxAdjustableParameters) ? mission.adjustable.weights[p] : kNaN;
+    const double weight =
+        p < static_cast<std::size_t>(kMaxAdjustableParameters) ? mission.adjustable.weights[p] : kNaN;
     pager.emit(right(std::to_string(p + 1), 7) + right(std::to_string(a.code), 6) + "  " +
                left(parameter_text(a.code).heading, 25) + number_cell(a.initial_value, 6, 18) + "  " +
                left(upper(a.unit.c_str()), 6) + e_cell(weight, 14));
@@ -258,10 +261,11 @@ void write_iteration_table(Pager& pager, const OptimizationReport& report) {
   const std::string unit = upper(payoff_unit(ip1));
   const auto headings = [&pager, &unit]() {
     pager.emit(" ITERATION HISTORY (ONE LINE PER FORWARD RUN)");
-    pager.emit("    RUN  KIND              SUCCESSFUL  NOMINAL PAYOFF INCR          PAYOFF  CORRECTED PAYOFF"
-               "         PAYLOAD  PAYLOAD INCREMENT");
-    pager.emit("                                       " + right(unit, 19) + right(unit, 16) + right(unit, 18) +
-               right("LB", 16) + right("LB", 19));
+    pager.emit(
+        "    RUN  KIND              SUCCESSFUL  NOMINAL PAYOFF INCR          PAYOFF  CORRECTED PAYOFF"
+        "         PAYLOAD  PAYLOAD INCREMENT");
+    pager.emit("                                       " + right(unit, 19) + right(unit, 16) +
+               right(unit, 18) + right("LB", 16) + right("LB", 19));
   };
   pager.reserve(5);
   headings();
@@ -285,7 +289,8 @@ void write_iteration_table(Pager& pager, const OptimizationReport& report) {
     pager.emit(line);
   }
   if (result.iterations_dropped > 0) {
-    pager.emit("    ... " + std::to_string(result.iterations_dropped) + " LATER FORWARD RUNS NOT RECORDED (THE HISTORY HOLDS " +
+    pager.emit("    ... " + std::to_string(result.iterations_dropped) +
+               " LATER FORWARD RUNS NOT RECORDED (THE HISTORY HOLDS " +
                std::to_string(kMaxOptimizerIterations) + ")");
   }
   pager.emit("");
@@ -301,19 +306,25 @@ void write_iteration_details(Pager& pager, const OptimizationReport& report,
   for (int k = 0; k < count; ++k) {
     const IterationRecord& r = result.iterations[k];
     pager.reserve(9 + rows);
-    pager.emit(" FORWARD RUN " + std::to_string(r.forward_run) + "   " + run_kind_heading(r.kind) + "   " +
-               (r.successful ? "SUCCESSFUL" : "NOT SUCCESSFUL") +
-               (ok(r.run_status) ? std::string() : std::string("   RUN FAILED: ") + status_name(r.run_status)));
-    pager.emit("   NOMINAL PAYOFF INCREMENT          PAYOFF  CORRECTED PAYOFF         PAYLOAD  PAYLOAD INCREMENT");
-    pager.emit("   " + right(payoff, 24) + right(payoff, 16) + right(payoff, 18) + right("LB", 16) + right("LB", 19));
+    pager.emit(
+        " FORWARD RUN " + std::to_string(r.forward_run) + "   " + run_kind_heading(r.kind) + "   " +
+        (r.successful ? "SUCCESSFUL" : "NOT SUCCESSFUL") +
+        (ok(r.run_status) ? std::string() : std::string("   RUN FAILED: ") + status_name(r.run_status)));
+    pager.emit(
+        "   NOMINAL PAYOFF INCREMENT          PAYOFF  CORRECTED PAYOFF         PAYLOAD  PAYLOAD INCREMENT");
+    pager.emit("   " + right(payoff, 24) + right(payoff, 16) + right(payoff, 18) + right("LB", 16) +
+               right("LB", 19));
     pager.emit("   " + number_cell(r.attempted_payoff_improvement, 4, 24) + number_cell(r.payoff, 4, 16) +
                number_cell(r.corrected_payoff, 4, 18) + number_cell(r.payload_lb, 4, 16) +
                number_cell(r.payload_increment_lb, 4, 19));
     if (rows > 0) {
-      pager.emit("   CONSTRAINT CORRECTIONS (DESIRED - ACHIEVED) AND PARTIALS OF PAYOFF WITH RESPECT TO EACH CONSTRAINT"
-                 " (EQ. 9-22)");
-      pager.emit("    NO.  CODE  PARAMETER                       CORRECTION  UNIT           CORRECTION  UNIT"
-                 "     D PAYOFF/D CONSTRAINT  UNIT");
+      pager.emit(
+          "   CONSTRAINT CORRECTIONS (DESIRED - ACHIEVED) AND PARTIALS OF PAYOFF WITH RESPECT TO EACH "
+          "CONSTRAINT"
+          " (EQ. 9-22)");
+      pager.emit(
+          "    NO.  CODE  PARAMETER                       CORRECTION  UNIT           CORRECTION  UNIT"
+          "     D PAYOFF/D CONSTRAINT  UNIT");
       for (int i = 0; i < rows; ++i) {
         const ConstraintSummary& c = constraints[static_cast<std::size_t>(i)];
         ConstraintCode decoded;
@@ -361,10 +372,13 @@ void write_summary(Pager& pager, const OptimizationReport& report,
   pager.emit(labelled("CONVERGED", result.converged ? "YES" : "NO", ""));
   pager.emit(labelled("OPTIMIZATION ENDED BY", optimization_stop_text(result.optimization_stop), ""));
   pager.emit(labelled("GUIDANCE RUNS", std::to_string(result.guidance_runs), ""));
-  pager.emit(labelled(result.initial_improvement_from_da13_1 ? "FIRST ATTEMPT (DA13(1))" : "FIRST ATTEMPT (EQ. 5-34)",
-                      trimmed(number_cell(result.initial_payoff_improvement, 4, 20)), payoff_heading));
-  pager.emit(labelled("OPTIMIZATION RUNS", std::to_string(result.optimization_runs) + " (" +
-                      std::to_string(result.successful_optimization_runs) + " SUCCESSFUL)", ""));
+  pager.emit(labelled(
+      result.initial_improvement_from_da13_1 ? "FIRST ATTEMPT (DA13(1))" : "FIRST ATTEMPT (EQ. 5-34)",
+      trimmed(number_cell(result.initial_payoff_improvement, 4, 20)), payoff_heading));
+  pager.emit(labelled("OPTIMIZATION RUNS",
+                      std::to_string(result.optimization_runs) + " (" +
+                          std::to_string(result.successful_optimization_runs) + " SUCCESSFUL)",
+                      ""));
   pager.emit(labelled("FINAL GUIDANCE RUN", result.final_guidance_met ? "MET EVERY DEADBAND" : "FAILED", ""));
   pager.emit(labelled("FAILED RUNS RECOVERED", std::to_string(result.crashed_runs), ""));
   // Weak directions of the steering matrix (docs/theory/optimizer.md "Weak directions").
@@ -372,11 +386,13 @@ void write_summary(Pager& pager, const OptimizationReport& report,
     if (result.held_runs[i] == 0) continue;
     pager.reserve(1);
     pager.emit("   CONSTRAINT " + std::to_string(i) + " (CODE " + std::to_string(result.codes[i]) +
-               ") HAS NO FIRST-ORDER EFFECT: HELD BY DEADBAND ON " + std::to_string(result.held_runs[i]) + " OF " +
-               std::to_string(result.forward_runs) + " RUNS");
+               ") HAS NO FIRST-ORDER EFFECT: HELD BY DEADBAND ON " + std::to_string(result.held_runs[i]) +
+               " OF " + std::to_string(result.forward_runs) + " RUNS");
   }
-  pager.emit(labelled("CASE RESULT", ok(report.case_status) ? std::string("kOk")
-                                                          : report.case_failed_step + ": " + status_name(report.case_status),
+  pager.emit(labelled("CASE RESULT",
+                      ok(report.case_status)
+                          ? std::string("kOk")
+                          : report.case_failed_step + ": " + status_name(report.case_status),
                       ""));
   pager.emit(labelled("FORWARD RUNS", std::to_string(result.forward_runs), ""));
   pager.emit(labelled("BACKWARD RUNS", std::to_string(result.backward_runs), ""));
@@ -385,14 +401,16 @@ void write_summary(Pager& pager, const OptimizationReport& report,
   pager.emit(labelled("CORRECTED PAYOFF", trimmed(number_cell(corrected, 4, 20)), payoff_heading));
   pager.emit(labelled("PAYLOAD", trimmed(number_cell(mission.vehicle.payload_lb, 4, 20)), "LB"));
   if (report.initial_mission != nullptr) {
-    pager.emit(labelled("PAYLOAD INCREMENT",
-                        trimmed(number_cell(mission.vehicle.payload_lb - report.initial_mission->vehicle.payload_lb, 4, 20)),
-                        "LB"));
+    pager.emit(labelled(
+        "PAYLOAD INCREMENT",
+        trimmed(number_cell(mission.vehicle.payload_lb - report.initial_mission->vehicle.payload_lb, 4, 20)),
+        "LB"));
   }
   pager.emit("");
 
-  report_detail::write_constraint_table(pager, constraints,
-                                        "   CONSTRAINTS ON THE FINAL TRAJECTORY (UNITS OF DATA BLOCK 19; ANGLES ALSO IN DEG)");
+  report_detail::write_constraint_table(
+      pager, constraints,
+      "   CONSTRAINTS ON THE FINAL TRAJECTORY (UNITS OF DATA BLOCK 19; ANGLES ALSO IN DEG)");
 
   if (!constraints.empty()) {
     pager.reserve(3 + static_cast<int>(constraints.size()));
@@ -445,18 +463,22 @@ void write_exchange_ratios(Pager& pager, const OptimizationReport& report) {
   }
   const int count = std::clamp(r->stage_count, 0, kMaxPoweredStages);
   pager.reserve(7 + count);
-  pager.emit(" PERFORMANCE EXCHANGE RATIOS (SEC. 8: FIRST-ORDER PAYOFF CHANGE OF THE RE-OPTIMIZED TRAJECTORY"
-             " PER UNIT CHANGE)");
-  pager.emit("    STAGE         BURN RATE   PROPELLANT WEIGHT    SPECIFIC IMPULSE           DRAG AREA"
-             "     JETTISON WEIGHT");
+  pager.emit(
+      " PERFORMANCE EXCHANGE RATIOS (SEC. 8: FIRST-ORDER PAYOFF CHANGE OF THE RE-OPTIMIZED TRAJECTORY"
+      " PER UNIT CHANGE)");
+  pager.emit(
+      "    STAGE         BURN RATE   PROPELLANT WEIGHT    SPECIFIC IMPULSE           DRAG AREA"
+      "     JETTISON WEIGHT");
   pager.emit("          " + right(unit + "/PCT", 18) + right(unit + "/LB", 20) + right(unit + "/PCT", 20) +
              right(unit + "/FT2", 20) + right(unit + "/LB", 20));
   for (int s = 0; s < count; ++s) {
     pager.emit(right(std::to_string(r->stage_codes[s]), 9) + " " + e_cell(r->burn_rate[s], 18) +
-               e_cell(r->propellant_weight[s], 20) + e_cell(r->specific_impulse[s], 20) + e_cell(r->drag[s], 20) +
-               e_cell(r->jettison_weight[s], 20));
+               e_cell(r->propellant_weight[s], 20) + e_cell(r->specific_impulse[s], 20) +
+               e_cell(r->drag[s], 20) + e_cell(r->jettison_weight[s], 20));
   }
-  pager.emit("   BURN RATE AND SPECIFIC IMPULSE PER 1 PCT, WEIGHTS PER LB, DRAG PER FT2 OF C_D S (0: NO DRAG TABLE)");
+  pager.emit(
+      "   BURN RATE AND SPECIFIC IMPULSE PER 1 PCT, WEIGHTS PER LB, DRAG PER FT2 OF C_D S (0: NO DRAG "
+      "TABLE)");
   if (ip1 == 0) {
     pager.emit("   PAYOFF PARTIALS' PRICE OF 1 LB OF PAYLOAD (1 AT A TRUE OPTIMUM) = " +
                fixed_cell(r->payload_stationarity, 5, 10));
@@ -488,8 +510,8 @@ void write_linearized_program(Pager& pager, const OptimizationReport& report) {
     const bool merged = rate_continues_previous(p, s);
     pager.emit(right(std::to_string(s + 1), 11) + right(std::to_string(p.stage_code[s]), 7) +
                number_cell(p.start_stage_time_s[s], 3, 13) + number_cell(p.break_time_s[s], 3, 18) +
-               number_cell(p.theta_rad[s] * kRadToDeg, 5, 16) + number_cell(p.rate_rad_s[s] * kRadToDeg, 5, 16) +
-               (merged ? "  (SAME RATE: MERGED)" : ""));
+               number_cell(p.theta_rad[s] * kRadToDeg, 5, 16) +
+               number_cell(p.rate_rad_s[s] * kRadToDeg, 5, 16) + (merged ? "  (SAME RATE: MERGED)" : ""));
   }
   if (count > 0) {
     pager.emit(std::string(11 + 7 + 13, ' ') + number_cell(p.break_time_s[count], 3, 18) +
@@ -498,50 +520,65 @@ void write_linearized_program(Pager& pager, const OptimizationReport& report) {
   pager.emit("");
   const int constraints = std::clamp(r->constraint_count, 0, kMaxConstraints);
   pager.reserve(4 + constraints);
-  pager.emit("   CONSTRAINTS ON THE LINEARIZED TRAJECTORY (LINEARIZATION DEADBANDS, DATA BLOCK 29 WORDS 14-25)");
-  pager.emit("          CODE  PARAMETER                          DESIRED        ACHIEVED       TOLERANCE  UNIT      MET");
+  pager.emit(
+      "   CONSTRAINTS ON THE LINEARIZED TRAJECTORY (LINEARIZATION DEADBANDS, DATA BLOCK 29 WORDS 14-25)");
+  pager.emit(
+      "          CODE  PARAMETER                          DESIRED        ACHIEVED       TOLERANCE  UNIT      "
+      "MET");
   for (int j = 0; j < constraints; ++j) {
     ConstraintCode decoded;
     const QuantityText text = code_text(r->codes[j], &decoded);
     pager.emit(right(std::to_string(r->codes[j]), 14) + "  " + left(constraint_label(decoded, text), 27) +
-               number_cell(r->desired[j], text.decimals, 16) + number_cell(r->achieved[j], text.decimals, 16) +
+               number_cell(r->desired[j], text.decimals, 16) +
+               number_cell(r->achieved[j], text.decimals, 16) +
                number_cell(r->tolerance[j], text.decimals, 16) + "  " + left(text.unit_heading, 9) +
                (r->met[j] ? "YES" : "NO"));
   }
   const int ip1 = report.final_trajectory.mission->options.payoff();
   const double loss_percent = 100.0 * (report.optimum_payoff - r->payoff) / report.optimum_payoff;
-  pager.emit("   PAYOFF (" + upper(payoff_kind_name(ip1)) + ") " + trimmed(number_cell(r->payoff, 4, 20)) + " " +
-             upper(payoff_unit(ip1)) + " AGAINST THE OPTIMUM'S " + trimmed(number_cell(report.optimum_payoff, 4, 20)) +
-             " (LOSS " + trimmed(number_cell(loss_percent, 3, 12)) + " PCT)");
+  pager.emit("   PAYOFF (" + upper(payoff_kind_name(ip1)) + ") " + trimmed(number_cell(r->payoff, 4, 20)) +
+             " " + upper(payoff_unit(ip1)) + " AGAINST THE OPTIMUM'S " +
+             trimmed(number_cell(report.optimum_payoff, 4, 20)) + " (LOSS " +
+             trimmed(number_cell(loss_percent, 3, 12)) + " PCT)");
   pager.emit("   RATE LIMITS (DATA BLOCK 22) " + std::string(r->rate_limits_met ? "MET" : "NOT MET") +
-             "; CONSTRAINTS " + (r->constraints_met ? "MET" : "NOT MET") + "; " + std::to_string(r->forward_runs) +
-             " FORWARD" + (r->reference_flights > 0 ? " (+" + std::to_string(r->reference_flights) + " 6D REF.)" : std::string()) +
+             "; CONSTRAINTS " + (r->constraints_met ? "MET" : "NOT MET") + "; " +
+             std::to_string(r->forward_runs) + " FORWARD" +
+             (r->reference_flights > 0 ? " (+" + std::to_string(r->reference_flights) + " 6D REF.)"
+                                       : std::string()) +
              " AND " + std::to_string(r->backward_runs) + " BACKWARD RUNS, " +
              std::to_string(r->programs_computed) + " PROGRAMS, " + std::to_string(p.rate_repair_count) +
              " RATE REPAIRS");
   // Sec. 10's messages for the coast between stages 2 and 3.
-  if (r->coast7_below_min_rate) pager.emit("   COAST 7 PITCH RATE IS BELOW THE MINIMUM PITCH RATE (DATA BLOCK 22 WORD 4)");
+  if (r->coast7_below_min_rate)
+    pager.emit("   COAST 7 PITCH RATE IS BELOW THE MINIMUM PITCH RATE (DATA BLOCK 22 WORD 4)");
   if (r->coast7_below_min_rate_change) {
-    pager.emit("   COAST 7 PITCH RATE CHANGES BY LESS THAN THE MINIMUM CHANGE OF RATE (DATA BLOCK 22 WORD 5)");
+    pager.emit(
+        "   COAST 7 PITCH RATE CHANGES BY LESS THAN THE MINIMUM CHANGE OF RATE (DATA BLOCK 22 WORD 5)");
   }
   if (r->point_mass_met && r->body_dynamics) {
     // IP(6) = 1 (Sec. 10, 11): what body dynamics did to the accepted point-mass program, and the
     // payoff after the 6D re-linearization.
     pager.reserve(4 + constraints);
-    pager.emit("   6D RE-LINEARIZATION (IP(6) = 1, SEC. 10, 11): THE PROGRAM ABOVE WAS LINEARIZED WITH BODY DYNAMICS IN"
-               " STAGE 1 AND COAST 6,");
+    pager.emit(
+        "   6D RE-LINEARIZATION (IP(6) = 1, SEC. 10, 11): THE PROGRAM ABOVE WAS LINEARIZED WITH BODY "
+        "DYNAMICS IN"
+        " STAGE 1 AND COAST 6,");
     pager.emit("   STARTING FROM THE ACCEPTED POINT-MASS PROGRAM, WHOSE CONSTRAINT VALUES WERE:");
-    pager.emit("          CODE  PARAMETER                          DESIRED    POINT-MASS PROGRAM: POINT MASS       6D");
+    pager.emit(
+        "          CODE  PARAMETER                          DESIRED    POINT-MASS PROGRAM: POINT MASS       "
+        "6D");
     for (int j = 0; j < constraints; ++j) {
       ConstraintCode decoded;
       const QuantityText text = code_text(r->codes[j], &decoded);
       pager.emit(right(std::to_string(r->codes[j]), 14) + "  " + left(constraint_label(decoded, text), 27) +
-                 number_cell(r->desired[j], text.decimals, 16) + number_cell(r->point_mass_achieved[j], text.decimals, 26) +
+                 number_cell(r->desired[j], text.decimals, 16) +
+                 number_cell(r->point_mass_achieved[j], text.decimals, 26) +
                  number_cell(r->point_mass_program_6d_achieved[j], text.decimals, 16));
     }
     pager.emit("   PAYOFF: POINT MASS " + trimmed(number_cell(r->point_mass_payoff, 4, 20)) + ", 6D " +
                trimmed(number_cell(r->payoff, 4, 20)) + " (DIFFERENCE " +
-               trimmed(number_cell(r->payoff - r->point_mass_payoff, 4, 20)) + " " + upper(payoff_unit(ip1)) + ")");
+               trimmed(number_cell(r->payoff - r->point_mass_payoff, 4, 20)) + " " + upper(payoff_unit(ip1)) +
+               ")");
   }
   if (!ok(report.linearization_status)) {
     pager.emit(std::string("   LINEARIZATION ENDED: ") + status_name(report.linearization_status) + ": " +
@@ -602,15 +639,17 @@ ConstraintSummary describe_constraint(const Mission& mission, int code, Constrai
   c.stage = decoded.is_stage_point ? decoded.stage_code : 0;
   c.unit = text.unit;
   c.angle = c.unit == "rad";
-  c.inequality = decoded.kind == ConstraintQuantity::kTotalHeating ||
-                 (decoded.kind == ConstraintQuantity::kDynamicPressure && mission.options.qbar_constraint_type() == 1);
+  c.inequality =
+      decoded.kind == ConstraintQuantity::kTotalHeating ||
+      (decoded.kind == ConstraintQuantity::kDynamicPressure && mission.options.qbar_constraint_type() == 1);
   *decoded_out = decoded;
   return c;
 }
 
 void judge(const ConstraintCode& decoded, ConstraintSummary* c) {
   c->error = std::isfinite(c->achieved) ? constraint_deviation(decoded, c->achieved, c->desired) : kNaN;
-  c->met = std::isfinite(c->error) && (c->inequality ? c->error <= c->tolerance : std::fabs(c->error) <= c->tolerance);
+  c->met = std::isfinite(c->error) &&
+           (c->inequality ? c->error <= c->tolerance : std::fabs(c->error) <= c->tolerance);
 }
 
 }  // namespace
@@ -620,17 +659,19 @@ void report_detail::write_constraint_table(Pager& pager, const std::vector<Const
   if (constraints.empty()) return;
   pager.reserve(4 + static_cast<int>(constraints.size()));
   pager.emit(heading);
-  pager.emit("    NO.  CODE  PARAMETER                          DESIRED        ACHIEVED           ERROR"
-             "       TOLERANCE  UNIT      MET");
+  pager.emit(
+      "    NO.  CODE  PARAMETER                          DESIRED        ACHIEVED           ERROR"
+      "       TOLERANCE  UNIT      MET");
   for (std::size_t i = 0; i < constraints.size(); ++i) {
     const ConstraintSummary& c = constraints[i];
     ConstraintCode decoded;
     const QuantityText text = code_text(c.code, &decoded);
     std::string line = right(std::to_string(i + 1), 7) + right(std::to_string(c.code), 6) + "  " +
                        left(constraint_label(decoded, text) + (c.inequality ? " (MAX)" : ""), 27) +
-                       number_cell(c.desired, text.decimals, 16) + number_cell(c.achieved, text.decimals, 16) +
-                       number_cell(c.error, text.decimals, 16) + number_cell(c.tolerance, text.decimals, 16) +
-                       "  " + left(text.unit_heading, 9) + (c.met ? "YES" : "NO");
+                       number_cell(c.desired, text.decimals, 16) +
+                       number_cell(c.achieved, text.decimals, 16) + number_cell(c.error, text.decimals, 16) +
+                       number_cell(c.tolerance, text.decimals, 16) + "  " + left(text.unit_heading, 9) +
+                       (c.met ? "YES" : "NO");
     pager.emit(line);
     if (c.angle) {
       pager.emit(std::string(42, ' ') + number_cell(c.desired * kRadToDeg, 6, 16) +
@@ -641,7 +682,8 @@ void report_detail::write_constraint_table(Pager& pager, const std::vector<Const
   pager.emit("");
 }
 
-std::vector<ConstraintSummary> deck_constraint_summaries(const Mission& mission, const Trajectory& trajectory) {
+std::vector<ConstraintSummary> deck_constraint_summaries(const Mission& mission,
+                                                         const Trajectory& trajectory) {
   const int count = std::clamp(mission.constraints.count, 0, kMaxConstraints);
   std::vector<ConstraintSummary> out;
   for (int i = 1; i < count; ++i) {
@@ -660,7 +702,8 @@ std::vector<ConstraintSummary> deck_constraint_summaries(const Mission& mission,
 std::vector<ConstraintSummary> constraint_summaries(const OptimizationReport& report) {
   const Mission& mission = *report.final_trajectory.mission;
   const OptimizerResult& result = *report.result;
-  if (!result_complete(report)) return deck_constraint_summaries(mission, *report.final_trajectory.trajectory);
+  if (!result_complete(report))
+    return deck_constraint_summaries(mission, *report.final_trajectory.trajectory);
   const int count = std::clamp(result.constraint_count, 0, kMaxConstraints);
   std::vector<ConstraintSummary> out;
   for (int i = 1; i < count; ++i) {

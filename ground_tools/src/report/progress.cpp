@@ -29,7 +29,8 @@ bool progress_enabled(ProgressMode mode) {
   return false;
 }
 
-ProgressLine::ProgressLine(std::ostream& stream, bool enabled, std::chrono::steady_clock::duration min_interval)
+ProgressLine::ProgressLine(std::ostream& stream, bool enabled,
+                           std::chrono::steady_clock::duration min_interval)
     : stream_(stream), enabled_(enabled), min_interval_(min_interval) {}
 
 ProgressLine::~ProgressLine() { clear(); }

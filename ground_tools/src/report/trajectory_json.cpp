@@ -90,14 +90,14 @@ json orbit_json(const OrbitElements& orbit, const Constants& constants) {
        asymptote ? number(orbit.hyperbolic_excess_velocity_ft_s) : json(nullptr)},
       {"asymptote_right_ascension_deg",
        asymptote ? degrees(orbit.asymptote_right_ascension_rad) : json(nullptr)},
-      {"asymptote_declination_deg",
-       asymptote ? degrees(orbit.asymptote_declination_rad) : json(nullptr)},
+      {"asymptote_declination_deg", asymptote ? degrees(orbit.asymptote_declination_rad) : json(nullptr)},
       // In engineering terms (summarize_orbit): above the oblate Earth at their latitudes.
       {"path", path_class_name(summary.path)},
       {"perigee_altitude_ft", number(summary.perigee_altitude_ft)},
       {"perigee_altitude_nmi", number(summary.perigee_altitude_ft / kFeetPerNauticalMile)},
       {"apogee_altitude_ft", elliptic ? number(summary.apogee_altitude_ft) : json(nullptr)},
-      {"apogee_altitude_nmi", elliptic ? number(summary.apogee_altitude_ft / kFeetPerNauticalMile) : json(nullptr)},
+      {"apogee_altitude_nmi",
+       elliptic ? number(summary.apogee_altitude_ft / kFeetPerNauticalMile) : json(nullptr)},
       {"perigee_geocentric_latitude_deg", degrees(summary.perigee_latitude_rad)},
       {"perigee_below_haero", summary.perigee_in_atmosphere},
   };
@@ -132,7 +132,8 @@ json stage_events_json(const Trajectory& trajectory) {
         {"completed", event.completed},
         {"jettison_weight_lb",
          event.completed ? number(event.burnout_weight_lb - event.weight_after_jettison_lb) : json(nullptr)},
-        {"weight_after_jettison_lb", event.completed ? number(event.weight_after_jettison_lb) : json(nullptr)},
+        {"weight_after_jettison_lb",
+         event.completed ? number(event.weight_after_jettison_lb) : json(nullptr)},
     });
   }
   return events;
@@ -159,7 +160,6 @@ nlohmann::ordered_json constraints_json(const std::vector<ConstraintSummary>& co
   return array;
 }
 
-
 json trajectory_json(const SimulationReport& report) {
   const Mission& mission = *report.mission;
   const Trajectory& trajectory = *report.trajectory;
@@ -170,8 +170,7 @@ json trajectory_json(const SimulationReport& report) {
   document["version"] = version_string();
   document["deck"] = report.deck_path;
   document["title"] = report_detail::card_text(mission.title, sizeof mission.title);
-  document["case_heading"] =
-      report_detail::card_text(mission.case_heading, sizeof mission.case_heading);
+  document["case_heading"] = report_detail::card_text(mission.case_heading, sizeof mission.case_heading);
   document["date"] = report_detail::card_text(mission.date, sizeof mission.date);
   document["status"] = status_name(report.status);
   document["status_message"] = status_message(report.status);

@@ -64,8 +64,7 @@ constexpr ListingColumn kLine2[] = {
     {"LIFT", "LB", 1, [](const TrajectoryPoint& p) { return p.lift_lbf; }},
     {"QALPHA", "LB-DEG/FT2", 1,
      [](const TrajectoryPoint& p) { return p.dynamic_pressure_lbf_ft2 * deg(p.alpha_rad); }},
-    {"RANGE", "N.MI.", 3,
-     [](const TrajectoryPoint& p) { return p.downrange_rad * kNauticalMilesPerRadian; }},
+    {"RANGE", "N.MI.", 3, [](const TrajectoryPoint& p) { return p.downrange_rad * kNauticalMilesPerRadian; }},
 };
 
 std::string right(const std::string& text, int width) {
@@ -110,9 +109,8 @@ namespace report_detail {
 
 Pager::Pager(std::ostream& out, const Mission& mission, const DeckListingOptions* listing) : out_(out) {
   const double lines = listing != nullptr ? listing->lines_per_page : DeckListingOptions{}.lines_per_page;
-  lines_per_page_ = (std::isfinite(lines) && lines >= 20.0 && lines <= 1000.0)
-                        ? static_cast<int>(lines)
-                        : kDefaultLinesPerPage;
+  lines_per_page_ = (std::isfinite(lines) && lines >= 20.0 && lines <= 1000.0) ? static_cast<int>(lines)
+                                                                               : kDefaultLinesPerPage;
   title_ = card_text(mission.title, sizeof mission.title);
   heading_ = card_text(mission.case_heading, sizeof mission.case_heading);
   date_ = card_text(mission.date, sizeof mission.date);
@@ -127,8 +125,8 @@ void Pager::new_page(const std::string& section, bool columns) {
   emit(title_);
   emit(heading_);
   std::string third = date_;
-  const std::string tag = "TOLIP " + std::string(version_string()) + "   " + section_ +
-                          "   PAGE " + std::to_string(page_);
+  const std::string tag =
+      "TOLIP " + std::string(version_string()) + "   " + section_ + "   PAGE " + std::to_string(page_);
   const int width = kCellWidth * 12;
   if (static_cast<int>(third.size() + tag.size()) + 1 < width) {
     third += std::string(static_cast<std::size_t>(width) - third.size() - tag.size(), ' ');
@@ -166,15 +164,13 @@ using report_detail::Pager;
 // Points past the last recorded stage event (the stage a failed run stopped in): the same rule as
 // is_output_point, every n-th point of the stage plus its first and last point, and always the
 // last point flown.
-bool listed_after_events(const Mission& mission, const Trajectory& trajectory, int index,
-                         int run_start) {
+bool listed_after_events(const Mission& mission, const Trajectory& trajectory, int index, int run_start) {
   const int count = stored_point_count(trajectory);
   const int code = trajectory.points[index].stage_code;
   if (index == run_start || index == count - 1) return true;
   if (trajectory.points[index + 1].stage_code != code) return true;
-  const int every = (code >= 1 && code <= kMaxStages)
-                        ? mission.output.final_trajectory[stage_index(code)]
-                        : 1;
+  const int every =
+      (code >= 1 && code <= kMaxStages) ? mission.output.final_trajectory[stage_index(code)] : 1;
   return every <= 1 || (index - run_start) % every == 0;
 }
 
@@ -191,9 +187,8 @@ void write_points(Pager& pager, const Mission& mission, const Trajectory& trajec
                               trajectory.points[i].stage_code != trajectory.points[i - 1].stage_code)) {
       run_start = i;
     }
-    const bool listed = i <= covered_until
-                            ? is_output_point(mission, trajectory, i, TrajectoryKind::kFinal)
-                            : listed_after_events(mission, trajectory, i, run_start);
+    const bool listed = i <= covered_until ? is_output_point(mission, trajectory, i, TrajectoryKind::kFinal)
+                                           : listed_after_events(mission, trajectory, i, run_start);
     if (!listed) continue;
     const TrajectoryPoint& point = trajectory.points[i];
     if (point.stage_code != previous_stage) {
@@ -226,10 +221,12 @@ void write_stage_events(Pager& pager, const Mission& mission, const Trajectory& 
   const int sequence_count = std::clamp(mission.vehicle.sequence.count, 0, kMaxStages);
   pager.reserve(4 + std::max(count, sequence_count));
   pager.emit(" STAGE EVENTS");
-  pager.emit("                             START TIME    END TIME  START WEIGHT   END WEIGHT"
-             "    JETTISONED  WEIGHT AFTER");
-  pager.emit("                                    SEC         SEC            LB           LB"
-             "            LB            LB");
+  pager.emit(
+      "                             START TIME    END TIME  START WEIGHT   END WEIGHT"
+      "    JETTISONED  WEIGHT AFTER");
+  pager.emit(
+      "                                    SEC         SEC            LB           LB"
+      "            LB            LB");
   for (int s = 0; s < count; ++s) {
     const StageEvent& event = trajectory.stages[s];
     std::string name = stage_name(event.code);
@@ -295,12 +292,10 @@ void write_terminal_conditions(Pager& pager, const SimulationReport& report) {
   pager.emit(labelled("PSI", format("%.6f", deg(last.state[kStatePsi])), "DEG"));
   pager.emit(labelled("GEOC LAT", format("%.6f", deg(last.state[kStateLambda])), "DEG"));
   pager.emit(labelled("GEOD LAT", format("%.6f", deg(last.geodetic_latitude_rad)), "DEG"));
-  pager.emit(labelled("TAU", format("%.6f", wrap_degrees_180(deg(last.earth_longitude_rad))),
-                      "DEG EAST"));
+  pager.emit(labelled("TAU", format("%.6f", wrap_degrees_180(deg(last.earth_longitude_rad))), "DEG EAST"));
   pager.emit(labelled("RADIUS", format("%.3f", last.state[kStateR]), "FT"));
   pager.emit(labelled("WEIGHT", format("%.3f", last.weight_lb), "LB"));
-  pager.emit(labelled("RANGE", format("%.3f", last.downrange_rad * kNauticalMilesPerRadian),
-                      "N.MI."));
+  pager.emit(labelled("RANGE", format("%.3f", last.downrange_rad * kNauticalMilesPerRadian), "N.MI."));
   const InertialVelocity& inertial = report.has_orbit ? report.orbit.inertial : last.inertial;
   pager.emit(labelled("VI", format("%.4f", inertial.velocity_ft_s), "FT/SEC"));
   pager.emit(labelled("GAMI", format("%.6f", deg(inertial.flight_path_angle_rad)), "DEG"));
@@ -330,10 +325,8 @@ void write_terminal_conditions(Pager& pager, const SimulationReport& report) {
   pager.emit(labelled("OMEGAE", format("%.6f", deg(orbit.node_longitude_rad)), "DEG"));
   if (orbit.has_asymptote) {
     pager.emit(labelled("VH", format("%.4f", orbit.hyperbolic_excess_velocity_ft_s), "FT/SEC"));
-    pager.emit(labelled("ASYMPTOTE RA", format("%.6f", deg(orbit.asymptote_right_ascension_rad)),
-                        "DEG"));
-    pager.emit(labelled("ASYMPTOTE DECL", format("%.6f", deg(orbit.asymptote_declination_rad)),
-                        "DEG"));
+    pager.emit(labelled("ASYMPTOTE RA", format("%.6f", deg(orbit.asymptote_right_ascension_rad)), "DEG"));
+    pager.emit(labelled("ASYMPTOTE DECL", format("%.6f", deg(orbit.asymptote_declination_rad)), "DEG"));
   }
   pager.emit("");
 
@@ -346,8 +339,8 @@ void write_terminal_conditions(Pager& pager, const SimulationReport& report) {
                                                               : "ESCAPE: 2E >= 0";
   pager.emit(labelled("PATH", path, ""));
   pager.emit(labelled("PERIGEE ALTITUDE", format("%.3f", summary.perigee_altitude_ft / kFeetPerNauticalMile),
-                      std::string("N.MI. AT GEOC LAT ") + format("%.3f", deg(summary.perigee_latitude_rad)) + " DEG" +
-                          (summary.perigee_in_atmosphere ? ", BELOW HAERO" : "")));
+                      std::string("N.MI. AT GEOC LAT ") + format("%.3f", deg(summary.perigee_latitude_rad)) +
+                          " DEG" + (summary.perigee_in_atmosphere ? ", BELOW HAERO" : "")));
   if (orbit.has_semi_major_axis) {
     pager.emit(labelled("APOGEE ALTITUDE", format("%.3f", summary.apogee_altitude_ft / kFeetPerNauticalMile),
                         "N.MI."));
@@ -365,8 +358,9 @@ void report_detail::write_trajectory_pages(Pager& pager, const SimulationReport&
   pager.new_page("TERMINAL CONDITIONS", false);
   write_stage_events(pager, mission, trajectory);
   write_terminal_conditions(pager, report);
-  write_constraint_table(pager, report.constraints,
-                         " CONSTRAINTS OF DATA BLOCK 8 ON THIS TRAJECTORY (DATA BLOCK 19 UNITS, DEADBANDS OF DATA BLOCK 29)");
+  write_constraint_table(
+      pager, report.constraints,
+      " CONSTRAINTS OF DATA BLOCK 8 ON THIS TRAJECTORY (DATA BLOCK 19 UNITS, DEADBANDS OF DATA BLOCK 29)");
 }
 
 void write_trajectory_listing(std::ostream& out, const SimulationReport& report) {

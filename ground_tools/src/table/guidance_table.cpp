@@ -75,7 +75,8 @@ std::string default_mission_id(const Mission& mission) {
 }
 
 bool build_guidance_table(const Mission& mission, const DeckExtras& extras, const PreparedCase& prepared,
-                          const LinearProgram* linearized, const TableBuildOptions& options, GuidanceTable* table, std::string* error) {
+                          const LinearProgram* linearized, const TableBuildOptions& options,
+                          GuidanceTable* table, std::string* error) {
   auto fail = [error](const std::string& message) {
     if (error != nullptr) *error = message;
     return false;
@@ -100,8 +101,9 @@ bool build_guidance_table(const Mission& mission, const DeckExtras& extras, cons
 
   // Data block 22: pitch-rate limits.
   if (!(mission.control.max_pitch_rate_rad_s > 0.0)) {
-    return fail("data block 22, field control_constraints.max_pitch_rate_deg_s (DA7(3)): the table image needs a "
-                "positive maximum pitch rate");
+    return fail(
+        "data block 22, field control_constraints.max_pitch_rate_deg_s (DA7(3)): the table image needs a "
+        "positive maximum pitch rate");
   }
   t.max_pitch_rate_rad_s = mission.control.max_pitch_rate_rad_s;
   t.min_pitch_rate_rad_s = mission.control.min_pitch_rate_rad_s;
@@ -119,16 +121,21 @@ bool build_guidance_table(const Mission& mission, const DeckExtras& extras, cons
   t.spin_option = spin;
   t.stage4_theta_rad = o.stage_is_spun(4) ? mission.misc.stage4_theta_rad : 0.0;
   t.stage4_chi_rad = o.stage_is_spun(4) ? mission.misc.stage4_chi_rad : 0.0;
-  t.stage5_theta_rad = !o.stage_is_spun(5) ? 0.0 : o.stage_is_spun(4) ? mission.misc.stage4_theta_rad : mission.misc.stage5_theta_rad;
-  t.stage5_chi_rad = !o.stage_is_spun(5) ? 0.0 : o.stage_is_spun(4) ? mission.misc.stage4_chi_rad : mission.misc.stage5_chi_rad;
+  t.stage5_theta_rad = !o.stage_is_spun(5)  ? 0.0
+                       : o.stage_is_spun(4) ? mission.misc.stage4_theta_rad
+                                            : mission.misc.stage5_theta_rad;
+  t.stage5_chi_rad = !o.stage_is_spun(5)  ? 0.0
+                     : o.stage_is_spun(4) ? mission.misc.stage4_chi_rad
+                                          : mission.misc.stage5_chi_rad;
 
   // Data block 33: autopilot gains of stages 1-3; the coasts 6-8 keep the gains of the stage
   // before them; spun stages and the coasts after them have none. Data block 33 has no gains for
   // stages 4 and 5 (the manual's vehicle spins them): a continuous stage 4 or 5, and the coast
   // after it, takes stage 3's, the last stage the deck gives (our choice, docs/table-format.md).
   if (!mission.body_dynamics.present) {
-    return fail("data block 33 ([body_dynamics], DA6D(1-6)) is required: it gives the autopilot gains K_theta "
-                "and K_q of stages 1-3 that the table image carries");
+    return fail(
+        "data block 33 ([body_dynamics], DA6D(1-6)) is required: it gives the autopilot gains K_theta "
+        "and K_q of stages 1-3 that the table image carries");
   }
   for (int k = 0; k < 3; ++k) {
     const StageGains gains{mission.body_dynamics.position_gain[k], mission.body_dynamics.rate_gain_s[k]};
@@ -179,10 +186,11 @@ bool build_guidance_table(const Mission& mission, const DeckExtras& extras, cons
   const double rate_limit = t.max_pitch_rate_rad_s * (1.0 + kTableRateLimitRelativeTolerance);
   for (std::size_t i = 0; i < segments.size(); ++i) {
     if (std::fabs(segments[i].rate_rad_s) > rate_limit) {
-      return fail(source + ": segment " + std::to_string(i) + " (stage " + std::to_string(segments[i].stage_code) +
-                  ", from stage time " + fixed(segments[i].start_stage_time_s, 3) + " s) pitches at " +
-                  degrees(segments[i].rate_rad_s, 6) + " deg/s, beyond the data block 22 maximum pitch rate " +
-                  degrees(t.max_pitch_rate_rad_s, 6) + " deg/s (kSegmentRateExceedsLimit)");
+      return fail(
+          source + ": segment " + std::to_string(i) + " (stage " + std::to_string(segments[i].stage_code) +
+          ", from stage time " + fixed(segments[i].start_stage_time_s, 3) + " s) pitches at " +
+          degrees(segments[i].rate_rad_s, 6) + " deg/s, beyond the data block 22 maximum pitch rate " +
+          degrees(t.max_pitch_rate_rad_s, 6) + " deg/s (kSegmentRateExceedsLimit)");
     }
   }
   t.segment_count = static_cast<int>(segments.size());
@@ -190,7 +198,8 @@ bool build_guidance_table(const Mission& mission, const DeckExtras& extras, cons
 
   const Status valid = validate_guidance_table(t);
   if (!ok(valid)) {
-    return fail(std::string("the table contents are invalid: ") + status_name(valid) + ": " + status_message(valid));
+    return fail(std::string("the table contents are invalid: ") + status_name(valid) + ": " +
+                status_message(valid));
   }
   *table = t;
   return true;
@@ -208,7 +217,8 @@ std::string table_image_c_header(const std::uint8_t* image, std::size_t size, co
       << size << " bytes.\n"
       << " * Source: " << origin << "\n"
       << " * Include this header in exactly ONE translation unit: it defines the array, placed in\n"
-      << " * the linker section " << kTableLinkerSection << " (the flight image maps it at a fixed address). */\n"
+      << " * the linker section " << kTableLinkerSection
+      << " (the flight image maps it at a fixed address). */\n"
       << "#ifndef " << guard << "\n#define " << guard << "\n\n#include <stdint.h>\n\n";
   std::snprintf(line, sizeof line, "#define %s_SIZE %zuu\n", guard.c_str(), size);
   out << line;
@@ -245,20 +255,20 @@ void write_table_listing(std::ostream& out, const GuidanceTable& t, std::uint32_
   out << "  generator            tolip " << t.generator_version << "\n";
   out << "  lift-off duration    " << fixed(t.liftoff_duration_s, 6) << " s (theta held at 90 deg)\n";
   out << "  pitch-rate limits    max " << degrees(t.max_pitch_rate_rad_s, 6) << " deg/s, min "
-      << degrees(t.min_pitch_rate_rad_s, 6) << " deg/s, min change " << degrees(t.min_pitch_rate_change_rad_s, 6)
-      << " deg/s\n";
+      << degrees(t.min_pitch_rate_rad_s, 6) << " deg/s, min change "
+      << degrees(t.min_pitch_rate_change_rad_s, 6) << " deg/s\n";
   out << "  max deflection       " << degrees(t.max_deflection_rad, 6) << " deg\n";
   const auto control = [&t](int code) { return stage_is_spun(t.spin_option, code) ? "spun" : "segments"; };
-  out << "  stages 4, 5 (IP(9))  " << t.spin_option << ": stage 4 and coast 9 " << control(4) << ", stage 5 and coast 10 "
-      << control(5) << "\n";
+  out << "  stages 4, 5 (IP(9))  " << t.spin_option << ": stage 4 and coast 9 " << control(4)
+      << ", stage 5 and coast 10 " << control(5) << "\n";
   out << "  spun stage 4         theta " << degrees(t.stage4_theta_rad, 9) << " deg, chi "
       << degrees(t.stage4_chi_rad, 9) << " deg\n";
   out << "  spun stage 5         theta " << degrees(t.stage5_theta_rad, 9) << " deg, chi "
       << degrees(t.stage5_chi_rad, 9) << " deg\n";
   out << "  autopilot gains (stage code: K_theta deg/deg, K_q s)\n";
   for (int code = 1; code <= kMaxStages; ++code) {
-    std::snprintf(line, sizeof line, "    stage %2d  K_theta %10.6f  K_q %10.6f\n", code, t.gains[code - 1].k_theta,
-                  t.gains[code - 1].k_q_s);
+    std::snprintf(line, sizeof line, "    stage %2d  K_theta %10.6f  K_q %10.6f\n", code,
+                  t.gains[code - 1].k_theta, t.gains[code - 1].k_q_s);
     out << line;
   }
   std::snprintf(line, sizeof line, "  segments             %d of %d\n", t.segment_count, kMaxLinearSegments);
@@ -266,8 +276,8 @@ void write_table_listing(std::ostream& out, const GuidanceTable& t, std::uint32_
   out << "     #  stage  start (stage s)   theta start (deg)   rate (deg/s)\n";
   for (int i = 0; i < t.segment_count; ++i) {
     const GuidanceSegment& s = t.segments[i];
-    std::snprintf(line, sizeof line, "    %2d  %5d  %15.6f  %18.9f  %13.9f\n", i, s.stage_code, s.start_stage_time_s,
-                  s.theta_start_rad * kRadToDeg, s.rate_rad_s * kRadToDeg);
+    std::snprintf(line, sizeof line, "    %2d  %5d  %15.6f  %18.9f  %13.9f\n", i, s.stage_code,
+                  s.start_stage_time_s, s.theta_start_rad * kRadToDeg, s.rate_rad_s * kRadToDeg);
     out << line;
   }
 }

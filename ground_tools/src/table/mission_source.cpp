@@ -6,8 +6,8 @@
 #include <iterator>
 #include <sstream>
 
-#include "tolip_ground/version.hpp"
 #include "../deck/field_description.hpp"
+#include "tolip_ground/version.hpp"
 
 namespace tolip::ground {
 namespace {
@@ -48,9 +48,15 @@ class Writer {
  public:
   explicit Writer(std::ostringstream& out) : out_(out) {}
 
-  void number(const std::string& name, double value) { out_ << "  m." << name << " = " << hex(value) << ";\n"; }
-  void integer(const std::string& name, long long value) { out_ << "  m." << name << " = " << value << ";\n"; }
-  void flag(const std::string& name, bool value) { out_ << "  m." << name << " = " << (value ? "true" : "false") << ";\n"; }
+  void number(const std::string& name, double value) {
+    out_ << "  m." << name << " = " << hex(value) << ";\n";
+  }
+  void integer(const std::string& name, long long value) {
+    out_ << "  m." << name << " = " << value << ";\n";
+  }
+  void flag(const std::string& name, bool value) {
+    out_ << "  m." << name << " = " << (value ? "true" : "false") << ";\n";
+  }
 
   template <std::size_t N>
   void numbers(const std::string& name, const double (&values)[N]) {
@@ -199,7 +205,8 @@ void write_epilogue(std::ostringstream& out) {
 
 }  // namespace
 
-std::string mission_cpp_source(const Mission& mission, const std::string& function_name, const std::string& origin) {
+std::string mission_cpp_source(const Mission& mission, const std::string& function_name,
+                               const std::string& origin) {
   std::ostringstream out;
   Writer w(out);
   write_prologue(out, function_name, origin);

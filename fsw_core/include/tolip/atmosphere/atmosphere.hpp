@@ -13,20 +13,20 @@
 namespace tolip {
 
 struct AtmosphereSample {
-  double geopotential_altitude_ft = 0.0;   // H*, ft'
-  double density_slug_ft3 = 0.0;           // rho
-  double pressure_lbf_ft2 = 0.0;           // p = rho R* T_M
-  double speed_of_sound_ft_s = 0.0;        // a = sqrt(1.4 R* T_M)
-  double temperature_R = 0.0;              // T_M, molecular-scale temperature
-  double ddensity_dh = 0.0;                // slug/ft^3 per ft
-  double dpressure_dh = 0.0;               // lbf/ft^2 per ft
-  double dspeed_of_sound_dh = 0.0;         // 1/s
+  double geopotential_altitude_ft = 0.0;  // H*, ft'
+  double density_slug_ft3 = 0.0;          // rho
+  double pressure_lbf_ft2 = 0.0;          // p = rho R* T_M
+  double speed_of_sound_ft_s = 0.0;       // a = sqrt(1.4 R* T_M)
+  double temperature_R = 0.0;             // T_M, molecular-scale temperature
+  double ddensity_dh = 0.0;               // slug/ft^3 per ft
+  double dpressure_dh = 0.0;              // lbf/ft^2 per ft
+  double dspeed_of_sound_dh = 0.0;        // 1/s
 };
 
 // Below the first base altitude the first layer is extended; above the last, the last layer.
 // Fails with kValueNotFinite for a non-finite altitude or radius.
-Status evaluate_atmosphere(const AtmosphereTable& table, const Constants& constants,
-                           double altitude_ft, double earth_radius_ft, AtmosphereSample* out);
+Status evaluate_atmosphere(const AtmosphereTable& table, const Constants& constants, double altitude_ft,
+                           double earth_radius_ft, AtmosphereSample* out);
 
 // Checks a (possibly user-overridden) table: increasing base altitudes, positive temperatures
 // and densities, finite values, no layer whose temperature reaches zero before the next base.

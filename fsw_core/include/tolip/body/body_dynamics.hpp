@@ -22,20 +22,20 @@ namespace tolip {
 
 // Where the unit moments are evaluated.
 struct MomentConditions {
-  int stage = 1;                          // 1-3: the DA6D word set and block 37 table used
-  double cg_stage_time_s = 0.0;           // stage time at which the c.g. history is read
+  int stage = 1;                 // 1-3: the DA6D word set and block 37 table used
+  double cg_stage_time_s = 0.0;  // stage time at which the c.g. history is read
   double mach = 0.0;
-  double dynamic_pressure_lbf_ft2 = 0.0;  // 0 on the pad or above HAERO
-  double vacuum_thrust_lbf = 0.0;         // T_V (modified Sec. 14 table); 0 in a coast
+  double dynamic_pressure_lbf_ft2 = 0.0;    // 0 on the pad or above HAERO
+  double vacuum_thrust_lbf = 0.0;           // T_V (modified Sec. 14 table); 0 in a coast
   double normal_force_slope_per_rad = 0.0;  // C_N_alpha at this Mach (block 32 table, referred to S)
 };
 
 // The unit moments about the c.g. of Sec. 11 (positive nose up), and the stations they used.
 struct UnitMoments {
-  double m_alpha_lbf_ft_per_rad = 0.0;    // M_alpha
-  double m_delta_lbf_ft_per_rad = 0.0;    // M_delta, all fins and vanes of one plane
-  double cg_station_ft = 0.0;             // X_CG
-  double control_lever_ft = 0.0;          // X_delta - X_CG
+  double m_alpha_lbf_ft_per_rad = 0.0;  // M_alpha
+  double m_delta_lbf_ft_per_rad = 0.0;  // M_delta, all fins and vanes of one plane
+  double cg_station_ft = 0.0;           // X_CG
+  double control_lever_ft = 0.0;        // X_delta - X_CG
 };
 
 // M_alpha = [C_M_alpha l_ref - C_N_alpha (X_FS - X_CG)] q S
@@ -74,12 +74,13 @@ struct SteadyAttitude {
   double chi_rad = 0.0;
   double pitch_deflection_rad = 0.0;  // delta of eq. 7-3 with theta-dot = theta_c-dot
   double yaw_deflection_rad = 0.0;
-  bool follows_command = false;       // the guard applied: theta = theta_c, chi = chi_c
+  bool follows_command = false;  // the guard applied: theta = theta_c, chi = chi_c
 };
 
 // Eqs. 7-6 and 7-7:
-//   theta = (K_theta M_delta theta_c - K_q M_delta theta_c-dot - M_alpha gamma_w) / (K_theta M_delta - M_alpha)
-//   chi   = (K_theta M_delta chi_c   - K_q M_delta chi_c-dot   - M_alpha A_zw)    / (K_theta M_delta - M_alpha)
+//   theta = (K_theta M_delta theta_c - K_q M_delta theta_c-dot - M_alpha gamma_w) / (K_theta M_delta -
+//   M_alpha) chi   = (K_theta M_delta chi_c   - K_q M_delta chi_c-dot   - M_alpha A_zw)    / (K_theta M_delta
+//   - M_alpha)
 // Guards: with no moment at all (q = 0 and no thrust) the body follows the command (kOk); when
 // K_theta M_delta - M_alpha is not positive against |K_theta M_delta| + |M_alpha| (no stable
 // steady state) it follows the command too and kBodyDynamicsNotTrimmable is returned.
@@ -110,10 +111,10 @@ BodyAngles body_angles_of_attack(double theta_rad, double chi_rad, const Matrix3
 // F_mx = F_CNLX + F_alpha beta, F_mz = F_CNLZ + F_alpha alpha, resolved to P along m_x, m_z and to L
 // through [C]. The control forces are 0 when |X_delta - X_CG| is below 1e-6 ft.
 struct BodyForces {
-  double control_x_lbf = 0.0;   // F_CNLX
-  double control_z_lbf = 0.0;   // F_CNLZ
-  double missile_x_lbf = 0.0;   // F_mx
-  double missile_z_lbf = 0.0;   // F_mz
+  double control_x_lbf = 0.0;              // F_CNLX
+  double control_z_lbf = 0.0;              // F_CNLZ
+  double missile_x_lbf = 0.0;              // F_mx
+  double missile_z_lbf = 0.0;              // F_mz
   Vector3 platform_lbf = Vector3::Zero();  // (F_jx, F_jy, F_jz)
   Vector3 local_lbf = Vector3::Zero();     // (F_ix, F_iy, F_iz) = [C] F_j
 };
@@ -124,7 +125,7 @@ BodyForces body_forces(const UnitMoments& moments, const BodyAngles& angles, dou
 struct BodyDynamicsInputs {
   MomentConditions conditions;
   AutopilotCommand command;
-  double normal_force_lbf_per_rad = 0.0;  // F_alpha = q S C_N_alpha
+  double normal_force_lbf_per_rad = 0.0;            // F_alpha = q S C_N_alpha
   Matrix3 platform_to_local = Matrix3::Identity();  // [C]
   // Dispersed trajectories only (Sec. 15, SIXD-D). Winds: alpha and beta come from the air-relative
   // velocity, whose direction is the i_y row of this matrix (null: from V, the nominal).

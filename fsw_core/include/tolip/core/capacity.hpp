@@ -6,17 +6,17 @@
 
 namespace tolip {
 
-inline constexpr int kMaxConstraints = 13;                 // data block 8 / 19 / 29
-inline constexpr int kMaxPoweredSteps = 168;               // stages 1-5 together (data block 16)
+inline constexpr int kMaxConstraints = 13;                      // data block 8 / 19 / 29
+inline constexpr int kMaxPoweredSteps = 168;                    // stages 1-5 together (data block 16)
 inline constexpr int kMaxPoweredStepsWithFollowingCoast = 177;  // stages 1-5 plus coast 6
-inline constexpr int kMaxIntegrationVariables = 240;       // Sec. 9 storage of the adjoint runs
-inline constexpr int kMaxLinearSegments = 15;              // data block 18 / 26
-inline constexpr int kMaxThrustPoints = 120;               // data block 30, all stages together
-inline constexpr int kMaxWeightPoints = 120;               // data block 38, all stages together
-inline constexpr int kMaxRadarStations = 20;               // data block 41
-inline constexpr int kMaxAdjustableParameters = 11;        // data block 6 / 27
-inline constexpr int kMaxClosedLoopPoints = 20;            // Sec. 5: closed loop for the first 20 points
-inline constexpr int kMaxStages = 10;                      // codes 1-5 powered, 6-10 coasts
+inline constexpr int kMaxIntegrationVariables = 240;            // Sec. 9 storage of the adjoint runs
+inline constexpr int kMaxLinearSegments = 15;                   // data block 18 / 26
+inline constexpr int kMaxThrustPoints = 120;                    // data block 30, all stages together
+inline constexpr int kMaxWeightPoints = 120;                    // data block 38, all stages together
+inline constexpr int kMaxRadarStations = 20;                    // data block 41
+inline constexpr int kMaxAdjustableParameters = 11;             // data block 6 / 27
+inline constexpr int kMaxClosedLoopPoints = 20;                 // Sec. 5: closed loop for the first 20 points
+inline constexpr int kMaxStages = 10;                           // codes 1-5 powered, 6-10 coasts
 inline constexpr int kMaxPoweredStages = 5;
 
 // Tables whose size the manual fixes by its card formats.
@@ -27,8 +27,8 @@ inline constexpr int kBodyDynamicsStages = 3;    // block 33: gains and control 
 inline constexpr int kCgTableStages = 4;         // block 37: c.g. histories of stages 1-4
 
 // Our choices where the manual sets no limit (docs/architecture.md, "Capacities").
-inline constexpr int kMinStage1Steps = 25;              // data block 16: "at least 25 steps in stage 1"
-inline constexpr int kMaxCoastSteps = 100;              // per coast; the manual asks for 10-15 s steps
+inline constexpr int kMinStage1Steps = 25;  // data block 16: "at least 25 steps in stage 1"
+inline constexpr int kMaxCoastSteps = 100;  // per coast; the manual asks for 10-15 s steps
 // Blocks 53-54 (32E12.8) hold 15 pairs; the reference wind profile has 18 points, so a little more.
 inline constexpr int kMaxWindTablePoints = 32;
 // Every integration point of one trajectory: the start of every step of every stage, the end point

@@ -20,29 +20,29 @@
 
 namespace tolip {
 
-inline constexpr int kNominalDispersionCode = 40;   // block 46 code 40: "nominal traj.", three sigma
-inline constexpr int kMaxDispersionCode = 38;       // codes 1-38 are dispersed trajectories
+inline constexpr int kNominalDispersionCode = 40;  // block 46 code 40: "nominal traj.", three sigma
+inline constexpr int kMaxDispersionCode = 38;      // codes 1-38 are dispersed trajectories
 inline constexpr int kMaxDispersionSources = kMaxDispersionCode + 1;  // 1-38 and 40
 // Staging points (the manual's AA(i, j), j = 1-4 on a four-stage vehicle): the ignition of every
 // powered stage after the first, then the final point. A five-stage vehicle gets a fifth column
 // (stage 5 ignition) instead of the manual's squeeze of five stages into four.
 inline constexpr int kMaxStagingPoints = kMaxPoweredStages;
-inline constexpr int kStagingVariables = 5;   // AA(i, j), i = 1-5
+inline constexpr int kStagingVariables = 5;         // AA(i, j), i = 1-5
 inline constexpr int kOrbitDispersionElements = 6;  // AA(i, 5), i = 1-6
 
 // What a code disperses (the "Type" column of the code table).
 enum class DispersionKind : int {
-  kVacuumThrust,      // 1-8   blocks 30 and 38 replacement tables of one stage (55: five stages)
-  kWeightIncrement,   // 9-16  block 47: jettison weight increment of one stage
-  kDrag,              // 17-18 block 48: fractional drag change in stages 1, 6, 2
-  kPitchingMoment,    // 19-20 block 35: the complete C_M_alpha table (body dynamics)
-  kThrustMisalignment,// 21-23 block 49: stage-1 misalignment angle and thrust station (body dynamics)
-  kControlDeadband,   // 24-29 block 50: attitude offset of stage 2 or 3
-  kTipoff,            // 30-32 block 51: effective attitude change of spun stage 4 or 5
-  kLaunchAzimuth,     // 33    block 52: launch azimuth change
-  kLaunchAttitude,    // 34-35 block 52: launch attitude (pitch reference) change
-  kWind,              // 36-38 blocks 53-54: wind speed and azimuth vs altitude
-  kNominal,           // 40    the nominal and the three-sigma summary
+  kVacuumThrust,        // 1-8   blocks 30 and 38 replacement tables of one stage (55: five stages)
+  kWeightIncrement,     // 9-16  block 47: jettison weight increment of one stage
+  kDrag,                // 17-18 block 48: fractional drag change in stages 1, 6, 2
+  kPitchingMoment,      // 19-20 block 35: the complete C_M_alpha table (body dynamics)
+  kThrustMisalignment,  // 21-23 block 49: stage-1 misalignment angle and thrust station (body dynamics)
+  kControlDeadband,     // 24-29 block 50: attitude offset of stage 2 or 3
+  kTipoff,              // 30-32 block 51: effective attitude change of spun stage 4 or 5
+  kLaunchAzimuth,       // 33    block 52: launch azimuth change
+  kLaunchAttitude,      // 34-35 block 52: launch attitude (pitch reference) change
+  kWind,                // 36-38 blocks 53-54: wind speed and azimuth vs altitude
+  kNominal,             // 40    the nominal and the three-sigma summary
 };
 
 // The plane of a code (data block 46 designates the groups): high/low codes are pitch-plane
@@ -64,22 +64,22 @@ bool dispersion_code_info(int code, DispersionCodeInfo* info);
 // One block 46 card with its data, in core units (angles rad, stations ft).
 struct DispersionSource {
   int code = 0;
-  int stage = 0;                    // codes 30-32: spun stage 4 or 5; otherwise the table's stage
-  char title[13] = {};              // block 46 title, 2A6
-  ThrustTable vacuum_thrust_lbf;    // codes 1-8: block 30 replacement table (stage time)
-  WeightTable consumable_weight_lb; // codes 1-8: block 38 replacement table
+  int stage = 0;                     // codes 30-32: spun stage 4 or 5; otherwise the table's stage
+  char title[13] = {};               // block 46 title, 2A6
+  ThrustTable vacuum_thrust_lbf;     // codes 1-8: block 30 replacement table (stage time)
+  WeightTable consumable_weight_lb;  // codes 1-8: block 38 replacement table
   // Codes 7-8 with block 55: the manual's five-stage squeeze (stages 4 and 5 stacked in the stage-4
   // tables). Not flown (kDispersionNotImplemented): here stage 4's tables are stage 4's alone.
   bool stacked_stage4_5_tables = false;
-  double weight_increment_lb = 0.0;       // codes 9-16, signed
-  double drag_variation_fraction = 0.0;   // codes 17-18, signed (0.xxxx)
-  AeroTable pitching_moment_per_rad;      // codes 19-20: Mach -> C_M_alpha about X_FS
-  double misalignment_rad = 0.0;          // codes 21-23, signed (+: nose up / yaw right moment)
-  double thrust_station_ft = 0.0;         // codes 21-23
-  double deadband_rad = 0.0;              // codes 24-29, signed
-  double tipoff_rad = 0.0;                // codes 30-32, signed
-  double launch_change_rad = 0.0;         // codes 33-35, signed
-  WindProfile wind;                       // codes 36-38
+  double weight_increment_lb = 0.0;      // codes 9-16, signed
+  double drag_variation_fraction = 0.0;  // codes 17-18, signed (0.xxxx)
+  AeroTable pitching_moment_per_rad;     // codes 19-20: Mach -> C_M_alpha about X_FS
+  double misalignment_rad = 0.0;         // codes 21-23, signed (+: nose up / yaw right moment)
+  double thrust_station_ft = 0.0;        // codes 21-23
+  double deadband_rad = 0.0;             // codes 24-29, signed
+  double tipoff_rad = 0.0;               // codes 30-32, signed
+  double launch_change_rad = 0.0;        // codes 33-35, signed
+  WindProfile wind;                      // codes 36-38
 };
 
 // Data blocks 46-55 of a case, in increasing code order.
@@ -124,7 +124,7 @@ struct DispersedTrajectory {
 // SUM(i, j, k): one three-sigma group.
 struct ThreeSigmaGroup {
   int member_count = 0;
-  int members[kMaxDispersionSources] = {};  // codes, increasing
+  int members[kMaxDispersionSources] = {};                // codes, increasing
   double sum[kMaxStagingPoints][kStagingVariables] = {};  // sum of the dispersions
   double rss[kMaxStagingPoints][kStagingVariables] = {};  // root sum of their squares
 };
@@ -139,11 +139,11 @@ struct ThreeSigmaSummary {
 };
 
 struct DispersionResult {
-  Status status = Status::kNotPrepared;  // kOk when the nominal flew; per-code statuses below
-  int staging_count = 0;                 // columns: ignitions of stages 2.., then the final point
+  Status status = Status::kNotPrepared;            // kOk when the nominal flew; per-code statuses below
+  int staging_count = 0;                           // columns: ignitions of stages 2.., then the final point
   int staging_stage_code[kMaxStagingPoints] = {};  // powered stage code at ignition; 0: final point
-  DispersedTrajectory nominal;           // GIANT plane 40
-  int count = 0;                         // dispersed trajectories, in the data's code order
+  DispersedTrajectory nominal;                     // GIANT plane 40
+  int count = 0;                                   // dispersed trajectories, in the data's code order
   DispersedTrajectory trajectories[kMaxDispersionSources];
   ThreeSigmaSummary three_sigma;
 };
@@ -153,7 +153,7 @@ struct DispersionWorkspace {
   PreparedCase nominal_prepared;
   Mission mission;
   PreparedCase prepared;
-  ControlProgram program;      // the nominal program on a changed timeline (codes 1-8)
+  ControlProgram program;       // the nominal program on a changed timeline (codes 1-8)
   bool program_mapped = false;  // `program` is to be flown (else the nominal's)
   FlightPerturbation perturbation;
   Trajectory nominal;

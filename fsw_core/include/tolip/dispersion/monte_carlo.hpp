@@ -33,8 +33,9 @@ Status prepare_monte_carlo(const DispersionNominal& nominal, DispersionWorkspace
 
 // Builds and flies sample `sample`, recording it into *out (values and dispersions about
 // workspace->nominal, which prepare_monte_carlo() flew; `nominal_values` its record).
-Status fly_monte_carlo_sample(const DispersionNominal& nominal, const DispersionData& data, std::uint64_t seed,
-                              std::uint64_t sample, const DispersedTrajectory& nominal_values,
-                              DispersionWorkspace* workspace, DispersedTrajectory* out);
+Status fly_monte_carlo_sample(const DispersionNominal& nominal, const DispersionData& data,
+                              std::uint64_t seed, std::uint64_t sample,
+                              const DispersedTrajectory& nominal_values, DispersionWorkspace* workspace,
+                              DispersedTrajectory* out);
 
 }  // namespace tolip

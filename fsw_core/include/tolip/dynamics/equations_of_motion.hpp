@@ -26,7 +26,7 @@ struct AppliedForces {
 StateVector state_derivative(const Constants& constants, const StateVector& state,
                              const AppliedForces& forces);
 // The same with the state's sines and cosines already computed.
-StateVector state_derivative(const Constants& constants, const StateVector& state,
-                             const StateTrig& trig, const AppliedForces& forces);
+StateVector state_derivative(const Constants& constants, const StateVector& state, const StateTrig& trig,
+                             const AppliedForces& forces);
 
 }  // namespace tolip

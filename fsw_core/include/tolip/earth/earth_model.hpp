@@ -79,7 +79,6 @@ struct Gravity {
   double north_ft_s2 = 0.0;
 };
 Gravity j2_gravity(const Constants& constants, double radius_ft, double geocentric_latitude_rad);
-Gravity j2_gravity(const Constants& constants, double radius_ft, double sin_latitude,
-                   double cos_latitude);
+Gravity j2_gravity(const Constants& constants, double radius_ft, double sin_latitude, double cos_latitude);
 
 }  // namespace tolip

@@ -31,8 +31,7 @@ Matrix3 inertial_to_local(const StateVector& state);
 Matrix3 inertial_to_local(const StateTrig& trig);
 
 // [B]: geocentric launch frame -> inertial, at launch azimuth psi0, latitude lambda0, longitude tau0.
-Matrix3 geocentric_to_inertial(double azimuth_rad, double geocentric_latitude_rad,
-                               double longitude_rad);
+Matrix3 geocentric_to_inertial(double azimuth_rad, double geocentric_latitude_rad, double longitude_rad);
 
 // [B']: platform -> geocentric launch frame, turning the geodetic vertical into the geocentric one.
 Matrix3 platform_to_geocentric(double azimuth_rad, double delta_lambda_rad);

@@ -13,8 +13,7 @@ inline constexpr int kRkadStartSteps = 4;
 
 // One RK4 step from (t, y) with derivative f0 = f(t, y) already evaluated.
 template <typename Vector, typename Derivative>
-Vector runge_kutta4_step(const Derivative& f, double t, const Vector& y, const Vector& f0,
-                         double dt) {
+Vector runge_kutta4_step(const Derivative& f, double t, const Vector& y, const Vector& f0, double dt) {
   const double half = 0.5 * dt;
   const Vector k2 = f(t + half, Vector(y + half * f0));
   const Vector k3 = f(t + half, Vector(y + half * k2));

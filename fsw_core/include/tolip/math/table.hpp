@@ -71,7 +71,10 @@ class Table {
   double first_x() const { return x_[0]; }
   double last_x() const { return x_[count_ - 1]; }
   double last_y() const { return y_[count_ - 1]; }
-  void set_y(int i, double y) { y_[i] = y; finalized_ = false; }
+  void set_y(int i, double y) {
+    y_[i] = y;
+    finalized_ = false;
+  }
 
  private:
   // Index i of the interval [x_i, x_{i+1}) holding x; the last index when x >= last abscissa;

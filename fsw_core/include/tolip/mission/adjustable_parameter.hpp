@@ -6,13 +6,13 @@
 namespace tolip {
 
 enum class AdjustableParameter : int {
-  kStage4Theta = 1,        // spun stage-4 pitch attitude
-  kStage4Chi = 2,          // spun stage-4 yaw attitude
-  kCoastAfterStage3 = 3,   // length of coast 8
-  kCoastAfterStage2 = 4,   // length of coast 7
-  kCoastAfterStage1 = 5,   // length of coast 6
+  kStage4Theta = 1,       // spun stage-4 pitch attitude
+  kStage4Chi = 2,         // spun stage-4 yaw attitude
+  kCoastAfterStage3 = 3,  // length of coast 8
+  kCoastAfterStage2 = 4,  // length of coast 7
+  kCoastAfterStage1 = 5,  // length of coast 6
   kLaunchAzimuth = 6,
-  kLaunchTime = 7,         // time of day (Space Age Date)
+  kLaunchTime = 7,  // time of day (Space Age Date)
   kStage5Theta = 8,
   kStage5Chi = 9,
   kCoastAfterStage4 = 10,  // length of coast 9

@@ -13,11 +13,11 @@
 
 namespace tolip {
 
-using ThrustTable = Table<kMaxThrustPoints>;      // stage time s -> vacuum thrust lbf (block 30)
-using WeightTable = Table<kMaxWeightPoints>;      // stage time s -> consumable weight lb (block 38)
-using AeroTable = Table<kMaxAeroTablePoints>;     // Mach -> coefficient (blocks 31, 32)
-using PitchTable = Table<kMaxPitchTablePoints>;   // s from launch -> theta rad (block 40)
-using CgTable = Table<kMaxCgTablePoints>;         // stage time s -> c.g. body station ft (block 37)
+using ThrustTable = Table<kMaxThrustPoints>;     // stage time s -> vacuum thrust lbf (block 30)
+using WeightTable = Table<kMaxWeightPoints>;     // stage time s -> consumable weight lb (block 38)
+using AeroTable = Table<kMaxAeroTablePoints>;    // Mach -> coefficient (blocks 31, 32)
+using PitchTable = Table<kMaxPitchTablePoints>;  // s from launch -> theta rad (block 40)
+using CgTable = Table<kMaxCgTablePoints>;        // stage time s -> c.g. body station ft (block 37)
 
 // Data block 5 order: whether stage `code` may directly follow stage `previous` (0: the start).
 // The sequence starts with 1; after powered stage n comes the next powered stage n+1 or its coast
@@ -40,28 +40,28 @@ struct StageSequence {
 
 struct StageData {
   bool in_sequence = false;
-  double duration_s = 0.0;           // block 16 DA1(2k-1); for powered stages the last table time
-  int integration_steps = 0;         // block 16 DA1(2k); stage 1 counts steps after lift-off
-  double jettison_weight_lb = 0.0;   // block 39 SGk(1), dropped at the end of the stage
-  double reference_area_ft2 = 0.0;   // block 39 SGk(2)
-  double nozzle_exit_area_ft2 = 0.0; // block 39 SGk(3); net thrust T = Tv - p Ae
-  ThrustTable vacuum_thrust_lbf;     // block 30, powered stages
-  WeightTable consumable_weight_lb;  // block 38, powered stages: consumable weight remaining
-  AeroTable drag_coefficient;        // block 31: stages 1, 6, 2 (empty: no drag)
-  bool uses_lift_table = false;      // block 32 is used in stages 1 and 6
+  double duration_s = 0.0;            // block 16 DA1(2k-1); for powered stages the last table time
+  int integration_steps = 0;          // block 16 DA1(2k); stage 1 counts steps after lift-off
+  double jettison_weight_lb = 0.0;    // block 39 SGk(1), dropped at the end of the stage
+  double reference_area_ft2 = 0.0;    // block 39 SGk(2)
+  double nozzle_exit_area_ft2 = 0.0;  // block 39 SGk(3); net thrust T = Tv - p Ae
+  ThrustTable vacuum_thrust_lbf;      // block 30, powered stages
+  WeightTable consumable_weight_lb;   // block 38, powered stages: consumable weight remaining
+  AeroTable drag_coefficient;         // block 31: stages 1, 6, 2 (empty: no drag)
+  bool uses_lift_table = false;       // block 32 is used in stages 1 and 6
 };
 
 struct Vehicle {
   StageSequence sequence;
-  StageData stages[kMaxStages];      // indexed by stage_index(code)
+  StageData stages[kMaxStages];        // indexed by stage_index(code)
   AeroTable lift_curve_slope_per_rad;  // block 32, C_L per radian of alpha
-  double payload_lb = 0.0;           // part of the jettison weight of the last powered stage (Sec. 14)
+  double payload_lb = 0.0;             // part of the jettison weight of the last powered stage (Sec. 14)
 };
 
 // Data block 4. Named options of IP(1..24) that the core reads; the raw words are kept for echo.
 struct Options {
-  int ip[25] = {};  // ip[n] = IP(n), ip[0] unused
-  int payoff() const { return ip[1]; }                      // 0 payload, 1 velocity, 2 altitude
+  int ip[25] = {};                      // ip[n] = IP(n), ip[0] unused
+  int payoff() const { return ip[1]; }  // 0 payload, 1 velocity, 2 altitude
   bool heating_constraint() const { return ip[2] == 1; }
   bool exchange_ratios() const { return ip[3] == 1; }
   int body_dynamics_6d() const { return ip[6]; }
@@ -71,7 +71,7 @@ struct Options {
   bool zero_alpha_window() const { return ip[11] == 1; }
   bool alpha_zero_at_stage2_ignition() const { return ip[12] == 1; }
   int qbar_constraint_type() const { return ip[13]; }
-  bool memory_dump() const { return ip[15] != 0; }             // the 1966 core dump: not acted on
+  bool memory_dump() const { return ip[15] != 0; }  // the 1966 core dump: not acted on
   bool print_input() const { return ip[17] == 1; }
   bool dispersions() const { return ip[21] == 1; }
   bool hardover() const { return ip[22] == 1; }
@@ -79,7 +79,9 @@ struct Options {
   bool radar() const { return ip[24] == 1; }
   // IP(9) through the one rule above (tolip::stage_is_spun, tolip::stage_is_steered).
   bool stage_is_spun(int stage_code) const { return tolip::stage_is_spun(spin_stages_4_5(), stage_code); }
-  bool stage_is_steered(int stage_code) const { return tolip::stage_is_steered(spin_stages_4_5(), stage_code); }
+  bool stage_is_steered(int stage_code) const {
+    return tolip::stage_is_steered(spin_stages_4_5(), stage_code);
+  }
   // The linearization flies the optimized case without the in-flight attitudes (IP(11), IP(12)).
   void set_zero_alpha_window(bool on) { ip[11] = on ? 1 : 0; }
   void set_alpha_zero_at_stage2_ignition(bool on) { ip[12] = on ? 1 : 0; }
@@ -87,14 +89,14 @@ struct Options {
 
 // Data blocks 20 and 21 (angles in rad).
 struct LaunchConditions {
-  double liftoff_duration_s = 0.0;            // DA5(1): vertical lift-off
-  double launch_space_age_date_days = 0.0;    // DA5(2): Julian date - 2,436,934.5
-  double altitude_ft = 0.0;                   // DA6(1)
-  double longitude_rad = 0.0;                 // DA6(2), east positive
-  double geocentric_latitude_rad = 0.0;       // DA6(3)
-  double velocity_ft_s = 0.0;                 // DA6(4), must be 0
-  double azimuth_rad = 0.0;                   // DA6(5), east of north
-  double flight_path_angle_rad = 0.0;         // DA6(6), must be 90 deg
+  double liftoff_duration_s = 0.0;          // DA5(1): vertical lift-off
+  double launch_space_age_date_days = 0.0;  // DA5(2): Julian date - 2,436,934.5
+  double altitude_ft = 0.0;                 // DA6(1)
+  double longitude_rad = 0.0;               // DA6(2), east positive
+  double geocentric_latitude_rad = 0.0;     // DA6(3)
+  double velocity_ft_s = 0.0;               // DA6(4), must be 0
+  double azimuth_rad = 0.0;                 // DA6(5), east of north
+  double flight_path_angle_rad = 0.0;       // DA6(6), must be 90 deg
   // Not in the manual (docs/theory/liftoff.md): dpsi/dt is held at zero on integration steps
   // that start before this time, where gamma is near 90 deg and the psi equation is singular.
   double heading_hold_until_s = 0.0;
@@ -102,31 +104,31 @@ struct LaunchConditions {
 
 // Data block 22 (times from launch; rates in rad/s).
 struct ControlConstraints {
-  double zero_alpha_start_s = 0.0;            // DA7(1)
-  double zero_alpha_end_s = 0.0;              // DA7(2)
-  double max_pitch_rate_rad_s = 0.0;          // DA7(3)
-  double min_pitch_rate_rad_s = 0.0;          // DA7(4)
-  double min_pitch_rate_change_rad_s = 0.0;   // DA7(5)
+  double zero_alpha_start_s = 0.0;           // DA7(1)
+  double zero_alpha_end_s = 0.0;             // DA7(2)
+  double max_pitch_rate_rad_s = 0.0;         // DA7(3)
+  double min_pitch_rate_rad_s = 0.0;         // DA7(4)
+  double min_pitch_rate_change_rad_s = 0.0;  // DA7(5)
 };
 
 // Data block 17 (angles in rad).
 struct MiscellaneousData {
-  double stage4_theta_rad = 0.0;              // DA2(5)
-  double stage4_chi_rad = 0.0;                // DA2(6)
-  double nose_radius_ft = 0.0;                // DA2(7), heating rate (Sec. 13)
-  double gyro_uncage_s_before_launch = 0.0;   // DA2(8)
-  double stage5_theta_rad = 0.0;              // DA2(9)
-  double stage5_chi_rad = 0.0;                // DA2(10)
-  double payload_weighting_factor = 1.0;      // DA2(15)
-  double coast_change_limit_s = 0.0;          // DA2(16)
-  double minimum_coast_s = 0.0;               // DA2(17)
+  double stage4_theta_rad = 0.0;             // DA2(5)
+  double stage4_chi_rad = 0.0;               // DA2(6)
+  double nose_radius_ft = 0.0;               // DA2(7), heating rate (Sec. 13)
+  double gyro_uncage_s_before_launch = 0.0;  // DA2(8)
+  double stage5_theta_rad = 0.0;             // DA2(9)
+  double stage5_chi_rad = 0.0;               // DA2(10)
+  double payload_weighting_factor = 1.0;     // DA2(15)
+  double coast_change_limit_s = 0.0;         // DA2(16)
+  double minimum_coast_s = 0.0;              // DA2(17)
 };
 
 // Data blocks 8, 19, 29: the payoff first, then terminal, then stage-point constraints.
 struct ConstraintList {
-  int count = 0;                              // IB3(1), includes the payoff
-  int codes[kMaxConstraints + 1] = {};        // IB3(2..14); heating (14) may follow
-  double desired[kMaxConstraints + 1] = {};   // DA4, pure units (ft, rad, ft/s, n.mi., Btu/ft^2)
+  int count = 0;                                        // IB3(1), includes the payoff
+  int codes[kMaxConstraints + 1] = {};                  // IB3(2..14); heating (14) may follow
+  double desired[kMaxConstraints + 1] = {};             // DA4, pure units (ft, rad, ft/s, n.mi., Btu/ft^2)
   double deadband_optimization[kMaxConstraints] = {};   // DA14(1..12)
   double deadband_linearization[kMaxConstraints] = {};  // DA14(14..25)
 };
@@ -143,7 +145,7 @@ struct LinearizationData {
   int segment_count = 0;
   // 100 n + t: the segments' boundaries, one more than the segments (data block 18 words 2-17).
   double coded_start_times[kMaxLinearSegments + 1] = {};
-  double segment_weights[kMaxLinearSegments] = {};     // eta, default 1
+  double segment_weights[kMaxLinearSegments] = {};  // eta, default 1
 };
 
 // Data block 28 (DA13).
@@ -166,15 +168,15 @@ struct OutputFrequency {
 // "per radian" everywhere (the deck's per-degree jet-vane effectiveness is converted at the edge).
 // docs/theory/body-dynamics.md explains how body_dynamics.cpp uses each datum.
 struct BodyDynamicsBlocks {
-  bool present = false;                                   // the deck gave data blocks 33-37
-  double position_gain[kBodyDynamicsStages] = {};         // DA6D(1-3) K_theta, rad/rad, stages 1-3
-  double rate_gain_s[kBodyDynamicsStages] = {};           // DA6D(4-6) K_theta-dot (K_q), s
-  double control_station_ft[kBodyDynamicsStages] = {};    // DA6D(7-9) X_delta: stage-1 jet vanes and fins,
-                                                          // stage 2-3 control jets
-  double jet_vane_effectiveness_per_rad = 0.0;            // DA6D(10) K_TV-delta, lbf per lbf vacuum thrust
-                                                          // per rad, per vane
-  double moment_reference_station_ft = 0.0;               // DA6D(11) X_FS of the moment coefficients
-  double reference_length_ft = 0.0;                       // DA6D(16) l_ref of the moment coefficients
+  bool present = false;                                 // the deck gave data blocks 33-37
+  double position_gain[kBodyDynamicsStages] = {};       // DA6D(1-3) K_theta, rad/rad, stages 1-3
+  double rate_gain_s[kBodyDynamicsStages] = {};         // DA6D(4-6) K_theta-dot (K_q), s
+  double control_station_ft[kBodyDynamicsStages] = {};  // DA6D(7-9) X_delta: stage-1 jet vanes and fins,
+                                                        // stage 2-3 control jets
+  double jet_vane_effectiveness_per_rad = 0.0;          // DA6D(10) K_TV-delta, lbf per lbf vacuum thrust
+                                                        // per rad, per vane
+  double moment_reference_station_ft = 0.0;             // DA6D(11) X_FS of the moment coefficients
+  double reference_length_ft = 0.0;                     // DA6D(16) l_ref of the moment coefficients
   // S of Sec. 11: the area blocks 34-36 are referred to. DA6D has no word for it; the deck mapping
   // takes stage 1's block 39 area SG1(2).
   double reference_area_ft2 = 0.0;
@@ -182,16 +184,16 @@ struct BodyDynamicsBlocks {
   // blocks 34, 36 and DA6D(10) in M_delta (the factor 2 of Sec. 16's FORCEN; the Scout has four fins
   // and four vanes in a cross). Not a manual word.
   double control_surfaces_per_plane = 2.0;
-  AeroTable fin_normal_force_per_rad;      // block 34: Mach -> C_N_delta, per rad per fin
-  AeroTable pitching_moment_per_rad;       // block 35: Mach -> C_M_alpha about X_FS, per rad
-  AeroTable fin_pitching_moment_per_rad;   // block 36: Mach -> C_M_delta about X_FS, per rad per fin
-  CgTable cg_station_ft[kCgTableStages];   // block 37: XCG1-XCG4, stage time s -> c.g. station ft
+  AeroTable fin_normal_force_per_rad;     // block 34: Mach -> C_N_delta, per rad per fin
+  AeroTable pitching_moment_per_rad;      // block 35: Mach -> C_M_alpha about X_FS, per rad
+  AeroTable fin_pitching_moment_per_rad;  // block 36: Mach -> C_M_delta about X_FS, per rad per fin
+  CgTable cg_station_ft[kCgTableStages];  // block 37: XCG1-XCG4, stage time s -> c.g. station ft
 };
 
 struct Mission {
-  char title[73] = {};        // block 1 (12A6)
-  char case_heading[73] = {}; // block 2
-  char date[13] = {};         // block 3
+  char title[73] = {};         // block 1 (12A6)
+  char case_heading[73] = {};  // block 2
+  char date[13] = {};          // block 3
   Options options;
   Constants constants;
   AtmosphereTable atmosphere;
@@ -204,7 +206,7 @@ struct Mission {
   LinearizationData linearization;
   ConvergenceData convergence;
   OutputFrequency output;
-  PitchTable pitch_program_rad;  // block 40: theta (rad) vs time from launch (s)
+  PitchTable pitch_program_rad;      // block 40: theta (rad) vs time from launch (s)
   BodyDynamicsBlocks body_dynamics;  // blocks 33-37 (checked by validate_mission when IP(6) >= 1)
 };
 
@@ -222,15 +224,15 @@ struct ValueRange {
 // value (core units, `unit`) and the range it must lie in, or a phrase saying what was expected
 // when a range cannot say it. Ground tools turn it into a message naming the deck key or card word.
 struct MissionFault {
-  int data_block = 0;   // manual data block number
-  int stage_code = 0;   // 0 when not stage-coded
+  int data_block = 0;  // manual data block number
+  int stage_code = 0;  // 0 when not stage-coded
   const char* field = "";
-  int index = -1;              // element of `field` (table point, IP(n), constraint entry, ...); -1: none
-  bool has_value = false;      // `value` is the value found
-  double value = 0.0;          // core units
-  ValueRange range;            // where the value must lie (core units), when has_low or has_high
-  const char* unit = "";       // core unit of value and range: "s", "ft", "lb", "lbf", "rad", "rad/s", ...
-  const char* expected = "";   // what was expected, when the range does not say it ("" otherwise)
+  int index = -1;             // element of `field` (table point, IP(n), constraint entry, ...); -1: none
+  bool has_value = false;     // `value` is the value found
+  double value = 0.0;         // core units
+  ValueRange range;           // where the value must lie (core units), when has_low or has_high
+  const char* unit = "";      // core unit of value and range: "s", "ft", "lb", "lbf", "rad", "rad/s", ...
+  const char* expected = "";  // what was expected, when the range does not say it ("" otherwise)
 };
 
 // Checks the case at the boundary: sequence, capacities, tables, weights, durations, steps,

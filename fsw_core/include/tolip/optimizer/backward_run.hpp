@@ -29,7 +29,7 @@ using ConstraintVector = Eigen::Matrix<double, kMaxConstraints, 1>;
 
 // Where a constraint applies and its partial derivatives there (the ICS initial conditions).
 struct ConstraintTerminal {
-  int point = 0;                               // trajectory point index
+  int point = 0;  // trajectory point index
   AdjointVector partials = AdjointVector::Zero();
   // The total-heating constraint (code 14, Sec. 13) is the integral of the stagnation heating rate
   // over the stored points (trapezoidal): its adjoint is driven at every point by the heating

@@ -43,10 +43,10 @@ enum class ConstraintQuantity : int {
 };
 
 struct ConstraintCode {
-  int code = 0;                  // as written in data block 8
-  bool is_stage_point = false;   // 10 X + 5 .. 10 X + 9
-  int stage_code = 0;            // X = 1..9 (the stage at whose END it applies); 0 if terminal
-  int quantity = 0;              // the manual's number: the code if terminal, its last digit if stage point
+  int code = 0;                 // as written in data block 8
+  bool is_stage_point = false;  // 10 X + 5 .. 10 X + 9
+  int stage_code = 0;           // X = 1..9 (the stage at whose END it applies); 0 if terminal
+  int quantity = 0;             // the manual's number: the code if terminal, its last digit if stage point
   ConstraintQuantity kind = ConstraintQuantity::kPayload;
 };
 
@@ -64,9 +64,9 @@ struct ConstraintPoint {
   // Vehicle weight at the point, W = g0 m. The payoff "payload" (code 0) is reported as this
   // final weight: the payload differs from it by inert weights that no control changes.
   double weight_lb = 0.0;
-  double density_slug_ft3 = 0.0;            // rho at the point
-  double ddensity_dh = 0.0;                 // d rho / dh, slug/ft^3 per ft (for q-bar partials)
-  double total_heating_btu_ft2 = 0.0;       // integral of Qdot dt up to the point (code 14)
+  double density_slug_ft3 = 0.0;       // rho at the point
+  double ddensity_dh = 0.0;            // d rho / dh, slug/ft^3 per ft (for q-bar partials)
+  double total_heating_btu_ft2 = 0.0;  // integral of Qdot dt up to the point (code 14)
 };
 
 // Index of the mass in the 7-component adjoint vector [V, gamma, r, psi, lambda, tau, m].
@@ -101,8 +101,7 @@ Status constraint_value(const Constants& constants, const LaunchConditions& laun
 // dependent constraint with vertical inertial velocity, downrange at 0 or 180 deg of arc,
 // declination at +-90 deg.
 Status constraint_partials(const Constants& constants, const LaunchConditions& launch,
-                           const ConstraintCode& code, const ConstraintPoint& point,
-                           AdjointVector* partials);
+                           const ConstraintCode& code, const ConstraintPoint& point, AdjointVector* partials);
 
 // Constraint error value - desired, in the units of data block 19. For the angles that are
 // reported in [0, 2 pi) (node longitude 12, argument of perigee 13, asymptote right ascension
@@ -139,8 +138,7 @@ double oblate_radius_latitude_derivative_ft_per_rad(const Constants& constants,
 // Fails with kValueNotFinite or kValueOutOfRange (nose radius or sea-level density not
 // positive, negative density or velocity). Zero density (above the atmosphere) gives zero.
 Status stagnation_heating_rate_partials(const Constants& constants, double nose_radius_ft,
-                                        double sea_level_density_slug_ft3,
-                                        const ConstraintPoint& point,
+                                        double sea_level_density_slug_ft3, const ConstraintPoint& point,
                                         Eigen::Matrix<double, 6, 1>* partials);
 
 // Stopping-condition correction (manual eqs. 5-12..5-18): the initial conditions of the adjoint

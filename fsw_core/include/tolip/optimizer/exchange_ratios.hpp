@@ -30,11 +30,11 @@ namespace tolip {
 
 // The five stage characteristics of Sec. 8, in the manual's order of output.
 enum class ExchangeParameter : int {
-  kBurnRate,         // %: thrust x (1 + u/100), every thrust and weight table time / (1 + u/100)
-  kPropellantWeight, // lb: consumable table x (W0 + u) / W0, thrust x the same (Isp and burn time kept)
-  kSpecificImpulse,  // %: thrust x (1 + u/100), weight table unchanged (mass flow and burn time kept)
-  kDrag,             // ft^2 of drag area: u / S added to every C_D entry of the stage's table
-  kJettisonWeight,   // lb: the stage's jettison weight + u
+  kBurnRate,          // %: thrust x (1 + u/100), every thrust and weight table time / (1 + u/100)
+  kPropellantWeight,  // lb: consumable table x (W0 + u) / W0, thrust x the same (Isp and burn time kept)
+  kSpecificImpulse,   // %: thrust x (1 + u/100), weight table unchanged (mass flow and burn time kept)
+  kDrag,              // ft^2 of drag area: u / S added to every C_D entry of the stage's table
+  kJettisonWeight,    // lb: the stage's jettison weight + u
 };
 
 // Exchange ratios by powered stage, in flight order. Units: payoff unit (lb for payload, ft/s for
@@ -77,9 +77,9 @@ Status perturb_stage_parameter(const Mission& base, int stage_code, ExchangePara
 
 // The exchange ratios of the optimized case in `final_ws` (after optimize_trajectory: mission,
 // prepared, program, nominal) with its `result` (constraint list, achieved values, eq. 9-22
-// partials; every listed constraint counts, as in eq. 9-22). Fails with kNotPrepared when the optimizer did not reach its summary
-// (result.constraint_count == 0) or the final trajectory failed, kControlProgramSizeMismatch when
-// the program does not match it, or the status of a perturbed run.
+// partials; every listed constraint counts, as in eq. 9-22). Fails with kNotPrepared when the optimizer did
+// not reach its summary (result.constraint_count == 0) or the final trajectory failed,
+// kControlProgramSizeMismatch when the program does not match it, or the status of a perturbed run.
 Status compute_exchange_ratios(const OptimizerWorkspace& final_ws, const OptimizerResult& result,
                                ExchangeRatioScratch* scratch, ExchangeRatios* out);
 

@@ -27,10 +27,10 @@ inline constexpr int kLinearizationKktSize = kMaxBreakPoints + 1 + kMaxConstrain
 
 struct LinearProgram {
   int segment_count = 0;
-  double break_time_s[kMaxBreakPoints] = {};   // from launch
+  double break_time_s[kMaxBreakPoints] = {};  // from launch
   double theta_rad[kMaxBreakPoints] = {};
   bool fixed[kMaxBreakPoints] = {};
-  double eta[kMaxLinearSegments] = {};         // segment weights (data block 26)
+  double eta[kMaxLinearSegments] = {};  // segment weights (data block 26)
   // Rate repairs of Sec. 10, imposed in the fit as linear equalities that keep the segment's level
   // free: segment `rate_segment[r]` flies `rate_value_rad_s[r]`, or, for a merge, the break between
   // it and the next segment lies on the straight line through their outer breaks.
@@ -58,8 +58,8 @@ struct LinearizationResult {
   double desired[kMaxConstraints] = {};
   double achieved[kMaxConstraints] = {};
   double tolerance[kMaxConstraints] = {};  // linearization deadbands
-  bool met[kMaxConstraints] = {};            // within its deadband (an inequality: not above it)
-  double payoff = 0.0;                      // achieved by the linearized trajectory
+  bool met[kMaxConstraints] = {};          // within its deadband (an inequality: not above it)
+  double payoff = 0.0;                     // achieved by the linearized trajectory
   // The runs ended as Sec. 10 ends them (everything met, or DA13(4) runs made): the program, the
   // achieved values and the payoff above describe the last run. False when a failure (a singular
   // fit, a failed run) stopped them first: only the status and the counts are then meaningful.
@@ -92,10 +92,10 @@ struct LinearizationSystem {
 };
 
 struct LinearizationWorkspace {
-  Mission mission;                 // the optimized case, flown without the zero-alpha window
+  Mission mission;  // the optimized case, flown without the zero-alpha window
   PreparedCase prepared;
-  ControlProgram optimum;          // theta_OPT at every point
-  ControlProgram program;          // the current linear program sampled at every point
+  ControlProgram optimum;  // theta_OPT at every point
+  ControlProgram program;  // the current linear program sampled at every point
   Trajectory nominal;
   Trajectory candidate;
   BackwardRun backward;

@@ -66,10 +66,10 @@ struct OptimizerResult {
   // trajectory is then that final guidance run.
   bool converged = false;
   OptimizationStop optimization_stop = OptimizationStop::kNotReached;
-  int guidance_runs = 0;                // forward guidance runs before the optimization phase
-  int optimization_runs = 0;            // forward optimization runs (successful or not)
+  int guidance_runs = 0;      // forward guidance runs before the optimization phase
+  int optimization_runs = 0;  // forward optimization runs (successful or not)
   int successful_optimization_runs = 0;
-  bool final_guidance_met = false;      // the final forward guidance run met every deadband
+  bool final_guidance_met = false;  // the final forward guidance run met every deadband
   // The first attempted payoff improvement (payoff units): from dP^2 (eqs. 5-31..5-34), or DA13(1)
   // when that computation fails (`initial_improvement_from_da13_1`). 0 when never computed.
   double initial_payoff_improvement = 0.0;
@@ -80,8 +80,8 @@ struct OptimizerResult {
   int codes[kMaxConstraints] = {};
   double desired[kMaxConstraints] = {};
   double achieved[kMaxConstraints] = {};
-  double tolerance[kMaxConstraints] = {};      // data block 29 optimization deadbands (0 for payoff)
-  bool inequality[kMaxConstraints] = {};       // achieved <= desired + tolerance suffices
+  double tolerance[kMaxConstraints] = {};  // data block 29 optimization deadbands (0 for payoff)
+  bool inequality[kMaxConstraints] = {};   // achieved <= desired + tolerance suffices
   double payoff = 0.0;
   double corrected_payoff = 0.0;
   double payload_lb = 0.0;

@@ -25,23 +25,23 @@ enum class OrbitType : int { kElliptic, kParabolic, kHyperbolic };
 struct OrbitElements {
   OrbitType type = OrbitType::kElliptic;
   InertialVelocity inertial;
-  double twice_energy_ft2_s2 = 0.0;          // 2E = V_I^2 - 2 mu / r
-  double angular_momentum_ft2_s = 0.0;       // H = r V_I cos gamma_I
-  double perigee_radius_ft = 0.0;            // r_p
-  double inclination_rad = 0.0;             // i = acos(cos lambda sin psi_I)
-  double right_ascension_rad = 0.0;         // alpha_e of the vehicle position, [0, 2 pi)
+  double twice_energy_ft2_s2 = 0.0;     // 2E = V_I^2 - 2 mu / r
+  double angular_momentum_ft2_s = 0.0;  // H = r V_I cos gamma_I
+  double perigee_radius_ft = 0.0;       // r_p
+  double inclination_rad = 0.0;         // i = acos(cos lambda sin psi_I)
+  double right_ascension_rad = 0.0;     // alpha_e of the vehicle position, [0, 2 pi)
   // Inertial longitude angle from the node, [0, 2 pi). The manual prints [0, pi], but a point
   // south of the equator before its ascending node lies at nu in (pi, 2 pi); the oracle agrees.
   double nu_rad = 0.0;
-  double node_longitude_rad = 0.0;          // Omega_e = alpha_e - nu, [0, 2 pi)
-  double in_plane_angle_from_node_rad = 0.0;// beta, [0, 2 pi)
-  double true_anomaly_rad = 0.0;            // zeta, [0, 2 pi)
-  double argument_of_perigee_rad = 0.0;     // beta_p = beta - zeta, [0, 2 pi)
-  double eccentricity = 0.0;                // e = 1 - r_p / r_a (elliptic); from H and 2E otherwise
-  bool has_semi_major_axis = false;         // only for 2E < 0
-  double semi_major_axis_ft = 0.0;          // r_a = -mu / 2E
-  double period_s = 0.0;                    // 2 pi r_a sqrt(r_a / mu)
-  double apogee_radius_ft = 0.0;            // 2 r_a - r_p (elliptic only)
+  double node_longitude_rad = 0.0;            // Omega_e = alpha_e - nu, [0, 2 pi)
+  double in_plane_angle_from_node_rad = 0.0;  // beta, [0, 2 pi)
+  double true_anomaly_rad = 0.0;              // zeta, [0, 2 pi)
+  double argument_of_perigee_rad = 0.0;       // beta_p = beta - zeta, [0, 2 pi)
+  double eccentricity = 0.0;                  // e = 1 - r_p / r_a (elliptic); from H and 2E otherwise
+  bool has_semi_major_axis = false;           // only for 2E < 0
+  double semi_major_axis_ft = 0.0;            // r_a = -mu / 2E
+  double period_s = 0.0;                      // 2 pi r_a sqrt(r_a / mu)
+  double apogee_radius_ft = 0.0;              // 2 r_a - r_p (elliptic only)
   // Addendum H, hyperbolic orbits only (2E > 0).
   bool has_asymptote = false;
   double hyperbolic_excess_velocity_ft_s = 0.0;  // v_H = sqrt(2E)
@@ -61,8 +61,8 @@ Status compute_orbit_elements(const Constants& constants, const StateVector& sta
 
 // Great-circle central angle between the launch point and the vehicle (Sec. 4 range equations),
 // both given by geocentric latitude and EARTH-FIXED longitude.
-double downrange_angle_rad(double launch_latitude_rad, double launch_longitude_rad,
-                           double latitude_rad, double longitude_rad);
+double downrange_angle_rad(double launch_latitude_rad, double launch_longitude_rad, double latitude_rad,
+                           double longitude_rad);
 // Small-angle crossrange of a dispersed point relative to the nominal point and azimuth psi_n
 // (positive to the right looking downrange), as a central angle.
 double crossrange_angle_rad(double nominal_latitude_rad, double nominal_longitude_rad,

@@ -34,13 +34,13 @@ enum class GuidanceMode : std::uint8_t {
 
 struct GuidanceCommand {
   GuidanceMode mode = GuidanceMode::kLiftoffHold;
-  int stage_code = 1;          // stage in force
-  int segment_index = -1;      // segment in force (kSegment), else -1
-  double theta_rad = 0.0;      // commanded pitch attitude theta_c
+  int stage_code = 1;            // stage in force
+  int segment_index = -1;        // segment in force (kSegment), else -1
+  double theta_rad = 0.0;        // commanded pitch attitude theta_c
   double theta_dot_rad_s = 0.0;  // commanded pitch rate (the segment's rate; 0 when holding)
-  double chi_rad = 0.0;        // commanded yaw attitude
-  double k_theta = 0.0;        // position gain in force, rad/rad
-  double k_q_s = 0.0;          // rate gain in force, s
+  double chi_rad = 0.0;          // commanded yaw attitude
+  double k_theta = 0.0;          // position gain in force, rad/rad
+  double k_q_s = 0.0;            // rate gain in force, s
   double max_deflection_rad = 0.0;
 };
 

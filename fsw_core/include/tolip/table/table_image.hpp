@@ -12,8 +12,8 @@
 #include <cstdint>
 
 #include "tolip/core/capacity.hpp"
-#include "tolip/core/status.hpp"
 #include "tolip/core/stage_codes.hpp"
+#include "tolip/core/status.hpp"
 
 namespace tolip {
 
@@ -59,25 +59,25 @@ inline constexpr std::size_t kOffsetSegments =
     kOffsetStageGains + kTableStageGainCount * kTableStageGainRecordSize;  // 328
 inline constexpr std::size_t kOffsetCrc =
     kOffsetSegments + static_cast<std::size_t>(kMaxLinearSegments) * kTableSegmentRecordSize;  // 808
-inline constexpr std::size_t kTableImageSize = kOffsetCrc + 4;  // 812
+inline constexpr std::size_t kTableImageSize = kOffsetCrc + 4;                                 // 812
 
 // Offsets inside one segment record and one gain record.
-inline constexpr std::size_t kSegmentOffsetStageCode = 0;   // u16
-inline constexpr std::size_t kSegmentOffsetReserved = 2;    // 6 bytes, zero
-inline constexpr std::size_t kSegmentOffsetStartTime = 8;   // f64
-inline constexpr std::size_t kSegmentOffsetTheta = 16;      // f64
-inline constexpr std::size_t kSegmentOffsetRate = 24;       // f64
-inline constexpr std::size_t kGainOffsetKTheta = 0;         // f64
-inline constexpr std::size_t kGainOffsetKq = 8;             // f64
+inline constexpr std::size_t kSegmentOffsetStageCode = 0;  // u16
+inline constexpr std::size_t kSegmentOffsetReserved = 2;   // 6 bytes, zero
+inline constexpr std::size_t kSegmentOffsetStartTime = 8;  // f64
+inline constexpr std::size_t kSegmentOffsetTheta = 16;     // f64
+inline constexpr std::size_t kSegmentOffsetRate = 24;      // f64
+inline constexpr std::size_t kGainOffsetKTheta = 0;        // f64
+inline constexpr std::size_t kGainOffsetKq = 8;            // f64
 
 // ---- documented ranges (docs/table-format.md, "Ranges") -----------------------------------------
-inline constexpr double kTableMaxLiftoffDurationS = 60.0;              // (0, 60] s
+inline constexpr double kTableMaxLiftoffDurationS = 60.0;                  // (0, 60] s
 inline constexpr double kTableMaxPitchRateLimitRadS = 0.5235987755982988;  // pi/6 rad/s = 30 deg/s
 inline constexpr double kTableMaxDeflectionLimitRad = 0.5235987755982988;  // pi/6 rad = 30 deg
-inline constexpr double kTableMaxAttitudeRad = 3.141592653589793;     // |theta|, |chi| <= pi
-inline constexpr double kTableMaxSegmentStartS = 10000.0;              // [0, 10000] s stage time
-inline constexpr double kTableMaxGain = 100.0;                         // K_theta [0,100], K_q [0,100] s
-inline constexpr std::int64_t kTableMaxCreatedUnixS = 253402300799;    // 9999-12-31T23:59:59Z
+inline constexpr double kTableMaxAttitudeRad = 3.141592653589793;          // |theta|, |chi| <= pi
+inline constexpr double kTableMaxSegmentStartS = 10000.0;                  // [0, 10000] s stage time
+inline constexpr double kTableMaxGain = 100.0;                             // K_theta [0,100], K_q [0,100] s
+inline constexpr std::int64_t kTableMaxCreatedUnixS = 253402300799;        // 9999-12-31T23:59:59Z
 // A segment rate may exceed the image's maximum pitch rate by this fraction at most: it absorbs
 // the round-off of degree/radian conversions (a 5 deg/s segment against a 5 deg/s limit).
 inline constexpr double kTableRateLimitRelativeTolerance = 1e-9;
@@ -105,8 +105,8 @@ struct GuidanceTable {
   // IP(9) of the case (0-3): which of stages 4 and 5 (and coasts 9, 10) are spun, by the one rule
   // tolip::stage_is_spun(); the others fly the segments. 1: both spun (format version 1's only case).
   int spin_option = 1;
-  char mission_id[kTableMissionIdBytes + 1] = {};                 // printable ASCII, NUL-terminated
-  char generator_version[kTableGeneratorVersionBytes + 1] = {};   // printable ASCII, NUL-terminated
+  char mission_id[kTableMissionIdBytes + 1] = {};                // printable ASCII, NUL-terminated
+  char generator_version[kTableGeneratorVersionBytes + 1] = {};  // printable ASCII, NUL-terminated
   // Body.
   double liftoff_duration_s = 0.0;           // theta held at 90 deg from lift-off until this time
   double max_pitch_rate_rad_s = 0.0;         // |segment rate| limit, enforced by validation
@@ -115,9 +115,9 @@ struct GuidanceTable {
   double max_deflection_rad = 0.0;           // control law deflection limit (+/-)
   double stage4_theta_rad = 0.0;             // spun stage 4 (and coast 9) attitude (IP(9) = 1)
   double stage4_chi_rad = 0.0;
-  double stage5_theta_rad = 0.0;             // spun stage 5 (and coast 10) attitude (IP(9) = 1, 2)
+  double stage5_theta_rad = 0.0;  // spun stage 5 (and coast 10) attitude (IP(9) = 1, 2)
   double stage5_chi_rad = 0.0;
-  StageGains gains[kMaxStages];              // by stage_index(code), codes 1-10
+  StageGains gains[kMaxStages];  // by stage_index(code), codes 1-10
   int segment_count = 0;
   GuidanceSegment segments[kMaxLinearSegments];
 };

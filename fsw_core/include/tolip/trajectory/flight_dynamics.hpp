@@ -42,7 +42,7 @@ struct StageContext {
 };
 
 StageContext make_stage_context(const Mission& mission, const PreparedCase& prepared,
-                                 const StageTimeline& line);
+                                const StageTimeline& line);
 
 // How the attitude is decided during one integration step.
 enum class AttitudeMode : int {
@@ -98,8 +98,8 @@ struct Evaluation {
 // Evaluates the model at time t (from launch). `weight_offset_lb` is added to the vehicle weight
 // (the optimizer's mass perturbation; 0 on ordinary runs).
 void evaluate_flight(const Mission& mission, const PreparedCase& prepared, const StageContext& stage,
-                     const StepCommand& command, double t, const StateVector& state,
-                     double weight_offset_lb, Evaluation* out);
+                     const StepCommand& command, double t, const StateVector& state, double weight_offset_lb,
+                     Evaluation* out);
 
 // True where the attitude at the start of a step is the alpha = 0 attitude of the state there,
 // whatever the pitch program says: the end of the zero-alpha window (IP(11)), where the next

@@ -20,9 +20,9 @@ namespace tolip {
 struct LiftoffResult {
   double acceleration_at_0_ft_s2 = 0.0;
   double acceleration_at_end_ft_s2 = 0.0;
-  double velocity_ft_s = 0.0;       // V_L
-  double height_ft = 0.0;           // h_L, rise above the pad radius
-  double c23 = 0.0;                 // thrust-axis component along V at the pad
+  double velocity_ft_s = 0.0;  // V_L
+  double height_ft = 0.0;      // h_L, rise above the pad radius
+  double c23 = 0.0;            // thrust-axis component along V at the pad
   double pad_pressure_lbf_ft2 = 0.0;
   StateVector state_at_end = StateVector::Zero();  // state at TL
   // Sensitivity of V_L and h_L to the vehicle weight (a payload change), for the backward runs.

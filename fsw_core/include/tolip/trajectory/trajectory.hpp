@@ -17,7 +17,7 @@ namespace tolip {
 
 // One integration point: the state and what the equations of motion saw there.
 struct TrajectoryPoint {
-  double time_s = 0.0;          // from launch (TIMCT), coasts included
+  double time_s = 0.0;  // from launch (TIMCT), coasts included
   int stage_code = 0;
   // The commanded pitch attitude (the pitch program's theta_c). Equal to theta_rad but for body
   // dynamics, where theta_rad is the flown steady state (Sec. 7). Single precision (1e-7 rad is far
@@ -26,25 +26,25 @@ struct TrajectoryPoint {
   float theta_command_rad = 0.0f;
   double stage_time_s = 0.0;
   StateVector state = StateVector::Zero();
-  double altitude_ft = 0.0;     // above the oblate surface
-  double earth_longitude_rad = 0.0;   // tau - omega t
+  double altitude_ft = 0.0;          // above the oblate surface
+  double earth_longitude_rad = 0.0;  // tau - omega t
   double geodetic_latitude_rad = 0.0;
   double weight_lb = 0.0;
-  double vacuum_thrust_lbf = 0.0;     // modified (Sec. 14) table
-  double net_thrust_lbf = 0.0;        // Tv - p Ae
+  double vacuum_thrust_lbf = 0.0;  // modified (Sec. 14) table
+  double net_thrust_lbf = 0.0;     // Tv - p Ae
   double dynamic_pressure_lbf_ft2 = 0.0;
   double mach = 0.0;
-  double alpha_rad = 0.0;       // in-plane angle between thrust axis and V (of the flown attitude)
-  double theta_rad = 0.0;       // pitch attitude flown, in the platform frame
-  double chi_rad = 0.0;         // yaw attitude flown, in the platform frame
+  double alpha_rad = 0.0;  // in-plane angle between thrust axis and V (of the flown attitude)
+  double theta_rad = 0.0;  // pitch attitude flown, in the platform frame
+  double chi_rad = 0.0;    // yaw attitude flown, in the platform frame
   double drag_lbf = 0.0;
-  double lift_lbf = 0.0;        // along +i_z; body dynamics: i_z part of the Sec. 11 normal forces
+  double lift_lbf = 0.0;                // along +i_z; body dynamics: i_z part of the Sec. 11 normal forces
   double heating_rate_btu_ft2_s = 0.0;  // Sec. 13 (0 when no nose radius)
-  double downrange_rad = 0.0;   // central angle from the launch point
+  double downrange_rad = 0.0;           // central angle from the launch point
   InertialVelocity inertial;
-  bool heading_hold = false;    // dpsi/dt held at 0 on the step starting here
-  bool alpha_zero = false;      // theta set for alpha = 0 on the step starting here
-  bool body_dynamics = false;   // 6D (Sec. 7, 11) on the step starting here
+  bool heading_hold = false;   // dpsi/dt held at 0 on the step starting here
+  bool alpha_zero = false;     // theta set for alpha = 0 on the step starting here
+  bool body_dynamics = false;  // 6D (Sec. 7, 11) on the step starting here
   // Body dynamics: the steady-state pitch deflection delta of eq. 7-3 (0 otherwise). Single
   // precision in the padding after the flags.
   float control_deflection_rad = 0.0f;
@@ -52,9 +52,9 @@ struct TrajectoryPoint {
 
 struct StageEvent {
   int code = 0;
-  int first_point = 0;   // index of the stage's first point
-  int last_point = 0;    // index of the stage's last point (before jettison)
-  double burnout_weight_lb = 0.0;   // at the end of the stage, before jettison
+  int first_point = 0;             // index of the stage's first point
+  int last_point = 0;              // index of the stage's last point (before jettison)
+  double burnout_weight_lb = 0.0;  // at the end of the stage, before jettison
   double weight_after_jettison_lb = 0.0;
   // The stage flew to its end (and jettisoned). false for the stage a failed run stopped in: its
   // last point is the last point flown, it jettisoned nothing.
@@ -63,9 +63,9 @@ struct StageEvent {
 
 // One integration step as flown, so a backward run can re-evaluate exactly the same model.
 struct StepRecord {
-  int point = 0;         // index of the step's start point; the step ends at point + 1
-  int stage_slot = 0;    // index into PreparedCase::timeline
-  bool adams = false;    // Adams-Bashforth step (RK4 otherwise)
+  int point = 0;       // index of the step's start point; the step ends at point + 1
+  int stage_slot = 0;  // index into PreparedCase::timeline
+  bool adams = false;  // Adams-Bashforth step (RK4 otherwise)
   StepCommand command;
 };
 
@@ -84,7 +84,7 @@ struct Trajectory {
   int step_count = 0;
   StepRecord steps[kMaxTrajectoryPoints];
   int stage_count = 0;
-  StageEvent stages[kMaxStages];     // flight order
+  StageEvent stages[kMaxStages];       // flight order
   double heat_integral_btu_ft2 = 0.0;  // time integral of the heating rate
   const TrajectoryPoint& final_point() const { return points[point_count - 1]; }
 };
@@ -140,8 +140,8 @@ Status fly_trajectory(const Mission& mission, const PreparedCase& prepared, Traj
 
 // The same flown with an explicit per-point pitch program (its point_count must equal the number
 // of points the case produces, which depends only on the step counts).
-Status fly_trajectory(const Mission& mission, const PreparedCase& prepared,
-                      const ControlProgram& program, Trajectory* trajectory);
+Status fly_trajectory(const Mission& mission, const PreparedCase& prepared, const ControlProgram& program,
+                      Trajectory* trajectory);
 
 // Number of points a flight of the prepared case stores (pad point, every step start, every stage
 // end point): the size a ControlProgram must have.
@@ -152,7 +152,6 @@ enum class TrajectoryKind : int { kInitial, kIntermediate, kFinal };
 
 // True when point `index` is listed at the data block 9 frequency: every n-th point of its stage,
 // and always the first and last point of each stage.
-bool is_output_point(const Mission& mission, const Trajectory& trajectory, int index,
-                     TrajectoryKind kind);
+bool is_output_point(const Mission& mission, const Trajectory& trajectory, int index, TrajectoryKind kind);
 
 }  // namespace tolip

@@ -16,8 +16,8 @@ using WindTable = Table<kMaxWindTablePoints>;
 // WINDVL and WINDAZ: altitude (ft above the oblate surface) -> wind speed (ft/s) and azimuth of
 // the wind VELOCITY vector (rad, clockwise from north). Both tables finalized.
 struct WindProfile {
-  WindTable speed_ft_s;    // block 53
-  WindTable azimuth_rad;   // block 54
+  WindTable speed_ft_s;   // block 53
+  WindTable azimuth_rad;  // block 54
 };
 
 // The air-mass-relative velocity in the local frame L (Sec. 15):

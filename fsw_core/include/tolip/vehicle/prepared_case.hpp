@@ -14,11 +14,11 @@ namespace tolip {
 using ModifiedThrustTable = Table<kMaxModifiedThrustPoints>;
 
 struct StageTimeline {
-  int code = 0;            // stage code 1-10
-  double start_s = 0.0;    // time from launch at the start of the stage
+  int code = 0;          // stage code 1-10
+  double start_s = 0.0;  // time from launch at the start of the stage
   double duration_s = 0.0;
-  int steps = 0;           // integration steps (stage 1: after the lift-off interval)
-  double step_s = 0.0;     // fixed step of the stage
+  int steps = 0;                         // integration steps (stage 1: after the lift-off interval)
+  double step_s = 0.0;                   // fixed step of the stage
   double first_step_stage_time_s = 0.0;  // stage time of the first integration step (TL in stage 1)
 };
 
@@ -33,15 +33,15 @@ struct ThrustModification {
 struct PreparedCase {
   bool prepared = false;
   int stage_count = 0;
-  StageTimeline timeline[kMaxStages];            // in flight order
+  StageTimeline timeline[kMaxStages];                          // in flight order
   ModifiedThrustTable modified_thrust_lbf[kMaxPoweredStages];  // by powered stage code - 1
   ThrustModification thrust_modification[kMaxPoweredStages];
-  double pad_radius_ft = 0.0;                    // r0 = R_OBL(lambda0) + altitude
-  double delta_lambda_rad = 0.0;                 // at the pad
-  Matrix3 geocentric_to_inertial;                // [B]  at t = 0
-  Matrix3 platform_to_geocentric;                // [B'] at t = 0
-  Matrix3 platform_to_inertial;                  // [B][B']
-  StateVector pad_state;                         // X at t = 0
+  double pad_radius_ft = 0.0;      // r0 = R_OBL(lambda0) + altitude
+  double delta_lambda_rad = 0.0;   // at the pad
+  Matrix3 geocentric_to_inertial;  // [B]  at t = 0
+  Matrix3 platform_to_geocentric;  // [B'] at t = 0
+  Matrix3 platform_to_inertial;    // [B][B']
+  StateVector pad_state;           // X at t = 0
 };
 
 // Builds the timeline (durations and steps of data block 16, coasts included), the modified thrust
