@@ -17,7 +17,12 @@ if [[ "${1:-}" == "--check" ]]; then check=yes; shift; fi
 if [[ $# -gt 0 ]]; then
   files=("$@")
 else
-  mapfile -t files < <(git ls-files -- '*.cpp' '*.hpp' '*.h' | grep -v '^tests/reference/')
+  if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then
+    mapfile -t files < <(git ls-files -- '*.cpp' '*.hpp' '*.h' | grep -v '^tests/reference/')
+  else  # a copy without git (the clean-clone check): the same files, minus build folders
+    mapfile -t files < <(find . \( -path './build*' -o -path './tests/reference' -o -path './.git' \) -prune \
+                           -o -type f \( -name '*.cpp' -o -name '*.hpp' -o -name '*.h' \) -print | sed 's|^\./||' | sort)
+  fi
 fi
 
 if [[ $check == no ]]; then
