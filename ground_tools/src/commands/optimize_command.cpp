@@ -36,6 +36,21 @@ void print_status(std::ostream& err, Status status, const std::string& prefix = 
 
 // Statuses with which optimize_trajectory rejects the case before flying anything: the deck asks
 // for an optimization the optimizer does not do (bad input, not a run-time failure).
+// Writes one CSV output atomically (nothing half-written); on failure the reason goes to err.
+template <typename Write>
+bool write_csv_or_report(const std::string& path, std::ostream& err, Write write) {
+  std::string write_error;
+  const bool written = write_file_atomically(
+      path,
+      [&write](std::ostream& csv) {
+        write(csv);
+        return static_cast<bool>(csv);
+      },
+      &write_error);
+  if (!written) err << "tolip: " << write_error << '\n';
+  return written;
+}
+
 bool rejects_problem(Status status) {
   return status == Status::kPayoffNotSupported || status == Status::kAdjustableParameterNotSupported ||
          status == Status::kUnknownConstraintCode;
@@ -154,36 +169,17 @@ int optimize_case(const Deck& deck, const DeckCase& deck_case, OptimizerObserver
   report.case_status = verdict.status;
   report.case_failed_step = verdict.failed_step;
 
-  if (!output->csv_path.empty()) {
-    std::string write_error;
-    const bool written = write_file_atomically(
-        output->csv_path,
-        [&report](std::ostream& csv) {
-          write_trajectory_csv(csv, report.final_trajectory);
-          return static_cast<bool>(csv);
-        },
-        &write_error);
-    if (!written) {
-      err << "tolip: " << write_error << '\n';
-      output->stop = true;
-      return kExitFailure;
-    }
+  if (!output->csv_path.empty() && !write_csv_or_report(output->csv_path, err, [&report](std::ostream& csv) {
+        write_trajectory_csv(csv, report.final_trajectory);
+      })) {
+    output->stop = true;
+    return kExitFailure;
   }
-
-  if (!output->dispersions_csv_path.empty() && mission->options.dispersions()) {
-    std::string write_error;
-    const bool written = write_file_atomically(
-        output->dispersions_csv_path,
-        [&dispersions](std::ostream& csv) {
-          write_dispersion_csv(csv, dispersions);
-          return static_cast<bool>(csv);
-        },
-        &write_error);
-    if (!written) {
-      err << "tolip: " << write_error << '\n';
-      output->stop = true;
-      return kExitFailure;
-    }
+  if (!output->dispersions_csv_path.empty() && mission->options.dispersions() &&
+      !write_csv_or_report(output->dispersions_csv_path, err,
+                           [&dispersions](std::ostream& csv) { write_dispersion_csv(csv, dispersions); })) {
+    output->stop = true;
+    return kExitFailure;
   }
 
   if (output->json) {
