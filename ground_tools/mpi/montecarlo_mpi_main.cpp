@@ -148,7 +148,7 @@ int main(int argc, char** argv) {
     err << "tolip: " << e.what() << "\nRun 'tolip_montecarlo_mpi --help' for more information.\n";
     exit_code = kExitBadInput;
   }
-  // Threads stay 1 per rank: the ranks are the parallelism (the output does not depend on it).
+  // One thread per rank (fly_on_ranks): the ranks are the parallelism; --threads is only checked.
   if (parsed) {
     if (options.threads == -1) options.threads = 1;
     if (g_rank != 0) options.progress = ProgressMode::kOff;
