@@ -52,6 +52,21 @@ TEST(MonteCarloCommand, SameSeedGivesTheSameJsonAndCsvOnOneTwoAndThreeThreads) {
   EXPECT_NE(other.out, json[0]);
 }
 
+// --progress forces the status line onto stderr (a terminal shows it by default); stdout is the
+// same bytes as without it.
+TEST(MonteCarloCommand, ProgressGoesToStderrOnlyAndChangesNoOutput) {
+  const CommandResult quiet =
+      run_tolip_executable({"montecarlo", mission_deck(), "--samples", "12", "--seed", "5", "--json"});
+  const CommandResult shown = run_tolip_executable(
+      {"montecarlo", mission_deck(), "--samples", "12", "--seed", "5", "--json", "--progress"});
+  ASSERT_EQ(quiet.exit_code, 0) << quiet.err;
+  ASSERT_EQ(shown.exit_code, 0) << shown.err;
+  EXPECT_EQ(quiet.out, shown.out);
+  EXPECT_NE(shown.err.find("sample 12/12 (100%)"), std::string::npos) << shown.err;
+  EXPECT_NE(shown.err.find("forward run"), std::string::npos) << shown.err;
+  EXPECT_EQ(quiet.err.find("sample "), std::string::npos) << quiet.err;
+}
+
 // The example deck with every scalar source (blocks 47-52) at `scale` of its value.
 std::string scaled_deck(const ScratchDirectory& scratch, double scale) {
   const std::regex value(

@@ -181,7 +181,10 @@ bool fly_on_threads(const MonteCarloJob& job, MonteCarloSamples* samples) {
   MonteCarloProgress progress;
   if (job.progress != nullptr && job.progress->enabled()) {
     ProgressLine* line = job.progress;
-    progress = [line](int flown, int count) { line->update("sample", flown, count); };
+    progress = [line](int flown, int count) {
+      if (flown == count) line->clear();  // the last count is always shown, however soon it comes
+      line->update("sample", flown, count);
+    };
   }
   (void)run_monte_carlo(*job.nominal, *job.data, job.seed, job.count, job.threads, samples, progress);
   return true;
