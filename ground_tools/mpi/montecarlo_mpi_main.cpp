@@ -1,33 +1,34 @@
-// tolip_montecarlo_mpi DECK SAMPLES SEED: the Monte Carlo dispersions of the deck's case (issue 11
-// "Scale-out", in part; docs/theory/dispersions.md) split across the ranks of `mpirun -np K`: every
-// rank optimizes the case (deterministic: the same nominal everywhere), flies samples i = rank,
-// rank + K, ... (counter-based draws: sample i is the same on any rank), and rank 0 gathers the
-// records in sample order and prints the statistics of the final-point dispersions as JSON, so
-// the output is the same bytes for any K. Built only when CMake finds MPI.
+// tolip_montecarlo_mpi DECK --samples N --seed S [options of `tolip montecarlo`]: the Monte Carlo
+// dispersions of `tolip montecarlo` (issue 11 "Scale-out"; docs/cli.md, docs/theory/dispersions.md)
+// split across the ranks of `mpirun -np K`. Every rank reads the deck and optimizes the case
+// (deterministic: the same nominal everywhere), flies samples i = rank, rank + K, ... (counter-based
+// draws: sample i is the same on any rank), and rank 0 gathers the records, puts them back in sample
+// order and reports exactly as `tolip montecarlo` does (the same command code, with this flier), so
+// the output is the same bytes as the single-process run for any K. Built only when CMake finds MPI.
 #include <mpi.h>
 
+#include <CLI/CLI.hpp>
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
 #include <iostream>
 #include <memory>
+#include <ostream>
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
-#include "tolip_ground/card_deck.hpp"
-#include "tolip_ground/dispersion_run.hpp"
-#include "tolip_ground/monte_carlo_run.hpp"
-#include "tolip_ground/optimization_run.hpp"
+#include "tolip_ground/commands.hpp"
+#include "tolip_ground/monte_carlo_command.hpp"
 
 namespace {
 
 using namespace tolip;
 using namespace tolip::ground;
 
-// One sample as doubles: status, values, dispersions (all columns), orbit elements and dispersions.
-constexpr int kRecord = 1 + 2 * kMaxStagingPoints * kStagingVariables + 2 * kOrbitDispersionElements;
+int g_rank = 0;
+int g_ranks = 1;
+
+// One sample as doubles: status, values, dispersions (all columns), orbit elements and dispersions,
+// max q-bar alpha and its time.
+constexpr int kRecord = 1 + 2 * kMaxStagingPoints * kStagingVariables + 2 * kOrbitDispersionElements + 2;
 
 void pack(const DispersedTrajectory& t, double* out) {
   int k = 0;
@@ -40,6 +41,8 @@ void pack(const DispersedTrajectory& t, double* out) {
   }
   for (int i = 0; i < kOrbitDispersionElements; ++i) out[k++] = t.orbit[i];
   for (int i = 0; i < kOrbitDispersionElements; ++i) out[k++] = t.orbit_dispersions[i];
+  out[k++] = t.max_qbar_alpha_lbf_rad_ft2;
+  out[k++] = t.max_qbar_alpha_time_s;
 }
 
 void unpack(const double* in, DispersedTrajectory* t) {
@@ -53,86 +56,105 @@ void unpack(const double* in, DispersedTrajectory* t) {
   }
   for (int i = 0; i < kOrbitDispersionElements; ++i) t->orbit[i] = in[k++];
   for (int i = 0; i < kOrbitDispersionElements; ++i) t->orbit_dispersions[i] = in[k++];
+  t->max_qbar_alpha_lbf_rad_ft2 = in[k++];
+  t->max_qbar_alpha_time_s = in[k++];
 }
 
-int fail(const std::string& message) {
-  std::cerr << "tolip_montecarlo_mpi: " << message << '\n';
-  MPI_Abort(MPI_COMM_WORLD, 2);
-  return 2;
+// The flier: this rank's share of the samples, gathered on rank 0 in sample order.
+bool fly_on_ranks(const MonteCarloJob& job, MonteCarloSamples* samples) {
+  const int rank = g_rank;
+  const int ranks = g_ranks;
+  const int count = job.count;
+  auto ws = std::make_unique<DispersionWorkspace>();
+  DispersedTrajectory nominal_values;
+  Status status = prepare_monte_carlo(*job.nominal, ws.get());
+  if (ok(status)) {
+    status = record_dispersed_trajectory(*job.nominal->mission, ws->nominal_prepared, ws->nominal,
+                                         ws->nominal, nullptr, &nominal_values);
+  }
+  nominal_values.status = status;
+  // Every rank flies the same nominal, so all fail here together or none does.
+  if (!ok(status)) {
+    samples->status = status;
+    return rank == 0;
+  }
+  std::vector<double> mine;
+  for (int i = rank; i < count; i += ranks) {
+    DispersedTrajectory t;
+    (void)fly_monte_carlo_sample(*job.nominal, *job.data, job.seed, static_cast<std::uint64_t>(i),
+                                 nominal_values, ws.get(), &t);
+    mine.resize(mine.size() + kRecord);
+    pack(t, mine.data() + mine.size() - kRecord);
+    if (rank == 0 && job.progress != nullptr && job.progress->enabled()) {
+      job.progress->update("sample", static_cast<long>(i + 1), count, "(rank 0's share)");
+    }
+  }
+  std::vector<int> counts(static_cast<std::size_t>(ranks));
+  std::vector<int> offsets(static_cast<std::size_t>(ranks));
+  for (int r = 0, at = 0; r < ranks; ++r) {
+    const int share = (count - r + ranks - 1) / ranks;
+    counts[static_cast<std::size_t>(r)] = share * kRecord;
+    offsets[static_cast<std::size_t>(r)] = at;
+    at += share * kRecord;
+  }
+  std::vector<double> all(rank == 0 ? static_cast<std::size_t>(count) * kRecord : 0);
+  MPI_Gatherv(mine.data(), static_cast<int>(mine.size()), MPI_DOUBLE, all.data(), counts.data(),
+              offsets.data(), MPI_DOUBLE, 0, MPI_COMM_WORLD);
+  if (rank != 0) return false;
+  samples->status = Status::kOk;
+  samples->nominal = nominal_values;
+  samples->samples.assign(static_cast<std::size_t>(count), DispersedTrajectory{});
+  for (int r = 0; r < ranks; ++r) {
+    const double* block = all.data() + offsets[static_cast<std::size_t>(r)];
+    for (int i = r, n = 0; i < count; i += ranks, ++n) {
+      unpack(block + static_cast<std::ptrdiff_t>(n) * kRecord,
+             &samples->samples[static_cast<std::size_t>(i)]);
+    }
+  }
+  return true;
 }
+
+// Discards everything (the helper ranks' streams).
+class NullBuffer : public std::streambuf {
+ protected:
+  int overflow(int c) override { return c; }
+};
 
 }  // namespace
 
 int main(int argc, char** argv) {
   MPI_Init(&argc, &argv);
-  int rank = 0;
-  int ranks = 1;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
-  if (argc != 4) return fail("usage: tolip_montecarlo_mpi DECK SAMPLES SEED");
-  const int count = std::atoi(argv[2]);
-  const std::uint64_t seed = std::strtoull(argv[3], nullptr, 10);
-  if (count <= 0 || count > 1000000) return fail("SAMPLES must be 1-1000000");
+  MPI_Comm_rank(MPI_COMM_WORLD, &g_rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &g_ranks);
+  NullBuffer null_buffer;
+  std::ostream null_stream(&null_buffer);
+  std::ostream& out = (g_rank == 0) ? std::cout : null_stream;
+  std::ostream& err = (g_rank == 0) ? std::cerr : null_stream;
 
-  Deck deck;
-  DeckError error;
-  if (!load_deck(argv[1], &deck, &error) || deck.cases.size() != 1) {
-    return fail(deck.cases.size() > 1 ? "the deck must hold one case" : error.to_string());
+  CLI::App app{
+      "The Monte Carlo dispersions of 'tolip montecarlo' over the ranks of an MPI job\n"
+      "(mpirun -np K): the same options, the same output bytes (docs/cli.md).",
+      "tolip_montecarlo_mpi"};
+  MonteCarloCommandOptions options;
+  add_monte_carlo_options(app, &options);
+  int exit_code = kExitOk;
+  bool parsed = false;
+  try {
+    app.parse(argc, argv);
+    parsed = true;
+  } catch (const CLI::CallForHelp& e) {
+    exit_code = app.exit(e, out, err);
+  } catch (const CLI::ParseError& e) {
+    err << "tolip: " << e.what() << "\nRun 'tolip_montecarlo_mpi --help' for more information.\n";
+    exit_code = kExitBadInput;
   }
-  const DeckCase& c = deck.cases.front();
-  auto data = std::make_unique<DispersionData>();
-  DispersionMappingFault fault;
-  if (!fill_dispersion_data(c.extras.dispersions, data.get(), &fault)) return fail(fault.message);
-  OptimizationRun run;
-  run_optimization(*c.mission, nullptr, &run);
-  DispersionNominal nominal;
-  std::string kind;
-  Status why = Status::kOk;
-  if (!final_dispersion_nominal(*c.mission, run, &nominal, &kind, &why)) return fail(status_name(why));
-
-  auto ws = std::make_unique<DispersionWorkspace>();
-  DispersedTrajectory nominal_values;
-  Status status = prepare_monte_carlo(nominal, ws.get());
-  if (ok(status)) {
-    status = record_dispersed_trajectory(*nominal.mission, ws->nominal_prepared, ws->nominal, ws->nominal,
-                                         nullptr, &nominal_values);
+  // One thread per rank (fly_on_ranks): the ranks are the parallelism; --threads is only checked.
+  if (parsed) {
+    if (options.threads == -1) options.threads = 1;
+    if (g_rank != 0) options.progress = ProgressMode::kOff;
+    exit_code = run_monte_carlo_command(options, fly_on_ranks, out, err);
   }
-  if (!ok(status)) return fail(status_name(status));
-
-  // This rank's samples, packed in its order; rank 0 puts them back in sample order.
-  std::vector<double> mine;
-  for (int i = rank; i < count; i += ranks) {
-    DispersedTrajectory t;
-    (void)fly_monte_carlo_sample(nominal, *data, seed, static_cast<std::uint64_t>(i), nominal_values,
-                                 ws.get(), &t);
-    mine.resize(mine.size() + kRecord);
-    pack(t, mine.data() + mine.size() - kRecord);
-  }
-  std::vector<int> counts(static_cast<std::size_t>(ranks));
-  std::vector<int> offsets(static_cast<std::size_t>(ranks));
-  for (int r = 0, at = 0; r < ranks; ++r) {
-    const int samples = (count - r + ranks - 1) / ranks;
-    counts[static_cast<std::size_t>(r)] = samples * kRecord;
-    offsets[static_cast<std::size_t>(r)] = at;
-    at += samples * kRecord;
-  }
-  std::vector<double> all(rank == 0 ? static_cast<std::size_t>(count) * kRecord : 0);
-  MPI_Gatherv(mine.data(), static_cast<int>(mine.size()), MPI_DOUBLE, all.data(), counts.data(),
-              offsets.data(), MPI_DOUBLE, 0, MPI_COMM_WORLD);
-  if (rank == 0) {
-    MonteCarloSamples samples;
-    samples.status = Status::kOk;
-    samples.nominal = nominal_values;
-    samples.samples.assign(static_cast<std::size_t>(count), DispersedTrajectory{});
-    for (int r = 0; r < ranks; ++r) {
-      const double* block = all.data() + offsets[static_cast<std::size_t>(r)];
-      for (int i = r, n = 0; i < count; i += ranks, ++n) {
-        unpack(block + static_cast<std::ptrdiff_t>(n) * kRecord,
-               &samples.samples[static_cast<std::size_t>(i)]);
-      }
-    }
-    std::cout << monte_carlo_json(samples, seed, kind).dump(1) << '\n';
-  }
+  out.flush();
   MPI_Finalize();
-  return 0;
+  return exit_code;
 }

@@ -32,6 +32,25 @@ bool has_code(const DispersionData& data, int code) {
 
 }  // namespace
 
+bool monte_carlo_draws_source(const DispersionNominal& nominal, const DispersionData& data, int k) {
+  const DispersionSource& s = data.sources[k];
+  DispersionCodeInfo info;
+  if (!dispersion_code_info(s.code, &info)) return false;
+  const int leader = family_leader(s.code);
+  if (leader != s.code && has_code(data, leader)) return false;
+  switch (info.kind) {
+    case DispersionKind::kWeightIncrement:
+    case DispersionKind::kDrag:
+    case DispersionKind::kControlDeadband:
+    case DispersionKind::kLaunchAzimuth:
+    case DispersionKind::kLaunchAttitude: return true;
+    case DispersionKind::kThrustMisalignment: return nominal.body_dynamics;
+    case DispersionKind::kTipoff:
+      return nominal.mission != nullptr && nominal.mission->options.stage_is_spun(s.stage);
+    default: return false;  // thrust tables, C_M_alpha tables, winds: not sampled (monte_carlo.hpp)
+  }
+}
+
 double counter_uniform(std::uint64_t seed, std::uint64_t sample, std::uint32_t stream) {
   const std::uint64_t h = splitmix64(splitmix64(splitmix64(seed) ^ sample) ^ stream);
   return (static_cast<double>(h >> 11) + 0.5) * 0x1.0p-53;  // 53 bits, never 0 or 1
@@ -57,8 +76,8 @@ Status build_monte_carlo_case(const DispersionNominal& nominal, const PreparedCa
     const DispersionSource& s = data.sources[k];
     DispersionCodeInfo info;
     if (!dispersion_code_info(s.code, &info)) return Status::kDispersionCodeInvalid;
+    if (!monte_carlo_draws_source(nominal, data, k)) continue;
     const int leader = family_leader(s.code);
-    if (leader != s.code && has_code(data, leader)) continue;  // the pair's high code speaks for it
     const double z =
         counter_normal(seed, sample, static_cast<std::uint32_t>(leader)) / 3.0;  // 3 sigma -> 1 sigma
     const int stage = (info.kind == DispersionKind::kTipoff) ? s.stage : info.stage;
@@ -70,7 +89,6 @@ Status build_monte_carlo_case(const DispersionNominal& nominal, const PreparedCa
         break;
       case DispersionKind::kDrag: drag_fraction += z * s.drag_variation_fraction; break;
       case DispersionKind::kThrustMisalignment:
-        if (!nominal.body_dynamics) break;
         (yaw ? p.misalignment_yaw_rad : p.misalignment_pitch_rad) += z * s.misalignment_rad;
         p.thrust_station_ft = s.thrust_station_ft;
         break;
@@ -78,7 +96,6 @@ Status build_monte_carlo_case(const DispersionNominal& nominal, const PreparedCa
         (yaw ? p.chi_offset_rad : p.theta_offset_rad)[stage_index(stage)] += z * s.deadband_rad;
         break;
       case DispersionKind::kTipoff: {
-        if (!m.options.stage_is_spun(stage)) break;
         double* offsets = yaw ? p.chi_offset_rad : p.theta_offset_rad;
         offsets[stage_index(stage)] += z * s.tipoff_rad;
         offsets[stage_index(stage + 5)] += z * s.tipoff_rad;
@@ -95,8 +112,7 @@ Status build_monte_carlo_case(const DispersionNominal& nominal, const PreparedCa
       case DispersionKind::kLaunchAttitude:
         for (double& offset : p.theta_offset_rad) offset += z * s.launch_change_rad;
         break;
-      default:  // thrust tables, C_M_alpha tables, winds: not sampled (monte_carlo.hpp)
-        break;
+      default: break;  // not drawn (monte_carlo_draws_source)
     }
   }
   if (drag_fraction != 0.0) {

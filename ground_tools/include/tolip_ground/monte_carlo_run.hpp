@@ -1,14 +1,13 @@
 // Monte Carlo dispersions on threads (issue 11 "Beyond the manual", in part): the core flies each
 // sample (tolip/dispersion/monte_carlo.hpp); here the samples are spread over threads, each with
 // its own workspace, and the statistics are formed in sample order, so the result is bit for bit
-// the same for any thread count. (The MPI driver and the `tolip montecarlo` command are not built.)
+// the same for any thread count. The command and its reports: monte_carlo_command.hpp,
+// monte_carlo_report.hpp.
 #pragma once
 
 #include <cstdint>
-#include <string>
+#include <functional>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "tolip/dispersion/monte_carlo.hpp"
 
@@ -20,9 +19,15 @@ struct MonteCarloSamples {
   std::vector<DispersedTrajectory> samples;  // index = sample number; each with its own status
 };
 
-// Flies samples 0..count-1 of (seed) on `threads` threads (>= 1).
+// Told, on the calling thread, how many samples have been flown so far (of `count`); for a
+// progress display. Never called when empty.
+using MonteCarloProgress = std::function<void(int flown, int count)>;
+
+// Flies samples 0..count-1 of (seed) on `threads` threads (>= 1). With `progress`, the calling
+// thread only waits and reports (every 50 ms and at the end) while `threads` workers fly.
 Status run_monte_carlo(const DispersionNominal& nominal, const DispersionData& data, std::uint64_t seed,
-                       int count, int threads, MonteCarloSamples* out);
+                       int count, int threads, MonteCarloSamples* out,
+                       const MonteCarloProgress& progress = MonteCarloProgress());
 
 struct MonteCarloStatistic {
   int count = 0;  // samples that flew
@@ -33,14 +38,13 @@ struct MonteCarloStatistic {
   double p99865 = 0.0;
 };
 
-// Statistics of one staging variable's dispersion at one column, over the samples that flew, summed
-// in sample order.
+// The statistics of `values` (in sample order; the non-finite ones left out): the sums run in that
+// order and the percentiles are nearest-rank on the sorted values, so the result depends on the
+// samples only, never on who flew them.
+MonteCarloStatistic statistic_of(std::vector<double> values);
+
+// Statistics of one staging variable's dispersion at one column, over the samples that flew.
 MonteCarloStatistic monte_carlo_statistic(const MonteCarloSamples& samples, int column,
                                           StagingVariable variable);
-
-// {"seed", "samples", "flown", "nominal_kind", "final_point": {variable: {mean, standard_deviation,
-// p00135, p50, p99865}}}: the final-point dispersions (ft, ft/s, deg, n.mi.), for any driver.
-nlohmann::ordered_json monte_carlo_json(const MonteCarloSamples& samples, std::uint64_t seed,
-                                        const std::string& kind);
 
 }  // namespace tolip::ground

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "tolip_ground/commands.hpp"
+#include "tolip_ground/monte_carlo_command.hpp"
 #include "tolip_ground/table_commands.hpp"
 #include "tolip_ground/version.hpp"
 
@@ -28,6 +29,7 @@ constexpr const char* kFooter =
     "  tolip convert examples/scout/mission.toml --to mission.dat\n"
     "  tolip export examples/scout/mission.toml --out table.bin\n"
     "  tolip inspect table.bin\n"
+    "  tolip montecarlo examples/scout/mission.toml --samples 1000 --seed 1\n"
     "Exit codes: 0 success; 1 run-time or core failure (trajectory, orbit elements,\n"
     "file write, optimization not converged, gnuplot); 2 bad input (command line,\n"
     "deck or result file). Errors go to stderr as 'tolip: <message>'.\n"
@@ -444,6 +446,7 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
   ExportCommandOptions export_options;
   InspectCommandOptions inspect_options;
   ConvertCommandOptions convert_options;
+  MonteCarloCommandOptions monte_carlo_options;
   CLI::App* atmosphere = add_atmosphere_command(app, &atmosphere_options);
   CLI::App* simulate = add_simulate_command(app, &simulate_options);
   CLI::App* optimize = add_optimize_command(app, &optimize_options);
@@ -451,6 +454,7 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
   CLI::App* export_command = add_export_command(app, &export_options);
   CLI::App* inspect = add_inspect_command(app, &inspect_options);
   CLI::App* convert = add_convert_command(app, &convert_options);
+  CLI::App* monte_carlo = add_monte_carlo_command(app, &monte_carlo_options);
 
   if (const int exit_code = parse_command_line(app, argc, argv, out, err); exit_code != kRunCommand) {
     return exit_code;
@@ -462,6 +466,7 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
   if (export_command->parsed()) return run_export_command(export_options, out, err);
   if (inspect->parsed()) return run_inspect_command(inspect_options, out, err);
   if (convert->parsed()) return run_convert_command(convert_options, out, err);
+  if (monte_carlo->parsed()) return run_monte_carlo_command(monte_carlo_options, out, err);
   err << "tolip: no command given\n";
   return kExitBadInput;
 }

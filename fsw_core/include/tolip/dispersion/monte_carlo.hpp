@@ -18,6 +18,12 @@ double counter_uniform(std::uint64_t seed, std::uint64_t sample, std::uint32_t s
 // A standard normal draw: Box-Muller on the uniforms of streams 2 stream and 2 stream + 1.
 double counter_normal(std::uint64_t seed, std::uint64_t sample, std::uint32_t stream);
 
+// Whether source k of `data` gets a draw of its own in build_monte_carlo_case (the one rule of what
+// is sampled): a scalar source of a sampled kind, the misalignment only about a body-dynamics
+// nominal, the tip-off only of a spun stage, and the low code of a pair only when its high code is
+// absent (otherwise the pair's high code speaks for both).
+bool monte_carlo_draws_source(const DispersionNominal& nominal, const DispersionData& data, int k);
+
 // Builds sample `sample` about the nominal into *workspace: every scalar source of `data` at once,
 // normal with 1 sigma = the deck's (three-sigma) value / 3, one draw per high/low pair (keyed by its
 // high code) and one per yaw code: weight increments (9-16), drag (17-18), misalignment (21-23,

@@ -1,0 +1,68 @@
+// Thread scaling of the Monte Carlo dispersions (issue 11 "Speed": at least 1.8x on 2 cores):
+// run_monte_carlo() of 200 samples of the bundled example about its linearized 6D program (every
+// scalar source of data blocks 46-55 drawn per sample), on 1 and 2 threads. The ratio of the two
+// wall-clock times is the scaling; samples_per_s is the rate (docs/performance.md).
+// Run: build/bench/monte_carlo_bench --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+
+#include "tolip/dispersion/monte_carlo.hpp"
+#include "tolip_ground/card_deck.hpp"
+#include "tolip_ground/dispersion_run.hpp"
+#include "tolip_ground/monte_carlo_run.hpp"
+#include "tolip_ground/optimization_run.hpp"
+
+namespace {
+
+constexpr int kSamples = 200;
+
+struct Prepared {
+  tolip::ground::Deck deck;
+  tolip::ground::OptimizationRun run;
+  std::unique_ptr<tolip::DispersionData> data = std::make_unique<tolip::DispersionData>();
+  tolip::DispersionNominal nominal;
+};
+
+const Prepared& prepared() {
+  static Prepared* p = [] {
+    auto* made = new Prepared;
+    tolip::ground::DeckError error;
+    if (!tolip::ground::load_deck(std::string(TOLIP_EXAMPLES_DIR) + "/scout/mission.toml", &made->deck,
+                                  &error)) {
+      std::fprintf(stderr, "%s\n", error.to_string().c_str());
+      std::exit(1);
+    }
+    const tolip::ground::DeckCase& c = made->deck.cases.front();
+    tolip::ground::run_optimization(*c.mission, nullptr, &made->run);
+    tolip::ground::DispersionMappingFault fault;
+    std::string kind;
+    tolip::Status why = tolip::Status::kOk;
+    if (!tolip::ground::fill_dispersion_data(c.extras.dispersions, made->data.get(), &fault) ||
+        !tolip::ground::final_dispersion_nominal(*c.mission, made->run, &made->nominal, &kind, &why)) {
+      std::fprintf(stderr, "the example did not prepare\n");
+      std::exit(1);
+    }
+    return made;
+  }();
+  return *p;
+}
+
+void BM_MonteCarloSamples(benchmark::State& state) {
+  const Prepared& p = prepared();
+  const int threads = static_cast<int>(state.range(0));
+  tolip::ground::MonteCarloSamples samples;
+  for (auto _ : state) {
+    const tolip::Status status =
+        tolip::ground::run_monte_carlo(p.nominal, *p.data, 1, kSamples, threads, &samples);
+    benchmark::DoNotOptimize(status);
+  }
+  state.counters["samples_per_s"] =
+      benchmark::Counter(static_cast<double>(kSamples), benchmark::Counter::kIsIterationInvariantRate);
+}
+// Wall-clock time: the threads' work is what is measured, not the calling thread's CPU time.
+BENCHMARK(BM_MonteCarloSamples)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace
