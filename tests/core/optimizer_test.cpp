@@ -78,7 +78,7 @@ TEST(Sec22Optimizer, ReferenceOptimizationIsPinnedToAllItsDigits) {
   static OptimizerResult result;
   test::build_reference_mission(test::ReferenceProgram::kInitialNominal, &mission);
   ASSERT_EQ(optimize_trajectory(mission, &workspace(), &result), Status::kOk);
-  EXPECT_EQ(result.payload_lb, 307.6771784567345);
+  EXPECT_EQ(result.payload_lb, 307.6782575333464);
   EXPECT_EQ(result.forward_runs, 19);
   EXPECT_EQ(result.backward_runs, 15);
   EXPECT_EQ(result.optimization_runs, 15);

@@ -97,7 +97,7 @@ TEST(Sec22Convergence, ABudgetEndedOptimizationIsReportedAsExhaustedNotConverged
 // payload in the stage-4 jettison weight and payload_lb = 0 - converges from the crude program to
 // the held case's payload. Before issue 10 all 30 runs were failing guidance runs (and with the
 // payload kept separate, no optimization run was ever made): the first step after the lift-off
-// left psi at -1.7e14 deg. Measured: 307.67631 lb against the held 307.67718 (-0.0003 %), 19
+// left psi at -1.7e14 deg. Measured: 307.67738 lb against the held 307.67826 (-0.0003 %), 19
 // forward runs each; docs/theory/liftoff.md compares the two trajectories.
 TEST(Sec22Convergence, AHeritageDeckWithoutTheHeadingHoldConvergesToTheHeldPayload) {
   ScratchDirectory scratch("convergence_heritage");

@@ -78,10 +78,16 @@ TEST(Sec5WeakDirections, TheExampleHoldsNothing) {
   EXPECT_EQ(d["failed_runs_recovered"].get<int>(), 0);
 }
 
-// A flat crude program (theta 5 deg from 88 s): guidance struggles and its 29th forward run, a
-// guidance step, goes below the surface. That run is listed with its own status and no payoff;
-// the next attempt starts again from the last good nominal at half the step, flies, and the case
-// goes on to its final guidance run instead of ending with kAltitudeBelowSurface at run 29.
+// A flat crude program (theta 5 deg from 88 s): guidance struggles. Its second guidance step flies
+// but does not reduce the errors; the same step at half size (run 4) goes below the surface. That
+// run is listed with its own status and no payoff or corrections, and the step is retried from the
+// same last good nominal (run 2) at half the size each time, up to kCrashRecoveryHalvings = 10
+// times (runs 4-13); here every retry fails as well, so guidance ends with the last good nominal
+// and the case goes on to its final guidance run (14) instead of ending with the crash's status.
+// (Before the exact Sec. 14 integral the same deck crashed at run 29 and run 30 flew half the step.
+// That the retries down to 1/1024 of the step all fail is a finding: the closed-loop steering of
+// the first 20 points ends near-singular here (condition 4e20 at point 1) and amplifies the
+// payload change, so the runs do not approach the nominal; docs/theory/optimizer.md "Failed runs".)
 TEST(Sec22FailedRuns, ARunBelowTheSurfaceIsRetriedFromTheLastGoodNominalAndTheCaseGoesOn) {
   ScratchDirectory scratch("hard_cases_crash");
   const std::string deck =
@@ -91,25 +97,40 @@ TEST(Sec22FailedRuns, ARunBelowTheSurfaceIsRetriedFromTheLastGoodNominalAndTheCa
                            {"max_forward_trajectories = 30", "max_forward_trajectories = 32"}});
   const CommandResult run = run_tolip_executable({"optimize", deck, "--json"});
   const nlohmann::json d = nlohmann::json::parse(run.out);
-  EXPECT_EQ(d["forward_runs"].get<int>(), 32);
-  EXPECT_GE(d["failed_runs_recovered"].get<int>(), 1);
   const nlohmann::json& runs = d["iterations"];
-  ASSERT_EQ(runs.size(), 32u);
-  const nlohmann::json& crashed = runs[28];
-  EXPECT_EQ(crashed["forward_run"].get<int>(), 29);
+  ASSERT_EQ(d["forward_runs"].get<int>(), 14);
+  ASSERT_EQ(runs.size(), 14u);
+  EXPECT_EQ(d["failed_runs_recovered"].get<int>(), 10);
+  // Run 3 flew the full step (worse errors), run 4 its half: below the surface.
+  const nlohmann::json& nominal = runs[1];
+  EXPECT_EQ(nominal["kind"], "guidance");
+  EXPECT_EQ(nominal["run_status"], "kOk");
+  EXPECT_EQ(runs[2]["run_status"], "kOk");
+  const nlohmann::json& crashed = runs[3];
+  EXPECT_EQ(crashed["forward_run"].get<int>(), 4);
   EXPECT_EQ(crashed["kind"], "guidance");
   EXPECT_EQ(crashed["run_status"], "kAltitudeBelowSurface");
   EXPECT_TRUE(crashed["payoff"].is_null());
   for (const nlohmann::json& c : crashed["constraint_corrections"]) EXPECT_TRUE(c.is_null());
-  // The retry: a guidance run from the same nominal (same payload base) that flew.
-  const nlohmann::json& retry = runs[29];
-  EXPECT_EQ(retry["kind"], "guidance");
-  EXPECT_EQ(retry["run_status"], "kOk");
-  EXPECT_FALSE(retry["payoff"].is_null());
-  EXPECT_NEAR(retry["payload_increment_lb"].get<double>(),
-              0.5 * crashed["payload_increment_lb"].get<double>(), 1e-6);
-  EXPECT_EQ(runs[31]["kind"], "final_guidance");
-  // Not converged (the budget ends guidance), but for that reason, not because a run crashed.
+  EXPECT_NEAR(crashed["payload_increment_lb"].get<double>(),
+              0.5 * runs[2]["payload_increment_lb"].get<double>(), 1e-9);
+  // The retries: from the same nominal (same payload base), each at half the step before.
+  const double base_lb = nominal["payload_lb"].get<double>();
+  for (int k = 4; k < 13; ++k) {
+    const nlohmann::json& retry = runs[k];
+    EXPECT_EQ(retry["kind"], "guidance") << k;
+    EXPECT_EQ(retry["run_status"], "kAltitudeBelowSurface") << k;
+    EXPECT_TRUE(retry["payoff"].is_null()) << k;
+    EXPECT_NEAR(retry["payload_increment_lb"].get<double>(),
+                0.5 * runs[k - 1]["payload_increment_lb"].get<double>(), 1e-9)
+        << k;
+    EXPECT_NEAR(retry["payload_lb"].get<double>() - retry["payload_increment_lb"].get<double>(), base_lb,
+                1e-9)
+        << k;
+  }
+  EXPECT_EQ(runs[13]["kind"], "final_guidance");
+  EXPECT_EQ(runs[13]["run_status"], "kOk");
+  // Not converged, and for that reason (guidance ended), not the crash's kAltitudeBelowSurface.
   EXPECT_EQ(d["status"], "kGuidanceDidNotConverge");
   EXPECT_FALSE(d["trajectory"].empty());
   const CommandResult listing = run_tolip_executable({"optimize", deck});

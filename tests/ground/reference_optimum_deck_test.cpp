@@ -1,10 +1,14 @@
 // The bundled example deck (examples/scout/reference_optimum.toml) flown by the core reproduces the
 // independent oracle's burnout state and orbit: the deck, its reader and the core agree end to end.
+// It flies the oracle's own Sec. 14 tables, as tests/core/reference_trajectory_test.cpp does and
+// for the same reason (test::use_oracle_thrust_tables): the oracle's A and B are Simpson's rule,
+// the core's exact; the deck's tables are first checked to give the core's reference-case tables.
 #include <gtest/gtest.h>
 
 #include <memory>
 
 #include "support/reference_data.hpp"
+#include "support/reference_mission.hpp"
 #include "tolip/orbit/orbit_elements.hpp"
 #include "tolip/trajectory/trajectory.hpp"
 #include "tolip_ground/deck.hpp"
@@ -21,6 +25,21 @@ TEST(Sec4ReferenceDeck, SimulateReproducesOracleBurnoutAndOrbit) {
   auto prepared = std::make_unique<PreparedCase>();
   auto trajectory = std::make_unique<Trajectory>();
   ASSERT_EQ(prepare_case(*mission, prepared.get()), Status::kOk);
+  // The deck read gives the same Sec. 14 tables as the reference case built from the JSON.
+  auto reference = std::make_unique<Mission>();
+  auto reference_prepared = std::make_unique<PreparedCase>();
+  test::build_reference_mission(test::ReferenceProgram::kOptimum, reference.get());
+  ASSERT_EQ(prepare_case(*reference, reference_prepared.get()), Status::kOk);
+  for (int code = 1; code <= 4; ++code) {
+    const ModifiedThrustTable& from_deck = prepared->modified_thrust_lbf[stage_index(code)];
+    const ModifiedThrustTable& from_json = reference_prepared->modified_thrust_lbf[stage_index(code)];
+    ASSERT_EQ(from_deck.size(), from_json.size()) << "stage " << code;
+    for (int i = 0; i < from_deck.size(); ++i) {
+      EXPECT_NEAR(from_deck.x(i), from_json.x(i), 1e-9) << code << " " << i;
+      EXPECT_NEAR(from_deck.y(i), from_json.y(i), 1e-6) << code << " " << i;
+    }
+  }
+  test::use_oracle_thrust_tables(prepared.get());
   ASSERT_EQ(fly_trajectory(*mission, *prepared, trajectory.get()), Status::kOk);
 
   const auto& oracle = test::scout_reference()["oracle_solution"];

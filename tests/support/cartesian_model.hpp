@@ -29,16 +29,20 @@ inline Cartesian to_cartesian(const Constants& k, const StateVector& x) {
   return c;
 }
 
+// Angles from the vertical by atan2 of the along and across components, not asin of their ratio
+// to the norm: at gamma = 90 deg exactly (the state the vertical lift-off ends in) round-off puts
+// v.up / |v| above 1 and asin returns NaN.
 inline StateVector from_cartesian(const Constants& k, const Cartesian& c) {
   const double r = c.r.norm();
-  const double l = std::asin(c.r.z() / r);
+  const double l = std::atan2(c.r.z(), std::hypot(c.r.x(), c.r.y()));
   const double t = std::atan2(c.r.y(), c.r.x());
   const Vector3 up = c.r / r;
   const Vector3 east(-std::sin(t), std::cos(t), 0.0);
   const Vector3 north = up.cross(east);
   const Vector3 v_rel = c.v - Vector3(0.0, 0.0, k.earth_rotation_rate_rad_s).cross(c.r);
   StateVector x;
-  x << v_rel.norm(), std::asin(v_rel.dot(up) / v_rel.norm()), r,
+  const double v_up = v_rel.dot(up);
+  x << v_rel.norm(), std::atan2(v_up, (v_rel - v_up * up).norm()), r,
       std::atan2(v_rel.dot(east), v_rel.dot(north)), l, t;
   return x;
 }

@@ -22,6 +22,13 @@ void fill(TableT* table, const nlohmann::json& xs, const nlohmann::json& ys, dou
 
 }  // namespace
 
+void use_oracle_thrust_tables(PreparedCase* prepared) {
+  const nlohmann::json& tables = scout_reference()["oracle_solution"]["modified_thrust_tables_section14"];
+  for (const auto& [key, t] : tables.items()) {
+    fill(&prepared->modified_thrust_lbf[stage_index(std::stoi(key))], t["time_s"], t["vacuum_thrust_lbf"]);
+  }
+}
+
 void build_reference_mission(ReferenceProgram program, Mission* m) {
   const nlohmann::json& ref = scout_reference();
   const nlohmann::json& ct = ref["constants_block10_CT1"];

@@ -2,6 +2,7 @@
 #include "tolip/optimizer/exchange_ratios.hpp"
 
 #include "tolip/optimizer/constraint_parameters.hpp"
+#include "tolip/optimizer/constraint_set.hpp"
 
 namespace tolip {
 namespace {
@@ -40,36 +41,18 @@ bool in_sequence(const Mission& mission, int code) {
 // The optimizer's constraint list as it finished (the heating constraint included if it joined).
 // Every listed constraint counts, inequalities too: the eq. 9-22 partials were computed with all of
 // them held (an inequality that the optimum does not need has a partial near 0).
-struct ConstraintSet {
-  int count = 0;
-  ConstraintCode codes[kMaxConstraints];
-  bool payload_payoff = false;
-};
-
+// The optimizer's final constraint list (tolip/optimizer/constraint_set.hpp), rebuilt from its result.
 Status make_constraint_set(const Mission& mission, const OptimizerResult& result, ConstraintSet* set) {
   if (result.constraint_count <= 0 || result.constraint_count > kMaxConstraints) return Status::kNotPrepared;
   set->count = result.constraint_count;
   for (int i = 0; i < set->count; ++i) {
     const Status status = decode_constraint_code(result.codes[i], &set->codes[i]);
     if (!ok(status)) return status;
+    set->desired[i] = result.desired[i];
+    set->deadband[i] = (i == 0) ? 1.0 : result.tolerance[i];
+    set->inequality[i] = result.inequality[i];
   }
   set->payload_payoff = mission.options.payoff() == 0 && set->codes[0].kind == ConstraintQuantity::kPayload;
-  return Status::kOk;
-}
-
-// Payoff and constraint values of a flown trajectory, as the optimizer evaluates them (the payload
-// payoff is the payload itself).
-Status evaluate(const ConstraintSet& set, const Mission& mission, const Trajectory& trajectory,
-                double values[kMaxConstraints]) {
-  for (int i = 0; i < set.count; ++i) {
-    const int index = constraint_point_index(set.codes[i], trajectory);
-    if (index < 0) return Status::kValueOutOfRange;
-    const ConstraintPoint point = constraint_point_at(mission, trajectory, index);
-    const Status status =
-        constraint_value(mission.constants, mission.launch, set.codes[i], point, &values[i]);
-    if (!ok(status)) return status;
-  }
-  if (set.payload_payoff) values[0] = mission.vehicle.payload_lb;
   return Status::kOk;
 }
 
@@ -92,7 +75,7 @@ Status fly_and_evaluate(const OptimizerWorkspace& ws, const ConstraintSet& set, 
   }
   const Status status = fly_trajectory(scratch->mission, *prepared, inputs, out);
   if (!ok(status)) return status;
-  return evaluate(set, scratch->mission, *out, values);
+  return evaluate_constraints(set, scratch->mission, *out, values);
 }
 
 // The timeline slot where a change of `parameter` of stage `code` starts to act: its ignition for

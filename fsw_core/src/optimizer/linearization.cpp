@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "tolip/optimizer/constraint_parameters.hpp"
+#include "tolip/optimizer/constraint_set.hpp"
 
 namespace tolip {
 namespace {
@@ -21,12 +22,9 @@ constexpr int kKktSize = kLinearizationKktSize;
 
 // ---- the constraints imposed during linearization --------------------------------------------
 
-struct LinearConstraints {
-  int count = 0;  // constraints imposed (payoff, inclination, node left out)
-  ConstraintCode codes[kMaxConstraints];
-  double desired[kMaxConstraints] = {};
-  double deadband[kMaxConstraints] = {};
-  bool inequality[kMaxConstraints] = {};
+// The constraint set of tolip/optimizer/constraint_set.hpp without the payoff, the inclination and
+// the node (docs/theory/linearization.md), with the linearization deadbands (DA14(14..25)).
+struct LinearConstraints : ConstraintSet {
   // Payload payoff: the payload is the payoff, which linearization does not impose, so it is free
   // to absorb what the straight segments lose (docs/theory/linearization.md).
   bool payload_free = false;
@@ -41,42 +39,15 @@ Status select_constraints(const Mission& mission, LinearConstraints* out) {
   out->payload_free = payoff.kind == ConstraintQuantity::kPayload;
   for (int i = 1; i < list.count; ++i) {
     ConstraintCode code;
-    const Status status = decode_constraint_code(list.codes[i], &code);
+    Status status = decode_constraint_code(list.codes[i], &code);
     if (!ok(status)) return status;
     if (code.kind == ConstraintQuantity::kInclination || code.kind == ConstraintQuantity::kNodeLongitude)
       continue;
-    const int j = out->count++;
-    out->codes[j] = code;
-    out->desired[j] = list.desired[i];
-    out->deadband[j] = list.deadband_linearization[i - 1];
-    out->inequality[j] =
-        code.kind == ConstraintQuantity::kDynamicPressure && mission.options.qbar_constraint_type() == 1;
-    if (!(out->deadband[j] > 0.0)) return Status::kValueOutOfRange;
-  }
-  return Status::kOk;
-}
-
-double correction(const LinearConstraints& c, int j, double achieved) {
-  const double d = -constraint_deviation(c.codes[j], achieved, c.desired[j]);
-  return (c.inequality[j] && d > 0.0) ? 0.0 : d;
-}
-
-Status evaluate(const LinearConstraints& c, const Mission& mission, const Trajectory& t, double achieved[]) {
-  for (int j = 0; j < c.count; ++j) {
-    const int index = constraint_point_index(c.codes[j], t);
-    if (index < 0) return Status::kValueOutOfRange;
-    const Status status = constraint_value(mission.constants, mission.launch, c.codes[j],
-                                           constraint_point_at(mission, t, index), &achieved[j]);
+    status =
+        append_constraint(code, list.desired[i], list.deadband_linearization[i - 1], mission.options, out);
     if (!ok(status)) return status;
   }
   return Status::kOk;
-}
-
-bool within_deadbands(const LinearConstraints& c, const double achieved[]) {
-  for (int j = 0; j < c.count; ++j) {
-    if (std::fabs(correction(c, j, achieved[j])) > c.deadband[j]) return false;
-  }
-  return true;
 }
 
 // ---- break times and the program at the points -------------------------------------------------
@@ -225,7 +196,7 @@ Status solve_program(const LinearConstraints& c, const BackwardRun& backward, co
     }
   }
   for (int j = 0; j < c.count; ++j) {
-    rhs(n + j) += correction(c, j, achieved[j]) / c.deadband[j];
+    rhs(n + j) += constraint_correction(c, j, achieved[j]) / c.deadband[j];
     if (c.payload_free) kkt(n + j, breaks) = backward.payload(j) / c.deadband[j];
     for (int b = 0; b < n; ++b) kkt(b, n + j) = kkt(n + j, b);
   }
@@ -563,7 +534,7 @@ Status linearize_pitch_program(const OptimizerWorkspace& optimized, Linearizatio
   status = fly_trajectory(ws->mission, ws->prepared, ws->program, &ws->nominal);
   if (!ok(status)) return out->status = status;
   double achieved[kMaxConstraints] = {};
-  status = evaluate(c, ws->mission, ws->nominal, achieved);
+  status = evaluate_constraints(c, ws->mission, ws->nominal, achieved);
   if (!ok(status)) return out->status = status;
 
   LinearProgram program = base;
@@ -574,14 +545,8 @@ Status linearize_pitch_program(const OptimizerWorkspace& optimized, Linearizatio
   out->reference_flights = 0;
   while (out->forward_runs < budget && !success) {
     ConstraintTerminal terminals[kMaxConstraints];
-    for (int j = 0; j < c.count; ++j) {
-      terminals[j].point = constraint_point_index(c.codes[j], ws->nominal);
-      terminals[j].heat_integral = c.codes[j].kind == ConstraintQuantity::kTotalHeating;
-      status = constraint_partials(ws->mission.constants, ws->mission.launch, c.codes[j],
-                                   constraint_point_at(ws->mission, ws->nominal, terminals[j].point),
-                                   &terminals[j].partials);
-      if (!ok(status)) return out->status = status;
-    }
+    status = constraint_terminals(c, ws->mission, ws->nominal, terminals);
+    if (!ok(status)) return out->status = status;
     status = run_backward(ws->mission, ws->prepared, ws->nominal, c.count, terminals, &ws->backward);
     if (!ok(status)) return out->status = status;
     ++out->backward_runs;
@@ -618,12 +583,12 @@ Status linearize_pitch_program(const OptimizerWorkspace& optimized, Linearizatio
     status = fly_linearized(*ws, out->body_dynamics, &ws->candidate);
     ++out->forward_runs;
     if (!ok(status)) return out->status = status;
-    status = evaluate(c, ws->mission, ws->candidate, achieved);
+    status = evaluate_constraints(c, ws->mission, ws->candidate, achieved);
     if (!ok(status)) return out->status = status;
     ws->nominal = ws->candidate;
     out->rate_limits_met =
         meets_rate_limits(ws->mission, coast_rate_after_program(ws->mission, ws->prepared, program), program);
-    out->constraints_met = within_deadbands(c, achieved);
+    out->constraints_met = within_deadbands(c, 0, achieved);
     success = out->rate_limits_met && out->constraints_met;
 
     // IP(6) = 1 (Sec. 10): after a successful point-mass linearization, the program becomes the
@@ -642,11 +607,11 @@ Status linearize_pitch_program(const OptimizerWorkspace& optimized, Linearizatio
       status = fly_linearized(*ws, true, &ws->candidate);
       ++out->reference_flights;
       if (!ok(status)) return out->status = status;
-      status = evaluate(c, ws->mission, ws->candidate, achieved);
+      status = evaluate_constraints(c, ws->mission, ws->candidate, achieved);
       if (!ok(status)) return out->status = status;
       for (int j = 0; j < c.count; ++j) out->point_mass_program_6d_achieved[j] = achieved[j];
       ws->nominal = ws->candidate;
-      out->constraints_met = within_deadbands(c, achieved);
+      out->constraints_met = within_deadbands(c, 0, achieved);
       success = out->rate_limits_met && out->constraints_met;
     }
   }
@@ -659,7 +624,7 @@ Status linearize_pitch_program(const OptimizerWorkspace& optimized, Linearizatio
     out->desired[j] = c.desired[j];
     out->achieved[j] = achieved[j];
     out->tolerance[j] = c.deadband[j];
-    out->met[j] = std::fabs(correction(c, j, achieved[j])) <= c.deadband[j];
+    out->met[j] = std::fabs(constraint_correction(c, j, achieved[j])) <= c.deadband[j];
   }
   status = linearized_payoff(ws->mission, ws->nominal, &out->payoff);
   if (!ok(status)) return out->status = status;

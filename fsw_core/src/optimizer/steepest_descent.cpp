@@ -9,6 +9,7 @@
 #include "tolip/earth/earth_model.hpp"
 #include "tolip/mission/adjustable_parameter.hpp"
 #include "tolip/optimizer/constraint_parameters.hpp"
+#include "tolip/optimizer/constraint_set.hpp"
 
 namespace tolip {
 namespace {
@@ -27,20 +28,16 @@ constexpr int kCrashRecoveryHalvings = 10;
 
 // ---- the case's constraints and adjustable parameters -----------------------------------------
 
-struct Problem {
-  int constraint_count = 0;
-  ConstraintCode codes[kMaxConstraints];
-  double desired[kMaxConstraints] = {};
-  double scale[kMaxConstraints] = {};  // deadband (payoff: 1): constraints are steered in deadbands
+// The run's constraint set (tolip/optimizer/constraint_set.hpp: entry 0 the payoff with deadband 1;
+// the constraints are steered in deadbands) and what the steering adds to it.
+struct Problem : ConstraintSet {
   bool payload_is_control = false;
   double payload_weight = 1.0;  // DA2(15)
   int adjustable_count = 0;
   AdjustableParameter adjustable[kMaxAdjustableParameters] = {};
   double adjustable_weight[kMaxAdjustableParameters] = {};
   bool adjustable_active[kMaxAdjustableParameters] = {};
-  // Inequalities (achieved <= desired): total heating (IP(2), Sec. 13) and dynamic pressure under
-  // IP(13) = 1. The heating constraint joins the list when the heat integral first exceeds its limit.
-  bool inequality[kMaxConstraints] = {};
+  // The heating constraint (IP(2), Sec. 13) joins the list when the heat integral first exceeds its limit.
   bool heating_listed = false;
   bool heating_active = false;
   double heating_limit_btu_ft2 = 0.0;
@@ -49,13 +46,14 @@ struct Problem {
 
 Status make_problem(const Mission& mission, Problem* problem) {
   const ConstraintList& list = mission.constraints;
-  problem->constraint_count = list.count;
+  problem->count = 0;
   for (int i = 0; i < list.count; ++i) {
-    const Status status = decode_constraint_code(list.codes[i], &problem->codes[i]);
+    ConstraintCode code;
+    Status status = decode_constraint_code(list.codes[i], &code);
     if (!ok(status)) return status;
-    problem->desired[i] = list.desired[i];
-    problem->scale[i] = (i == 0) ? 1.0 : list.deadband_optimization[i - 1];
-    if (!(problem->scale[i] > 0.0)) return Status::kValueOutOfRange;
+    const double deadband = (i == 0) ? 1.0 : list.deadband_optimization[i - 1];
+    status = append_constraint(code, list.desired[i], deadband, mission.options, problem);
+    if (!ok(status)) return status;
   }
   const int payoff = mission.options.payoff();
   const ConstraintQuantity payoff_kind = problem->codes[0].kind;
@@ -65,12 +63,8 @@ Status make_problem(const Mission& mission, Problem* problem) {
                           (payoff == 2 && payoff_kind == ConstraintQuantity::kAltitude);
   if (!consistent || problem->codes[0].is_stage_point) return Status::kPayoffNotSupported;
   problem->payload_is_control = payoff == 0;
+  problem->payload_payoff = problem->payload_is_control;
   problem->payload_weight = mission.misc.payload_weighting_factor;
-
-  for (int i = 1; i < list.count; ++i) {
-    problem->inequality[i] = mission.options.qbar_constraint_type() == 1 &&
-                             problem->codes[i].kind == ConstraintQuantity::kDynamicPressure;
-  }
   if (mission.options.heating_constraint()) {
     if (list.codes[list.count] != 14) return Status::kUnknownConstraintCode;
     if (list.count + 1 > kMaxConstraints) return Status::kTooManyConstraints;
@@ -100,67 +94,32 @@ Status make_problem(const Mission& mission, Problem* problem) {
 
 // Sec. 13: once the heat integral exceeds its limit the heating constraint is appended to the list
 // and kept for the rest of the case.
-void activate_heating_if_exceeded(const Trajectory& nominal, Problem* problem) {
+void activate_heating_if_exceeded(const Trajectory& nominal, const Options& options, Problem* problem) {
   if (!problem->heating_listed || problem->heating_active) return;
   if (!(nominal.heat_integral_btu_ft2 > problem->heating_limit_btu_ft2)) return;
-  const int i = problem->constraint_count++;
-  decode_constraint_code(14, &problem->codes[i]);
-  problem->desired[i] = problem->heating_limit_btu_ft2;
-  problem->scale[i] = problem->heating_deadband_btu_ft2;
-  problem->inequality[i] = true;
+  ConstraintCode heating;
+  decode_constraint_code(14, &heating);
+  // Room and a positive deadband were checked by make_problem.
+  append_constraint(heating, problem->heating_limit_btu_ft2, problem->heating_deadband_btu_ft2, options,
+                    problem);
   problem->heating_active = true;
 }
 
-// ---- constraint values and their adjoint initial conditions -----------------------------------
+// ---- constraint values: tolip/optimizer/constraint_set.hpp -------------------------------------
 
-Status evaluate_constraints(const Problem& problem, const Mission& mission, const Trajectory& trajectory,
-                            double achieved[kMaxConstraints]) {
-  for (int i = 0; i < problem.constraint_count; ++i) {
-    const int index = constraint_point_index(problem.codes[i], trajectory);
-    if (index < 0) return Status::kValueOutOfRange;
-    const ConstraintPoint point = constraint_point_at(mission, trajectory, index);
-    const Status status =
-        constraint_value(mission.constants, mission.launch, problem.codes[i], point, &achieved[i]);
-    if (!ok(status)) return status;
-  }
-  // The payload payoff is the payload itself (the final weight is the inert weight plus it).
-  if (problem.payload_is_control) achieved[0] = mission.vehicle.payload_lb;
-  return Status::kOk;
-}
-
-Status constraint_terminals(const Problem& problem, const Mission& mission, const Trajectory& trajectory,
-                            ConstraintTerminal terminals[kMaxConstraints]) {
-  for (int i = 0; i < problem.constraint_count; ++i) {
-    terminals[i].point = constraint_point_index(problem.codes[i], trajectory);
-    if (terminals[i].point < 0) return Status::kValueOutOfRange;
-    terminals[i].heat_integral = problem.codes[i].kind == ConstraintQuantity::kTotalHeating;
-    const ConstraintPoint point = constraint_point_at(mission, trajectory, terminals[i].point);
-    const Status status = constraint_partials(mission.constants, mission.launch, problem.codes[i], point,
-                                              &terminals[i].partials);
-    if (!ok(status)) return status;
-  }
-  return Status::kOk;
-}
-
-// desired - achieved, wrapped into [-pi, pi) for the angles that are longitudes.
-// For an inequality only an excess is an error.
 double correction(const Problem& problem, int i, const double achieved[kMaxConstraints]) {
-  const double c = -constraint_deviation(problem.codes[i], achieved[i], problem.desired[i]);
-  return (problem.inequality[i] && c > 0.0) ? 0.0 : c;
+  return constraint_correction(problem, i, achieved[i]);
 }
 
 bool within_deadbands(const Problem& problem, const double achieved[kMaxConstraints]) {
-  for (int i = 1; i < problem.constraint_count; ++i) {
-    if (std::fabs(correction(problem, i, achieved)) > problem.scale[i]) return false;
-  }
-  return true;
+  return tolip::within_deadbands(problem, 1, achieved);
 }
 
 // Constraint errors measured in deadbands (the guidance runs' figure of merit).
 double error_norm(const Problem& problem, const double achieved[kMaxConstraints]) {
   double sum = 0.0;
-  for (int i = 1; i < problem.constraint_count; ++i) {
-    const double e = correction(problem, i, achieved) / problem.scale[i];
+  for (int i = 1; i < problem.count; ++i) {
+    const double e = correction(problem, i, achieved) / problem.deadband[i];
     sum += e * e;
   }
   return std::sqrt(sum);
@@ -207,8 +166,8 @@ struct Steering {
 // steering leaves out (the payoff on guidance runs, held constraints).
 ConstraintVector scaled(const Problem& problem, const ConstraintVector& v, const Steering& steering) {
   ConstraintVector out = ConstraintVector::Zero();
-  for (int i = steering.first; i < problem.constraint_count; ++i) {
-    if (!steering.held[i]) out(i) = v(i) / problem.scale[i];
+  for (int i = steering.first; i < problem.count; ++i) {
+    if (!steering.held[i]) out(i) = v(i) / problem.deadband[i];
   }
   return out;
 }
@@ -245,7 +204,7 @@ constexpr double kMinimumSteerableDeadbands = 0.02;
 void hold_weak_directions(const Problem& problem, double dp2, SquareMatrix* m, Steering* steering) {
   SquareMatrix schur = *m;
   bool taken[kMaxConstraints] = {};
-  const int count = problem.constraint_count;
+  const int count = problem.count;
   for (int round = 1; round < count; ++round) {
     int best = -1;
     for (int i = 1; i < count; ++i) {
@@ -299,7 +258,7 @@ Status build_steering(const Problem& problem, const BackwardRun& backward, const
     m += problem.payload_weight * s * s.transpose();
   }
   for (int i = 0; i < kMaxConstraints; ++i) {
-    if (i >= first && i < problem.constraint_count) continue;
+    if (i >= first && i < problem.count) continue;
     m.row(i).setZero();
     m.col(i).setZero();
     m(i, i) = 1.0;
@@ -322,7 +281,7 @@ void payoff_partials(const Problem& problem, const SquareMatrix& full, double ou
   coupling(0) = 0.0;
   const ConstraintVector scaled_partials = cholesky.solve(coupling);
   out[0] = 0.0;
-  for (int i = 1; i < problem.constraint_count; ++i) out[i] = scaled_partials(i) / problem.scale[i];
+  for (int i = 1; i < problem.count; ++i) out[i] = scaled_partials(i) / problem.deadband[i];
 }
 
 // Eqs. 5-32..5-34: the payoff improvement that a control change of size dP^2 buys while removing
@@ -333,9 +292,9 @@ bool initial_payoff_improvement(const Problem& problem, const Steering& optimiza
   const double a11 = a(0, 0);
   double n_dphi = 0.0;
   double dphi_m_dphi = 0.0;
-  for (int i = 1; i < problem.constraint_count; ++i) {
+  for (int i = 1; i < problem.count; ++i) {
     n_dphi += a(i, 0) * dphi(i);
-    for (int j = 1; j < problem.constraint_count; ++j) dphi_m_dphi += dphi(i) * a(i, j) * dphi(j);
+    for (int j = 1; j < problem.count; ++j) dphi_m_dphi += dphi(i) * a(i, j) * dphi(j);
   }
   const double discriminant = n_dphi * n_dphi - a11 * (dphi_m_dphi - dp2);
   if (!(a11 > 0.0) || !(discriminant > 0.0)) return false;
@@ -477,8 +436,8 @@ class ClosedLoopSteering final : public PitchFeedback {
     dx[6] = mass_change_slug_;
     ConstraintVector rhs = dpsi_;
     const AdjointMatrix& lambda = backward_.lambda[point];
-    for (int i = steering_.first; i < problem_.constraint_count; ++i) {
-      if (!steering_.held[i]) rhs(i) -= lambda.col(i).dot(dx) / problem_.scale[i];
+    for (int i = steering_.first; i < problem_.count; ++i) {
+      if (!steering_.held[i]) rhs(i) -= lambda.col(i).dot(dx) / problem_.deadband[i];
     }
     const ConstraintVector nu = cholesky.solve(rhs);
     for (int j = point; j < backward_.point_count; ++j) {
@@ -538,15 +497,13 @@ class Iteration {
 
 ConstraintVector Iteration::corrections(const double achieved[kMaxConstraints]) const {
   ConstraintVector d = ConstraintVector::Zero();
-  for (int i = 1; i < problem_.constraint_count; ++i)
-    d(i) = correction(problem_, i, achieved) / problem_.scale[i];
+  for (int i = 1; i < problem_.count; ++i) d(i) = correction(problem_, i, achieved) / problem_.deadband[i];
   return d;
 }
 
 double Iteration::corrected_payoff(const double achieved[kMaxConstraints]) const {
   double corrected = achieved[0];
-  for (int i = 1; i < problem_.constraint_count; ++i)
-    corrected += partials_[i] * correction(problem_, i, achieved);
+  for (int i = 1; i < problem_.count; ++i) corrected += partials_[i] * correction(problem_, i, achieved);
   return corrected;
 }
 
@@ -584,7 +541,7 @@ void Iteration::record(RunKind kind, Status run_status, bool successful, double 
   r.corrected_payoff = flown ? corrected_payoff(candidate_achieved_) : nan;
   r.payload_lb = ws_->candidate_mission.vehicle.payload_lb;
   r.payload_increment_lb = ws_->candidate_mission.vehicle.payload_lb - ws_->mission.vehicle.payload_lb;
-  for (int i = 1; i < problem_.constraint_count; ++i) {
+  for (int i = 1; i < problem_.count; ++i) {
     r.constraint_corrections[i] = flown ? correction(problem_, i, candidate_achieved_) : nan;
     r.payoff_partials[i] = partials_[i];
     // The initial nominal follows no backward run: nothing was steered or held.
@@ -602,10 +559,10 @@ Status Iteration::fly_nominal_from_table() {
   for (int k = 0; k < ws_->nominal.point_count; ++k)
     ws_->program.theta_rad[k] = ws_->nominal.points[k].theta_rad;
   classify_points(ws_->mission, ws_->nominal, &roles_);
-  activate_heating_if_exceeded(ws_->nominal, &problem_);
+  activate_heating_if_exceeded(ws_->nominal, ws_->mission.options, &problem_);
   status = evaluate_constraints(problem_, ws_->mission, ws_->nominal, nominal_achieved_);
   if (!ok(status)) return status;
-  for (int i = 0; i < problem_.constraint_count; ++i) candidate_achieved_[i] = nominal_achieved_[i];
+  for (int i = 0; i < problem_.count; ++i) candidate_achieved_[i] = nominal_achieved_[i];
   ws_->candidate_mission = ws_->mission;
   record(RunKind::kInitialNominal, Status::kOk, within_deadbands(problem_, nominal_achieved_), 0.0);
   return Status::kOk;
@@ -618,7 +575,7 @@ Status Iteration::launch_sensitivities() {
     if (problem_.adjustable[p] == AdjustableParameter::kLaunchAzimuth)
       azimuth = problem_.adjustable_active[p];
   }
-  for (int i = 0; i < problem_.constraint_count; ++i) {
+  for (int i = 0; i < problem_.count; ++i) {
     launch_columns_.launch_time(i) = constraint_partial_wrt_launch_time(problem_.codes[i]);
   }
   if (!azimuth) return Status::kOk;
@@ -636,7 +593,7 @@ Status Iteration::launch_sensitivities() {
       status = evaluate_constraints(problem_, ws_->candidate_mission, ws_->candidate, achieved[side]);
     if (!ok(status)) return status;
   }
-  for (int i = 0; i < problem_.constraint_count; ++i) {
+  for (int i = 0; i < problem_.count; ++i) {
     launch_columns_.azimuth(i) =
         -constraint_deviation(problem_.codes[i], achieved[1][i], achieved[0][i]) / (2.0 * kAzimuthStepRad);
   }
@@ -647,8 +604,7 @@ Status Iteration::backward(int first, Steering* steering) {
   ConstraintTerminal terminals[kMaxConstraints];
   Status status = constraint_terminals(problem_, ws_->mission, ws_->nominal, terminals);
   if (!ok(status)) return status;
-  status = run_backward(ws_->mission, ws_->prepared, ws_->nominal, problem_.constraint_count, terminals,
-                        &ws_->backward);
+  status = run_backward(ws_->mission, ws_->prepared, ws_->nominal, problem_.count, terminals, &ws_->backward);
   if (!ok(status)) return status;
   ++result_->backward_runs;
   status = launch_sensitivities();
@@ -750,12 +706,12 @@ void Iteration::accept_candidate() {
   ws_->prepared = ws_->candidate_prepared;
   ws_->program = ws_->candidate_program;
   ws_->nominal = ws_->candidate;
-  for (int i = 0; i < problem_.constraint_count; ++i) nominal_achieved_[i] = candidate_achieved_[i];
+  for (int i = 0; i < problem_.count; ++i) nominal_achieved_[i] = candidate_achieved_[i];
   classify_points(ws_->mission, ws_->nominal, &roles_);
   if (!problem_.heating_active) {
-    activate_heating_if_exceeded(ws_->nominal, &problem_);
+    activate_heating_if_exceeded(ws_->nominal, ws_->mission.options, &problem_);
     if (problem_.heating_active) {
-      const int i = problem_.constraint_count - 1;
+      const int i = problem_.count - 1;
       nominal_achieved_[i] = ws_->nominal.heat_integral_btu_ft2;
     }
   }
@@ -861,12 +817,12 @@ Status Iteration::run(const Mission& input) {
   result_->converged = guidance_converged && result_->optimization_runs > 0 &&
                        result_->optimization_stop == OptimizationStop::kImprovementBelowMinimum &&
                        result_->final_guidance_met;
-  result_->constraint_count = problem_.constraint_count;
-  for (int i = 0; i < problem_.constraint_count; ++i) {
+  result_->constraint_count = problem_.count;
+  for (int i = 0; i < problem_.count; ++i) {
     result_->codes[i] = problem_.codes[i].code;
     result_->desired[i] = problem_.desired[i];
     result_->achieved[i] = nominal_achieved_[i];
-    result_->tolerance[i] = (i == 0) ? 0.0 : problem_.scale[i];
+    result_->tolerance[i] = (i == 0) ? 0.0 : problem_.deadband[i];
     result_->inequality[i] = problem_.inequality[i];
     result_->payoff_partials[i] = partials_[i];
   }

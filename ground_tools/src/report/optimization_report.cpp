@@ -16,6 +16,7 @@
 #include "tolip/earth/earth_model.hpp"
 #include "tolip/mission/adjustable_parameter.hpp"
 #include "tolip/optimizer/constraint_parameters.hpp"
+#include "tolip/optimizer/constraint_set.hpp"
 #include "tolip_ground/dispersion_report.hpp"
 #include "tolip_ground/optimization_report.hpp"
 
@@ -639,9 +640,7 @@ ConstraintSummary describe_constraint(const Mission& mission, int code, Constrai
   c.stage = decoded.is_stage_point ? decoded.stage_code : 0;
   c.unit = text.unit;
   c.angle = c.unit == "rad";
-  c.inequality =
-      decoded.kind == ConstraintQuantity::kTotalHeating ||
-      (decoded.kind == ConstraintQuantity::kDynamicPressure && mission.options.qbar_constraint_type() == 1);
+  c.inequality = is_inequality_constraint(decoded, mission.options);
   *decoded_out = decoded;
   return c;
 }
@@ -649,7 +648,7 @@ ConstraintSummary describe_constraint(const Mission& mission, int code, Constrai
 void judge(const ConstraintCode& decoded, ConstraintSummary* c) {
   c->error = std::isfinite(c->achieved) ? constraint_deviation(decoded, c->achieved, c->desired) : kNaN;
   c->met = std::isfinite(c->error) &&
-           (c->inequality ? c->error <= c->tolerance : std::fabs(c->error) <= c->tolerance);
+           constraint_met(decoded, c->inequality, c->achieved, c->desired, c->tolerance);
 }
 
 }  // namespace

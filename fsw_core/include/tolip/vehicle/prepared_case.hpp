@@ -24,7 +24,7 @@ struct StageTimeline {
 
 // Sec. 14 re-tabulation of one powered stage's vacuum thrust.
 struct ThrustModification {
-  double ideal_velocity_input_ft_s = 0.0;  // A: RK4 (Simpson) over the input table
+  double ideal_velocity_input_ft_s = 0.0;  // A: exact integral of g0 T / W over the input table
   double ideal_velocity_grid_ft_s = 0.0;   // B: the same over the interpolated grid table
   double scale = 1.0;                      // A / B, applied to every grid entry
   double new_initial_thrust_lbf = 0.0;     // T(0) that keeps the impulse of the first interval

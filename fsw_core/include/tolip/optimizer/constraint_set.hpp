@@ -1,0 +1,59 @@
+// The constraint list of a run (data block 8, manual Sec. 5, 9, 13, 22): which constraints are
+// active, which are inequalities, their deadbands, their values on a flown trajectory, the
+// corrections the steering asks for, whether a run meets them, and the terminal partials that
+// start the backward run. The optimizer (steepest descent), the linearization, the exchange
+// ratios and the optimization report use this one description; none re-derives it
+// (issue 18 item 1, docs/architecture.md).
+#pragma once
+
+#include "tolip/core/status.hpp"
+#include "tolip/mission/mission.hpp"
+#include "tolip/optimizer/backward_run.hpp"
+#include "tolip/optimizer/constraint_parameters.hpp"
+#include "tolip/trajectory/trajectory.hpp"
+
+namespace tolip {
+
+struct ConstraintSet {
+  int count = 0;
+  ConstraintCode codes[kMaxConstraints];
+  double desired[kMaxConstraints] = {};
+  // Per constraint, in its own units (the steering scales by it; a correction within it is met).
+  // The payoff, when it is entry 0, has 1 and is never judged.
+  double deadband[kMaxConstraints] = {};
+  bool inequality[kMaxConstraints] = {};  // achieved <= desired: only an excess is an error
+  // Entry 0 is the payoff and the payoff is the payload: its value is the case's payload, not a
+  // quantity of the trajectory (the final weight is the inert weight plus it).
+  bool payload_payoff = false;
+};
+
+// The inequality rule: total heating (IP(2), Sec. 13) always, dynamic pressure under IP(13) = 1.
+bool is_inequality_constraint(const ConstraintCode& code, const Options& options);
+
+// Appends one constraint (its inequality by the rule above); kTooManyConstraints when full,
+// kValueOutOfRange when the deadband is not positive.
+Status append_constraint(const ConstraintCode& code, double desired, double deadband, const Options& options,
+                         ConstraintSet* set);
+
+// desired - achieved of entry i (longitudes wrapped into [-pi, pi)); for an inequality a deficit
+// (achieved below desired) is no error: 0.
+double constraint_correction(const ConstraintSet& set, int i, double achieved);
+
+// The same judgement for one constraint outside a set (the report's deck constraints).
+bool constraint_met(const ConstraintCode& code, bool inequality, double achieved, double desired,
+                    double deadband);
+
+// Every entry from `first` on (1 when entry 0 is the payoff) has its correction inside its deadband.
+bool within_deadbands(const ConstraintSet& set, int first, const double achieved[kMaxConstraints]);
+
+// Values of every entry on a flown trajectory (stage-point codes at their stage's end); the
+// payload payoff is the payload. kValueOutOfRange when a stage point is not in the trajectory.
+Status evaluate_constraints(const ConstraintSet& set, const Mission& mission, const Trajectory& trajectory,
+                            double achieved[kMaxConstraints]);
+
+// Where each entry applies and its partial derivatives there: the backward run's initial
+// conditions (Sec. 5 ICS; total heating is integrated along the run instead).
+Status constraint_terminals(const ConstraintSet& set, const Mission& mission, const Trajectory& trajectory,
+                            ConstraintTerminal terminals[kMaxConstraints]);
+
+}  // namespace tolip
