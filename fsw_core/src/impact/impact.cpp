@@ -18,6 +18,12 @@ constexpr int kImpactStageCode = 6;
 constexpr double kCrossingAltitudeFt = 1e-3;
 constexpr double kCrossingTimeS = 1e-9;
 constexpr int kMaxCrossingIterations = 60;
+// A descending vacuum step ends this long after the predicted crossing of HAERO, so that the drag
+// is switched on at the start of a step (with its drag-limited length), never inside a long one.
+constexpr double kPastHaeroS = 0.05;
+// The density scale height of the lower atmosphere (the 1962 ARDC troposphere): the descending
+// step limit and the terminal-velocity test.
+constexpr double kDensityScaleHeightFt = 23000.0;
 
 const char* const kFailureTableNames[kImpactStages] = {"CD1F", "CD2F", "CD3F"};
 const char* const kCasingTableNames[kImpactStages] = {"CD1E", "CD2E", "CD3E"};
@@ -187,7 +193,10 @@ Status fly_to_impact(const Mission& mission, const PreparedCase& prepared, const
     if (eval.altitude_ft > haero_ft) left_atmosphere = true;
     const bool in_air = eval.altitude_ft <= haero_ft;
     const bool descending = x[kStateGamma] < 0.0;
-    if (in_air && descending && drag_accel > 0.5 * g0 &&
+    // Terminal velocity: drag balancing gravity, and quasi-steady - the relaxation time V / g short
+    // against the time to fall through a density scale height, V^2 < 0.1 g0 H (the balance passed
+    // through at re-entry speed is not one).
+    if (in_air && descending && drag_accel > 0.5 * g0 && v * v < 0.1 * g0 * kDensityScaleHeightFt &&
         std::fabs(eval.derivative[kStateV]) < steps.terminal_velocity_tolerance * g0) {
       terminal = true;  // MTERMG: once at terminal velocity, it stays (the air only thickens)
     }
@@ -202,16 +211,23 @@ Status fly_to_impact(const Mission& mission, const PreparedCase& prepared, const
       case ImpactRegime::kTerminalVelocity: dt = steps.terminal_velocity_s; break;
       case ImpactRegime::kOutOfAtmosphere: {
         dt = steps.out_of_atmosphere_s;
-        // Descending: come down to HAERO in steps no longer than the time left to it, so that the
-        // drag does not switch on deep inside a long vacuum step.
+        // Descending: end the step just below HAERO, so that the drag does not switch on deep
+        // inside a long vacuum step.
         const double sink_ft_s = -v * std::sin(x[kStateGamma]);
-        if (sink_ft_s > 0.0)
-          dt = std::fmin(dt, std::fmax(steps.reentered_s, (eval.altitude_ft - haero_ft) / sink_ft_s));
+        if (sink_ft_s > 0.0) dt = std::fmin(dt, (eval.altitude_ft - haero_ft) / sink_ft_s + kPastHaeroS);
         break;
       }
     }
     if (regime == ImpactRegime::kInAtmosphere || regime == ImpactRegime::kReentered) {
-      if (drag_accel > 0.0) dt = std::fmin(dt, steps.max_drag_velocity_fraction * v / drag_accel);
+      dt = std::fmin(dt, steps.max_drag_velocity_fraction * v / std::fmax(drag_accel, g0));
+      // The density, and the drag with it, changes e-fold per scale height: a step falls, or climbs
+      // while the drag still matters, at most a quarter of one.
+      const double climb_ft_s = v * std::sin(x[kStateGamma]);
+      if (climb_ft_s < 0.0 || drag_accel > 1e-3 * g0) {
+        dt = std::fmin(dt, 0.25 * kDensityScaleHeightFt / std::fmax(std::fabs(climb_ft_s), 1.0));
+      }
+      // Climbing out: end the step just above HAERO, where the drag switches off (as on the way in).
+      if (climb_ft_s > 0.0) dt = std::fmin(dt, (haero_ft - eval.altitude_ft) / climb_ft_s + kPastHaeroS);
     }
     dt = std::fmax(dt, steps.min_step_s);
 

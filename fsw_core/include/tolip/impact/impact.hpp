@@ -35,13 +35,15 @@ struct ImpactBody {
 // The step sizes of INTPIM's four regimes (the manual names the regimes but prints no values;
 // ours are docs/theory/impact.md's choices), and the limits of one impact trajectory.
 struct ImpactStepSizes {
-  double in_atmosphere_s = 1.0;       // not yet above HAERO since the failure or separation
+  double in_atmosphere_s = 5.0;       // not yet above HAERO since the failure or separation
   double out_of_atmosphere_s = 10.0;  // above HAERO (CT1(7)): no aerodynamics, a Kepler arc
-  double reentered_s = 1.0;           // back below HAERO
-  double terminal_velocity_s = 2.0;   // descending with drag balancing gravity (MTERMG set)
-  // In the atmosphere (not at terminal velocity) a step changes V through drag by at most this
-  // fraction: dt <= f V / (D / m). INTPIM's "step dependent upon the drag acceleration".
-  double max_drag_velocity_fraction = 0.05;
+  double reentered_s = 5.0;           // back below HAERO
+  double terminal_velocity_s = 5.0;   // descending with drag balancing gravity (MTERMG set)
+  // In the atmosphere (not at terminal velocity) a step changes V by at most this fraction, and
+  // turns the flight path by at most this many radians: dt <= f V / max(D / m, g0). INTPIM's
+  // "step dependent upon the magnitude of the drag acceleration" (gravity bounds the turn of a
+  // slow body near its apex).
+  double max_drag_velocity_fraction = 0.1;
   double min_step_s = 0.01;
   // Terminal velocity: descending, drag acceleration above half a g, and |dV/dt| below this
   // fraction of g.
