@@ -35,6 +35,7 @@ const std::vector<std::string> kFigures = {"altitude_downrange_ascent",
                                            "theta_time",
                                            "weight_time",
                                            "ground_track",
+                                           "impact_locus",
                                            "convergence"};
 // The figures of a simulate result (no 'iterations': no convergence figure).
 const std::vector<std::string> kTrajectoryFigures(kFigures.begin(), kFigures.end() - 1);
@@ -114,6 +115,18 @@ json small_result(const std::string& title) {
                             {"constraints_met", true},
                             {"rate_limits_met", false},
                             {"payoff", 300.0}};
+  document["impact"] = {
+      {"launch_site", {{"geodetic_latitude_deg", 37.84}, {"longitude_deg", -75.48}}},
+      {"cases",
+       json::array({json{{"kind", "thrust_failure"},
+                         {"stage", 1},
+                         {"longitude_deg", -75.0},
+                         {"geodetic_latitude_deg", 37.7}},
+                    json{{"kind", "expended_casing"},
+                         {"stage", 1},
+                         {"longitude_deg", -74.9},
+                         {"geodetic_latitude_deg", 37.6}},
+                    json{{"kind", "thrust_failure"}, {"stage", 2}, {"status", "kImpactNotReached"}}})}};
   document["payoff"] = {{"kind", "payload"}, {"unit", "lb"}};
   document["constraints"] =
       json::array({json{{"name", "altitude"}, {"tolerance", 20000.0}, {"inequality", false}},
@@ -659,6 +672,7 @@ TEST(PlotCatalogue, FigureWithoutAFiniteValueIsSkippedWithANote) {
     std::set<std::string> expected(kTrajectoryFigures.begin(), kTrajectoryFigures.end());
     expected.erase("altitude_downrange_ascent");
     expected.erase("altitude_downrange");
+    expected.erase("impact_locus");  // the document has no member "impact"
     EXPECT_EQ(names, expected) << altitude;
     ASSERT_EQ(figures.notes.size(), 2u) << altitude;
     EXPECT_EQ(

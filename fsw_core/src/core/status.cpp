@@ -115,6 +115,8 @@ const char* status_name(Status status) {
     case Status::kDispersionStageNotInSequence: return "kDispersionStageNotInSequence";
     case Status::kDispersionStageNotSpun: return "kDispersionStageNotSpun";
     case Status::kDispersionCodeInvalid: return "kDispersionCodeInvalid";
+    case Status::kImpactDataMissing: return "kImpactDataMissing";
+    case Status::kImpactNotReached: return "kImpactNotReached";
   }
   return "kUnknownStatus";
 }
@@ -329,6 +331,11 @@ const char* status_message(Status status) {
     case Status::kDispersionCodeInvalid:
       return "dispersion codes must be 1-38 or 40, in increasing order, each with the data its code needs "
              "(Sec. 22, data block 46)";
+    case Status::kImpactDataMissing:
+      return "the impact locus needs the failure-mode and casing drag tables (data blocks 42, 43) of every "
+             "stage 1-3 in the sequence";
+    case Status::kImpactNotReached:
+      return "an impact trajectory did not reach the Earth's surface within its time limit";
   }
   return "unknown status";
 }

@@ -43,10 +43,21 @@ struct OptimizeCommandOptions {
   std::string csv_path;  // empty: no CSV (of the final trajectory; FILE.caseN per case of several)
   // IP(21) = 1: the dispersion analysis as CSV (dispersion_report.hpp); empty: none.
   std::string dispersions_csv_path;
+  // IP(23) = 1: the impact locus as CSV (impact_report.hpp); empty: none.
+  std::string impact_csv_path;
   bool json = false;
   ProgressMode progress = ProgressMode::kAuto;  // the forward-run status line on stderr
 };
 int run_optimize_command(const OptimizeCommandOptions& options, std::ostream& out, std::ostream& err);
+
+// `tolip impact DECK [--csv FILE] [--json]`: the nominal impact locus (manual Sec. 17, data blocks
+// 42-43) of each case about the trajectory `simulate` flies (impact_run.hpp, docs/cli.md).
+struct ImpactCommandOptions {
+  std::string deck_path;
+  std::string csv_path;  // empty: no CSV (FILE.caseN per case of several)
+  bool json = false;
+};
+int run_impact_command(const ImpactCommandOptions& options, std::ostream& out, std::ostream& err);
 
 // `tolip convert DECK --to OUT [--format toml|cards] [--case N]`: a card deck to TOML and back.
 struct ConvertCommandOptions {

@@ -20,7 +20,8 @@
 
 namespace tolip::ground {
 struct DispersionStep;
-}
+struct ImpactStep;
+}  // namespace tolip::ground
 
 namespace tolip::ground {
 
@@ -66,6 +67,8 @@ struct OptimizationReport {
   Status initial_nominal_6d_status = Status::kNotPrepared;
   // The dispersion analysis (IP(21) = 1, Sec. 15; dispersion_report.hpp): null unless asked for.
   const DispersionStep* dispersions = nullptr;
+  // The impact locus (IP(23) = 1, Sec. 17; impact_report.hpp): null unless asked for.
+  const ImpactStep* impact = nullptr;
 };
 
 // One adjustable parameter of data block 6: degrees for attitudes and the launch azimuth,

@@ -3,11 +3,16 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
 #include <ostream>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
+
+#include "tolip/trajectory/trajectory.hpp"
+#include "tolip/vehicle/prepared_case.hpp"
+#include "tolip_ground/report.hpp"
 
 namespace tolip::ground {
 
@@ -31,5 +36,16 @@ std::string case_message_prefix(int case_number, std::size_t cases);
 void write_case_outputs(std::ostream& out, std::ostream& err, bool json,
                         const nlohmann::ordered_json& documents, const std::string& listing,
                         const std::vector<std::string>& failures);
+
+// One case flown as `simulate` flies it (the deck's program; IP(6) = 2: stage 1 with body
+// dynamics): the report and the structures it points to, kept on the heap. `tolip impact` flies its
+// nominal the same way.
+struct SimulatedCase {
+  std::unique_ptr<PreparedCase> prepared = std::make_unique<PreparedCase>();
+  std::unique_ptr<Trajectory> trajectory = std::make_unique<Trajectory>();
+  SimulationReport report;
+};
+void simulate_case(const Mission& mission, const DeckListingOptions& listing, const std::string& deck_path,
+                   SimulatedCase* run);
 
 }  // namespace tolip::ground

@@ -199,6 +199,13 @@ CLI::App* add_optimize_command(CLI::App& app, OptimizeCommandOptions* options) {
                    "dispersions, orbit elements, max q-bar alpha) to FILE as\n"
                    "CSV (FILE.caseN.csv per case of a several-case deck)")
       ->type_name("FILE");
+  optimize
+      ->add_option("--impact-csv", options->impact_csv_path,
+                   "With IP(23) = 1: also write the impact locus (one row\n"
+                   "per thrust failure and expended casing: failure and\n"
+                   "impact times, latitudes, longitude, downrange,\n"
+                   "crossrange) to FILE as CSV (FILE.caseN.csv per case)")
+      ->type_name("FILE");
   optimize->add_flag("--json", options->json,
                      "Print one JSON document instead of the listing: the\n"
                      "simulate --json keys for the final trajectory plus\n"
@@ -217,6 +224,49 @@ CLI::App* add_optimize_command(CLI::App& app, OptimizeCommandOptions* options) {
       "Never show the status line, not even on a terminal");
   progress_on->excludes(progress_off);
   return optimize;
+}
+
+// tolip impact: the nominal impact locus of each case of a deck.
+CLI::App* add_impact_command(CLI::App& app, ImpactCommandOptions* options) {
+  CLI::App* impact = app.add_subcommand("impact",
+                                        "Nominal impact locus (manual Sec. 17, data blocks 42-43,\n"
+                                        "DA6D(17-19)): fly each case as 'simulate' does, then fly to\n"
+                                        "impact on the geodetic Earth, with drag and no thrust, the\n"
+                                        "vehicle after a thrust failure at every n-th integration\n"
+                                        "point of stages 1-3 and the expended casings of stages 1-3.\n"
+                                        "Prints per case the failure and impact times, geodetic and\n"
+                                        "geocentric latitude, longitude, downrange and crossrange.\n"
+                                        "With IP(23) = 1 'optimize' computes the same locus about\n"
+                                        "the final nominal (the linearized program under IP(7)).");
+  impact->footer(
+      "Examples:\n"
+      "  tolip impact examples/scout/mission.toml\n"
+      "  tolip impact examples/scout/mission.toml --csv impact.csv\n"
+      "  tolip impact examples/scout/mission.toml --json > impact.json\n"
+      "  tolip plot impact.json --out plots\n"
+      "Exit codes: 0 every case's locus computed; 1 a trajectory or an\n"
+      "impact trajectory failed (everything is still printed) or the CSV\n"
+      "not written (nothing printed); 2 bad command line or deck (also\n"
+      "a deck without the data blocks 42-43, or an n of DA6D(17-19)\n"
+      "past the end of its stage: the message names the block and word).\n"
+      "Full reference: docs/cli.md, 'tolip impact'.");
+  impact
+      ->add_option("DECK", options->deck_path,
+                   "TOML deck or card deck of one or more cases, recognised\n"
+                   "by content (docs/deck-format.md)")
+      ->required()
+      ->type_name("FILE");
+  impact
+      ->add_option("--csv", options->csv_path,
+                   "Also write the locus to FILE as CSV, one row per case\n"
+                   "(FILE.caseN.csv per case of a several-case deck),\n"
+                   "atomically; on failure an existing FILE is left untouched")
+      ->type_name("FILE");
+  impact->add_flag("--json", options->json,
+                   "Print one JSON document instead of the listing: the\n"
+                   "simulate --json document of the nominal with the member\n"
+                   "'impact' (docs/cli.md); 'tolip plot' draws its locus");
+  return impact;
 }
 
 // tolip plot: draw the figures of a JSON result with gnuplot.
@@ -241,7 +291,8 @@ CLI::App* add_plot_command(CLI::App& app, PlotCommandOptions* options) {
       "altitude_downrange_ascent, altitude_downrange, velocity_time,\n"
       "flight_path_angle_time, dynamic_pressure_time, alpha_time,\n"
       "qalpha_time, theta_time_ascent, theta_time, weight_time,\n"
-      "ground_track, convergence; for a JSON array (a deck of several\n"
+      "ground_track, impact_locus (with IP(23) or from 'tolip impact'),\n"
+      "convergence; for a JSON array (a deck of several\n"
       "cases) every case overlaid on the same figures, a colour and\n"
       "a legend entry per case. Everything is drawn and checked in a\n"
       "temporary directory first, then each file is written\n"
@@ -447,6 +498,7 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
   InspectCommandOptions inspect_options;
   ConvertCommandOptions convert_options;
   MonteCarloCommandOptions monte_carlo_options;
+  ImpactCommandOptions impact_options;
   CLI::App* atmosphere = add_atmosphere_command(app, &atmosphere_options);
   CLI::App* simulate = add_simulate_command(app, &simulate_options);
   CLI::App* optimize = add_optimize_command(app, &optimize_options);
@@ -455,6 +507,7 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
   CLI::App* inspect = add_inspect_command(app, &inspect_options);
   CLI::App* convert = add_convert_command(app, &convert_options);
   CLI::App* monte_carlo = add_monte_carlo_command(app, &monte_carlo_options);
+  CLI::App* impact = add_impact_command(app, &impact_options);
 
   if (const int exit_code = parse_command_line(app, argc, argv, out, err); exit_code != kRunCommand) {
     return exit_code;
@@ -467,6 +520,7 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
   if (inspect->parsed()) return run_inspect_command(inspect_options, out, err);
   if (convert->parsed()) return run_convert_command(convert_options, out, err);
   if (monte_carlo->parsed()) return run_monte_carlo_command(monte_carlo_options, out, err);
+  if (impact->parsed()) return run_impact_command(impact_options, out, err);
   err << "tolip: no command given\n";
   return kExitBadInput;
 }

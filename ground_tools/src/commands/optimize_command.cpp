@@ -20,6 +20,8 @@
 #include "tolip_ground/deck.hpp"
 #include "tolip_ground/dispersion_report.hpp"
 #include "tolip_ground/dispersion_run.hpp"
+#include "tolip_ground/impact_report.hpp"
+#include "tolip_ground/impact_run.hpp"
 #include "tolip_ground/input_echo.hpp"
 #include "tolip_ground/optimization_report.hpp"
 #include "tolip_ground/optimization_run.hpp"
@@ -61,6 +63,7 @@ bool rejects_problem(Status status) {
 struct CaseOutput {
   std::string csv_path;              // empty: no CSV
   std::string dispersions_csv_path;  // empty: no dispersion CSV
+  std::string impact_csv_path;       // empty: no impact-locus CSV
   bool json = false;
   std::string prefix;  // before the case's diagnostics ("case N: " in a several-case deck)
   std::ostream* listing = nullptr;
@@ -84,6 +87,18 @@ int optimize_case(const Deck& deck, const DeckCase& deck_case, OptimizerObserver
     if (!fill_dispersion_data(deck_case.extras.dispersions, dispersion_data.get(), &fault)) {
       err << "tolip: " << output->prefix << deck.path << ": data block " << fault.data_block
           << ", dispersion code " << fault.code << ", " << fault.field << ": " << fault.message << '\n';
+      output->stop = true;
+      return kExitBadInput;
+    }
+  }
+
+  // Data blocks 42-43 and DA6D(17-19) likewise (IP(23) = 1, Sec. 17).
+  std::unique_ptr<ImpactLocusData> impact_data;
+  if (mission->options.impact()) {
+    impact_data = std::make_unique<ImpactLocusData>();
+    ImpactMappingFault fault;
+    if (!fill_impact_data(*mission, deck_case.extras, impact_data.get(), &fault)) {
+      err << "tolip: " << output->prefix << impact_fault_text(deck.path, fault) << '\n';
       output->stop = true;
       return kExitBadInput;
     }
@@ -158,6 +173,12 @@ int optimize_case(const Deck& deck, const DeckCase& deck_case, OptimizerObserver
     run_dispersion_step(*mission, run, std::move(dispersion_data), &dispersions);
     report.dispersions = &dispersions;
   }
+  // The impact locus about the same final nominal (IP(23) = 1, Sec. 17; impact_run.hpp).
+  ImpactStep impact;
+  if (mission->options.impact()) {
+    run_impact_step(*mission, run, std::move(impact_data), &impact);
+    report.impact = &impact;
+  }
 
   // The one rule of a case's success (optimization_job_verdict, shared with export): a trajectory or
   // orbit failure, else the first computation the deck asks for that did not succeed.
@@ -165,6 +186,9 @@ int optimize_case(const Deck& deck, const DeckCase& deck_case, OptimizerObserver
   if (ok(optimizer_status) && !ok(report.status)) verdict = {report.status, "final trajectory"};
   if (ok(verdict.status) && dispersions.outcome == StepOutcome::kRun && !ok(dispersions.status)) {
     verdict = {dispersions.status, "dispersions"};
+  }
+  if (ok(verdict.status) && impact.outcome == StepOutcome::kRun && !ok(impact.status)) {
+    verdict = {impact.status, "impact locus"};
   }
   report.case_status = verdict.status;
   report.case_failed_step = verdict.failed_step;
@@ -178,6 +202,13 @@ int optimize_case(const Deck& deck, const DeckCase& deck_case, OptimizerObserver
   if (!output->dispersions_csv_path.empty() && mission->options.dispersions() &&
       !write_csv_or_report(output->dispersions_csv_path, err,
                            [&dispersions](std::ostream& csv) { write_dispersion_csv(csv, dispersions); })) {
+    output->stop = true;
+    return kExitFailure;
+  }
+
+  if (!output->impact_csv_path.empty() && mission->options.impact() &&
+      !write_csv_or_report(output->impact_csv_path, err,
+                           [&impact](std::ostream& csv) { write_impact_csv(csv, impact); })) {
     output->stop = true;
     return kExitFailure;
   }
@@ -207,7 +238,7 @@ int run_optimize_command(const OptimizeCommandOptions& options, std::ostream& ou
     return kExitBadInput;
   }
   const std::size_t cases = deck.cases.size();
-  for (const std::string& csv : {options.csv_path, options.dispersions_csv_path}) {
+  for (const std::string& csv : {options.csv_path, options.dispersions_csv_path, options.impact_csv_path}) {
     if (std::string csv_error; !csv_spares_the_deck(csv, options.deck_path, cases, &csv_error)) {
       err << "tolip: " << csv_error << '\n';
       return kExitBadInput;
@@ -231,6 +262,9 @@ int run_optimize_command(const OptimizeCommandOptions& options, std::ostream& ou
     output.dispersions_csv_path = options.dispersions_csv_path.empty()
                                       ? ""
                                       : case_file_path(options.dispersions_csv_path, deck_case.number, cases);
+    output.impact_csv_path = options.impact_csv_path.empty()
+                                 ? ""
+                                 : case_file_path(options.impact_csv_path, deck_case.number, cases);
     output.json = options.json;
     output.prefix = case_message_prefix(deck_case.number, cases);
     output.listing = &listing;

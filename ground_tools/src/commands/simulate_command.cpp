@@ -15,6 +15,8 @@
 #include "tolip_ground/card_deck.hpp"
 #include "tolip_ground/commands.hpp"
 #include "tolip_ground/deck.hpp"
+#include "tolip_ground/impact_report.hpp"
+#include "tolip_ground/impact_run.hpp"
 #include "tolip_ground/input_echo.hpp"
 #include "tolip_ground/report.hpp"
 #include "tolip_ground/unused_inputs.hpp"
@@ -26,12 +28,7 @@ void print_status(std::ostream& err, Status status, const std::string& prefix) {
   err << "tolip: " << prefix << status_name(status) << ": " << status_message(status) << '\n';
 }
 
-// One case flown: the report and the structures it points to.
-struct SimulatedCase {
-  std::unique_ptr<PreparedCase> prepared = std::make_unique<PreparedCase>();
-  std::unique_ptr<Trajectory> trajectory = std::make_unique<Trajectory>();
-  SimulationReport report;
-};
+}  // namespace
 
 void simulate_case(const Mission& mission, const DeckListingOptions& listing, const std::string& deck_path,
                    SimulatedCase* run) {
@@ -68,8 +65,6 @@ void simulate_case(const Mission& mission, const DeckListingOptions& listing, co
   report.constraints = deck_constraint_summaries(mission, *trajectory);
 }
 
-}  // namespace
-
 int run_simulate_command(const SimulateCommandOptions& options, std::ostream& out, std::ostream& err) {
   Deck deck;
   DeckError deck_error;
@@ -93,13 +88,37 @@ int run_simulate_command(const SimulateCommandOptions& options, std::ostream& ou
                                        "`tolip optimize`; simulate flies the deck's program only"}});
   }
 
+  // IP(23): data blocks 42-43 into the core's storage for every case before anything runs, so that
+  // bad impact data stops the command with nothing written (Sec. 17; impact_run.hpp).
+  std::vector<std::unique_ptr<ImpactLocusData>> impact_data(deck.cases.size());
+  for (std::size_t k = 0; k < deck.cases.size(); ++k) {
+    const DeckCase& deck_case = deck.cases[k];
+    if (!deck_case.mission->options.impact()) continue;
+    impact_data[k] = std::make_unique<ImpactLocusData>();
+    ImpactMappingFault fault;
+    if (!fill_impact_data(*deck_case.mission, deck_case.extras, impact_data[k].get(), &fault)) {
+      err << "tolip: " << case_message_prefix(deck_case.number, cases)
+          << impact_fault_text(options.deck_path, fault) << '\n';
+      return kExitBadInput;
+    }
+  }
+
   // Everything goes to stdout at the end, so a CSV failure leaves stdout empty.
   std::ostringstream listing;
   nlohmann::ordered_json documents = nlohmann::ordered_json::array();
   std::vector<std::string> failures;
+  std::size_t case_index = 0;
   for (const DeckCase& deck_case : deck.cases) {
     SimulatedCase run;
     simulate_case(*deck_case.mission, deck_case.extras.listing, options.deck_path, &run);
+    // The impact locus about the trajectory flown (IP(23) = 1).
+    ImpactStep impact;
+    if (impact_data[case_index] != nullptr) {
+      run_impact_about(*deck_case.mission, *run.prepared, *run.trajectory, "deck program",
+                       std::move(impact_data[case_index]), &impact);
+      run.report.impact = &impact;
+    }
+    ++case_index;
 
     // Every point flown goes to the CSV, also after a failure (it shows where the run stopped).
     if (!options.csv_path.empty()) {
@@ -119,7 +138,9 @@ int run_simulate_command(const SimulateCommandOptions& options, std::ostream& ou
     }
 
     if (options.json) {
-      documents.push_back(trajectory_json(run.report));
+      nlohmann::ordered_json document = trajectory_json(run.report);
+      if (run.report.impact != nullptr) add_impact_member(&document, impact);
+      documents.push_back(std::move(document));
     } else {
       if (deck_case.mission->options.print_input()) write_input_echo(listing, deck, deck_case);
       write_trajectory_listing(listing, run.report);
@@ -127,6 +148,10 @@ int run_simulate_command(const SimulateCommandOptions& options, std::ostream& ou
     if (!ok(run.report.status)) {
       std::ostringstream line;
       print_status(line, run.report.status, case_message_prefix(deck_case.number, cases));
+      failures.push_back(line.str());
+    } else if (impact.outcome == StepOutcome::kRun && !ok(impact.status)) {
+      std::ostringstream line;
+      print_status(line, impact.status, case_message_prefix(deck_case.number, cases) + "impact locus: ");
       failures.push_back(line.str());
     }
   }

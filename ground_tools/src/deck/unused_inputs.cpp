@@ -29,7 +29,6 @@ std::vector<InputWarning> unused_inputs(const Mission& mission, const DeckExtras
     const char* what;
   } analyses[] = {
       {o.hardover(), "IP(22)", "options.hardover", "hardover turns (Sec. 16, data blocks 44-45)"},
-      {o.impact(), "IP(23)", "options.impact", "the impact locus (Sec. 17, data blocks 42-43)"},
       {o.radar(), "IP(24)", "options.radar", "radar tracking (Sec. 18, data block 41)"},
   };
   for (const auto& a : analyses) {
@@ -78,19 +77,12 @@ std::vector<InputWarning> unused_inputs(const Mission& mission, const DeckExtras
          "the gyro uncage time has no effect: the platform frame is aligned at lift-off in this version "
          "(uncaging DA2(8) s earlier would turn it by the Earth's rotation in that time)");
   }
-  // Data block 33: 6D steps are the point-mass steps; the impact step rate waits for the analysis.
+  // Data block 33: 6D steps are the point-mass steps.
   const BodyDynamicsData& bd = extras.body_dynamics;
   for (double multiplier : bd.integration_frequency_multiplier) {
     if (multiplier != 1.0) {
       warn(33, "DA6D(12-15)", "body_dynamics.integration_frequency_multiplier",
            "6D steps are the stage's point-mass steps: the integration frequency multipliers have no effect");
-      break;
-    }
-  }
-  for (int every : bd.impact_every_nth_step) {
-    if (every != 1) {
-      warn(33, "DA6D(17-19)", "body_dynamics.impact_every_nth_step",
-           "the impact locus is not computed by this version: the step rate has no effect");
       break;
     }
   }

@@ -5,6 +5,7 @@
 #include <limits>
 #include <string>
 
+#include "impact_plot.hpp"
 #include "tolip_ground/plot.hpp"
 
 namespace tolip::ground {
@@ -713,6 +714,10 @@ constexpr PlotKind kCatalogue[] = {
     {"weight_time", "trajectory", "vehicle weight (lb, log scale) vs time (s), staging marked", weight_time},
     {"ground_track", "trajectory", "geodetic latitude vs longitude (deg), launch site and last point marked",
      ground_track},
+    {"impact_locus", "impact",
+     "impact points of the thrust failures (circles) and expended casings (triangles) of stages 1-3, a "
+     "colour per stage, on a latitude/longitude grid with the nominal ground track and the launch site",
+     plot_detail::impact_locus_figure},
     {"convergence", "iterations",
      "payoff and constraint error / deadband per forward run (optimize --json only)", convergence},
 };

@@ -10,6 +10,7 @@
 #include "tolip/core/constants.hpp"
 #include "tolip/core/state.hpp"
 #include "tolip_ground/dispersion_report.hpp"
+#include "tolip_ground/impact_report.hpp"
 #include "tolip_ground/optimization_report.hpp"
 
 namespace tolip::ground {
@@ -280,6 +281,7 @@ json optimization_json(const OptimizationReport& report) {
     additions["body_dynamics"] = body_dynamics_json(report);
   }
   if (report.dispersions != nullptr) additions["dispersions"] = dispersion_json(*report.dispersions);
+  if (report.impact != nullptr) additions["impact"] = impact_json(*report.impact);
 
   // The simulate document of the final trajectory, with the run's status and the additions placed
   // before the (long) point array.

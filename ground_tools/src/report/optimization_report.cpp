@@ -18,6 +18,7 @@
 #include "tolip/optimizer/constraint_parameters.hpp"
 #include "tolip/optimizer/constraint_set.hpp"
 #include "tolip_ground/dispersion_report.hpp"
+#include "tolip_ground/impact_report.hpp"
 #include "tolip_ground/optimization_report.hpp"
 
 namespace tolip::ground {
@@ -771,6 +772,7 @@ void write_optimization_listing(std::ostream& out, const OptimizationReport& rep
   write_exchange_ratios(pager, report);
   write_linearized_program(pager, report);
   if (report.dispersions != nullptr) report_detail::write_dispersion_pages(pager, *report.dispersions);
+  if (report.impact != nullptr) report_detail::write_impact_pages(pager, *report.impact);
 }
 
 }  // namespace tolip::ground

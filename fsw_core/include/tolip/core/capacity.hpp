@@ -35,6 +35,11 @@ inline constexpr int kMaxWindTablePoints = 32;
 // of every stage (kept separately from the next stage's first point, so the burnout values of the
 // stage are listed), and the pad point at t = 0.
 inline constexpr int kMaxTrajectoryPoints = kMaxPoweredSteps + 5 * kMaxCoastSteps + kMaxStages + 1;
+// The impact locus (Sec. 17, data blocks 42-43): thrust failures at every n-th integration point
+// of the powered stages 1-3 (at most one per step of those stages, n = 1) and the casings of the
+// same three stages.
+inline constexpr int kImpactStages = 3;
+inline constexpr int kMaxImpactCases = kMaxPoweredSteps + kImpactStages;
 // Modified (Sec. 14) thrust table of one stage: one entry per integration time plus the lift-off one.
 inline constexpr int kMaxModifiedThrustPoints = kMaxPoweredSteps + 2;
 

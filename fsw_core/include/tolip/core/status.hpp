@@ -126,6 +126,9 @@ enum class Status : int {
   kDispersionStageNotInSequence,
   kDispersionStageNotSpun,
   kDispersionCodeInvalid,
+  // Impact locus (impact/impact.hpp, manual Sec. 17)
+  kImpactDataMissing,
+  kImpactNotReached,
 };
 
 const char* status_name(Status status);

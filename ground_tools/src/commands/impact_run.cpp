@@ -1,0 +1,131 @@
+// The impact locus of a case (tolip_ground/impact_run.hpp).
+#include "tolip_ground/impact_run.hpp"
+
+#include "tolip/dispersion/dispersion.hpp"
+#include "tolip_ground/dispersion_run.hpp"
+
+namespace tolip::ground {
+namespace {
+
+std::string str(int value) { return std::to_string(value); }
+
+// One deck table into a core body; false (with *fault) when it is longer than the core holds.
+bool fill_body(const ImpactDragTable& deck, int block, int stage, const char* group, ImpactBody* body,
+               ImpactMappingFault* fault) {
+  *body = ImpactBody{};
+  if (!deck.present) return true;  // validate_impact_data names a missing table of a flown stage
+  if (deck.cd_vs_mach.size() > AeroTable::kCapacity) {
+    fault->data_block = block;
+    fault->word = std::string("CD") + str(stage) + (block == 42 ? "F" : "E");
+    fault->field = std::string("impact.") + group + "." + str(stage);
+    fault->message = "the drag table has " + str(deck.cd_vs_mach.size()) +
+                     " points; the core holds at most " + str(AeroTable::kCapacity);
+    return false;
+  }
+  body->present = true;
+  for (int i = 0; i < deck.cd_vs_mach.size(); ++i) {
+    const std::size_t at = static_cast<std::size_t>(i);
+    (void)body->drag_coefficient.append(deck.cd_vs_mach.x[at], deck.cd_vs_mach.y[at]);
+  }
+  (void)body->drag_coefficient.finalize();  // a non-increasing Mach is left unfinalized: named below
+  body->reference_area_ft2 = deck.reference_area_ft2;
+  body->casing_weight_lb = deck.casing_weight_lb;
+  return true;
+}
+
+}  // namespace
+
+bool fill_impact_data(const Mission& mission, const DeckExtras& extras, ImpactLocusData* data,
+                      ImpactMappingFault* fault) {
+  *data = ImpactLocusData{};
+  for (int stage = 1; stage <= kImpactStages; ++stage) {
+    const std::size_t k = static_cast<std::size_t>(stage - 1);
+    if (!fill_body(extras.impact.failure_mode[k], 42, stage, "failure_drag", &data->failure_mode[k], fault) ||
+        !fill_body(extras.impact.expended_casing[k], 43, stage, "casing_drag", &data->expended_casing[k],
+                   fault)) {
+      return false;
+    }
+    data->every_nth_point[k] = extras.body_dynamics.impact_every_nth_step[k];
+  }
+  ImpactFault core;
+  const Status status = validate_impact_data(mission, *data, &core);
+  if (ok(status)) return true;
+  fault->data_block = core.data_block;
+  fault->word = core.field;
+  const std::string stage = str(core.stage);
+  if (core.data_block == 33) {
+    fault->field = "body_dynamics.impact_every_nth_step[" + str(core.stage - 1) + "]";
+    fault->message = "n = " + str(static_cast<int>(core.value)) + " for stage " + stage + ": expected " +
+                     core.expected + " (stage " + stage + " has " +
+                     str(mission.vehicle.stages[stage_index(core.stage)].integration_steps) + ")";
+  } else {
+    fault->field =
+        std::string("impact.") + (core.data_block == 42 ? "failure_drag." : "casing_drag.") + stage;
+    if (status == Status::kImpactDataMissing) {
+      fault->message = std::string("missing: options.impact (IP(23)) needs the data block ") +
+                       str(core.data_block) + " drag table of stage " + stage;
+    } else {
+      fault->message = std::string(core.field) + ": expected " + core.expected;
+    }
+  }
+  return false;
+}
+
+std::string impact_fault_text(const std::string& deck_path, const ImpactMappingFault& fault) {
+  return deck_path + ": data block " + str(fault.data_block) + ", " + fault.word + " (" + fault.field +
+         "): " + fault.message;
+}
+
+void run_impact_about(const Mission& mission, const PreparedCase& prepared, const Trajectory& trajectory,
+                      const std::string& nominal_kind, std::unique_ptr<ImpactLocusData> data,
+                      ImpactStep* step) {
+  step->data = std::move(data);
+  step->nominal_kind = nominal_kind;
+  step->mission = &mission;
+  if (!ok(trajectory.status)) {
+    step->outcome = StepOutcome::kSkipped;
+    step->status = trajectory.status;
+    return;
+  }
+  step->outcome = StepOutcome::kRun;
+  step->workspace = std::make_unique<ImpactWorkspace>();
+  step->locus = std::make_unique<ImpactLocus>();
+  step->status = compute_impact_locus(mission, prepared, trajectory, *step->data, step->workspace.get(),
+                                      step->locus.get());
+}
+
+void run_impact_step(const Mission& mission, const OptimizationRun& run,
+                     std::unique_ptr<ImpactLocusData> data, ImpactStep* step) {
+  if (!mission.options.impact()) return;
+  DispersionNominal nominal;
+  Status why = Status::kOk;
+  std::string kind;
+  if (!final_dispersion_nominal(mission, run, &nominal, &kind, &why)) {
+    step->data = std::move(data);
+    step->outcome = StepOutcome::kSkipped;
+    step->status = why;
+    return;
+  }
+  // Flown as run_dispersions() flies its nominal: the case prepared at its own payload, the
+  // per-point program, body dynamics in stage 1 when the 6D re-linearization ran.
+  step->prepared = std::make_unique<PreparedCase>();
+  step->nominal = std::make_unique<Trajectory>();
+  Status status = prepare_case(*nominal.mission, step->prepared.get());
+  if (ok(status)) {
+    FlightInputs inputs;
+    inputs.program = nominal.program;
+    inputs.body_dynamics = nominal.body_dynamics;
+    status = fly_trajectory(*nominal.mission, *step->prepared, inputs, step->nominal.get());
+  }
+  if (!ok(status)) {
+    step->data = std::move(data);
+    step->nominal_kind = kind;
+    step->mission = nominal.mission;
+    step->outcome = StepOutcome::kRun;
+    step->status = status;
+    return;
+  }
+  run_impact_about(*nominal.mission, *step->prepared, *step->nominal, kind, std::move(data), step);
+}
+
+}  // namespace tolip::ground
