@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "support/pinned_figures.hpp"
 #include "support/reference_mission.hpp"
 #include "tolip/optimizer/steepest_descent.hpp"
 
@@ -78,9 +79,9 @@ TEST(Sec22Optimizer, ReferenceOptimizationIsPinnedToAllItsDigits) {
   static OptimizerResult result;
   test::build_reference_mission(test::ReferenceProgram::kInitialNominal, &mission);
   ASSERT_EQ(optimize_trajectory(mission, &workspace(), &result), Status::kOk);
-  EXPECT_EQ(result.payload_lb, 307.6782575333464);
-  EXPECT_EQ(result.forward_runs, 19);
-  EXPECT_EQ(result.backward_runs, 15);
+  EXPECT_EQ(result.payload_lb, test::kPinnedReferencePayloadLb);
+  EXPECT_EQ(result.forward_runs, test::kPinnedReferenceForwardRuns);
+  EXPECT_EQ(result.backward_runs, test::kPinnedReferenceBackwardRuns);
   EXPECT_EQ(result.optimization_runs, 15);
   EXPECT_EQ(result.successful_optimization_runs, 11);
 }
