@@ -10,8 +10,8 @@
 //
 // The commands run in process (run_tolip, the same code as the executable), and `optimize` only
 // for the keys whose change shows neither in `simulate` nor in a warning (the optimization data,
-// the dispersion blocks): the first observable that answers decides, so the walk stays a few
-// seconds. Card words are classified through the TOML key they become: the card reader turns a
+// the dispersion blocks): the first observable that answers decides. About 70 s of CPU, on two
+// worker threads. Card words are classified through the TOML key they become: the card reader turns a
 // card case into the TOML the TOML reader reads (card_toml.cpp), so a card word acts, warns or is
 // rejected as the key it changes in `tolip convert`'s TOML does, and a word that changes no key
 // and is not rejected is dropped.
@@ -23,11 +23,13 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <mutex>
 #include <optional>
 #include <regex>
 #include <set>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <toml++/toml.h>
@@ -642,6 +644,23 @@ Verdict card_word_verdict(const std::string& deck, const PunchedWord& word,
   return combine(verdicts);
 }
 
+// Runs `work` on two threads that share the items 0..count-1 (next() hands out the next one).
+void run_on_workers(std::size_t count,
+                    const std::function<void(int, const std::function<bool(std::size_t*)>&)>& work) {
+  std::mutex mutex;
+  std::size_t handed = 0;
+  const std::function<bool(std::size_t*)> next = [&](std::size_t* item) {
+    const std::lock_guard<std::mutex> lock(mutex);
+    if (handed >= count) return false;
+    *item = handed++;
+    return true;
+  };
+  std::vector<std::thread> workers;
+  for (int worker = 0; worker < 2; ++worker)
+    workers.emplace_back([&work, &next, worker] { work(worker, next); });
+  for (std::thread& thread : workers) thread.join();
+}
+
 // ---- the tests ------------------------------------------------------------------------------------
 
 // The classifier can fail: CT1(13) has no effect and warns (unused_inputs.cpp); with the warning
@@ -714,9 +733,18 @@ TEST(InputWalker, EveryTomlKeyAndEveryCardWordActsIsRejectedOrWarns) {
   ASSERT_EQ(walker.base().optimize_json->exit_code, 0) << walker.base().optimize_json->err;
   std::map<std::string, KeyVerdict> toml_verdicts;
   const std::vector<AcceptedKey> keys = walker.keys();
+  // Two workers (the VM's two cores), each with its own deck file and base observation; the
+  // commands hold no shared state.
+  std::vector<KeyVerdict> walked(keys.size());
+  run_on_workers(keys.size(), [&](int worker, const std::function<bool(std::size_t*)>& next) {
+    ScratchDirectory own("input_walker_toml_" + std::to_string(worker));
+    TomlWalker mine(own);
+    for (std::size_t i = 0; next(&i);) walked[i] = mine.walk(keys[i]);
+  });
   std::map<Outcome, int> counts;
-  for (const AcceptedKey& key : keys) {
-    KeyVerdict verdict = walker.walk(key);
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    const AcceptedKey& key = keys[i];
+    KeyVerdict verdict = std::move(walked[i]);
     ++counts[verdict.verdict.outcome];
     if (const auto it = conditional_inputs().find(key.path); it != conditional_inputs().end()) {
       EXPECT_EQ(verdict.verdict.outcome, Outcome::kSilent)
@@ -791,11 +819,16 @@ TEST(InputWalker, EveryTomlKeyAndEveryCardWordActsIsRejectedOrWarns) {
         verdicts[i] = Verdict{key->second.verdict.outcome, "as " + key->first + " (moved with its block)"};
     }
   }
+  run_on_workers(words.size(), [&](int, const std::function<bool(std::size_t*)>& next) {
+    for (std::size_t i = 0; next(&i);) {
+      if (!verdicts[i])
+        verdicts[i] = card_word_verdict(deck, words[i], element_of, base_leaves, toml_verdicts);
+    }
+  });
   std::map<Outcome, int> word_counts;
   for (std::size_t i = 0; i < words.size(); ++i) {
     const PunchedWord& word = words[i];
-    const Verdict verdict =
-        verdicts[i] ? *verdicts[i] : card_word_verdict(deck, word, element_of, base_leaves, toml_verdicts);
+    const Verdict& verdict = *verdicts[i];
     ++word_counts[verdict.outcome];
     EXPECT_NE(verdict.outcome, Outcome::kSilent)
         << word.name << " is read and silently ignored:" << verdict.evidence;
