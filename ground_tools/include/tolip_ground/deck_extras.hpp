@@ -114,6 +114,8 @@ struct DispersionCase {
 struct DeckListingOptions {
   double lines_per_page = 54.0;                // CT1(8); the pager accepts 20-1000 (else 54)
   double deg_to_rad_as_printed = 0.017453292;  // CT1(9), echoed only: the core uses the exact pi/180
+  // [stage.N] name (TOML only, not a manual word): printed under the listing's stage events.
+  std::array<std::string, kMaxStages> stage_names;
 };
 
 struct DeckExtras {

@@ -258,7 +258,17 @@ class Builder {
         BlockData& target = body[key];
         if (target.words.size() < data.words.size()) target.words.resize(data.words.size());
         for (std::size_t i = 0; i < data.words.size(); ++i) {
-          if (data.words[i].given) target.words[i] = data.words[i];
+          if (!data.words[i].given) continue;
+          // A word given twice with different values would be dropped silently: refused instead.
+          const Word& before = target.words[i];
+          if (before.given && before.origin.known() && before.number != data.words[i].number) {
+            fail(ref_in(*group, key.block, key.stage, static_cast<int>(i) + 1),
+                 "word " + str(static_cast<int>(i) + 1) + " given again with another value: " +
+                     deck_detail::format_number(data.words[i].number) + " here, " +
+                     deck_detail::format_number(before.number) + " on card " + str(before.origin.card) +
+                     "; the case would fly only one of them: give the word once, or the same value");
+          }
+          target.words[i] = data.words[i];
         }
         target.header = data.header;
       }
@@ -735,6 +745,14 @@ class Builder {
                            ": expected the stage code (1-10) the group's three frequencies apply to");
       }
       const int stage = static_cast<int>(code);
+      // A stage code in two groups would drop the first group's frequencies silently.
+      for (int h = 0; h < g; ++h) {
+        if (value_of(given(opt(), 9, 0, 4 * h + 4)) == code) {
+          fail(code_ref, "IB4(" + str(4 * g + 4) + ") = " + str(stage) + ": stage code " + str(stage) +
+                             " already has its frequencies in IB4(" + str(4 * h + 1) + "-" + str(4 * h + 3) +
+                             "); expected each stage code once");
+        }
+      }
       for (int k = 0; k < 3; ++k) {
         const Word* word = given(opt(), 9, 0, 4 * g + 1 + k);
         if (word == nullptr) continue;

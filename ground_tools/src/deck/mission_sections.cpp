@@ -161,7 +161,11 @@ void read_stage(Section& section, int code, const FieldTarget& target, StageData
   const bool powered = is_powered_stage(code);
   const std::string kind = powered ? "powered stage " + str(code) : "coast " + str(code);
   const Mission& options = *target.mission;
-  section.optional_text("name", 16, "description of the stage (not a manual word)", 200);
+  if (std::optional<std::string> name =
+          section.optional_text("name", 16, "description of the stage (not a manual word)", 200)) {
+    if (target.extras != nullptr)
+      target.extras->listing.stage_names[static_cast<std::size_t>(stage_index(code))] = *name;
+  }
   read_field(section, stage_field("integration_steps"), target, options, code);
   read_field(section, stage_field("jettison_weight_lb"), target, options, code);
   if (powered) {

@@ -73,6 +73,7 @@ std::string DeckError::to_string() const {
 
 namespace {
 
+using deck_detail::AcceptedKey;
 using deck_detail::DeckFailure;
 using deck_detail::format_number;
 using deck_detail::Reader;
@@ -424,7 +425,7 @@ DeckError fault_error(Status status, const MissionFault& fault, const Mission& m
 }
 
 bool parse_deck(const std::string& text, const std::string& path, Mission* mission, DeckExtras* extras,
-                DeckError* error) {
+                DeckError* error, std::vector<AcceptedKey>* accepted = nullptr) {
   DeckError failure;
   failure.file = path;
   try {
@@ -439,6 +440,7 @@ bool parse_deck(const std::string& text, const std::string& path, Mission* missi
       return false;
     }
     Reader reader(path);
+    reader.record_accepted_keys(accepted);
     check_top_level(root, reader);
     auto parsed = std::make_unique<Mission>();
     auto parsed_extras = std::make_unique<DeckExtras>();
@@ -482,6 +484,16 @@ bool parse_toml_deck(const std::string& text, const std::string& path, Mission* 
 
 bool parse_toml_deck(const std::string& text, const std::string& path, Mission* mission, DeckError* error) {
   return parse_toml_deck(text, path, mission, nullptr, error);
+}
+
+bool deck_detail::accepted_toml_keys(const std::string& text, const std::string& path,
+                                     std::vector<AcceptedKey>* keys, DeckError* error) {
+  try {
+    keys->clear();
+    return parse_deck(text, path, nullptr, nullptr, error, keys);
+  } catch (...) {
+    return false;
+  }
 }
 
 bool load_toml_deck(const std::string& path, Mission* mission, DeckExtras* extras, DeckError* error) {

@@ -379,6 +379,10 @@ ReadTable Section::xy(std::string_view x_key, std::string_view y_key, int data_b
 }
 
 void Section::finish() {
+  if (std::vector<AcceptedKey>* accepted = reader_->accepted_keys()) {
+    for (const std::string& known : known_)
+      accepted->push_back(AcceptedKey{key_path(known), data_block_, table_->get(known) != nullptr});
+  }
   for (auto&& [key, value] : *table_) {
     const std::string_view name = key.str();
     if (std::find(known_.begin(), known_.end(), name) != known_.end()) continue;

@@ -25,6 +25,14 @@ struct DeckFailure {
   DeckError error;
 };
 
+// One key the reader accepts in a table it read (the reader's own schema: every key a section
+// asked for, present in the deck or not), with the data block the section names in its messages.
+struct AcceptedKey {
+  std::string path;  // "stage.1.duration_s", "dispersion[3].thrust.time_s"
+  int data_block = 0;
+  bool present = false;  // given in the deck read
+};
+
 // Per-deck context: the file name for messages and the line of every key path read.
 class Reader {
  public:
@@ -40,9 +48,14 @@ class Reader {
   int line_of(const std::string& path) const;
   const std::string& file() const { return file_; }
 
+  // When set, every section's finish() adds the keys it accepts (deck_schema.hpp).
+  void record_accepted_keys(std::vector<AcceptedKey>* keys) { accepted_ = keys; }
+  std::vector<AcceptedKey>* accepted_keys() const { return accepted_; }
+
  private:
   std::string file_;
   std::map<std::string, int> lines_;
+  std::vector<AcceptedKey>* accepted_ = nullptr;
 };
 
 int line_of_node(const toml::node& node);
@@ -134,6 +147,11 @@ void read_field(Section& section, const FieldDescription& field, const FieldTarg
 // Every described field of the TOML table `section_path` ("stage.{n}" fields with their code).
 void read_fields(Section& section, const std::string& section_path, const FieldTarget& target,
                  const Mission& options_of, int code = 0);
+
+// Reads a TOML deck (as parse_toml_deck) and lists every key of every table the reader read: the
+// reader's own schema, for the input walker (tests/ground/input_walker_test.cpp).
+bool accepted_toml_keys(const std::string& text, const std::string& path, std::vector<AcceptedKey>* keys,
+                        DeckError* error);
 
 // Readers of the deck sections (mission_sections.cpp, extras_sections.cpp).
 void read_mission_sections(Section& root, Mission* mission, DeckExtras* extras);

@@ -1,6 +1,8 @@
 // Inputs read but not acted on (tolip_ground/unused_inputs.hpp).
 #include "tolip_ground/unused_inputs.hpp"
 
+#include "deck_common.hpp"
+
 namespace tolip::ground {
 
 std::vector<InputWarning> unused_inputs(const Mission& mission, const DeckExtras& extras) {
@@ -28,7 +30,9 @@ std::vector<InputWarning> unused_inputs(const Mission& mission, const DeckExtras
     const char* field;
     const char* what;
   } analyses[] = {
-      {o.hardover(), "IP(22)", "options.hardover", "hardover turns (Sec. 16, data blocks 44-45)"},
+      {o.hardover(), "IP(22)", "options.hardover",
+       "hardover turns (Sec. 16, data blocks 44-45, and the stage 2-4 c.g. histories they alone use: "
+       "[body_dynamics.cg.2], [body_dynamics.cg.3], [body_dynamics.cg.4])"},
       {o.radar(), "IP(24)", "options.radar", "radar tracking (Sec. 18, data block 41)"},
   };
   for (const auto& a : analyses) {
@@ -46,6 +50,27 @@ std::vector<InputWarning> unused_inputs(const Mission& mission, const DeckExtras
            "effect");
       break;
     }
+  }
+  // Data block 19: DA4(1), the payoff entry's desired value, is a placeholder (Sec. 22): the payoff
+  // is maximized, not driven to a value.
+  if (mission.constraints.count > 0 && mission.constraints.desired[0] != 0.0) {
+    deck_detail::ConstraintUnit unit{};
+    const std::string key = deck_detail::constraint_unit(mission.constraints.codes[0], &unit)
+                                ? std::string("constraint[0].desired_") + unit.suffix
+                                : std::string("constraint[0].desired");
+    warn(19, "DA4(1)", key.c_str(),
+         "the payoff entry's desired value is a placeholder: the payoff is maximized, the value has no "
+         "effect");
+  }
+  // Data block 10: CT1(6) and CT1(9) differing from the manual's nominal values. The pressure is
+  // rho R T of the ARDC table (Sec. 19, blocks 11-14); angles are converted with the exact pi/180.
+  if (mission.constants.sea_level_pressure_lbf_ft2 != Constants{}.sea_level_pressure_lbf_ft2) {
+    warn(10, "CT1(6)", "constants.sea_level_pressure_lbf_ft2",
+         "has no effect: the pressure is rho R T of the ARDC table (data blocks 11-14)");
+  }
+  if (extras.listing.deg_to_rad_as_printed != DeckListingOptions{}.deg_to_rad_as_printed) {
+    warn(10, "CT1(9)", "constants.deg_to_rad_as_printed",
+         "is printed in the input echo only: angles are converted with the exact pi/180");
   }
   // Data block 10: CT1(13) has no use in the equations this version integrates.
   if (mission.constants.ct1_13 != 1.0) {

@@ -265,6 +265,23 @@ void write_stage_events(Pager& pager, const Mission& mission, const Trajectory& 
   pager.emit("");
 }
 
+// The deck's descriptions of its stages ([stage.N] name, TOML only), when it gives any.
+void write_stage_names(Pager& pager, const DeckListingOptions& listing) {
+  int given = 0;
+  for (const std::string& name : listing.stage_names) given += name.empty() ? 0 : 1;
+  if (given == 0) return;
+  pager.reserve(2 + given);
+  pager.emit(" STAGE NAMES (THE DECK'S DESCRIPTIONS)");
+  for (int code = 1; code <= kMaxStages; ++code) {
+    const std::string& name = listing.stage_names[static_cast<std::size_t>(stage_index(code))];
+    if (name.empty()) continue;
+    std::string label = stage_name(code);
+    label.resize(26, ' ');
+    pager.emit(" " + label + name);
+  }
+  pager.emit("");
+}
+
 std::string labelled(const std::string& label, const std::string& value, const std::string& unit) {
   std::string text = "   " + label;
   text.resize(20, ' ');
@@ -358,6 +375,7 @@ void report_detail::write_trajectory_pages(Pager& pager, const SimulationReport&
   write_points(pager, mission, trajectory);
   pager.new_page("TERMINAL CONDITIONS", false);
   write_stage_events(pager, mission, trajectory);
+  if (report.listing != nullptr) write_stage_names(pager, *report.listing);
   write_terminal_conditions(pager, report);
   write_constraint_table(
       pager, report.constraints,
