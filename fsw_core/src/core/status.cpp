@@ -115,6 +115,10 @@ const char* status_name(Status status) {
     case Status::kDispersionStageNotInSequence: return "kDispersionStageNotInSequence";
     case Status::kDispersionStageNotSpun: return "kDispersionStageNotSpun";
     case Status::kDispersionCodeInvalid: return "kDispersionCodeInvalid";
+    case Status::kRadarStationCountInvalid: return "kRadarStationCountInvalid";
+    case Status::kRadarStationLatitudeOutOfRange: return "kRadarStationLatitudeOutOfRange";
+    case Status::kRadarStationNotFinite: return "kRadarStationNotFinite";
+    case Status::kRadarNoTrajectory: return "kRadarNoTrajectory";
   }
   return "kUnknownStatus";
 }
@@ -329,6 +333,13 @@ const char* status_message(Status status) {
     case Status::kDispersionCodeInvalid:
       return "dispersion codes must be 1-38 or 40, in increasing order, each with the data its code needs "
              "(Sec. 22, data block 46)";
+    case Status::kRadarStationCountInvalid:
+      return "the number of radar stations must be 1 to 20 (data block 41, header field 4)";
+    case Status::kRadarStationLatitudeOutOfRange:
+      return "a radar station's geodetic latitude must be within -90 to 90 deg (data block 41)";
+    case Status::kRadarStationNotFinite:
+      return "a radar station's latitude, longitude or altitude is not a finite number (data block 41)";
+    case Status::kRadarNoTrajectory: return "radar tracking needs a trajectory with at least one point";
   }
   return "unknown status";
 }

@@ -66,6 +66,8 @@ struct OptimizationReport {
   Status initial_nominal_6d_status = Status::kNotPrepared;
   // The dispersion analysis (IP(21) = 1, Sec. 15; dispersion_report.hpp): null unless asked for.
   const DispersionStep* dispersions = nullptr;
+  // The radar tracking of the final nominal (IP(24) = 1, Sec. 18; radar_run.hpp): null unless asked for.
+  const RadarStep* radar = nullptr;
 };
 
 // One adjustable parameter of data block 6: degrees for attitudes and the launch azimuth,

@@ -21,6 +21,7 @@
 namespace tolip::ground {
 
 struct DeckListingOptions;  // tolip_ground/deck_extras.hpp
+struct RadarStep;           // tolip_ground/radar_run.hpp
 
 // One constraint of data blocks 8/19/29 after the payoff, in the units of data block 19 (ft, rad,
 // ft/s, n.mi., ft^2/s^2, Btu/ft^2, lbf/ft^2).
@@ -56,6 +57,9 @@ struct SimulationReport {
   // the terminal conditions and in the JSON member "constraints". Empty for optimize's final
   // trajectory, whose summary reports them against the optimizer's deadbands.
   std::vector<ConstraintSummary> constraints;
+  // `simulate` with IP(24) = 1: the radar tracking of this trajectory (radar_run.hpp), listed after
+  // it and in the JSON member "radar"; null otherwise (optimize reports its own).
+  const RadarStep* radar = nullptr;
 };
 
 // The deck's constraints (data blocks 8, 19, 29: code, desired value, optimization deadband) as

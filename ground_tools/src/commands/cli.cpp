@@ -239,7 +239,9 @@ CLI::App* add_plot_command(CLI::App& app, PlotCommandOptions* options) {
       "altitude_downrange_ascent, altitude_downrange, velocity_time,\n"
       "flight_path_angle_time, dynamic_pressure_time, alpha_time,\n"
       "qalpha_time, theta_time_ascent, theta_time, weight_time,\n"
-      "ground_track, convergence; for a JSON array (a deck of several\n"
+      "ground_track, convergence; radar_<id> per radar station of a\n"
+      "result with 'radar' (azimuth, elevation, below the horizon dashed);\n"
+      "for a JSON array (a deck of several\n"
       "cases) every case overlaid on the same figures, a colour and\n"
       "a legend entry per case. Everything is drawn and checked in a\n"
       "temporary directory first, then each file is written\n"
@@ -395,6 +397,42 @@ CLI::App* add_convert_command(CLI::App& app, ConvertCommandOptions* options) {
   return convert;
 }
 
+// tolip radar: the radar tracking coordinates of each case (Sec. 18).
+CLI::App* add_radar_command(CLI::App& app, RadarCommandOptions* options) {
+  CLI::App* radar = app.add_subcommand("radar",
+                                       "Radar tracking coordinates (manual Sec. 18): fly each case of\n"
+                                       "the deck as 'simulate' does and print, for every station of\n"
+                                       "data block 41, the slant range (yards), azimuth and elevation\n"
+                                       "(degrees, degrees-minutes, mils) at every integration point\n"
+                                       "from launch through the last burnout. With IP(24) = 1,\n"
+                                       "'simulate' and 'optimize' (the final nominal) add the same.");
+  radar->footer(
+      "Examples:\n"
+      "  tolip radar examples/scout/mission.toml\n"
+      "  tolip radar examples/scout/mission.toml --json > radar.json\n"
+      "  tolip plot radar.json --out plots\n"
+      "Exit codes: 0 tracked; 1 the trajectory failed (the points flown\n"
+      "are tracked and printed) or the CSV not written (nothing printed);\n"
+      "2 bad command line or deck (also a deck without data block 41).\n"
+      "Full reference: docs/cli.md, 'tolip radar'; docs/theory/radar.md.");
+  radar
+      ->add_option("DECK", options->deck_path,
+                   "TOML deck or card deck of one or more cases, with data\n"
+                   "block 41 (docs/deck-format.md)")
+      ->required()
+      ->type_name("FILE");
+  radar
+      ->add_option("--csv", options->csv_path,
+                   "Also write one row per station and point (time, stage,\n"
+                   "range ft and yd, azimuth and elevation deg and mils) to\n"
+                   "FILE as CSV, atomically (FILE.caseN.csv per case)")
+      ->type_name("FILE");
+  radar->add_flag("--json", options->json,
+                  "Print one JSON document instead of the listing: the\n"
+                  "case's title, status and the member 'radar' (docs/cli.md)");
+  return radar;
+}
+
 // The program's own footer and version flag; exactly one command, whose options stay its own.
 void configure_program(CLI::App& app) {
   app.footer(kFooter);
@@ -444,6 +482,7 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
   ExportCommandOptions export_options;
   InspectCommandOptions inspect_options;
   ConvertCommandOptions convert_options;
+  RadarCommandOptions radar_options;
   CLI::App* atmosphere = add_atmosphere_command(app, &atmosphere_options);
   CLI::App* simulate = add_simulate_command(app, &simulate_options);
   CLI::App* optimize = add_optimize_command(app, &optimize_options);
@@ -451,6 +490,7 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
   CLI::App* export_command = add_export_command(app, &export_options);
   CLI::App* inspect = add_inspect_command(app, &inspect_options);
   CLI::App* convert = add_convert_command(app, &convert_options);
+  CLI::App* radar = add_radar_command(app, &radar_options);
 
   if (const int exit_code = parse_command_line(app, argc, argv, out, err); exit_code != kRunCommand) {
     return exit_code;
@@ -462,6 +502,7 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
   if (export_command->parsed()) return run_export_command(export_options, out, err);
   if (inspect->parsed()) return run_inspect_command(inspect_options, out, err);
   if (convert->parsed()) return run_convert_command(convert_options, out, err);
+  if (radar->parsed()) return run_radar_command(radar_options, out, err);
   err << "tolip: no command given\n";
   return kExitBadInput;
 }

@@ -24,6 +24,7 @@
 #include "tolip_ground/optimization_report.hpp"
 #include "tolip_ground/optimization_run.hpp"
 #include "tolip_ground/progress.hpp"
+#include "tolip_ground/radar_run.hpp"
 #include "tolip_ground/report.hpp"
 #include "tolip_ground/unused_inputs.hpp"
 
@@ -158,6 +159,18 @@ int optimize_case(const Deck& deck, const DeckCase& deck_case, OptimizerObserver
     run_dispersion_step(*mission, run, std::move(dispersion_data), &dispersions);
     report.dispersions = &dispersions;
   }
+  // The radar tracking of the final nominal (IP(24) = 1, Sec. 18; radar_run.hpp).
+  RadarStep radar;
+  if (mission->options.radar()) {
+    std::string kind;
+    Status why = Status::kOk;
+    if (const Trajectory* nominal = final_nominal_trajectory(*mission, run, &kind, &why)) {
+      run_radar_step(mission->constants, deck_case.extras.radar_stations, *nominal, kind, &radar);
+    } else {
+      skip_radar_step(deck_case.extras.radar_stations, why, &radar);
+    }
+    report.radar = &radar;
+  }
 
   // The one rule of a case's success (optimization_job_verdict, shared with export): a trajectory or
   // orbit failure, else the first computation the deck asks for that did not succeed.
@@ -165,6 +178,9 @@ int optimize_case(const Deck& deck, const DeckCase& deck_case, OptimizerObserver
   if (ok(optimizer_status) && !ok(report.status)) verdict = {report.status, "final trajectory"};
   if (ok(verdict.status) && dispersions.outcome == StepOutcome::kRun && !ok(dispersions.status)) {
     verdict = {dispersions.status, "dispersions"};
+  }
+  if (ok(verdict.status) && radar.outcome == StepOutcome::kRun && !ok(radar.status)) {
+    verdict = {radar.status, "radar"};
   }
   report.case_status = verdict.status;
   report.case_failed_step = verdict.failed_step;

@@ -16,6 +16,7 @@
 #include "tolip_ground/commands.hpp"
 #include "tolip_ground/deck.hpp"
 #include "tolip_ground/input_echo.hpp"
+#include "tolip_ground/radar_run.hpp"
 #include "tolip_ground/report.hpp"
 #include "tolip_ground/unused_inputs.hpp"
 
@@ -26,12 +27,7 @@ void print_status(std::ostream& err, Status status, const std::string& prefix) {
   err << "tolip: " << prefix << status_name(status) << ": " << status_message(status) << '\n';
 }
 
-// One case flown: the report and the structures it points to.
-struct SimulatedCase {
-  std::unique_ptr<PreparedCase> prepared = std::make_unique<PreparedCase>();
-  std::unique_ptr<Trajectory> trajectory = std::make_unique<Trajectory>();
-  SimulationReport report;
-};
+}  // namespace
 
 void simulate_case(const Mission& mission, const DeckListingOptions& listing, const std::string& deck_path,
                    SimulatedCase* run) {
@@ -68,8 +64,6 @@ void simulate_case(const Mission& mission, const DeckListingOptions& listing, co
   report.constraints = deck_constraint_summaries(mission, *trajectory);
 }
 
-}  // namespace
-
 int run_simulate_command(const SimulateCommandOptions& options, std::ostream& out, std::ostream& err) {
   Deck deck;
   DeckError deck_error;
@@ -100,6 +94,17 @@ int run_simulate_command(const SimulateCommandOptions& options, std::ostream& ou
   for (const DeckCase& deck_case : deck.cases) {
     SimulatedCase run;
     simulate_case(*deck_case.mission, deck_case.extras.listing, options.deck_path, &run);
+    // IP(24) = 1: the radar tracking of the trajectory flown (Sec. 18; radar_run.hpp).
+    RadarStep radar;
+    if (deck_case.mission->options.radar()) {
+      if (ok(run.report.status)) {
+        run_radar_step(deck_case.mission->constants, deck_case.extras.radar_stations, *run.trajectory,
+                       "simulated", &radar);
+      } else {
+        skip_radar_step(deck_case.extras.radar_stations, run.report.status, &radar);
+      }
+      run.report.radar = &radar;
+    }
 
     // Every point flown goes to the CSV, also after a failure (it shows where the run stopped).
     if (!options.csv_path.empty()) {
@@ -127,6 +132,10 @@ int run_simulate_command(const SimulateCommandOptions& options, std::ostream& ou
     if (!ok(run.report.status)) {
       std::ostringstream line;
       print_status(line, run.report.status, case_message_prefix(deck_case.number, cases));
+      failures.push_back(line.str());
+    } else if (radar.outcome == StepOutcome::kRun && !ok(radar.status)) {
+      std::ostringstream line;
+      print_status(line, radar.status, case_message_prefix(deck_case.number, cases) + "radar: ");
       failures.push_back(line.str());
     }
   }

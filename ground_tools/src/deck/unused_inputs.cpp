@@ -30,7 +30,6 @@ std::vector<InputWarning> unused_inputs(const Mission& mission, const DeckExtras
   } analyses[] = {
       {o.hardover(), "IP(22)", "options.hardover", "hardover turns (Sec. 16, data blocks 44-45)"},
       {o.impact(), "IP(23)", "options.impact", "the impact locus (Sec. 17, data blocks 42-43)"},
-      {o.radar(), "IP(24)", "options.radar", "radar tracking (Sec. 18, data block 41)"},
   };
   for (const auto& a : analyses) {
     if (a.requested) {

@@ -11,6 +11,7 @@
 #include "tolip/core/state.hpp"
 #include "tolip_ground/dispersion_report.hpp"
 #include "tolip_ground/optimization_report.hpp"
+#include "tolip_ground/radar_report.hpp"
 
 namespace tolip::ground {
 namespace {
@@ -280,6 +281,7 @@ json optimization_json(const OptimizationReport& report) {
     additions["body_dynamics"] = body_dynamics_json(report);
   }
   if (report.dispersions != nullptr) additions["dispersions"] = dispersion_json(*report.dispersions);
+  if (report.radar != nullptr) additions["radar"] = radar_json(*report.radar);
 
   // The simulate document of the final trajectory, with the run's status and the additions placed
   // before the (long) point array.

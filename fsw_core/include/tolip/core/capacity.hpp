@@ -14,6 +14,7 @@ inline constexpr int kMaxLinearSegments = 15;                   // data block 18
 inline constexpr int kMaxThrustPoints = 120;                    // data block 30, all stages together
 inline constexpr int kMaxWeightPoints = 120;                    // data block 38, all stages together
 inline constexpr int kMaxRadarStations = 20;                    // data block 41
+inline constexpr int kRadarStationIdLength = 12;                // data block 41: 2A6 identification
 inline constexpr int kMaxAdjustableParameters = 11;             // data block 6 / 27
 inline constexpr int kMaxClosedLoopPoints = 20;                 // Sec. 5: closed loop for the first 20 points
 inline constexpr int kMaxStages = 10;                           // codes 1-5 powered, 6-10 coasts

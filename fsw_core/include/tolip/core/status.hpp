@@ -126,6 +126,11 @@ enum class Status : int {
   kDispersionStageNotInSequence,
   kDispersionStageNotSpun,
   kDispersionCodeInvalid,
+  // Radar tracking (radar/radar.hpp, manual Sec. 18)
+  kRadarStationCountInvalid,
+  kRadarStationLatitudeOutOfRange,
+  kRadarStationNotFinite,
+  kRadarNoTrajectory,
 };
 
 const char* status_name(Status status);
