@@ -1,6 +1,7 @@
 // Speed of the range-safety analyses of issue 12 (each under 5 ms on this machine): the radar
 // tracking of every station of the bundled example (manual Sec. 18: six stations of data block
-// 41 at every point of the final nominal, launch through stage-4 burnout).
+// 41 at every point of the final nominal, launch through stage-4 burnout) and every hardover turn
+// the data blocks name (Sec. 16: blocks 44-45 of the example, from the final nominal).
 // Run: build/bench/range_safety_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
@@ -8,8 +9,10 @@
 #include <cstdlib>
 #include <memory>
 
+#include "tolip/hardover/hardover.hpp"
 #include "tolip/radar/radar.hpp"
 #include "tolip_ground/card_deck.hpp"
+#include "tolip_ground/hardover_run.hpp"
 #include "tolip_ground/optimization_run.hpp"
 #include "tolip_ground/radar_run.hpp"
 
@@ -20,6 +23,8 @@ struct Prepared {
   tolip::ground::OptimizationRun run;
   const tolip::Trajectory* nominal = nullptr;
   std::unique_ptr<tolip::RadarStations> stations = std::make_unique<tolip::RadarStations>();
+  tolip::ground::FinalNominal flight;
+  std::unique_ptr<tolip::HardoverData> hardover = std::make_unique<tolip::HardoverData>();
 };
 
 // The bundled example optimized once (its final nominal: the linearized 6D program).
@@ -42,6 +47,12 @@ const Prepared& prepared() {
       std::exit(1);
     }
     tolip::ground::fill_radar_stations(c.extras.radar_stations, made->stations.get());
+    tolip::ground::HardoverMappingFault fault;
+    if (!tolip::ground::final_nominal_flight(*c.mission, made->run, &made->flight, &kind, &why) ||
+        !tolip::ground::fill_hardover_data(c.extras.hardover, made->hardover.get(), &fault)) {
+      std::fprintf(stderr, "the example's hardover data did not prepare\n");
+      std::exit(1);
+    }
     return made;
   }();
   return *p;
@@ -60,5 +71,18 @@ void BM_RadarAllStationsOfTheReferenceMission(benchmark::State& state) {
   state.counters["points"] = result->point_count;
 }
 BENCHMARK(BM_RadarAllStationsOfTheReferenceMission)->Unit(benchmark::kMillisecond);
+
+void BM_HardoverAllTurnsOfTheReferenceMission(benchmark::State& state) {
+  const Prepared& p = prepared();
+  auto result = std::make_unique<tolip::HardoverResult>();
+  tolip::HardoverFault fault;
+  for (auto _ : state) {
+    const tolip::Status status = tolip::compute_hardover_turns(
+        *p.flight.mission, *p.flight.prepared, *p.flight.trajectory, *p.hardover, result.get(), &fault);
+    benchmark::DoNotOptimize(status);
+  }
+  state.counters["turns"] = result->turn_count;
+}
+BENCHMARK(BM_HardoverAllTurnsOfTheReferenceMission)->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -493,7 +493,9 @@ TEST(PlotCommand, SimulateResultGivesEveryFigureAsPngAndSvg) {
     EXPECT_TRUE(fs::exists(out / ("radar_" + std::string(station) + ".png"))) << station;
     EXPECT_TRUE(fs::exists(out / ("radar_" + std::string(station) + ".svg"))) << station;
   }
-  EXPECT_EQ(entry_count(out), 2 * (kTrajectoryFigures.size() + 6))
+  // And hardover turns (IP(22)): one figure of every turn's change in gamma.
+  EXPECT_TRUE(fs::exists(out / "hardover_gamma.png"));
+  EXPECT_EQ(entry_count(out), 2 * (kTrajectoryFigures.size() + 6 + 1))
       << "no data, scripts or temporary files left";
   EXPECT_TRUE(contains(plot.out, "skipped convergence (no member 'iterations')"));
   // The title carries the case heading and the run status.

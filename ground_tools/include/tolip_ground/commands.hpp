@@ -57,6 +57,15 @@ struct RadarCommandOptions {
 };
 int run_radar_command(const RadarCommandOptions& options, std::ostream& out, std::ostream& err);
 
+// `tolip hardover DECK [--csv FILE] [--json]`: the failure-mode hardover turns (Sec. 16) from each
+// case's trajectory, flown as `simulate` flies it, with the deck's data blocks 44-45 (docs/cli.md).
+struct HardoverCommandOptions {
+  std::string deck_path;
+  std::string csv_path;  // empty: no CSV (FILE.caseN per case of several)
+  bool json = false;
+};
+int run_hardover_command(const HardoverCommandOptions& options, std::ostream& out, std::ostream& err);
+
 // `tolip convert DECK --to OUT [--format toml|cards] [--case N]`: a card deck to TOML and back.
 struct ConvertCommandOptions {
   std::string deck_path;

@@ -128,6 +128,11 @@ std::span<const PlotKind> plot_catalogue();
 // PlotDataError for a malformed member.
 std::vector<Figure> radar_figures(const nlohmann::json& document);
 
+// The hardover figure of a document (member "hardover", docs/cli.md): "hardover_gamma", the change
+// in flight-path angle (deg) against time from the failure for every turn, a colour per stage and
+// mode. None when the member is absent or holds no turn; throws PlotDataError when malformed.
+std::vector<Figure> hardover_figures(const nlohmann::json& document);
+
 // The largest magnitude drawn: a value beyond it (1e308, a diverged run) is drawn as a gap, like
 // a JSON null; gnuplot cannot scale an axis to it.
 inline constexpr double kMaxPlotMagnitude = 1e30;

@@ -433,6 +433,44 @@ CLI::App* add_radar_command(CLI::App& app, RadarCommandOptions* options) {
   return radar;
 }
 
+// tolip hardover: the failure-mode hardover turns of each case (Sec. 16).
+CLI::App* add_hardover_command(CLI::App& app, HardoverCommandOptions* options) {
+  CLI::App* hardover = app.add_subcommand("hardover",
+                                          "Failure-mode hardover turns (manual Sec. 16): fly each case as\n"
+                                          "'simulate' does and compute, from every n-th integration point\n"
+                                          "of stages 1-3 (data block 45), the turn a control failure makes\n"
+                                          "in up to ten seconds: stage 1 fins and jet vanes hard over with\n"
+                                          "thrust misalignment, stages 2-3 control-jet modes 1-3. Prints\n"
+                                          "TIME, CHG GAMMA, QBAR-A and the stop of every turn. With IP(22)\n"
+                                          "= 1, 'simulate' and 'optimize' (the final nominal) add the same.");
+  hardover->footer(
+      "Examples:\n"
+      "  tolip hardover examples/scout/mission.toml\n"
+      "  tolip hardover examples/scout/mission.toml --json > hardover.json\n"
+      "  tolip plot hardover.json --out plots\n"
+      "Exit codes: 0 computed; 1 the trajectory failed or the CSV not\n"
+      "written (nothing printed); 2 bad command line or deck (also a\n"
+      "deck without data blocks 44-45, or a bad word of them: the message\n"
+      "names the block, word and stage).\n"
+      "Full reference: docs/cli.md, 'tolip hardover'; docs/theory/hardover.md.");
+  hardover
+      ->add_option("DECK", options->deck_path,
+                   "TOML deck or card deck of one or more cases, with data\n"
+                   "blocks 44-45 and 33, 37 (docs/deck-format.md)")
+      ->required()
+      ->type_name("FILE");
+  hardover
+      ->add_option("--csv", options->csv_path,
+                   "Also write one row per turn and output line (stage,\n"
+                   "mode, failure time, time, change in gamma, q-bar alpha,\n"
+                   "stop) to FILE as CSV, atomically (FILE.caseN.csv per case)")
+      ->type_name("FILE");
+  hardover->add_flag("--json", options->json,
+                     "Print one JSON document instead of the listing: the\n"
+                     "case's title, status and the member 'hardover' (docs/cli.md)");
+  return hardover;
+}
+
 // The program's own footer and version flag; exactly one command, whose options stay its own.
 void configure_program(CLI::App& app) {
   app.footer(kFooter);
@@ -483,6 +521,7 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
   InspectCommandOptions inspect_options;
   ConvertCommandOptions convert_options;
   RadarCommandOptions radar_options;
+  HardoverCommandOptions hardover_options;
   CLI::App* atmosphere = add_atmosphere_command(app, &atmosphere_options);
   CLI::App* simulate = add_simulate_command(app, &simulate_options);
   CLI::App* optimize = add_optimize_command(app, &optimize_options);
@@ -491,6 +530,7 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
   CLI::App* inspect = add_inspect_command(app, &inspect_options);
   CLI::App* convert = add_convert_command(app, &convert_options);
   CLI::App* radar = add_radar_command(app, &radar_options);
+  CLI::App* hardover = add_hardover_command(app, &hardover_options);
 
   if (const int exit_code = parse_command_line(app, argc, argv, out, err); exit_code != kRunCommand) {
     return exit_code;
@@ -503,6 +543,7 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
   if (inspect->parsed()) return run_inspect_command(inspect_options, out, err);
   if (convert->parsed()) return run_convert_command(convert_options, out, err);
   if (radar->parsed()) return run_radar_command(radar_options, out, err);
+  if (hardover->parsed()) return run_hardover_command(hardover_options, out, err);
   err << "tolip: no command given\n";
   return kExitBadInput;
 }

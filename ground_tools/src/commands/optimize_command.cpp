@@ -20,6 +20,7 @@
 #include "tolip_ground/deck.hpp"
 #include "tolip_ground/dispersion_report.hpp"
 #include "tolip_ground/dispersion_run.hpp"
+#include "tolip_ground/hardover_run.hpp"
 #include "tolip_ground/input_echo.hpp"
 #include "tolip_ground/optimization_report.hpp"
 #include "tolip_ground/optimization_run.hpp"
@@ -88,6 +89,14 @@ int optimize_case(const Deck& deck, const DeckCase& deck_case, OptimizerObserver
       output->stop = true;
       return kExitBadInput;
     }
+  }
+
+  // Data blocks 44-45 likewise (IP(22) = 1, Sec. 16): mapped and checked before anything runs.
+  std::unique_ptr<tolip::HardoverData> hardover_data;
+  if (mission->options.hardover() &&
+      !prepare_hardover_data(deck.path, output->prefix, deck_case, &hardover_data, err)) {
+    output->stop = true;
+    return kExitBadInput;
   }
 
   // The optimization, then the linearization and exchange ratios the deck asks for
@@ -159,6 +168,20 @@ int optimize_case(const Deck& deck, const DeckCase& deck_case, OptimizerObserver
     run_dispersion_step(*mission, run, std::move(dispersion_data), &dispersions);
     report.dispersions = &dispersions;
   }
+  // The hardover turns from the final nominal (IP(22) = 1, Sec. 16; hardover_run.hpp).
+  HardoverStep hardover;
+  if (mission->options.hardover()) {
+    FinalNominal nominal;
+    std::string kind;
+    Status why = Status::kOk;
+    if (final_nominal_flight(*mission, run, &nominal, &kind, &why)) {
+      run_hardover_step(*nominal.mission, *nominal.prepared, *nominal.trajectory, kind,
+                        std::move(hardover_data), &hardover);
+    } else {
+      skip_hardover_step(why, &hardover);
+    }
+    report.hardover = &hardover;
+  }
   // The radar tracking of the final nominal (IP(24) = 1, Sec. 18; radar_run.hpp).
   RadarStep radar;
   if (mission->options.radar()) {
@@ -178,6 +201,9 @@ int optimize_case(const Deck& deck, const DeckCase& deck_case, OptimizerObserver
   if (ok(optimizer_status) && !ok(report.status)) verdict = {report.status, "final trajectory"};
   if (ok(verdict.status) && dispersions.outcome == StepOutcome::kRun && !ok(dispersions.status)) {
     verdict = {dispersions.status, "dispersions"};
+  }
+  if (ok(verdict.status) && hardover.outcome == StepOutcome::kRun && !ok(hardover.status)) {
+    verdict = {hardover.status, "hardover"};
   }
   if (ok(verdict.status) && radar.outcome == StepOutcome::kRun && !ok(radar.status)) {
     verdict = {radar.status, "radar"};

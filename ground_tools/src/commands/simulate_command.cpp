@@ -15,6 +15,7 @@
 #include "tolip_ground/card_deck.hpp"
 #include "tolip_ground/commands.hpp"
 #include "tolip_ground/deck.hpp"
+#include "tolip_ground/hardover_run.hpp"
 #include "tolip_ground/input_echo.hpp"
 #include "tolip_ground/radar_run.hpp"
 #include "tolip_ground/report.hpp"
@@ -87,11 +88,23 @@ int run_simulate_command(const SimulateCommandOptions& options, std::ostream& ou
                                        "`tolip optimize`; simulate flies the deck's program only"}});
   }
 
+  // IP(22): data blocks 44-45 mapped and checked before anything flies (bad input, exit 2).
+  std::vector<std::unique_ptr<tolip::HardoverData>> hardover_data(cases);
+  for (std::size_t c = 0; c < cases; ++c) {
+    const DeckCase& deck_case = deck.cases[c];
+    if (deck_case.mission->options.hardover() &&
+        !prepare_hardover_data(options.deck_path, case_message_prefix(deck_case.number, cases), deck_case,
+                               &hardover_data[c], err)) {
+      return kExitBadInput;
+    }
+  }
+
   // Everything goes to stdout at the end, so a CSV failure leaves stdout empty.
   std::ostringstream listing;
   nlohmann::ordered_json documents = nlohmann::ordered_json::array();
   std::vector<std::string> failures;
-  for (const DeckCase& deck_case : deck.cases) {
+  for (std::size_t c = 0; c < cases; ++c) {
+    const DeckCase& deck_case = deck.cases[c];
     SimulatedCase run;
     simulate_case(*deck_case.mission, deck_case.extras.listing, options.deck_path, &run);
     // IP(24) = 1: the radar tracking of the trajectory flown (Sec. 18; radar_run.hpp).
@@ -104,6 +117,17 @@ int run_simulate_command(const SimulateCommandOptions& options, std::ostream& ou
         skip_radar_step(deck_case.extras.radar_stations, run.report.status, &radar);
       }
       run.report.radar = &radar;
+    }
+    // IP(22) = 1: the hardover turns from the trajectory flown (Sec. 16; hardover_run.hpp).
+    HardoverStep hardover;
+    if (deck_case.mission->options.hardover()) {
+      if (ok(run.report.status)) {
+        run_hardover_step(*deck_case.mission, *run.prepared, *run.trajectory, "simulated",
+                          std::move(hardover_data[c]), &hardover);
+      } else {
+        skip_hardover_step(run.report.status, &hardover);
+      }
+      run.report.hardover = &hardover;
     }
 
     // Every point flown goes to the CSV, also after a failure (it shows where the run stopped).
@@ -132,6 +156,10 @@ int run_simulate_command(const SimulateCommandOptions& options, std::ostream& ou
     if (!ok(run.report.status)) {
       std::ostringstream line;
       print_status(line, run.report.status, case_message_prefix(deck_case.number, cases));
+      failures.push_back(line.str());
+    } else if (hardover.outcome == StepOutcome::kRun && !ok(hardover.status)) {
+      std::ostringstream line;
+      print_status(line, hardover.status, case_message_prefix(deck_case.number, cases) + "hardover: ");
       failures.push_back(line.str());
     } else if (radar.outcome == StepOutcome::kRun && !ok(radar.status)) {
       std::ostringstream line;

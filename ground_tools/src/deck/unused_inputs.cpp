@@ -28,7 +28,6 @@ std::vector<InputWarning> unused_inputs(const Mission& mission, const DeckExtras
     const char* field;
     const char* what;
   } analyses[] = {
-      {o.hardover(), "IP(22)", "options.hardover", "hardover turns (Sec. 16, data blocks 44-45)"},
       {o.impact(), "IP(23)", "options.impact", "the impact locus (Sec. 17, data blocks 42-43)"},
   };
   for (const auto& a : analyses) {

@@ -10,6 +10,7 @@
 #include "tolip/core/constants.hpp"
 #include "tolip/core/state.hpp"
 #include "tolip_ground/dispersion_report.hpp"
+#include "tolip_ground/hardover_report.hpp"
 #include "tolip_ground/optimization_report.hpp"
 #include "tolip_ground/radar_report.hpp"
 
@@ -281,6 +282,7 @@ json optimization_json(const OptimizationReport& report) {
     additions["body_dynamics"] = body_dynamics_json(report);
   }
   if (report.dispersions != nullptr) additions["dispersions"] = dispersion_json(*report.dispersions);
+  if (report.hardover != nullptr) additions["hardover"] = hardover_json(*report.hardover);
   if (report.radar != nullptr) additions["radar"] = radar_json(*report.radar);
 
   // The simulate document of the final trajectory, with the run's status and the additions placed

@@ -17,6 +17,7 @@
 #include "tolip/mission/adjustable_parameter.hpp"
 #include "tolip/optimizer/constraint_parameters.hpp"
 #include "tolip_ground/dispersion_report.hpp"
+#include "tolip_ground/hardover_report.hpp"
 #include "tolip_ground/optimization_report.hpp"
 #include "tolip_ground/radar_report.hpp"
 
@@ -773,6 +774,7 @@ void write_optimization_listing(std::ostream& out, const OptimizationReport& rep
   write_exchange_ratios(pager, report);
   write_linearized_program(pager, report);
   if (report.dispersions != nullptr) report_detail::write_dispersion_pages(pager, *report.dispersions);
+  if (report.hardover != nullptr) report_detail::write_hardover_pages(pager, *report.hardover);
   if (report.radar != nullptr) report_detail::write_radar_pages(pager, *report.radar);
 }
 

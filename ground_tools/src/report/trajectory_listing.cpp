@@ -12,6 +12,7 @@
 #include "number_format.hpp"
 #include "tolip/core/constants.hpp"
 #include "tolip/core/state.hpp"
+#include "tolip_ground/hardover_report.hpp"
 #include "tolip_ground/radar_report.hpp"
 #include "tolip_ground/report.hpp"
 #include "tolip_ground/version.hpp"
@@ -367,6 +368,7 @@ void report_detail::write_trajectory_pages(Pager& pager, const SimulationReport&
 void write_trajectory_listing(std::ostream& out, const SimulationReport& report) {
   Pager pager(out, *report.mission, report.listing);
   report_detail::write_trajectory_pages(pager, report);
+  if (report.hardover != nullptr) report_detail::write_hardover_pages(pager, *report.hardover);
   if (report.radar != nullptr) report_detail::write_radar_pages(pager, *report.radar);
 }
 

@@ -21,11 +21,12 @@ inline constexpr int kMaxStages = 10;                           // codes 1-5 pow
 inline constexpr int kMaxPoweredStages = 5;
 
 // Tables whose size the manual fixes by its card formats.
-inline constexpr int kMaxAeroTablePoints = 20;   // blocks 31/32: 42E12.8 = blank + 20 pairs + 1.0E10
-inline constexpr int kMaxPitchTablePoints = 15;  // block 40: 32E12.8 = blank + 15 pairs + 1.0E10
-inline constexpr int kMaxCgTablePoints = 10;     // block 37: 22E12.8 = blank + 10 pairs + 1.0E10
-inline constexpr int kBodyDynamicsStages = 3;    // block 33: gains and control stations of stages 1-3
-inline constexpr int kCgTableStages = 4;         // block 37: c.g. histories of stages 1-4
+inline constexpr int kMaxAeroTablePoints = 20;      // blocks 31/32: 42E12.8 = blank + 20 pairs + 1.0E10
+inline constexpr int kMaxPitchTablePoints = 15;     // block 40: 32E12.8 = blank + 15 pairs + 1.0E10
+inline constexpr int kMaxCgTablePoints = 10;        // block 37: 22E12.8 = blank + 10 pairs + 1.0E10
+inline constexpr int kBodyDynamicsStages = 3;       // block 33: gains and control stations of stages 1-3
+inline constexpr int kCgTableStages = 4;            // block 37: c.g. histories of stages 1-4
+inline constexpr int kMaxHardoverTablePoints = 10;  // block 44: 22E12.8 = blank + 10 pairs + 1.0E10
 
 // Our choices where the manual sets no limit (docs/architecture.md, "Capacities").
 inline constexpr int kMinStage1Steps = 25;  // data block 16: "at least 25 steps in stage 1"
@@ -36,6 +37,10 @@ inline constexpr int kMaxWindTablePoints = 32;
 // of every stage (kept separately from the next stage's first point, so the burnout values of the
 // stage are listed), and the pad point at t = 0.
 inline constexpr int kMaxTrajectoryPoints = kMaxPoweredSteps + 5 * kMaxCoastSteps + kMaxStages + 1;
+// Hardover turns (Sec. 16): a turn from every point of stages 1-3 at most, stages 2 and 3 in three
+// modes; our choice of 102 output lines per turn (every 0.1 s for ten seconds, and the stop).
+inline constexpr int kMaxHardoverTurns = 3 * (kMaxPoweredSteps + 3);
+inline constexpr int kMaxHardoverSamples = 102;
 // Modified (Sec. 14) thrust table of one stage: one entry per integration time plus the lift-off one.
 inline constexpr int kMaxModifiedThrustPoints = kMaxPoweredSteps + 2;
 

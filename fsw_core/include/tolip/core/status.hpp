@@ -131,6 +131,20 @@ enum class Status : int {
   kRadarStationLatitudeOutOfRange,
   kRadarStationNotFinite,
   kRadarNoTrajectory,
+  // Hardover turns (hardover/hardover.hpp, manual Sec. 16); HardoverFault names block, word, stage
+  kHardoverEveryNthStepInvalid,
+  kHardoverStepLimitsInvalid,
+  kHardoverAttitudeStepInvalid,
+  kHardoverMaxStepsInvalid,
+  kHardoverOutputIntervalTooSmall,
+  kHardoverQbarAlphaLimitInvalid,
+  kHardoverInertiaMissing,
+  kHardoverInertiaNotPositive,
+  kHardoverDampingTableMissing,
+  kHardoverValueNotFinite,
+  kHardoverBodyDataMissing,
+  kHardoverPointInvalid,
+  kTooManyHardoverTurns,
 };
 
 const char* status_name(Status status);
