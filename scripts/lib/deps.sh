@@ -13,6 +13,8 @@ TOLIP_DEBIAN_PACKAGES=(
   nlohmann-json3-dev
   python3
   hyperfine
+  # The radar tests measure the look angles against GeographicLib (tests/core/radar_test.cpp).
+  libgeographiclib-dev
   # Repository_SourcesFollowClangFormat: scripts/format.sh --check against .clang-format.
   clang-format
   # tolip plot: PNG and SVG figures are drawn by gnuplot (docs/cli.md "tolip plot"); the -nox

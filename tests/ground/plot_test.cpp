@@ -501,7 +501,15 @@ TEST(PlotCommand, SimulateResultGivesEveryFigureAsPngAndSvg) {
   ASSERT_EQ(plot.exit_code, 0) << plot.err;
   EXPECT_EQ(plot.err, "");
   expect_images(out, "", kTrajectoryFigures);
-  EXPECT_EQ(entry_count(out), 2 * kTrajectoryFigures.size()) << "no data, scripts or temporary files left";
+  // The example asks for radar tracking (IP(24)): a figure per station of data block 41 besides.
+  for (const char* station : {"wallops", "bermuda", "canaveral", "grandturk", "antigua", "ascension"}) {
+    EXPECT_TRUE(fs::exists(out / ("radar_" + std::string(station) + ".png"))) << station;
+    EXPECT_TRUE(fs::exists(out / ("radar_" + std::string(station) + ".svg"))) << station;
+  }
+  // And hardover turns (IP(22)): one figure of every turn's change in gamma.
+  EXPECT_TRUE(fs::exists(out / "hardover_gamma.png"));
+  EXPECT_EQ(entry_count(out), 2 * (kTrajectoryFigures.size() + 6 + 1))
+      << "no data, scripts or temporary files left";
   EXPECT_TRUE(contains(plot.out, "skipped convergence (no member 'iterations')"));
   // The title carries the case heading and the run status.
   EXPECT_TRUE(contains(read_text_file(out / "velocity_time.svg"), "simulated, kOk"));

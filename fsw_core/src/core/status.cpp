@@ -117,6 +117,23 @@ const char* status_name(Status status) {
     case Status::kDispersionCodeInvalid: return "kDispersionCodeInvalid";
     case Status::kImpactDataMissing: return "kImpactDataMissing";
     case Status::kImpactNotReached: return "kImpactNotReached";
+    case Status::kRadarStationCountInvalid: return "kRadarStationCountInvalid";
+    case Status::kRadarStationLatitudeOutOfRange: return "kRadarStationLatitudeOutOfRange";
+    case Status::kRadarStationNotFinite: return "kRadarStationNotFinite";
+    case Status::kRadarNoTrajectory: return "kRadarNoTrajectory";
+    case Status::kHardoverEveryNthStepInvalid: return "kHardoverEveryNthStepInvalid";
+    case Status::kHardoverStepLimitsInvalid: return "kHardoverStepLimitsInvalid";
+    case Status::kHardoverAttitudeStepInvalid: return "kHardoverAttitudeStepInvalid";
+    case Status::kHardoverMaxStepsInvalid: return "kHardoverMaxStepsInvalid";
+    case Status::kHardoverOutputIntervalTooSmall: return "kHardoverOutputIntervalTooSmall";
+    case Status::kHardoverQbarAlphaLimitInvalid: return "kHardoverQbarAlphaLimitInvalid";
+    case Status::kHardoverInertiaMissing: return "kHardoverInertiaMissing";
+    case Status::kHardoverInertiaNotPositive: return "kHardoverInertiaNotPositive";
+    case Status::kHardoverDampingTableMissing: return "kHardoverDampingTableMissing";
+    case Status::kHardoverValueNotFinite: return "kHardoverValueNotFinite";
+    case Status::kHardoverBodyDataMissing: return "kHardoverBodyDataMissing";
+    case Status::kHardoverPointInvalid: return "kHardoverPointInvalid";
+    case Status::kTooManyHardoverTurns: return "kTooManyHardoverTurns";
   }
   return "kUnknownStatus";
 }
@@ -336,6 +353,40 @@ const char* status_message(Status status) {
              "stage 1-3 in the sequence";
     case Status::kImpactNotReached:
       return "an impact trajectory did not reach the Earth's surface within its time limit";
+    case Status::kRadarStationCountInvalid:
+      return "the number of radar stations must be 1 to 20 (data block 41, header field 4)";
+    case Status::kRadarStationLatitudeOutOfRange:
+      return "a radar station's geodetic latitude must be within -90 to 90 deg (data block 41)";
+    case Status::kRadarStationNotFinite:
+      return "a radar station's latitude, longitude or altitude is not a finite number (data block 41)";
+    case Status::kRadarNoTrajectory: return "radar tracking needs a trajectory with at least one point";
+    case Status::kHardoverEveryNthStepInvalid:
+      return "the hardover turns' every-n-th-step selector must be at least 1 (data block 45 words 1, 21, "
+             "22)";
+    case Status::kHardoverStepLimitsInvalid:
+      return "the hardover step sizes must satisfy 0 < (DT)min <= (DT)max (data block 45 words 4-5, 24-25)";
+    case Status::kHardoverAttitudeStepInvalid:
+      return "the maximum attitude change per hardover step must be positive (data block 45 words 3, 23)";
+    case Status::kHardoverMaxStepsInvalid:
+      return "the maximum number of hardover steps per turn must be at least 1 (data block 45 words 6, 26)";
+    case Status::kHardoverOutputIntervalTooSmall:
+      return "the hardover output interval must be at least 0.1 s (data block 45 word 20): at most 101 "
+             "lines per ten-second turn";
+    case Status::kHardoverQbarAlphaLimitInvalid:
+      return "(q-bar alpha)max must be positive (data block 45 word 2)";
+    case Status::kHardoverInertiaMissing:
+      return "a stage with hardover turns has no pitch moment of inertia table (data block 44, IYY1-IYY3)";
+    case Status::kHardoverInertiaNotPositive:
+      return "a pitch moment of inertia of data block 44 is not positive";
+    case Status::kHardoverDampingTableMissing:
+      return "the stage-1 pitch damping table CMQ (data block 44, stage code 4) is missing";
+    case Status::kHardoverValueNotFinite: return "a hardover datum (data blocks 44-45) is not finite";
+    case Status::kHardoverBodyDataMissing:
+      return "hardover turns need data blocks 33 (X_FS, l_ref, K_TV) and 37 (the c.g. histories of stages "
+             "1-3)";
+    case Status::kHardoverPointInvalid:
+      return "a hardover turn must start at a moving point of powered stage 1, 2 or 3 before its burnout";
+    case Status::kTooManyHardoverTurns: return "more hardover turns than the core holds";
   }
   return "unknown status";
 }

@@ -108,6 +108,25 @@ double delta_lambda_rad(const Constants& constants, double geocentric_latitude_r
          std::sin(2.0 * geocentric_latitude_rad);
 }
 
+Vector3 geodetic_to_earth_fixed_ft(const Constants& constants, double geodetic_latitude_rad,
+                                   double longitude_rad, double altitude_ft) {
+  const double a = constants.earth_equatorial_radius_ft;
+  const double b = polar_radius_ft(constants);
+  const double sin_lat = std::sin(geodetic_latitude_rad);
+  const double cos_lat = std::cos(geodetic_latitude_rad);
+  // tan RA = (b / a) tan lambda_d, written with atan2 of the scaled sine and cosine.
+  const double reduced_rad = std::atan2(b * sin_lat, a * cos_lat);
+  const double z_ft = b * std::sin(reduced_rad) + altitude_ft * sin_lat;
+  const double xy_ft = a * std::cos(reduced_rad) + altitude_ft * cos_lat;
+  return Vector3(xy_ft * std::cos(longitude_rad), xy_ft * std::sin(longitude_rad), z_ft);
+}
+
+Vector3 geocentric_to_earth_fixed_ft(double radius_ft, double geocentric_latitude_rad, double longitude_rad) {
+  const double xy_ft = radius_ft * std::cos(geocentric_latitude_rad);
+  return Vector3(xy_ft * std::cos(longitude_rad), xy_ft * std::sin(longitude_rad),
+                 radius_ft * std::sin(geocentric_latitude_rad));
+}
+
 Gravity j2_gravity(const Constants& constants, double radius_ft, double geocentric_latitude_rad) {
   return j2_gravity(constants, radius_ft, std::sin(geocentric_latitude_rad),
                     std::cos(geocentric_latitude_rad));

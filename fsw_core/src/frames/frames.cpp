@@ -105,4 +105,14 @@ double theta_for_zero_alpha_rad(const Matrix3& platform_to_local, double chi_rad
   return theta;
 }
 
+Matrix3 earth_fixed_to_topocentric(double geodetic_latitude_rad, double longitude_rad) {
+  const double sl = std::sin(geodetic_latitude_rad), cl = std::cos(geodetic_latitude_rad);
+  const double su = std::sin(longitude_rad), cu = std::cos(longitude_rad);
+  Matrix3 a;
+  a << -cu * sl, -su * sl, cl,  //
+      -su, cu, 0.0,             //
+      -cl * cu, -cl * su, -sl;
+  return a;
+}
+
 }  // namespace tolip

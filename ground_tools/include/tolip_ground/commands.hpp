@@ -59,6 +59,24 @@ struct ImpactCommandOptions {
 };
 int run_impact_command(const ImpactCommandOptions& options, std::ostream& out, std::ostream& err);
 
+// `tolip radar DECK [--csv FILE] [--json]`: the radar tracking (Sec. 18) of each case's trajectory,
+// flown as `simulate` flies it, from the deck's data block 41 stations (docs/cli.md).
+struct RadarCommandOptions {
+  std::string deck_path;
+  std::string csv_path;  // empty: no CSV (FILE.caseN per case of several)
+  bool json = false;
+};
+int run_radar_command(const RadarCommandOptions& options, std::ostream& out, std::ostream& err);
+
+// `tolip hardover DECK [--csv FILE] [--json]`: the failure-mode hardover turns (Sec. 16) from each
+// case's trajectory, flown as `simulate` flies it, with the deck's data blocks 44-45 (docs/cli.md).
+struct HardoverCommandOptions {
+  std::string deck_path;
+  std::string csv_path;  // empty: no CSV (FILE.caseN per case of several)
+  bool json = false;
+};
+int run_hardover_command(const HardoverCommandOptions& options, std::ostream& out, std::ostream& err);
+
 // `tolip convert DECK --to OUT [--format toml|cards] [--case N]`: a card deck to TOML and back.
 struct ConvertCommandOptions {
   std::string deck_path;

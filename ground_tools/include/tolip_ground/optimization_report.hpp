@@ -69,6 +69,10 @@ struct OptimizationReport {
   const DispersionStep* dispersions = nullptr;
   // The impact locus (IP(23) = 1, Sec. 17; impact_report.hpp): null unless asked for.
   const ImpactStep* impact = nullptr;
+  // The radar tracking of the final nominal (IP(24) = 1, Sec. 18; radar_run.hpp): null unless asked for.
+  const RadarStep* radar = nullptr;
+  // The hardover turns from the final nominal (IP(22) = 1, Sec. 16; hardover_run.hpp): null unless asked for.
+  const HardoverStep* hardover = nullptr;
 };
 
 // One adjustable parameter of data block 6: degrees for attitudes and the launch azimuth,

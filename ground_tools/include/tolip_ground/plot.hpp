@@ -121,6 +121,18 @@ struct PlotKind {
 // Every plot, in the order they are drawn.
 std::span<const PlotKind> plot_catalogue();
 
+// The radar figures of a document (member "radar", docs/cli.md): one per station, "radar_<id>"
+// (the identification in lower case, other characters than letters and digits as '_'): azimuth
+// (deg) against time on the left axis, elevation (deg) on the right, the part below the horizon
+// dashed and the horizon drawn. None when the member is absent or holds no tracked point; throws
+// PlotDataError for a malformed member.
+std::vector<Figure> radar_figures(const nlohmann::json& document);
+
+// The hardover figure of a document (member "hardover", docs/cli.md): "hardover_gamma", the change
+// in flight-path angle (deg) against time from the failure for every turn, a colour per stage and
+// mode. None when the member is absent or holds no turn; throws PlotDataError when malformed.
+std::vector<Figure> hardover_figures(const nlohmann::json& document);
+
 // The largest magnitude drawn: a value beyond it (1e308, a diverged run) is drawn as a gap, like
 // a JSON null; gnuplot cannot scale an axis to it.
 inline constexpr double kMaxPlotMagnitude = 1e30;

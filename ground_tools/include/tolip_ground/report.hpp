@@ -22,6 +22,8 @@ namespace tolip::ground {
 
 struct DeckListingOptions;  // tolip_ground/deck_extras.hpp
 struct ImpactStep;          // tolip_ground/impact_run.hpp
+struct RadarStep;           // tolip_ground/radar_run.hpp
+struct HardoverStep;        // tolip_ground/hardover_run.hpp
 
 // One constraint of data blocks 8/19/29 after the payoff, in the units of data block 19 (ft, rad,
 // ft/s, n.mi., ft^2/s^2, Btu/ft^2, lbf/ft^2).
@@ -60,6 +62,11 @@ struct SimulationReport {
   // `simulate` with IP(23) = 1: the impact locus about this trajectory, listed after it
   // (impact_report.hpp). Null: none.
   const ImpactStep* impact = nullptr;
+  // `simulate` with IP(24) = 1: the radar tracking of this trajectory (radar_run.hpp), listed after
+  // it and in the JSON member "radar"; null otherwise (optimize reports its own).
+  const RadarStep* radar = nullptr;
+  // `simulate` with IP(22) = 1: the hardover turns from this trajectory (hardover_run.hpp).
+  const HardoverStep* hardover = nullptr;
 };
 
 // The deck's constraints (data blocks 8, 19, 29: code, desired value, optimization deadband) as

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include <memory>
+
 #include <nlohmann/json.hpp>
 
 #include "tolip/trajectory/trajectory.hpp"
@@ -15,6 +17,17 @@
 #include "tolip_ground/report.hpp"
 
 namespace tolip::ground {
+
+// One case flown as `simulate` flies it (the deck's program; IP(6) = 2 with body dynamics in
+// stage 1): the report and the structures it points to. Shared by simulate and the commands that
+// analyse the deck's trajectory (radar).
+struct SimulatedCase {
+  std::unique_ptr<PreparedCase> prepared = std::make_unique<PreparedCase>();
+  std::unique_ptr<Trajectory> trajectory = std::make_unique<Trajectory>();
+  SimulationReport report;
+};
+void simulate_case(const Mission& mission, const DeckListingOptions& listing, const std::string& deck_path,
+                   SimulatedCase* run);
 
 // FILE for a deck of one case; for several, FILE with ".caseN" before the extension
 // ("points.csv" -> "points.case2.csv", "points" -> "points.case2").

@@ -292,7 +292,9 @@ CLI::App* add_plot_command(CLI::App& app, PlotCommandOptions* options) {
       "flight_path_angle_time, dynamic_pressure_time, alpha_time,\n"
       "qalpha_time, theta_time_ascent, theta_time, weight_time,\n"
       "ground_track, impact_locus (with IP(23) or from 'tolip impact'),\n"
-      "convergence; for a JSON array (a deck of several\n"
+      "convergence; radar_<id> per radar station of a\n"
+      "result with 'radar' (azimuth, elevation, below the horizon dashed);\n"
+      "for a JSON array (a deck of several\n"
       "cases) every case overlaid on the same figures, a colour and\n"
       "a legend entry per case. Everything is drawn and checked in a\n"
       "temporary directory first, then each file is written\n"
@@ -448,6 +450,80 @@ CLI::App* add_convert_command(CLI::App& app, ConvertCommandOptions* options) {
   return convert;
 }
 
+// tolip radar: the radar tracking coordinates of each case (Sec. 18).
+CLI::App* add_radar_command(CLI::App& app, RadarCommandOptions* options) {
+  CLI::App* radar = app.add_subcommand("radar",
+                                       "Radar tracking coordinates (manual Sec. 18): fly each case of\n"
+                                       "the deck as 'simulate' does and print, for every station of\n"
+                                       "data block 41, the slant range (yards), azimuth and elevation\n"
+                                       "(degrees, degrees-minutes, mils) at every integration point\n"
+                                       "from launch through the last burnout. With IP(24) = 1,\n"
+                                       "'simulate' and 'optimize' (the final nominal) add the same.");
+  radar->footer(
+      "Examples:\n"
+      "  tolip radar examples/scout/mission.toml\n"
+      "  tolip radar examples/scout/mission.toml --json > radar.json\n"
+      "  tolip plot radar.json --out plots\n"
+      "Exit codes: 0 tracked; 1 the trajectory failed (the points flown\n"
+      "are tracked and printed) or the CSV not written (nothing printed);\n"
+      "2 bad command line or deck (also a deck without data block 41).\n"
+      "Full reference: docs/cli.md, 'tolip radar'; docs/theory/radar.md.");
+  radar
+      ->add_option("DECK", options->deck_path,
+                   "TOML deck or card deck of one or more cases, with data\n"
+                   "block 41 (docs/deck-format.md)")
+      ->required()
+      ->type_name("FILE");
+  radar
+      ->add_option("--csv", options->csv_path,
+                   "Also write one row per station and point (time, stage,\n"
+                   "range ft and yd, azimuth and elevation deg and mils) to\n"
+                   "FILE as CSV, atomically (FILE.caseN.csv per case)")
+      ->type_name("FILE");
+  radar->add_flag("--json", options->json,
+                  "Print one JSON document instead of the listing: the\n"
+                  "case's title, status and the member 'radar' (docs/cli.md)");
+  return radar;
+}
+
+// tolip hardover: the failure-mode hardover turns of each case (Sec. 16).
+CLI::App* add_hardover_command(CLI::App& app, HardoverCommandOptions* options) {
+  CLI::App* hardover = app.add_subcommand("hardover",
+                                          "Failure-mode hardover turns (manual Sec. 16): fly each case as\n"
+                                          "'simulate' does and compute, from every n-th integration point\n"
+                                          "of stages 1-3 (data block 45), the turn a control failure makes\n"
+                                          "in up to ten seconds: stage 1 fins and jet vanes hard over with\n"
+                                          "thrust misalignment, stages 2-3 control-jet modes 1-3. Prints\n"
+                                          "TIME, CHG GAMMA, QBAR-A and the stop of every turn. With IP(22)\n"
+                                          "= 1, 'simulate' and 'optimize' (the final nominal) add the same.");
+  hardover->footer(
+      "Examples:\n"
+      "  tolip hardover examples/scout/mission.toml\n"
+      "  tolip hardover examples/scout/mission.toml --json > hardover.json\n"
+      "  tolip plot hardover.json --out plots\n"
+      "Exit codes: 0 computed; 1 the trajectory failed or the CSV not\n"
+      "written (nothing printed); 2 bad command line or deck (also a\n"
+      "deck without data blocks 44-45, or a bad word of them: the message\n"
+      "names the block, word and stage).\n"
+      "Full reference: docs/cli.md, 'tolip hardover'; docs/theory/hardover.md.");
+  hardover
+      ->add_option("DECK", options->deck_path,
+                   "TOML deck or card deck of one or more cases, with data\n"
+                   "blocks 44-45 and 33, 37 (docs/deck-format.md)")
+      ->required()
+      ->type_name("FILE");
+  hardover
+      ->add_option("--csv", options->csv_path,
+                   "Also write one row per turn and output line (stage,\n"
+                   "mode, failure time, time, change in gamma, q-bar alpha,\n"
+                   "stop) to FILE as CSV, atomically (FILE.caseN.csv per case)")
+      ->type_name("FILE");
+  hardover->add_flag("--json", options->json,
+                     "Print one JSON document instead of the listing: the\n"
+                     "case's title, status and the member 'hardover' (docs/cli.md)");
+  return hardover;
+}
+
 // The program's own footer and version flag; exactly one command, whose options stay its own.
 void configure_program(CLI::App& app) {
   app.footer(kFooter);
@@ -499,6 +575,8 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
   ConvertCommandOptions convert_options;
   MonteCarloCommandOptions monte_carlo_options;
   ImpactCommandOptions impact_options;
+  RadarCommandOptions radar_options;
+  HardoverCommandOptions hardover_options;
   CLI::App* atmosphere = add_atmosphere_command(app, &atmosphere_options);
   CLI::App* simulate = add_simulate_command(app, &simulate_options);
   CLI::App* optimize = add_optimize_command(app, &optimize_options);
@@ -508,6 +586,8 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
   CLI::App* convert = add_convert_command(app, &convert_options);
   CLI::App* monte_carlo = add_monte_carlo_command(app, &monte_carlo_options);
   CLI::App* impact = add_impact_command(app, &impact_options);
+  CLI::App* radar = add_radar_command(app, &radar_options);
+  CLI::App* hardover = add_hardover_command(app, &hardover_options);
 
   if (const int exit_code = parse_command_line(app, argc, argv, out, err); exit_code != kRunCommand) {
     return exit_code;
@@ -521,6 +601,8 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
   if (convert->parsed()) return run_convert_command(convert_options, out, err);
   if (monte_carlo->parsed()) return run_monte_carlo_command(monte_carlo_options, out, err);
   if (impact->parsed()) return run_impact_command(impact_options, out, err);
+  if (radar->parsed()) return run_radar_command(radar_options, out, err);
+  if (hardover->parsed()) return run_hardover_command(hardover_options, out, err);
   err << "tolip: no command given\n";
   return kExitBadInput;
 }

@@ -20,12 +20,14 @@
 #include "tolip_ground/deck.hpp"
 #include "tolip_ground/dispersion_report.hpp"
 #include "tolip_ground/dispersion_run.hpp"
+#include "tolip_ground/hardover_run.hpp"
 #include "tolip_ground/impact_report.hpp"
 #include "tolip_ground/impact_run.hpp"
 #include "tolip_ground/input_echo.hpp"
 #include "tolip_ground/optimization_report.hpp"
 #include "tolip_ground/optimization_run.hpp"
 #include "tolip_ground/progress.hpp"
+#include "tolip_ground/radar_run.hpp"
 #include "tolip_ground/report.hpp"
 #include "tolip_ground/unused_inputs.hpp"
 
@@ -104,6 +106,14 @@ int optimize_case(const Deck& deck, const DeckCase& deck_case, OptimizerObserver
     }
   }
 
+  // Data blocks 44-45 likewise (IP(22) = 1, Sec. 16): mapped and checked before anything runs.
+  std::unique_ptr<tolip::HardoverData> hardover_data;
+  if (mission->options.hardover() &&
+      !prepare_hardover_data(deck.path, output->prefix, deck_case, &hardover_data, err)) {
+    output->stop = true;
+    return kExitBadInput;
+  }
+
   // The optimization, then the linearization and exchange ratios the deck asks for
   // (tolip_ground/optimization_run.hpp); the workspaces are large and live on the heap.
   OptimizationRun run;
@@ -179,6 +189,32 @@ int optimize_case(const Deck& deck, const DeckCase& deck_case, OptimizerObserver
     run_impact_step(*mission, run, std::move(impact_data), &impact);
     report.impact = &impact;
   }
+  // The hardover turns from the final nominal (IP(22) = 1, Sec. 16; hardover_run.hpp).
+  HardoverStep hardover;
+  if (mission->options.hardover()) {
+    FinalNominal nominal;
+    std::string kind;
+    Status why = Status::kOk;
+    if (final_nominal_flight(*mission, run, &nominal, &kind, &why)) {
+      run_hardover_step(*nominal.mission, *nominal.prepared, *nominal.trajectory, kind,
+                        std::move(hardover_data), &hardover);
+    } else {
+      skip_hardover_step(why, &hardover);
+    }
+    report.hardover = &hardover;
+  }
+  // The radar tracking of the final nominal (IP(24) = 1, Sec. 18; radar_run.hpp).
+  RadarStep radar;
+  if (mission->options.radar()) {
+    std::string kind;
+    Status why = Status::kOk;
+    if (const Trajectory* nominal = final_nominal_trajectory(*mission, run, &kind, &why)) {
+      run_radar_step(mission->constants, deck_case.extras.radar_stations, *nominal, kind, &radar);
+    } else {
+      skip_radar_step(deck_case.extras.radar_stations, why, &radar);
+    }
+    report.radar = &radar;
+  }
 
   // The one rule of a case's success (optimization_job_verdict, shared with export): a trajectory or
   // orbit failure, else the first computation the deck asks for that did not succeed.
@@ -189,6 +225,12 @@ int optimize_case(const Deck& deck, const DeckCase& deck_case, OptimizerObserver
   }
   if (ok(verdict.status) && impact.outcome == StepOutcome::kRun && !ok(impact.status)) {
     verdict = {impact.status, "impact locus"};
+  }
+  if (ok(verdict.status) && hardover.outcome == StepOutcome::kRun && !ok(hardover.status)) {
+    verdict = {hardover.status, "hardover"};
+  }
+  if (ok(verdict.status) && radar.outcome == StepOutcome::kRun && !ok(radar.status)) {
+    verdict = {radar.status, "radar"};
   }
   report.case_status = verdict.status;
   report.case_failed_step = verdict.failed_step;

@@ -15,9 +15,11 @@
 #include "tolip_ground/card_deck.hpp"
 #include "tolip_ground/commands.hpp"
 #include "tolip_ground/deck.hpp"
+#include "tolip_ground/hardover_run.hpp"
 #include "tolip_ground/impact_report.hpp"
 #include "tolip_ground/impact_run.hpp"
 #include "tolip_ground/input_echo.hpp"
+#include "tolip_ground/radar_run.hpp"
 #include "tolip_ground/report.hpp"
 #include "tolip_ground/unused_inputs.hpp"
 
@@ -103,22 +105,54 @@ int run_simulate_command(const SimulateCommandOptions& options, std::ostream& ou
     }
   }
 
+  // IP(22): data blocks 44-45 mapped and checked before anything flies (bad input, exit 2).
+  std::vector<std::unique_ptr<tolip::HardoverData>> hardover_data(cases);
+  for (std::size_t c = 0; c < cases; ++c) {
+    const DeckCase& deck_case = deck.cases[c];
+    if (deck_case.mission->options.hardover() &&
+        !prepare_hardover_data(options.deck_path, case_message_prefix(deck_case.number, cases), deck_case,
+                               &hardover_data[c], err)) {
+      return kExitBadInput;
+    }
+  }
+
   // Everything goes to stdout at the end, so a CSV failure leaves stdout empty.
   std::ostringstream listing;
   nlohmann::ordered_json documents = nlohmann::ordered_json::array();
   std::vector<std::string> failures;
-  std::size_t case_index = 0;
-  for (const DeckCase& deck_case : deck.cases) {
+  for (std::size_t c = 0; c < cases; ++c) {
+    const DeckCase& deck_case = deck.cases[c];
     SimulatedCase run;
     simulate_case(*deck_case.mission, deck_case.extras.listing, options.deck_path, &run);
-    // The impact locus about the trajectory flown (IP(23) = 1).
+    // The impact locus about the trajectory flown (IP(23) = 1, Sec. 17; impact_run.hpp).
     ImpactStep impact;
-    if (impact_data[case_index] != nullptr) {
+    if (impact_data[c] != nullptr) {
       run_impact_about(*deck_case.mission, *run.prepared, *run.trajectory, "deck program",
-                       std::move(impact_data[case_index]), &impact);
+                       std::move(impact_data[c]), &impact);
       run.report.impact = &impact;
     }
-    ++case_index;
+    // IP(24) = 1: the radar tracking of the trajectory flown (Sec. 18; radar_run.hpp).
+    RadarStep radar;
+    if (deck_case.mission->options.radar()) {
+      if (ok(run.report.status)) {
+        run_radar_step(deck_case.mission->constants, deck_case.extras.radar_stations, *run.trajectory,
+                       "simulated", &radar);
+      } else {
+        skip_radar_step(deck_case.extras.radar_stations, run.report.status, &radar);
+      }
+      run.report.radar = &radar;
+    }
+    // IP(22) = 1: the hardover turns from the trajectory flown (Sec. 16; hardover_run.hpp).
+    HardoverStep hardover;
+    if (deck_case.mission->options.hardover()) {
+      if (ok(run.report.status)) {
+        run_hardover_step(*deck_case.mission, *run.prepared, *run.trajectory, "simulated",
+                          std::move(hardover_data[c]), &hardover);
+      } else {
+        skip_hardover_step(run.report.status, &hardover);
+      }
+      run.report.hardover = &hardover;
+    }
 
     // Every point flown goes to the CSV, also after a failure (it shows where the run stopped).
     if (!options.csv_path.empty()) {
@@ -152,6 +186,14 @@ int run_simulate_command(const SimulateCommandOptions& options, std::ostream& ou
     } else if (impact.outcome == StepOutcome::kRun && !ok(impact.status)) {
       std::ostringstream line;
       print_status(line, impact.status, case_message_prefix(deck_case.number, cases) + "impact locus: ");
+      failures.push_back(line.str());
+    } else if (hardover.outcome == StepOutcome::kRun && !ok(hardover.status)) {
+      std::ostringstream line;
+      print_status(line, hardover.status, case_message_prefix(deck_case.number, cases) + "hardover: ");
+      failures.push_back(line.str());
+    } else if (radar.outcome == StepOutcome::kRun && !ok(radar.status)) {
+      std::ostringstream line;
+      print_status(line, radar.status, case_message_prefix(deck_case.number, cases) + "radar: ");
       failures.push_back(line.str());
     }
   }

@@ -24,24 +24,6 @@ std::vector<InputWarning> unused_inputs(const Mission& mission, const DeckExtras
     warn(4, "IP(15)", "options.memory_dump",
          "the core-memory dump of the 1966 program has no counterpart: ignored");
   }
-  const struct {
-    bool requested;
-    const char* word;
-    const char* field;
-    const char* what;
-  } analyses[] = {
-      {o.hardover(), "IP(22)", "options.hardover",
-       "hardover turns (Sec. 16, data blocks 44-45, and the stage 2-4 c.g. histories they alone use: "
-       "[body_dynamics.cg.2], [body_dynamics.cg.3], [body_dynamics.cg.4])"},
-      {o.radar(), "IP(24)", "options.radar", "radar tracking (Sec. 18, data block 41)"},
-  };
-  for (const auto& a : analyses) {
-    if (a.requested) {
-      warn(4, a.word, a.field,
-           std::string(a.what) +
-               " asked for but not computed by this version; the data blocks are read and checked");
-    }
-  }
   // Data block 9: only the final trajectory is listed.
   for (int i = 0; i < kMaxStages; ++i) {
     if (mission.output.initial[i] != 1 || mission.output.intermediate[i] != 1) {

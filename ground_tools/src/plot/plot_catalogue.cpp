@@ -791,27 +791,31 @@ DocumentFigures figures_for_document(const nlohmann::json& document) {
         document.type_name());
   }
   DocumentFigures result;
+  // A figure joins the result with its drawable curves only (notes name what was left out).
+  const auto add = [&](const std::string& name, Figure figure) {
+    std::vector<PlotSeries> drawable;
+    for (PlotSeries& series : figure.series) {
+      if (keep_drawable_points(&series)) {
+        drawable.push_back(std::move(series));
+      } else {
+        result.notes.push_back("figure " + name + ": curve '" + series.title +
+                               "' left out: " + kNoDrawableValue);
+      }
+    }
+    if (drawable.empty()) {
+      // The curve notes say no more than this one.
+      result.notes.resize(result.notes.size() - figure.series.size());
+      result.notes.push_back("figure " + name + " skipped: " + kNoDrawableValue);
+      return;
+    }
+    figure.series = std::move(drawable);
+    figure.subtitle = {string_member(document, "title"), heading_and_status(document)};
+    result.figures.push_back(std::move(figure));
+  };
   for (const PlotKind& kind : plot_catalogue()) {
     std::optional<Figure> figure = kind.build(document);
     if (figure) {
-      std::vector<PlotSeries> drawable;
-      for (PlotSeries& series : figure->series) {
-        if (keep_drawable_points(&series)) {
-          drawable.push_back(std::move(series));
-        } else {
-          result.notes.push_back("figure " + std::string(kind.name) + ": curve '" + series.title +
-                                 "' left out: " + kNoDrawableValue);
-        }
-      }
-      if (drawable.empty()) {
-        // The curve notes say no more than this one.
-        result.notes.resize(result.notes.size() - figure->series.size());
-        result.notes.push_back("figure " + std::string(kind.name) + " skipped: " + kNoDrawableValue);
-        continue;
-      }
-      figure->series = std::move(drawable);
-      figure->subtitle = {string_member(document, "title"), heading_and_status(document)};
-      result.figures.push_back(std::move(*figure));
+      add(kind.name, std::move(*figure));
     } else {
       const json* data = member(document, kind.member);
       result.skipped.push_back(std::string(kind.name) +
@@ -820,6 +824,9 @@ DocumentFigures figures_for_document(const nlohmann::json& document) {
                                     : " ('" + std::string(kind.member) + "' is empty)"));
     }
   }
+  // One figure per radar station (member "radar"; radar_plots.cpp).
+  for (Figure& figure : hardover_figures(document)) add(figure.name, std::move(figure));
+  for (Figure& figure : radar_figures(document)) add(figure.name, std::move(figure));
   return result;
 }
 
@@ -845,13 +852,22 @@ DocumentFigures figures_for_cases(const std::vector<const nlohmann::json*>& docu
   for (const json* document : documents) {
     if (string_member(*document, "title") != title) title = "cases of different titles";
   }
-  for (const PlotKind& kind : plot_catalogue()) {
+  // The catalogue's figures, then those of a variable count (a radar station each) in the order
+  // the cases first have them.
+  std::vector<std::string> names;
+  for (const PlotKind& kind : plot_catalogue()) names.push_back(kind.name);
+  for (const DocumentFigures& figures : cases) {
+    for (const Figure& figure : figures.figures) {
+      if (std::find(names.begin(), names.end(), figure.name) == names.end()) names.push_back(figure.name);
+    }
+  }
+  for (const std::string& name : names) {
     Figure merged;
     bool any = false;
     std::vector<KeyEntry> quantities;  // the curves of a case by title: one legend entry each
     for (std::size_t d = 0; d < cases.size(); ++d) {
       const auto it = std::find_if(cases[d].figures.begin(), cases[d].figures.end(),
-                                   [&](const Figure& figure) { return figure.name == kind.name; });
+                                   [&](const Figure& figure) { return figure.name == name; });
       if (it == cases[d].figures.end()) continue;
       Figure& figure = *it;
       const int color = static_cast<int>(d % 8) + 1;

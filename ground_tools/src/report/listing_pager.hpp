@@ -27,6 +27,9 @@ class Pager {
   // Makes sure `count` lines fit on this page (starting a new page of the same kind if not).
   void reserve(int count);
 
+  // Whether `count` more lines fit on the page in progress (false before the first page).
+  bool fits(int count) const { return page_ > 0 && line_ + count <= lines_per_page_; }
+
   // One line, trailing blanks removed.
   void emit(const std::string& text);
 

@@ -10,8 +10,10 @@
 #include "tolip/core/constants.hpp"
 #include "tolip/core/state.hpp"
 #include "tolip_ground/dispersion_report.hpp"
+#include "tolip_ground/hardover_report.hpp"
 #include "tolip_ground/impact_report.hpp"
 #include "tolip_ground/optimization_report.hpp"
+#include "tolip_ground/radar_report.hpp"
 
 namespace tolip::ground {
 namespace {
@@ -282,6 +284,8 @@ json optimization_json(const OptimizationReport& report) {
   }
   if (report.dispersions != nullptr) additions["dispersions"] = dispersion_json(*report.dispersions);
   if (report.impact != nullptr) additions["impact"] = impact_json(*report.impact);
+  if (report.hardover != nullptr) additions["hardover"] = hardover_json(*report.hardover);
+  if (report.radar != nullptr) additions["radar"] = radar_json(*report.radar);
 
   // The simulate document of the final trajectory, with the run's status and the additions placed
   // before the (long) point array.

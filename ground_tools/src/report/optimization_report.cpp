@@ -18,8 +18,10 @@
 #include "tolip/optimizer/constraint_parameters.hpp"
 #include "tolip/optimizer/constraint_set.hpp"
 #include "tolip_ground/dispersion_report.hpp"
+#include "tolip_ground/hardover_report.hpp"
 #include "tolip_ground/impact_report.hpp"
 #include "tolip_ground/optimization_report.hpp"
+#include "tolip_ground/radar_report.hpp"
 
 namespace tolip::ground {
 namespace {
@@ -773,6 +775,8 @@ void write_optimization_listing(std::ostream& out, const OptimizationReport& rep
   write_linearized_program(pager, report);
   if (report.dispersions != nullptr) report_detail::write_dispersion_pages(pager, *report.dispersions);
   if (report.impact != nullptr) report_detail::write_impact_pages(pager, *report.impact);
+  if (report.hardover != nullptr) report_detail::write_hardover_pages(pager, *report.hardover);
+  if (report.radar != nullptr) report_detail::write_radar_pages(pager, *report.radar);
 }
 
 }  // namespace tolip::ground

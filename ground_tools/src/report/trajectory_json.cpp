@@ -5,6 +5,8 @@
 #include "number_format.hpp"
 #include "tolip/core/constants.hpp"
 #include "tolip/core/state.hpp"
+#include "tolip_ground/hardover_report.hpp"
+#include "tolip_ground/radar_report.hpp"
 #include "tolip_ground/report.hpp"
 #include "tolip_ground/version.hpp"
 
@@ -189,6 +191,8 @@ json trajectory_json(const SimulationReport& report) {
   document["orbit"] = report.has_orbit ? orbit_json(report.orbit, mission.constants) : json(nullptr);
   if (!report.constraints.empty()) document["constraints"] = constraints_json(report.constraints);
   document["stage_events"] = stage_events_json(trajectory);
+  if (report.hardover != nullptr) document["hardover"] = hardover_json(*report.hardover);
+  if (report.radar != nullptr) document["radar"] = radar_json(*report.radar);
 
   json points = json::array();
   for (int i = 0; i < count; ++i) points.push_back(point_json(trajectory.points[i]));

@@ -12,7 +12,9 @@
 #include "number_format.hpp"
 #include "tolip/core/constants.hpp"
 #include "tolip/core/state.hpp"
+#include "tolip_ground/hardover_report.hpp"
 #include "tolip_ground/impact_report.hpp"
+#include "tolip_ground/radar_report.hpp"
 #include "tolip_ground/report.hpp"
 #include "tolip_ground/version.hpp"
 
@@ -386,6 +388,8 @@ void write_trajectory_listing(std::ostream& out, const SimulationReport& report)
   Pager pager(out, *report.mission, report.listing);
   report_detail::write_trajectory_pages(pager, report);
   if (report.impact != nullptr) report_detail::write_impact_pages(pager, *report.impact);
+  if (report.hardover != nullptr) report_detail::write_hardover_pages(pager, *report.hardover);
+  if (report.radar != nullptr) report_detail::write_radar_pages(pager, *report.radar);
 }
 
 }  // namespace tolip::ground

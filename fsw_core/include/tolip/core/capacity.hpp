@@ -14,17 +14,19 @@ inline constexpr int kMaxLinearSegments = 15;                   // data block 18
 inline constexpr int kMaxThrustPoints = 120;                    // data block 30, all stages together
 inline constexpr int kMaxWeightPoints = 120;                    // data block 38, all stages together
 inline constexpr int kMaxRadarStations = 20;                    // data block 41
+inline constexpr int kRadarStationIdLength = 12;                // data block 41: 2A6 identification
 inline constexpr int kMaxAdjustableParameters = 11;             // data block 6 / 27
 inline constexpr int kMaxClosedLoopPoints = 20;                 // Sec. 5: closed loop for the first 20 points
 inline constexpr int kMaxStages = 10;                           // codes 1-5 powered, 6-10 coasts
 inline constexpr int kMaxPoweredStages = 5;
 
 // Tables whose size the manual fixes by its card formats.
-inline constexpr int kMaxAeroTablePoints = 20;   // blocks 31/32: 42E12.8 = blank + 20 pairs + 1.0E10
-inline constexpr int kMaxPitchTablePoints = 15;  // block 40: 32E12.8 = blank + 15 pairs + 1.0E10
-inline constexpr int kMaxCgTablePoints = 10;     // block 37: 22E12.8 = blank + 10 pairs + 1.0E10
-inline constexpr int kBodyDynamicsStages = 3;    // block 33: gains and control stations of stages 1-3
-inline constexpr int kCgTableStages = 4;         // block 37: c.g. histories of stages 1-4
+inline constexpr int kMaxAeroTablePoints = 20;      // blocks 31/32: 42E12.8 = blank + 20 pairs + 1.0E10
+inline constexpr int kMaxPitchTablePoints = 15;     // block 40: 32E12.8 = blank + 15 pairs + 1.0E10
+inline constexpr int kMaxCgTablePoints = 10;        // block 37: 22E12.8 = blank + 10 pairs + 1.0E10
+inline constexpr int kBodyDynamicsStages = 3;       // block 33: gains and control stations of stages 1-3
+inline constexpr int kCgTableStages = 4;            // block 37: c.g. histories of stages 1-4
+inline constexpr int kMaxHardoverTablePoints = 10;  // block 44: 22E12.8 = blank + 10 pairs + 1.0E10
 
 // Our choices where the manual sets no limit (docs/architecture.md, "Capacities").
 inline constexpr int kMinStage1Steps = 25;  // data block 16: "at least 25 steps in stage 1"
@@ -40,6 +42,11 @@ inline constexpr int kMaxTrajectoryPoints = kMaxPoweredSteps + 5 * kMaxCoastStep
 // same three stages.
 inline constexpr int kImpactStages = 3;
 inline constexpr int kMaxImpactCases = kMaxPoweredSteps + kImpactStages;
+
+// Hardover turns (Sec. 16): a turn from every point of stages 1-3 at most, stages 2 and 3 in three
+// modes; our choice of 102 output lines per turn (every 0.1 s for ten seconds, and the stop).
+inline constexpr int kMaxHardoverTurns = 3 * (kMaxPoweredSteps + 3);
+inline constexpr int kMaxHardoverSamples = 102;
 // Modified (Sec. 14) thrust table of one stage: one entry per integration time plus the lift-off one.
 inline constexpr int kMaxModifiedThrustPoints = kMaxPoweredSteps + 2;
 

@@ -129,6 +129,25 @@ enum class Status : int {
   // Impact locus (impact/impact.hpp, manual Sec. 17)
   kImpactDataMissing,
   kImpactNotReached,
+  // Radar tracking (radar/radar.hpp, manual Sec. 18)
+  kRadarStationCountInvalid,
+  kRadarStationLatitudeOutOfRange,
+  kRadarStationNotFinite,
+  kRadarNoTrajectory,
+  // Hardover turns (hardover/hardover.hpp, manual Sec. 16); HardoverFault names block, word, stage
+  kHardoverEveryNthStepInvalid,
+  kHardoverStepLimitsInvalid,
+  kHardoverAttitudeStepInvalid,
+  kHardoverMaxStepsInvalid,
+  kHardoverOutputIntervalTooSmall,
+  kHardoverQbarAlphaLimitInvalid,
+  kHardoverInertiaMissing,
+  kHardoverInertiaNotPositive,
+  kHardoverDampingTableMissing,
+  kHardoverValueNotFinite,
+  kHardoverBodyDataMissing,
+  kHardoverPointInvalid,
+  kTooManyHardoverTurns,
 };
 
 const char* status_name(Status status);

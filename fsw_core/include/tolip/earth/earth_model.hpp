@@ -9,6 +9,7 @@
 #pragma once
 
 #include "tolip/core/constants.hpp"
+#include "tolip/core/state.hpp"
 
 namespace tolip {
 
@@ -69,6 +70,18 @@ double figure_deflection_coefficient(const Constants& constants);
 // delta_lambda = (6 sigma + omega^2 r / (2 g)) sin 2 lambda, g = mu / r^2; 0 with J2 = 0 and
 // omega = 0.
 double delta_lambda_rad(const Constants& constants, double geocentric_latitude_rad, double radius_ft);
+
+// Earth-fixed rectangular coordinates (x, y in the equator, x through Greenwich, z north) of a
+// point given by geodetic latitude, longitude (east) and altitude above the deck's ellipsoid
+// (Sec. 18): tan RA = ((f - 1) / f) tan lambda_d, z = R_eq (f - 1) / f sin RA + ALT sin lambda_d,
+// xy = R_eq cos RA + ALT cos lambda_d. RA (the reduced latitude) by atan2, so the poles need no
+// special case; on the sphere (CT1(12) = 0) RA = lambda_d.
+Vector3 geodetic_to_earth_fixed_ft(const Constants& constants, double geodetic_latitude_rad,
+                                   double longitude_rad, double altitude_ft);
+
+// The same for a point given by geocentric radius, geocentric latitude and longitude (a
+// trajectory point: r, lambda and the Earth-fixed longitude tau - omega t).
+Vector3 geocentric_to_earth_fixed_ft(double radius_ft, double geocentric_latitude_rad, double longitude_rad);
 
 // J2 gravity (Sec. 4, derived from the geopotential; see docs/theory/equations-of-motion.md).
 struct Gravity {

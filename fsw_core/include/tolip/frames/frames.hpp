@@ -47,4 +47,9 @@ double angle_of_attack_rad(const Vector3& thrust_axis_local);
 // the branch with a forward (positive i_y) thrust component.
 double theta_for_zero_alpha_rad(const Matrix3& platform_to_local, double chi_rad);
 
+// A(lambda_d, u) of Sec. 18: Earth-fixed rectangular -> topocentric geodetic at a site of geodetic
+// latitude lambda_d and longitude u (east). Rows: local geodetic north, east, and the normal to the
+// spheroid positive towards the geocentre (down). As printed; it is Ry(-(90 deg + lambda_d)) Rz(u).
+Matrix3 earth_fixed_to_topocentric(double geodetic_latitude_rad, double longitude_rad);
+
 }  // namespace tolip
