@@ -23,21 +23,23 @@ int warning_count(const std::string& err) {
 
 // The example asks for the four analyses of Sec. 15-18, of which simulate computes three (hardover,
 // Sec. 16; the impact locus, Sec. 17, with its step rate DA6D(17-19); radar, Sec. 18) and leaves
-// the dispersions to optimize, and gives a gyro uncage time: two warnings, each naming its block
-// and word; the run itself succeeds.
+// the dispersions to optimize, gives a gyro uncage time and the stage-4 c.g. history of the
+// reference data (XCG4, read by nothing): three warnings, each naming its block and word; the run
+// itself succeeds.
 TEST(UnusedInputs, TheExampleNamesEveryInputItDoesNotActOn) {
   for (const char* deck : {"scout/mission.toml", "scout/mission.dat"}) {
     const CommandResult run =
         run_tolip_executable({"simulate", std::string(TOLIP_EXAMPLES_DIR) + "/" + deck, "--json"});
     EXPECT_EQ(run.exit_code, 0) << run.err;
     for (const char* named : {"data block 4, IP(21) (options.dispersions)",
-                              "data block 17, DA2(8) (misc.gyro_uncage_s_before_launch)"}) {
+                              "data block 17, DA2(8) (misc.gyro_uncage_s_before_launch)",
+                              "data block 37, XCG4 (body_dynamics.cg.4)"}) {
       EXPECT_TRUE(contains(run.err, named)) << deck << ": " << named << "\n" << run.err;
     }
     for (const char* acted_on : {"IP(22)", "IP(23)", "IP(24)", "DA6D(17-19)"}) {
       EXPECT_FALSE(contains(run.err, acted_on)) << deck << ": " << acted_on << "\n" << run.err;
     }
-    EXPECT_EQ(warning_count(run.err), 2) << deck << "\n" << run.err;
+    EXPECT_EQ(warning_count(run.err), 3) << deck << "\n" << run.err;
   }
 }
 
@@ -50,7 +52,10 @@ TEST(UnusedInputs, EachInputWarnsAloneAndADeckWithoutThemIsSilent) {
       {"impact = true ", "impact = false "},
       {"radar = true ", "radar = false "},
       {"gyro_uncage_s_before_launch = 5.0", "gyro_uncage_s_before_launch = 0.0"},
-      {"impact_every_nth_step = [2, 2, 2]", "impact_every_nth_step = [1, 1, 1]"}};
+      {"impact_every_nth_step = [2, 2, 2]", "impact_every_nth_step = [1, 1, 1]"},
+      {"[body_dynamics.cg.4]  # data block 37, XCG4\nstage_time_s = [0.0, 14.0, 28.0]\n"
+       "station_in = [110.0, 107.0, 104.0]\n",
+       ""}};
   const std::string silent = edited_example_deck(scratch, "silent.toml", quiet);
   const CommandResult none = run_tolip_executable({"simulate", silent, "--json"});
   EXPECT_EQ(none.exit_code, 0) << none.err;

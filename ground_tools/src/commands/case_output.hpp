@@ -20,7 +20,7 @@ namespace tolip::ground {
 
 // One case flown as `simulate` flies it (the deck's program; IP(6) = 2 with body dynamics in
 // stage 1): the report and the structures it points to. Shared by simulate and the commands that
-// analyse the deck's trajectory (radar).
+// analyse the deck's trajectory (impact, radar, hardover).
 struct SimulatedCase {
   std::unique_ptr<PreparedCase> prepared = std::make_unique<PreparedCase>();
   std::unique_ptr<Trajectory> trajectory = std::make_unique<Trajectory>();
@@ -49,16 +49,5 @@ std::string case_message_prefix(int case_number, std::size_t cases);
 void write_case_outputs(std::ostream& out, std::ostream& err, bool json,
                         const nlohmann::ordered_json& documents, const std::string& listing,
                         const std::vector<std::string>& failures);
-
-// One case flown as `simulate` flies it (the deck's program; IP(6) = 2: stage 1 with body
-// dynamics): the report and the structures it points to, kept on the heap. `tolip impact` flies its
-// nominal the same way.
-struct SimulatedCase {
-  std::unique_ptr<PreparedCase> prepared = std::make_unique<PreparedCase>();
-  std::unique_ptr<Trajectory> trajectory = std::make_unique<Trajectory>();
-  SimulationReport report;
-};
-void simulate_case(const Mission& mission, const DeckListingOptions& listing, const std::string& deck_path,
-                   SimulatedCase* run);
 
 }  // namespace tolip::ground

@@ -93,6 +93,15 @@ std::vector<InputWarning> unused_inputs(const Mission& mission, const DeckExtras
       break;
     }
   }
+  // Data block 37: the stage-4 c.g. history (XCG4). Stage 1's flies the body dynamics; stages 2-3's
+  // the dispersions and the hardover turns, which Sec. 15 and 16 take in stages 1-3 only; stage 4 is
+  // spun or flies the point-mass program, so nothing reads XCG4.
+  if (!mission.body_dynamics.cg_station_ft[3].empty()) {
+    warn(37, "XCG4", "body_dynamics.cg.4",
+         "the stage-4 c.g. history ([body_dynamics.cg.4]) has no effect: body dynamics fly stage 1, the "
+         "dispersions and hardover "
+         "turns use the c.g. of stages 1-3 only");
+  }
   return out;
 }
 
