@@ -14,6 +14,7 @@
 
 #include "tolip/trajectory/trajectory.hpp"
 #include "tolip/vehicle/prepared_case.hpp"
+#include "tolip_ground/atomic_file.hpp"
 #include "tolip_ground/report.hpp"
 
 namespace tolip::ground {
@@ -49,5 +50,21 @@ std::string case_message_prefix(int case_number, std::size_t cases);
 void write_case_outputs(std::ostream& out, std::ostream& err, bool json,
                         const nlohmann::ordered_json& documents, const std::string& listing,
                         const std::vector<std::string>& failures);
+
+// Writes one CSV output (write(csv) fills it) atomically (nothing half-written); on failure the reason goes
+// to err.
+template <typename Write>
+bool write_csv_or_report(const std::string& path, std::ostream& err, Write write) {
+  std::string write_error;
+  const bool written = write_file_atomically(
+      path,
+      [&write](std::ostream& csv) {
+        write(csv);
+        return static_cast<bool>(csv);
+      },
+      &write_error);
+  if (!written) err << "tolip: " << write_error << '\n';
+  return written;
+}
 
 }  // namespace tolip::ground

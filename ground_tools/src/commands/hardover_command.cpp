@@ -53,19 +53,10 @@ int run_hardover_command(const HardoverCommandOptions& options, std::ostream& ou
     } else {
       skip_hardover_step(run.report.status, &step);
     }
-    if (!options.csv_path.empty()) {
-      std::string write_error;
-      const bool written = write_file_atomically(
-          case_file_path(options.csv_path, deck_case.number, cases),
-          [&step](std::ostream& csv) {
-            write_hardover_csv(csv, step);
-            return static_cast<bool>(csv);
-          },
-          &write_error);
-      if (!written) {
-        err << "tolip: " << write_error << '\n';
-        return kExitFailure;
-      }
+    if (!options.csv_path.empty() &&
+        !write_csv_or_report(case_file_path(options.csv_path, deck_case.number, cases), err,
+                             [&step](std::ostream& csv) { write_hardover_csv(csv, step); })) {
+      return kExitFailure;
     }
     if (options.json) {
       documents.push_back(hardover_document(mission, options.deck_path, run.report.status, step));

@@ -64,19 +64,10 @@ int run_impact_command(const ImpactCommandOptions& options, std::ostream& out, s
                      &step);
     if (step.outcome != StepOutcome::kRun) step.status = run.report.status;
 
-    if (!options.csv_path.empty()) {
-      std::string write_error;
-      const bool written = write_file_atomically(
-          case_file_path(options.csv_path, deck_case.number, cases),
-          [&step](std::ostream& csv) {
-            write_impact_csv(csv, step);
-            return static_cast<bool>(csv);
-          },
-          &write_error);
-      if (!written) {
-        err << "tolip: " << write_error << '\n';
-        return kExitFailure;
-      }
+    if (!options.csv_path.empty() &&
+        !write_csv_or_report(case_file_path(options.csv_path, deck_case.number, cases), err,
+                             [&step](std::ostream& csv) { write_impact_csv(csv, step); })) {
+      return kExitFailure;
     }
     if (options.json) {
       nlohmann::ordered_json document = trajectory_json(run.report);

@@ -40,21 +40,6 @@ void print_status(std::ostream& err, Status status, const std::string& prefix = 
 
 // Statuses with which optimize_trajectory rejects the case before flying anything: the deck asks
 // for an optimization the optimizer does not do (bad input, not a run-time failure).
-// Writes one CSV output atomically (nothing half-written); on failure the reason goes to err.
-template <typename Write>
-bool write_csv_or_report(const std::string& path, std::ostream& err, Write write) {
-  std::string write_error;
-  const bool written = write_file_atomically(
-      path,
-      [&write](std::ostream& csv) {
-        write(csv);
-        return static_cast<bool>(csv);
-      },
-      &write_error);
-  if (!written) err << "tolip: " << write_error << '\n';
-  return written;
-}
-
 bool rejects_problem(Status status) {
   return status == Status::kPayoffNotSupported || status == Status::kAdjustableParameterNotSupported ||
          status == Status::kUnknownConstraintCode;

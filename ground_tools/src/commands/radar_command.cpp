@@ -54,19 +54,10 @@ int run_radar_command(const RadarCommandOptions& options, std::ostream& out, std
     } else {
       skip_radar_step(deck_case.extras.radar_stations, run.report.status, &radar);
     }
-    if (!options.csv_path.empty()) {
-      std::string write_error;
-      const bool written = write_file_atomically(
-          case_file_path(options.csv_path, deck_case.number, cases),
-          [&radar](std::ostream& csv) {
-            write_radar_csv(csv, radar);
-            return static_cast<bool>(csv);
-          },
-          &write_error);
-      if (!written) {
-        err << "tolip: " << write_error << '\n';
-        return kExitFailure;
-      }
+    if (!options.csv_path.empty() &&
+        !write_csv_or_report(case_file_path(options.csv_path, deck_case.number, cases), err,
+                             [&radar](std::ostream& csv) { write_radar_csv(csv, radar); })) {
+      return kExitFailure;
     }
     if (options.json) {
       nlohmann::ordered_json document = radar_document(mission, options.deck_path, run.report.status, radar);

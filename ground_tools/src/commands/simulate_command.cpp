@@ -155,20 +155,11 @@ int run_simulate_command(const SimulateCommandOptions& options, std::ostream& ou
     }
 
     // Every point flown goes to the CSV, also after a failure (it shows where the run stopped).
-    if (!options.csv_path.empty()) {
-      std::string write_error;
-      const SimulationReport& report = run.report;
-      const bool written = write_file_atomically(
-          case_file_path(options.csv_path, deck_case.number, cases),
-          [&report](std::ostream& csv) {
-            write_trajectory_csv(csv, report);
-            return static_cast<bool>(csv);
-          },
-          &write_error);
-      if (!written) {
-        err << "tolip: " << write_error << '\n';
-        return kExitFailure;
-      }
+    if (!options.csv_path.empty() &&
+        !write_csv_or_report(
+            case_file_path(options.csv_path, deck_case.number, cases), err,
+            [&report = run.report](std::ostream& csv) { write_trajectory_csv(csv, report); })) {
+      return kExitFailure;
     }
 
     if (options.json) {
