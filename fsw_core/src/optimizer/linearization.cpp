@@ -16,6 +16,20 @@ constexpr double kRepairEta = 0.01;            // eta next to a fixed break (Sec
 constexpr double kPositiveRateRadS = 1e-7;
 // Adjacent rates closer than this (rad/s) are one merged segment: the break is not a rate change.
 constexpr double kMergedRateRadS = 1e-9;
+// Relative slack of a rate against its limit when deciding to repair it, and when accepting a
+// program. The repair is the stricter of the two on purpose: a repair sets a rate to its limit
+// exactly, and the solved program then realizes it only to the round-off of the fit's solve;
+// accepting 1e-6 absorbs that, while repairing above 1e-9 leaves nothing the acceptance
+// would reject. With one value for both a repaired rate could fail acceptance on round-off alone.
+constexpr double kRepairRateSlack = 1e-9;
+constexpr double kAcceptedRateSlack = 1e-6;
+// Two times (s) closer than this are the same instant: the trajectory's points at a break, a
+// staging or the end of lift-off are copies of the same double, so any small value works; 1 us is
+// far below the integration step (0.1 s at the least) and far above the round-off of a time sum.
+constexpr double kSameInstantS = 1e-6;
+// A time this close (s) outside the program's first or last break still samples the program: the
+// break times are sums of durations and can differ from the point times by round-off.
+constexpr double kBreakTimeRoundOffS = 1e-9;
 using KktMatrix = Eigen::Matrix<double, kLinearizationKktSize, kLinearizationKktSize>;
 using KktVector = Eigen::Matrix<double, kLinearizationKktSize, 1>;
 constexpr int kKktSize = kLinearizationKktSize;
@@ -92,7 +106,9 @@ Status break_times(const Mission& mission, const PreparedCase& prepared, const T
 
 // Segment holding time t and the weight of its end break (hat functions); -1 outside the program.
 int segment_of(const LinearProgram& p, double t, double* fraction) {
-  if (t < p.break_time_s[0] - 1e-9 || t > p.break_time_s[p.segment_count] + 1e-9) return -1;
+  if (t < p.break_time_s[0] - kBreakTimeRoundOffS ||
+      t > p.break_time_s[p.segment_count] + kBreakTimeRoundOffS)
+    return -1;
   int s = 0;
   while (s + 1 < p.segment_count && t >= p.break_time_s[s + 1]) ++s;
   *fraction = (t - p.break_time_s[s]) / (p.break_time_s[s + 1] - p.break_time_s[s]);
@@ -121,7 +137,7 @@ void update_rates_and_stages(const Trajectory& t, LinearProgram* p) {
         (p->theta_rad[s + 1] - p->theta_rad[s]) / (p->break_time_s[s + 1] - p->break_time_s[s]);
     // The stage flown at the segment's start (at a staging instant, the stage that starts).
     for (int k = t.point_count - 1; k >= 0; --k) {
-      if (t.points[k].time_s <= p->break_time_s[s] + 1e-9) {
+      if (t.points[k].time_s <= p->break_time_s[s] + kBreakTimeRoundOffS) {
         p->stage_code[s] = t.points[k].stage_code;
         p->start_stage_time_s[s] = t.points[k].stage_time_s + (p->break_time_s[s] - t.points[k].time_s);
         break;
@@ -322,8 +338,8 @@ bool repair_rate_limits(const Mission& mission, const LinearConstraints& c,
   };
   for (int s = 0; s < k; ++s) {
     if (limits.max_pitch_rate_rad_s > 0.0 &&
-        std::fabs(rate(s)) > limits.max_pitch_rate_rad_s * (1.0 + 1e-9) && !merge_group(*p, s).rate_fixed &&
-        !determined(s)) {
+        std::fabs(rate(s)) > limits.max_pitch_rate_rad_s * (1.0 + kRepairRateSlack) &&
+        !merge_group(*p, s).rate_fixed && !determined(s)) {
       return impose(s, false, (rate(s) < 0.0 ? -1.0 : 1.0) * limits.max_pitch_rate_rad_s);
     }
   }
@@ -337,15 +353,15 @@ bool repair_rate_limits(const Mission& mission, const LinearConstraints& c,
   }
   for (int s = 0; s < k; ++s) {
     if (limits.min_pitch_rate_rad_s > 0.0 &&
-        std::fabs(rate(s)) < limits.min_pitch_rate_rad_s * (1.0 - 1e-9) && !merge_group(*p, s).rate_fixed &&
-        !determined(s) && !exempt_from_minimum_rates(*p, s)) {
+        std::fabs(rate(s)) < limits.min_pitch_rate_rad_s * (1.0 - kRepairRateSlack) &&
+        !merge_group(*p, s).rate_fixed && !determined(s) && !exempt_from_minimum_rates(*p, s)) {
       return impose(s, false, (rate(s) > 0.0 ? 1.0 : -1.0) * limits.min_pitch_rate_rad_s);
     }
   }
   for (int s = 0; s + 1 < k; ++s) {
     if (!(limits.min_pitch_rate_change_rad_s > 0.0) || rate_continues_previous(*p, s + 1) ||
         exempt_from_minimum_rates(*p, s) || exempt_from_minimum_rates(*p, s + 1) ||
-        std::fabs(rate(s + 1) - rate(s)) >= limits.min_pitch_rate_change_rad_s * (1.0 - 1e-9)) {
+        std::fabs(rate(s + 1) - rate(s)) >= limits.min_pitch_rate_change_rad_s * (1.0 - kRepairRateSlack)) {
       continue;
     }
     if (merge_group(*p, s).rate_fixed && merge_group(*p, s + 1).rate_fixed) continue;
@@ -359,9 +375,11 @@ bool meets_rate_limits(const Mission& mission, double coast_rate_after_last, con
   int positives = coast_rate_after_last > kPositiveRateRadS ? 1 : 0;
   for (int s = 0; s < p.segment_count; ++s) {
     const double r = segment_rate(p, s);
-    if (limits.max_pitch_rate_rad_s > 0.0 && std::fabs(r) > limits.max_pitch_rate_rad_s * (1.0 + 1e-6))
+    if (limits.max_pitch_rate_rad_s > 0.0 &&
+        std::fabs(r) > limits.max_pitch_rate_rad_s * (1.0 + kAcceptedRateSlack))
       return false;
-    if (limits.min_pitch_rate_rad_s > 0.0 && std::fabs(r) < limits.min_pitch_rate_rad_s * (1.0 - 1e-6) &&
+    if (limits.min_pitch_rate_rad_s > 0.0 &&
+        std::fabs(r) < limits.min_pitch_rate_rad_s * (1.0 - kAcceptedRateSlack) &&
         !exempt_from_minimum_rates(p, s)) {
       return false;
     }
@@ -369,7 +387,8 @@ bool meets_rate_limits(const Mission& mission, double coast_rate_after_last, con
     if (s + 1 < p.segment_count && limits.min_pitch_rate_change_rad_s > 0.0 &&
         !rate_continues_previous(p, s + 1) && !exempt_from_minimum_rates(p, s) &&
         !exempt_from_minimum_rates(p, s + 1) &&
-        std::fabs(segment_rate(p, s + 1) - r) < limits.min_pitch_rate_change_rad_s * (1.0 - 1e-6)) {
+        std::fabs(segment_rate(p, s + 1) - r) <
+            limits.min_pitch_rate_change_rad_s * (1.0 - kAcceptedRateSlack)) {
       return false;
     }
   }
@@ -437,7 +456,8 @@ void check_coast7_rates(const Mission& mission, const LinearProgram& p, Lineariz
   for (int s = 0; s < p.segment_count; ++s) {
     if (p.stage_code[s] != 7) continue;
     const double rate = segment_rate(p, s);
-    if (limits.min_pitch_rate_rad_s > 0.0 && std::fabs(rate) < limits.min_pitch_rate_rad_s * (1.0 - 1e-6)) {
+    if (limits.min_pitch_rate_rad_s > 0.0 &&
+        std::fabs(rate) < limits.min_pitch_rate_rad_s * (1.0 - kAcceptedRateSlack)) {
       out->coast7_below_min_rate = true;
     }
     // The breaks at its start (with segment s - 1) and at its end (with s + 1); a merged one is
@@ -446,11 +466,160 @@ void check_coast7_rates(const Mission& mission, const LinearProgram& p, Lineariz
       if (later < 1 || later >= p.segment_count || !(limits.min_pitch_rate_change_rad_s > 0.0)) continue;
       if (rate_continues_previous(p, later)) continue;
       const double change = std::fabs(segment_rate(p, later) - segment_rate(p, later - 1));
-      if (change < limits.min_pitch_rate_change_rad_s * (1.0 - 1e-6))
+      if (change < limits.min_pitch_rate_change_rad_s * (1.0 - kAcceptedRateSlack))
         out->coast7_below_min_rate_change = true;
     }
   }
 }
+
+namespace {
+
+// The optimized case, flown without the zero-alpha window and without the in-flight alpha = 0
+// attitude at stage-2 ignition: both become fixed values of the linear program.
+void start_from_optimum(const OptimizerWorkspace& optimized, LinearizationWorkspace* ws) {
+  ws->mission = optimized.mission;
+  ws->mission.options.set_zero_alpha_window(false);
+  ws->mission.options.set_alpha_zero_at_stage2_ignition(false);
+  ws->prepared = optimized.prepared;
+  const Trajectory& optimum_trajectory = optimized.nominal;
+  ws->optimum.point_count = optimum_trajectory.point_count;
+  for (int k = 0; k < optimum_trajectory.point_count; ++k)
+    ws->optimum.theta_rad[k] = optimum_trajectory.points[k].theta_rad;
+}
+
+// Fixed break values: 90 deg at the end of lift-off; the end of a maximum-rate period after it
+// (the optimum's attitude there); alpha = 0 at stage-2 ignition (the optimum's attitude there).
+// Every other break starts at the optimum's attitude.
+void fix_break_values(const OptimizerWorkspace& optimized, const LinearizationWorkspace& ws,
+                      LinearProgram* base) {
+  const Trajectory& optimum_trajectory = optimized.nominal;
+  const auto optimum_theta_at = [&](double t) {
+    for (int k = 1; k < optimum_trajectory.point_count; ++k) {
+      if (std::fabs(optimum_trajectory.points[k].time_s - t) < kSameInstantS)
+        return optimum_trajectory.points[k].theta_rad;
+    }
+    return optimum_trajectory.points[1].theta_rad;
+  };
+  for (int b = 0; b <= base->segment_count; ++b) base->theta_rad[b] = optimum_theta_at(base->break_time_s[b]);
+  if (std::fabs(base->break_time_s[0] - ws.mission.launch.liftoff_duration_s) < kSameInstantS) {
+    base->theta_rad[0] = 0.5 * kPi;
+    base->fixed[0] = true;
+  }
+  if (optimized.mission.options.alpha_zero_at_stage2_ignition()) {
+    const double ignition = stage_start_s(ws.prepared, 2);
+    for (int b = 0; b <= base->segment_count; ++b) {
+      if (std::fabs(base->break_time_s[b] - ignition) < kSameInstantS) {
+        base->fixed[b] = true;
+        for (int k = 0; k < optimum_trajectory.point_count; ++k) {
+          if (optimum_trajectory.points[k].stage_code == 2 &&
+              std::fabs(optimum_trajectory.points[k].time_s - ignition) < kSameInstantS) {
+            base->theta_rad[b] = optimum_trajectory.points[k].theta_rad;
+          }
+        }
+      }
+    }
+  }
+  // The maximum-rate period after lift-off: if the optimum pitches at the limit from lift-off, the
+  // second break moves to where that period ends and keeps the optimum's attitude there (Sec. 10).
+  const double max_rate = ws.mission.control.max_pitch_rate_rad_s;
+  if (max_rate > 0.0 && base->segment_count > 1) {
+    double end_of_max_rate = -1.0;
+    for (int k = 2;
+         k < optimum_trajectory.point_count && optimum_trajectory.points[k].time_s < base->break_time_s[2];
+         ++k) {
+      const TrajectoryPoint& a = optimum_trajectory.points[k - 1];
+      const TrajectoryPoint& b = optimum_trajectory.points[k];
+      const double dt = b.time_s - a.time_s;
+      if (!(dt > 0.0) || std::fabs(b.theta_rad - a.theta_rad) < max_rate * dt * 0.99) break;
+      end_of_max_rate = b.time_s;
+    }
+    if (end_of_max_rate > base->break_time_s[0]) {
+      base->break_time_s[1] = end_of_max_rate;
+      base->theta_rad[1] = optimum_theta_at(end_of_max_rate);
+      base->fixed[1] = true;
+    }
+  }
+}
+
+// One backward run about the nominal and the programs computed from it: up to five, each
+// repairing one rate violation. The repairs and their eta of earlier backward runs are kept
+// (docs/theory/linearization.md): restarting from none lets the program's structure flip between
+// runs, and with it the trajectory.
+Status next_program(const LinearConstraints& c, const LinearProgram& base, const double* achieved,
+                    LinearizationWorkspace* ws, LinearProgram* program, double* payload_change_lb,
+                    LinearizationResult* out) {
+  ConstraintTerminal terminals[kMaxConstraints];
+  Status status = constraint_terminals(c, ws->mission, ws->nominal, terminals);
+  if (!ok(status)) return status;
+  status = run_backward(ws->mission, ws->prepared, ws->nominal, c.count, terminals, &ws->backward);
+  if (!ok(status)) return status;
+  ++out->backward_runs;
+
+  const LinearProgram previous = *program;
+  *payload_change_lb = 0.0;
+  *program = base;
+  program->rate_repair_count = previous.rate_repair_count;
+  for (int r = 0; r < previous.rate_repair_count; ++r) {
+    program->rate_segment[r] = previous.rate_segment[r];
+    program->rate_merge[r] = previous.rate_merge[r];
+    program->rate_value_rad_s[r] = previous.rate_value_rad_s[r];
+  }
+  for (int sg = 0; sg < program->segment_count; ++sg) program->eta[sg] = previous.eta[sg];
+  for (int attempt = 0; attempt < kMaxProgramsPerBackwardRun; ++attempt) {
+    status = solve_program(c, ws->backward, ws->nominal, ws->program, ws->optimum, achieved, &ws->system,
+                           program, payload_change_lb);
+    if (!ok(status)) return status;
+    ++out->programs_computed;
+    if (!repair_rate_limits(ws->mission, c, coast_rate_after_program(ws->mission, ws->prepared, *program),
+                            program)) {
+      break;
+    }
+  }
+  update_rates_and_stages(ws->nominal, program);
+  return Status::kOk;
+}
+
+// IP(6) = 1 (Sec. 10): after a successful point-mass linearization, the program becomes the
+// command of 6D runs; the linearization goes on with them, within the same DA13(4) budget, until
+// the constraints and the rate limits are met again. The first 6D flight, of the accepted program
+// itself, is the trajectory the next backward run linearizes about: the counterpart of the
+// manual's backward run, which integrates the 6D trajectory itself, and not a linearization
+// attempt (docs/theory/linearization.md). Records the point-mass result first.
+Status switch_to_body_dynamics(const LinearConstraints& c, const LinearProgram& program,
+                               LinearizationWorkspace* ws, double* achieved, LinearizationResult* out) {
+  out->point_mass_met = true;
+  out->point_mass_program = program;
+  Status status = linearized_payoff(ws->mission, ws->nominal, &out->point_mass_payoff);
+  if (!ok(status)) return status;
+  for (int j = 0; j < c.count; ++j) out->point_mass_achieved[j] = achieved[j];
+  out->body_dynamics = true;
+  status = fly_linearized(*ws, true, &ws->candidate);
+  ++out->reference_flights;
+  if (!ok(status)) return status;
+  status = evaluate_constraints(c, ws->mission, ws->candidate, achieved);
+  if (!ok(status)) return status;
+  for (int j = 0; j < c.count; ++j) out->point_mass_program_6d_achieved[j] = achieved[j];
+  ws->nominal = ws->candidate;
+  return Status::kOk;
+}
+
+// The last program, its constraints against their linearization deadbands, and its payoff.
+Status record_result(const LinearConstraints& c, const LinearProgram& program, const double* achieved,
+                     const LinearizationWorkspace& ws, LinearizationResult* out) {
+  out->program = program;
+  check_coast7_rates(ws.mission, program, out);
+  out->constraint_count = c.count;
+  for (int j = 0; j < c.count; ++j) {
+    out->codes[j] = c.codes[j].code;
+    out->desired[j] = c.desired[j];
+    out->achieved[j] = achieved[j];
+    out->tolerance[j] = c.deadband[j];
+    out->met[j] = std::fabs(constraint_correction(c, j, achieved[j])) <= c.deadband[j];
+  }
+  return linearized_payoff(ws.mission, ws.nominal, &out->payoff);
+}
+
+}  // namespace
 
 Status linearize_pitch_program(const OptimizerWorkspace& optimized, LinearizationWorkspace* ws,
                                LinearizationResult* out) {
@@ -460,73 +629,19 @@ Status linearize_pitch_program(const OptimizerWorkspace& optimized, Linearizatio
   out->finished = false;
   out->constraints_met = false;
   out->rate_limits_met = false;
-  // The optimized case, flown without the zero-alpha window and without the in-flight alpha = 0
-  // attitude at stage-2 ignition: both become fixed values of the linear program.
-  ws->mission = optimized.mission;
-  ws->mission.options.set_zero_alpha_window(false);
-  ws->mission.options.set_alpha_zero_at_stage2_ignition(false);
-  ws->prepared = optimized.prepared;
-  const Trajectory& optimum_trajectory = optimized.nominal;
-  ws->optimum.point_count = optimum_trajectory.point_count;
-  for (int k = 0; k < optimum_trajectory.point_count; ++k)
-    ws->optimum.theta_rad[k] = optimum_trajectory.points[k].theta_rad;
+  out->body_dynamics = false;
+  out->point_mass_met = false;
+  out->reference_flights = 0;
+  start_from_optimum(optimized, ws);
 
   LinearConstraints c;
   Status status = select_constraints(ws->mission, &c);
   if (!ok(status)) return out->status = status;
   LinearProgram base;
-  status = break_times(ws->mission, ws->prepared, optimum_trajectory, &base);
+  status = break_times(ws->mission, ws->prepared, optimized.nominal, &base);
   if (!ok(status)) return out->status = status;
-  update_rates_and_stages(optimum_trajectory, &base);  // the stage codes the rate repairs read
-
-  // Fixed break values: 90 deg at the end of lift-off; the end of a maximum-rate period after it
-  // (the optimum's attitude there); alpha = 0 at stage-2 ignition (the optimum's attitude there).
-  const auto optimum_theta_at = [&](double t) {
-    for (int k = 1; k < optimum_trajectory.point_count; ++k) {
-      if (std::fabs(optimum_trajectory.points[k].time_s - t) < 1e-6)
-        return optimum_trajectory.points[k].theta_rad;
-    }
-    return optimum_trajectory.points[1].theta_rad;
-  };
-  for (int b = 0; b <= base.segment_count; ++b) base.theta_rad[b] = optimum_theta_at(base.break_time_s[b]);
-  if (std::fabs(base.break_time_s[0] - ws->mission.launch.liftoff_duration_s) < 1e-6) {
-    base.theta_rad[0] = 0.5 * kPi;
-    base.fixed[0] = true;
-  }
-  if (optimized.mission.options.alpha_zero_at_stage2_ignition()) {
-    const double ignition = stage_start_s(ws->prepared, 2);
-    for (int b = 0; b <= base.segment_count; ++b) {
-      if (std::fabs(base.break_time_s[b] - ignition) < 1e-6) {
-        base.fixed[b] = true;
-        for (int k = 0; k < optimum_trajectory.point_count; ++k) {
-          if (optimum_trajectory.points[k].stage_code == 2 &&
-              std::fabs(optimum_trajectory.points[k].time_s - ignition) < 1e-6) {
-            base.theta_rad[b] = optimum_trajectory.points[k].theta_rad;
-          }
-        }
-      }
-    }
-  }
-  // The maximum-rate period after lift-off: if the optimum pitches at the limit from lift-off, the
-  // second break moves to where that period ends and keeps the optimum's attitude there (Sec. 10).
-  const double max_rate = ws->mission.control.max_pitch_rate_rad_s;
-  if (max_rate > 0.0 && base.segment_count > 1) {
-    double end_of_max_rate = -1.0;
-    for (int k = 2;
-         k < optimum_trajectory.point_count && optimum_trajectory.points[k].time_s < base.break_time_s[2];
-         ++k) {
-      const TrajectoryPoint& a = optimum_trajectory.points[k - 1];
-      const TrajectoryPoint& b = optimum_trajectory.points[k];
-      const double dt = b.time_s - a.time_s;
-      if (!(dt > 0.0) || std::fabs(b.theta_rad - a.theta_rad) < max_rate * dt * 0.99) break;
-      end_of_max_rate = b.time_s;
-    }
-    if (end_of_max_rate > base.break_time_s[0]) {
-      base.break_time_s[1] = end_of_max_rate;
-      base.theta_rad[1] = optimum_theta_at(end_of_max_rate);
-      base.fixed[1] = true;
-    }
-  }
+  update_rates_and_stages(optimized.nominal, &base);  // the stage codes the rate repairs read
+  fix_break_values(optimized, *ws, &base);
 
   // The first nominal: the optimum program flown under the linearization rules.
   const int budget = ws->mission.convergence.max_linearization_iterations;
@@ -540,41 +655,10 @@ Status linearize_pitch_program(const OptimizerWorkspace& optimized, Linearizatio
   LinearProgram program = base;
   bool success = false;
   const bool six_d_after_success = optimized.mission.options.body_dynamics_6d() == 1;
-  out->body_dynamics = false;
-  out->point_mass_met = false;
-  out->reference_flights = 0;
   while (out->forward_runs < budget && !success) {
-    ConstraintTerminal terminals[kMaxConstraints];
-    status = constraint_terminals(c, ws->mission, ws->nominal, terminals);
-    if (!ok(status)) return out->status = status;
-    status = run_backward(ws->mission, ws->prepared, ws->nominal, c.count, terminals, &ws->backward);
-    if (!ok(status)) return out->status = status;
-    ++out->backward_runs;
-
-    // Up to five programs from this backward run, each repairing one rate violation. The repairs
-    // and their eta of earlier backward runs are kept (docs/theory/linearization.md): restarting
-    // from none lets the program's structure flip between runs, and with it the trajectory.
-    const LinearProgram previous = program;
     double payload_change_lb = 0.0;
-    program = base;
-    program.rate_repair_count = previous.rate_repair_count;
-    for (int r = 0; r < previous.rate_repair_count; ++r) {
-      program.rate_segment[r] = previous.rate_segment[r];
-      program.rate_merge[r] = previous.rate_merge[r];
-      program.rate_value_rad_s[r] = previous.rate_value_rad_s[r];
-    }
-    for (int sg = 0; sg < program.segment_count; ++sg) program.eta[sg] = previous.eta[sg];
-    for (int attempt = 0; attempt < kMaxProgramsPerBackwardRun; ++attempt) {
-      status = solve_program(c, ws->backward, ws->nominal, ws->program, ws->optimum, achieved, &ws->system,
-                             &program, &payload_change_lb);
-      if (!ok(status)) return out->status = status;
-      ++out->programs_computed;
-      if (!repair_rate_limits(ws->mission, c, coast_rate_after_program(ws->mission, ws->prepared, program),
-                              &program)) {
-        break;
-      }
-    }
-    update_rates_and_stages(ws->nominal, &program);
+    status = next_program(c, base, achieved, ws, &program, &payload_change_lb, out);
+    if (!ok(status)) return out->status = status;
 
     // Forward linearization run.
     sample(program, ws->nominal, ws->optimum, &ws->program);
@@ -591,42 +675,15 @@ Status linearize_pitch_program(const OptimizerWorkspace& optimized, Linearizatio
     out->constraints_met = within_deadbands(c, 0, achieved);
     success = out->rate_limits_met && out->constraints_met;
 
-    // IP(6) = 1 (Sec. 10): after a successful point-mass linearization, the program becomes the
-    // command of 6D runs; the linearization goes on with them, within the same DA13(4) budget,
-    // until the constraints and the rate limits are met again. The first 6D flight, of the
-    // accepted program itself, is the trajectory the next backward run linearizes about: the
-    // counterpart of the manual's backward run, which integrates the 6D trajectory itself, and
-    // not a linearization attempt (docs/theory/linearization.md).
     if (success && six_d_after_success && !out->body_dynamics) {
-      out->point_mass_met = true;
-      out->point_mass_program = program;
-      status = linearized_payoff(ws->mission, ws->nominal, &out->point_mass_payoff);
+      status = switch_to_body_dynamics(c, program, ws, achieved, out);
       if (!ok(status)) return out->status = status;
-      for (int j = 0; j < c.count; ++j) out->point_mass_achieved[j] = achieved[j];
-      out->body_dynamics = true;
-      status = fly_linearized(*ws, true, &ws->candidate);
-      ++out->reference_flights;
-      if (!ok(status)) return out->status = status;
-      status = evaluate_constraints(c, ws->mission, ws->candidate, achieved);
-      if (!ok(status)) return out->status = status;
-      for (int j = 0; j < c.count; ++j) out->point_mass_program_6d_achieved[j] = achieved[j];
-      ws->nominal = ws->candidate;
       out->constraints_met = within_deadbands(c, 0, achieved);
       success = out->rate_limits_met && out->constraints_met;
     }
   }
 
-  out->program = program;
-  check_coast7_rates(ws->mission, program, out);
-  out->constraint_count = c.count;
-  for (int j = 0; j < c.count; ++j) {
-    out->codes[j] = c.codes[j].code;
-    out->desired[j] = c.desired[j];
-    out->achieved[j] = achieved[j];
-    out->tolerance[j] = c.deadband[j];
-    out->met[j] = std::fabs(constraint_correction(c, j, achieved[j])) <= c.deadband[j];
-  }
-  status = linearized_payoff(ws->mission, ws->nominal, &out->payoff);
+  status = record_result(c, program, achieved, *ws, out);
   if (!ok(status)) return out->status = status;
   out->finished = true;
   out->status = success ? Status::kOk : Status::kLinearizationDidNotConverge;
