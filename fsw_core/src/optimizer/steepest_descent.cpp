@@ -351,9 +351,19 @@ void classify_points(const Mission& mission, const Trajectory& t, PointRoles* ro
   }
 }
 
-// Shapes a candidate program: the maximum pitch rate of data block 22 between consecutive shaped
-// points (projected forward from lift-off, back from the end of the last steered stage, and forward again;
-// points not steered anchor the projection at the attitude the nominal flew there), then the
+// The launch vertical: theta is measured from the launch geodetic horizontal (90 deg at the end of
+// the lift-off). A first-order step from a program that leaves the vertical asks the early points
+// to pitch back past it when the constraints want a later turn (the flat crude program of
+// hard_cases_test asked 95 deg at 4 s): the flight then passes over the vertical, where its heading
+// is undefined, and once the heading hold of the lift-off has ended the heading equation, which
+// divides by cos(gamma), makes the 1 s steps there chaotic (psi 100 -> 2356 deg in 5 s): the
+// nominal and its adjoint are artefacts and no step from them flies.
+constexpr double kVerticalPitchRad = 0.5 * kPi;
+
+// Shapes a candidate program: the steered attitudes at most vertical (above), the maximum pitch
+// rate of data block 22 between consecutive shaped points (projected forward from lift-off, back
+// from the end of the last steered stage, and forward again; points not steered anchor the
+// projection at the attitude the nominal flew there), then the
 // intermediate coasts as straight lines between their neighbours. TOLIP imposed the maximum rate
 // only after lift-off; docs/theory/optimizer.md explains the projection.
 void shape_program(const Mission& mission, const Trajectory& nominal, const PointRoles& roles,
@@ -361,6 +371,14 @@ void shape_program(const Mission& mission, const Trajectory& nominal, const Poin
   const int last = roles.last_shaped;
   for (int k = 0; k <= last; ++k) {
     if (!roles.free[k] && !roles.intermediate_coast[k]) program->theta_rad[k] = nominal.points[k].theta_rad;
+  }
+  // Never steered back past the launch vertical (issue 17; docs/theory/optimizer.md "Control
+  // constraints"): a steered attitude is at most 90 deg, or the nominal's where the deck's program
+  // already flew above it.
+  for (int k = 0; k <= last; ++k) {
+    if (!roles.free[k]) continue;
+    program->theta_rad[k] =
+        std::fmin(program->theta_rad[k], std::fmax(kVerticalPitchRad, nominal.points[k].theta_rad));
   }
   const double rate = mission.control.max_pitch_rate_rad_s;
   if (rate > 0.0) {
