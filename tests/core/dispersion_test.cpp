@@ -382,5 +382,145 @@ TEST(Sec15Dispersions, FiveStageVehicleGetsEveryStagesIgnitionWithoutTheSqueeze)
             1e-4);
 }
 
+// The final point of a dispersed trajectory equals the hand-changed forward run, bit for bit.
+void expect_final_equals(const DispersedTrajectory& t, int final_column, const Trajectory& hand) {
+  ASSERT_EQ(t.status, Status::kOk) << t.code;
+  const TrajectoryPoint& end = hand.final_point();
+  EXPECT_EQ(t.values[final_column][kAlt], end.altitude_ft) << t.code;
+  EXPECT_EQ(t.values[final_column][kVel], end.state[kStateV]) << t.code;
+  EXPECT_EQ(t.values[final_column][static_cast<int>(StagingVariable::kFlightPathAngle)],
+            end.state[kStateGamma])
+      << t.code;
+  EXPECT_EQ(t.values[final_column][static_cast<int>(StagingVariable::kDownrange)],
+            end.downrange_rad * kNauticalMilesPerRadian)
+      << t.code;
+  EXPECT_NE(t.dispersions[final_column][kVel], 0.0) << t.code;  // the change did something
+}
+
+// Codes 1-8: the replacement tables of the reference data (tests/reference, stage 2 high) put into
+// the Mission by hand with the burn time their last time, flown with the block 40 table (the
+// program is a function of time, so no per-point mapping is involved).
+TEST(Sec15Dispersions, ThrustTablesEqualTheCaseChangedByHand) {
+  auto f = make_fixture();
+  const nlohmann::json& t =
+      test::scout_reference()["dispersions"]["codes_1_8_vacuum_thrust_variation"]["tables"];
+  for (int code : {1, 4, 5, 8}) {
+    DispersionData& data = f->data;
+    data.count = 0;
+    DispersionSource& s = add(&data, code);
+    const std::string key = "stage_" + std::to_string(s.stage) + (code % 2 ? "_high" : "_low");
+    fill(&s.vacuum_thrust_lbf, t[key]["time_s"], t[key]["vacuum_thrust_lbf"]);
+    fill(&s.consumable_weight_lb, t[key]["time_s"], t[key]["consumable_weight_remaining_lb"]);
+    DispersionNominal nominal;
+    nominal.mission = &f->mission;  // the block 40 table
+    ASSERT_EQ(run_dispersions(nominal, data, &f->workspace, &f->result), Status::kOk);
+
+    Mission& m = f->hand_mission;
+    m = f->mission;
+    StageData& stage = m.vehicle.stages[stage_index(s.stage)];
+    fill(&stage.vacuum_thrust_lbf, t[key]["time_s"], t[key]["vacuum_thrust_lbf"]);
+    fill(&stage.consumable_weight_lb, t[key]["time_s"], t[key]["consumable_weight_remaining_lb"]);
+    stage.duration_s = t[key]["time_s"].back().get<double>();
+    ASSERT_EQ(prepare_case(m, &f->hand_prepared), Status::kOk);
+    ASSERT_EQ(fly_trajectory(m, f->hand_prepared, &f->hand), Status::kOk);
+    expect_final_equals(f->result.trajectories[0], f->result.staging_count - 1, f->hand);
+  }
+}
+
+// Deadband (stage 3 pitch), tip-off (stage 4 pitch and yaw) and launch attitude: the attitude
+// offsets made by hand in the per-point program and the spun stage's block 17 attitudes.
+TEST(Sec15Dispersions, DeadbandTipoffAndLaunchAttitudeEqualTheCaseChangedByHand) {
+  auto f = make_fixture();
+  // The zero-alpha window (IP(11)) fixes its own attitudes and the one at its end, and IP(12) the
+  // one at stage-2 ignition: off here, in the nominal and the hand case alike, so that every
+  // attitude after lift-off is the program's.
+  f->mission.options.set_zero_alpha_window(false);
+  f->mission.options.set_alpha_zero_at_stage2_ignition(false);
+  DispersionData& data = f->data;
+  data.count = 0;
+  const double band = 0.5 * kDeg, tip = 2.0 * kDeg, attitude = 0.3 * kDeg;
+  add(&data, 27).deadband_rad = band;
+  DispersionSource& tipoff = add(&data, 30);
+  tipoff.stage = 4;
+  tipoff.tipoff_rad = tip;
+  DispersionSource& yaw_tipoff = add(&data, 32);
+  yaw_tipoff.stage = 4;
+  yaw_tipoff.tipoff_rad = -tip;
+  add(&data, 34).launch_change_rad = attitude;
+  ASSERT_EQ(run_dispersions(nominal_of(*f), data, &f->workspace, &f->result), Status::kOk);
+  const int final_column = f->result.staging_count - 1;
+  ASSERT_EQ(prepare_case(f->mission, &f->prepared), Status::kOk);
+  int stage3_first = -1, stage3_last = -1;
+  for (int k = 0; k < f->table_flight.stage_count; ++k) {
+    if (f->table_flight.stages[k].code == 3) {
+      stage3_first = f->table_flight.stages[k].first_point;
+      stage3_last = f->table_flight.stages[k].last_point;
+    }
+  }
+  ASSERT_GT(stage3_first, 0);
+  for (int which = 0; which < 4; ++which) {
+    Mission& m = f->hand_mission;
+    m = f->mission;
+    auto program = std::make_unique<ControlProgram>(f->program);
+    if (which == 0) {
+      for (int k = stage3_first; k <= stage3_last; ++k) program->theta_rad[k] += band;
+    }
+    if (which == 1) m.misc.stage4_theta_rad += tip;
+    if (which == 2) m.misc.stage4_chi_rad += -tip;
+    if (which == 3) {
+      for (int k = 0; k < program->point_count; ++k) program->theta_rad[k] += attitude;
+      m.misc.stage4_theta_rad += attitude;
+    }
+    ASSERT_EQ(fly_trajectory(m, f->prepared, *program, &f->hand), Status::kOk);
+    expect_final_equals(f->result.trajectories[which], final_column, f->hand);
+  }
+}
+
+// Misalignment (stage 1, with body dynamics), winds and the yaw deadband have no deck input outside
+// data blocks 46-55: the hand case is the flight inputs written here (the block 49 moment, the
+// block 53-54 profile of the reference, the stage-2 chi offset), flown without the dispersion module.
+TEST(Sec15Dispersions, MisalignmentWindsAndYawDeadbandEqualTheFlightChangedByHand) {
+  auto f = make_fixture();
+  DispersionData& data = f->data;
+  data.count = 0;
+  const nlohmann::json& d = test::scout_reference()["dispersions"];
+  const nlohmann::json& mis = d["codes_21_23_block49_stage1_thrust_misalignment"];
+  const double angle = mis["angle_deg"].get<double>() * kDeg;
+  const double station = mis["thrust_application_station_in"].get<double>() / 12.0;
+  DispersionSource& high = add(&data, 21);
+  high.misalignment_rad = angle;
+  high.thrust_station_ft = station;
+  DispersionSource& yaw = add(&data, 23);
+  yaw.misalignment_rad = angle;
+  yaw.thrust_station_ft = station;
+  add(&data, 26).deadband_rad = 0.5 * kDeg;
+  const nlohmann::json& w = d["codes_36_38_winds"];
+  DispersionSource& wind = add(&data, 36);
+  fill(&wind.wind.speed_ft_s, w["block53_altitude_ft"], w["block53_wind_speed_ft_per_s"]);
+  fill(&wind.wind.azimuth_rad, w["block53_altitude_ft"],
+       w["block54_wind_vector_azimuth_deg"]["code_36_high_headwind"], kDeg);
+  ASSERT_EQ(run_dispersions(nominal_of(*f, true), data, &f->workspace, &f->result), Status::kOk);
+  const int final_column = f->result.staging_count - 1;
+  ASSERT_EQ(prepare_case(f->mission, &f->prepared), Status::kOk);
+  auto profile = std::make_unique<WindProfile>();
+  fill(&profile->speed_ft_s, w["block53_altitude_ft"], w["block53_wind_speed_ft_per_s"]);
+  fill(&profile->azimuth_rad, w["block53_altitude_ft"],
+       w["block54_wind_vector_azimuth_deg"]["code_36_high_headwind"], kDeg);
+  for (int which = 0; which < 4; ++which) {
+    FlightPerturbation p;
+    if (which == 0) p.misalignment_pitch_rad = angle;
+    if (which == 1) p.misalignment_yaw_rad = angle;
+    if (which <= 1) p.thrust_station_ft = station;
+    if (which == 2) p.chi_offset_rad[stage_index(2)] = 0.5 * kDeg;
+    if (which == 3) p.wind = profile.get();
+    FlightInputs inputs;
+    inputs.program = &f->program;
+    inputs.body_dynamics = true;
+    inputs.perturbation = &p;
+    ASSERT_EQ(fly_trajectory(f->mission, f->prepared, inputs, &f->hand), Status::kOk);
+    expect_final_equals(f->result.trajectories[which], final_column, f->hand);
+  }
+}
+
 }  // namespace
 }  // namespace tolip

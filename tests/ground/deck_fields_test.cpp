@@ -236,7 +236,8 @@ TEST(Sec15DispersionCodes, EveryCodeMapsToItsDataOnce) {
   EXPECT_EQ(ground::deck_detail::find_dispersion(41), nullptr);
   // The stage each code's data carry (Sec. 22 data blocks 30, 38, 47, 49-51).
   EXPECT_EQ(ground::deck_detail::dispersion_stage(3, 30), 2);
-  EXPECT_EQ(ground::deck_detail::dispersion_stage(8, 38), 4);
+  EXPECT_EQ(ground::deck_detail::dispersion_stage(8, 38), -1);  // stage 4, or 5 of a five-stage vehicle
+  EXPECT_EQ(ground::deck_detail::dispersion_stage(16, 47), -1);
   EXPECT_EQ(ground::deck_detail::dispersion_stage(8, 55), 0);
   EXPECT_EQ(ground::deck_detail::dispersion_stage(12, 47), 2);
   EXPECT_EQ(ground::deck_detail::dispersion_stage(22, 49), 1);

@@ -190,5 +190,81 @@ TEST(Sec15DispersionCommand, OptimumIsTheNominalWithoutLinearization) {
   EXPECT_EQ(d["three_sigma"]["high"]["codes"].size() + d["three_sigma"]["low"]["codes"].size(), 26u);
 }
 
+// Five stages without the manual's squeeze (docs/theory/dispersions.md): the example with an
+// illustrative spun kick stage 5 (IP(9) = 1: on stage 4's attitudes) after a coast 9, its own
+// dispersions given with `stage = 5` on codes 7 (thrust high: stage 5's tables, thrust x 1.03 and
+// every time / 1.03) and 16 (weight increment low), and a stage-5 tip-off. Every stage's ignition is a
+// column; stage 5's thrust and tip-off leave the columns before stage 5 ignition untouched, its
+// lighter jettison weight speeds every stage, and each moves the final point with the expected sign; the card
+// deck converted from it gives the same dispersions.
+TEST(Sec15DispersionCommand, FiveStageVehicleDispersesStage5WithoutTheSqueeze) {
+  ScratchDirectory scratch("dispersions_five_stages");
+  std::string text = read_text_file(mission_deck());
+  const auto edit = [&text](const std::string& from, const std::string& to) {
+    const std::size_t at = text.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    text.replace(at, from.size(), to);
+  };
+  edit("sequence = [1, 6, 2, 7, 3, 8, 4] ", "sequence = [1, 6, 2, 7, 3, 8, 4, 9, 5] ");
+  edit("[launch]  # data blocks 20 and 21",
+       "[stage.9]\nduration_s = 6.0\nintegration_steps = 3\njettison_weight_lb = 0.0\nreference_area_ft2 = "
+       "0.0\n\n"
+       "[stage.5]\nname = \"illustrative kick motor\"\nduration_s = 15.0\nintegration_steps = 12\n"
+       "jettison_weight_lb = 30.0\nreference_area_ft2 = 1.0\nnozzle_exit_area_ft2 = 0.3\n\n"
+       "[stage.5.thrust]\ntime_s = [0.0, 0.2, 14.8, 15.0]\nvacuum_thrust_lbf = [0.0, 1500.0, 1500.0, 0.0]\n\n"
+       "[stage.5.consumable_weight]\ntime_s = [0.0, 0.2, 14.8, 15.0]\nremaining_lb = [80.0, 79.99, 0.01, "
+       "0.0]\n\n"
+       "[launch]  # data blocks 20 and 21");
+  text.erase(text.find("[[dispersion]]"));
+  text +=
+      "\n[[dispersion]]\ncode = 7\ntitle = \"THRUST HI S5\"\nstage = 5\n"
+      "[dispersion.thrust]\ntime_s = [0.0, 0.19417475728155337, 14.368932038834952, 14.563106796116505]\n"
+      "vacuum_thrust_lbf = [0.0, 1545.0, 1545.0, 0.0]\n"
+      "[dispersion.consumable_weight]\ntime_s = [0.0, 0.19417475728155337, 14.368932038834952, "
+      "14.563106796116505]\nremaining_lb = [80.0, 79.99, 0.01, 0.0]\n\n"
+      "[[dispersion]]\ncode = 16\ntitle = \"WEIGHT LO S5\"\nstage = 5\nweight_increment_lb = -3.0\n\n"
+      "[[dispersion]]\ncode = 30\ntitle = \"TIPOFF HI S5\"\nstage = 5\ntipoff_deg = 2.0\n\n"
+      "[[dispersion]]\ncode = 40\ntitle = \"NOMINAL TRAJ\"\n";
+  const std::string deck = (scratch / "five_stages.toml").string();
+  std::ofstream(deck) << text;
+  const CommandResult run = run_tolip_executable({"optimize", deck, "--json"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const nlohmann::json d = nlohmann::json::parse(run.out, nullptr, false)["dispersions"];
+  ASSERT_EQ(d["status"], "kOk") << d.dump();
+  ASSERT_EQ(d["staging_points"],
+            nlohmann::json::array({"stage_2_ignition", "stage_3_ignition", "stage_4_ignition",
+                                   "stage_5_ignition", "final_point"}));
+  ASSERT_EQ(d["trajectories"].size(), 3u);
+  for (const nlohmann::json& t : d["trajectories"]) {
+    ASSERT_EQ(t["status"], "kOk") << t.dump();
+    for (int j = 0; j < 4; ++j) {
+      if (t["code"] == 16) {
+        // Stage 5's jettison weight rides from the pad: lighter, faster at every ignition.
+        EXPECT_GT(t["dispersions"][j]["velocity_ft_s"].get<double>(), 0.0) << " column " << j;
+        continue;
+      }
+      for (const char* key : {"altitude_ft", "velocity_ft_s", "downrange_nmi"})
+        EXPECT_EQ(t["dispersions"][j][key].get<double>(), 0.0) << t["code"] << " column " << j << " " << key;
+    }
+  }
+  // Stage 5's thrust moves the final point; a lighter stage 5 is faster at burnout.
+  EXPECT_NE(d["trajectories"][0]["dispersions"][4]["velocity_ft_s"].get<double>(), 0.0);
+  EXPECT_GT(d["trajectories"][1]["dispersions"][4]["velocity_ft_s"].get<double>(), 0.0);
+  EXPECT_NE(d["trajectories"][2]["dispersions"][4]["flight_path_angle_deg"].get<double>(), 0.0);
+
+  const std::string cards = (scratch / "five_stages.dat").string();
+  const CommandResult converted = run_tolip_executable({"convert", deck, "--to", cards});
+  ASSERT_EQ(converted.exit_code, 0) << converted.err;
+  const CommandResult card_run = run_tolip_executable({"optimize", cards, "--json"});
+  ASSERT_EQ(card_run.exit_code, 0) << card_run.err;
+  const nlohmann::json c = nlohmann::json::parse(card_run.out, nullptr, false)["dispersions"];
+  ASSERT_EQ(c["trajectories"].size(), 3u);
+  for (std::size_t k = 0; k < 3; ++k) {
+    const double a = d["trajectories"][k]["dispersions"][4]["velocity_ft_s"].get<double>();
+    const double b = c["trajectories"][k]["dispersions"][4]["velocity_ft_s"].get<double>();
+    EXPECT_NEAR(a, b, 1e-3 * std::fabs(a) + 1e-6) << k;
+  }
+}
+
 }  // namespace
 }  // namespace tolip::test

@@ -19,8 +19,9 @@ struct CommandHelp {
 const std::vector<CommandHelp>& every_command() {
   static const std::vector<CommandHelp> commands = {
       {"atmosphere", {"--altitude-ft", "--json"}},
-      {"simulate", {"DECK", "--csv", "--json"}},
-      {"optimize", {"DECK", "--csv", "--json", "--progress", "--no-progress"}},
+      {"simulate", {"DECK", "--csv", "--json", "--radar-csv", "--hardover-csv"}},
+      {"optimize",
+       {"DECK", "--csv", "--json", "--progress", "--no-progress", "--radar-csv", "--hardover-csv"}},
       {"plot", {"RESULT", "--out", "--gnuplot"}},
       {"export", {"DECK", "--out", "--c-header", "--symbol", "--mission-id", "--created-unix-s"}},
       {"inspect", {"IMAGE"}},

@@ -87,6 +87,50 @@ TEST(Sec18RadarCommand, CsvHoldsARowPerStationAndPoint) {
   EXPECT_TRUE(contains(text, "\nASCENSION,"));
 }
 
+// simulate --radar-csv / --hardover-csv write the bytes of `tolip radar --csv` / `tolip hardover
+// --csv` (the same trajectory); optimize writes those of its final nominal (rows matching its JSON);
+// a CSV that cannot be written exits 1 with nothing on stdout and no partial file.
+TEST(Sec18RadarCommand, SimulateAndOptimizeWriteTheRadarAndHardoverCsvAtomically) {
+  ScratchDirectory scratch("case_csv");
+  const std::string radar_alone = (scratch / "radar_alone.csv").string();
+  const std::string hardover_alone = (scratch / "hardover_alone.csv").string();
+  ASSERT_EQ(run_tolip_executable({"radar", reference_deck(), "--csv", radar_alone}).exit_code, 0);
+  ASSERT_EQ(run_tolip_executable({"hardover", reference_deck(), "--csv", hardover_alone}).exit_code, 0);
+  const std::string radar = (scratch / "radar.csv").string();
+  const std::string hardover = (scratch / "hardover.csv").string();
+  const CommandResult simulate = run_tolip_executable(
+      {"simulate", reference_deck(), "--json", "--radar-csv", radar, "--hardover-csv", hardover});
+  ASSERT_EQ(simulate.exit_code, 0) << simulate.err;
+  EXPECT_EQ(read_text_file(radar), read_text_file(radar_alone));
+  EXPECT_EQ(read_text_file(hardover), read_text_file(hardover_alone));
+
+  const std::string radar_opt = (scratch / "radar_opt.csv").string();
+  const std::string hardover_opt = (scratch / "hardover_opt.csv").string();
+  const CommandResult optimize = run_tolip_executable(
+      {"optimize", reference_deck(), "--json", "--radar-csv", radar_opt, "--hardover-csv", hardover_opt});
+  ASSERT_EQ(optimize.exit_code, 0) << optimize.err;
+  const json document = json::parse(optimize.out);
+  const std::string text = read_text_file(radar_opt);
+  EXPECT_EQ(text.rfind("station,time_s,stage,slant_range_ft", 0), 0u);
+  EXPECT_EQ(count_of(text, "\n"), 1 + 6 * document["radar"]["stations"][0]["points"].size());
+  std::size_t rows = 0;
+  for (const json& turn : document["hardover"]["turns"]) rows += turn["samples"].size();
+  const std::string turns = read_text_file(hardover_opt);
+  EXPECT_EQ(turns.rfind("stage,mode,failure_time_s,time_s,change_in_gamma_deg", 0), 0u);
+  EXPECT_EQ(count_of(turns, "\n"), rows + 1);
+
+  // Into a directory that does not exist: exit 1, stdout empty, nothing written.
+  const std::string nowhere = (scratch / "missing" / "radar.csv").string();
+  for (const std::string& command : {std::string("simulate"), std::string("optimize")}) {
+    for (const std::string& option : {std::string("--radar-csv"), std::string("--hardover-csv")}) {
+      const CommandResult failed = run_tolip_executable({command, reference_deck(), option, nowhere});
+      EXPECT_EQ(failed.exit_code, 1) << command << " " << option << "\n" << failed.err;
+      EXPECT_EQ(failed.out, "") << command << " " << option;
+      EXPECT_FALSE(std::filesystem::exists(nowhere));
+    }
+  }
+}
+
 TEST(Sec18RadarCommand, DegreesAndMinutesCarryAndKeepTheSign) {
   EXPECT_EQ(ground::degrees_minutes(130.5), "130 30.00");
   EXPECT_EQ(ground::degrees_minutes(-5.2), "-5 12.00");

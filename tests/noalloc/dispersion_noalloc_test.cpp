@@ -93,5 +93,74 @@ TEST(CoreNoHeap, MonteCarloSampleAllocatesNothing) {
   EXPECT_EQ(allocations, 0u);
 }
 
+// The table sources of a sample (thrust of stage 2 blended, program mapped onto the changed burn
+// time, C_M_alpha with body dynamics, two wind profiles summed) allocate nothing either.
+TEST(CoreNoHeap, MonteCarloTableSampleAllocatesNothing) {
+  static Mission mission;
+  static DispersionData data;
+  static DispersionWorkspace workspace;
+  static DispersedTrajectory nominal_values;
+  static DispersedTrajectory sample;
+  static ControlProgram program;
+  static Trajectory flight;
+  static PreparedCase prepared;
+  test::build_reference_mission(test::ReferenceProgram::kOptimum, &mission);
+  ASSERT_EQ(prepare_case(mission, &prepared), Status::kOk);
+  ASSERT_EQ(fly_trajectory(mission, prepared, &flight), Status::kOk);
+  program.point_count = flight.point_count;
+  for (int k = 0; k < flight.point_count; ++k) program.theta_rad[k] = flight.points[k].theta_rad;
+  const StageData& stage2 = mission.vehicle.stages[1];
+  DispersionSource& thrust = data.sources[data.count++];
+  thrust.code = 3;
+  thrust.stage = 2;
+  for (int i = 0; i < stage2.vacuum_thrust_lbf.size(); ++i) {
+    ASSERT_EQ(thrust.vacuum_thrust_lbf.append(stage2.vacuum_thrust_lbf.x(i) / 1.03,
+                                              stage2.vacuum_thrust_lbf.y(i) * 1.03),
+              Status::kOk);
+    ASSERT_EQ(thrust.consumable_weight_lb.append(stage2.consumable_weight_lb.x(i) / 1.03,
+                                                 stage2.consumable_weight_lb.y(i)),
+              Status::kOk);
+  }
+  ASSERT_EQ(thrust.vacuum_thrust_lbf.finalize(), Status::kOk);
+  ASSERT_EQ(thrust.consumable_weight_lb.finalize(), Status::kOk);
+  DispersionSource& cm = data.sources[data.count++];
+  cm.code = 19;
+  cm.stage = 1;
+  cm.pitching_moment_per_rad = mission.body_dynamics.pitching_moment_per_rad;
+  for (int i = 0; i < cm.pitching_moment_per_rad.size(); ++i)
+    cm.pitching_moment_per_rad.set_y(i, 1.1 * cm.pitching_moment_per_rad.y(i));
+  ASSERT_EQ(cm.pitching_moment_per_rad.finalize(), Status::kOk);
+  for (int code : {36, 38}) {
+    DispersionSource& w = data.sources[data.count++];
+    w.code = code;
+    ASSERT_EQ(w.wind.speed_ft_s.append(0.0, 30.0), Status::kOk);
+    ASSERT_EQ(w.wind.speed_ft_s.append(50000.0, 200.0), Status::kOk);
+    ASSERT_EQ(w.wind.speed_ft_s.append(150000.0, 0.0), Status::kOk);
+    ASSERT_EQ(w.wind.azimuth_rad.append(0.0, code == 36 ? 1.0 : 2.5), Status::kOk);
+    ASSERT_EQ(w.wind.speed_ft_s.finalize(), Status::kOk);
+    ASSERT_EQ(w.wind.azimuth_rad.finalize(), Status::kOk);
+  }
+  DispersionNominal nominal;
+  nominal.mission = &mission;
+  nominal.program = &program;
+  nominal.body_dynamics = true;
+
+  test::AllocationScope scope;
+  Status status = prepare_monte_carlo(nominal, &workspace);
+  if (ok(status)) {
+    status = record_dispersed_trajectory(mission, workspace.nominal_prepared, workspace.nominal,
+                                         workspace.nominal, nullptr, &nominal_values);
+  }
+  const Status flown = fly_monte_carlo_sample(nominal, data, 1, 5, nominal_values, &workspace, &sample);
+  const auto allocations = scope.count();
+
+  EXPECT_EQ(status, Status::kOk);
+  EXPECT_EQ(flown, Status::kOk);
+  EXPECT_TRUE(workspace.program_mapped);
+  EXPECT_NE(workspace.perturbation.wind, nullptr);
+  EXPECT_NE(sample.dispersions[3][0], 0.0);
+  EXPECT_EQ(allocations, 0u);
+}
+
 }  // namespace
 }  // namespace tolip

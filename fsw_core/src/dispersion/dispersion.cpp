@@ -81,37 +81,6 @@ bool same_grid(const StageTimeline& a, const StageTimeline& b) {
          a.first_step_stage_time_s == b.first_step_stage_time_s;
 }
 
-// The nominal per-point program carried onto a dispersed timeline: a stage whose grid is the
-// nominal's keeps its values; one whose burn time changed (codes 1-8) flies the nominal program
-// as a function of stage time (the guidance programmer's clock starts at each ignition), linear
-// between the nominal points and continued at the last step's rate past the nominal burnout.
-void map_program(const PreparedCase& nominal, const ControlProgram& program, const PreparedCase& dispersed,
-                 ControlProgram* out) {
-  out->point_count = program.point_count;
-  out->theta_rad[0] = program.theta_rad[0];
-  int first = 1;
-  for (int slot = 0; slot < dispersed.stage_count; ++slot) {
-    const StageTimeline& from = nominal.timeline[slot];
-    const StageTimeline& to = dispersed.timeline[slot];
-    const int n = to.steps + 1;
-    if (same_grid(from, to)) {
-      for (int i = 0; i < n; ++i) out->theta_rad[first + i] = program.theta_rad[first + i];
-    } else {
-      for (int i = 0; i < n; ++i) {
-        const double tau = point_stage_time_s(to, i);
-        int j = 0;  // the nominal interval [j, j + 1] holding tau (the last one past the end)
-        while (j + 2 < n && point_stage_time_s(from, j + 1) <= tau) ++j;
-        const double t0 = point_stage_time_s(from, j);
-        const double t1 = point_stage_time_s(from, j + 1);
-        const double y0 = program.theta_rad[first + j];
-        const double y1 = program.theta_rad[first + j + 1];
-        out->theta_rad[first + i] = (t1 > t0) ? y0 + (y1 - y0) * (tau - t0) / (t1 - t0) : y0;
-      }
-    }
-    first += n;
-  }
-}
-
 double wrap_angle_rad(double angle) { return std::remainder(angle, 2.0 * kPi); }
 
 void copy_title(const char* from, char* to) {
@@ -139,6 +108,37 @@ void finish(int columns, ThreeSigmaGroup* group) {
 
 }  // namespace
 
+// The nominal per-point program carried onto a dispersed timeline: a stage whose grid is the
+// nominal's keeps its values; one whose burn time changed (codes 1-8) flies the nominal program
+// as a function of stage time (the guidance programmer's clock starts at each ignition), linear
+// between the nominal points and continued at the last step's rate past the nominal burnout.
+void map_control_program(const PreparedCase& nominal, const ControlProgram& program,
+                         const PreparedCase& dispersed, ControlProgram* out) {
+  out->point_count = program.point_count;
+  out->theta_rad[0] = program.theta_rad[0];
+  int first = 1;
+  for (int slot = 0; slot < dispersed.stage_count; ++slot) {
+    const StageTimeline& from = nominal.timeline[slot];
+    const StageTimeline& to = dispersed.timeline[slot];
+    const int n = to.steps + 1;
+    if (same_grid(from, to)) {
+      for (int i = 0; i < n; ++i) out->theta_rad[first + i] = program.theta_rad[first + i];
+    } else {
+      for (int i = 0; i < n; ++i) {
+        const double tau = point_stage_time_s(to, i);
+        int j = 0;  // the nominal interval [j, j + 1] holding tau (the last one past the end)
+        while (j + 2 < n && point_stage_time_s(from, j + 1) <= tau) ++j;
+        const double t0 = point_stage_time_s(from, j);
+        const double t1 = point_stage_time_s(from, j + 1);
+        const double y0 = program.theta_rad[first + j];
+        const double y1 = program.theta_rad[first + j + 1];
+        out->theta_rad[first + i] = (t1 > t0) ? y0 + (y1 - y0) * (tau - t0) / (t1 - t0) : y0;
+      }
+    }
+    first += n;
+  }
+}
+
 bool dispersion_code_info(int code, DispersionCodeInfo* info) {
   for (const CodeRow& row : kCodeTable) {
     if (row.code != code) continue;
@@ -153,6 +153,18 @@ bool dispersion_code_info(int code, DispersionCodeInfo* info) {
   return false;
 }
 
+int dispersion_source_stage(const DispersionSource& source) {
+  DispersionCodeInfo info;
+  if (!dispersion_code_info(source.code, &info)) return 0;
+  if (info.kind == Kind::kTipoff) return source.stage;
+  // Five stages without the squeeze: the stage-4 codes of thrust (7-8) and weight (15-16) name
+  // stage 5 when the card's stage code says 5.
+  if (info.stage == 4 && source.stage == 5 &&
+      (info.kind == Kind::kVacuumThrust || info.kind == Kind::kWeightIncrement))
+    return 5;
+  return info.stage;
+}
+
 Status validate_dispersion_data(const DispersionData& data, int* fault_code) {
   *fault_code = 0;
   if (data.count < 0 || data.count > kMaxDispersionSources) return Status::kDispersionCodeInvalid;
@@ -165,6 +177,8 @@ Status validate_dispersion_data(const DispersionData& data, int* fault_code) {
     previous = s.code;
     switch (info.kind) {
       case Kind::kVacuumThrust:
+        if (s.stage != 0 && s.stage != info.stage && !(info.stage == 4 && s.stage == 5))
+          return Status::kValueOutOfRange;
         if (s.vacuum_thrust_lbf.empty() || s.consumable_weight_lb.empty()) return Status::kTableEmpty;
         if (!s.vacuum_thrust_lbf.finalized() || !s.consumable_weight_lb.finalized())
           return Status::kTableNotMonotonic;
@@ -198,6 +212,11 @@ Status validate_dispersion_data(const DispersionData& data, int* fault_code) {
       case Kind::kTipoff:
         if (s.stage != 4 && s.stage != 5) return Status::kValueOutOfRange;
         break;
+      case Kind::kWeightIncrement:
+        // Stage 5 only through the stage-4 codes (15-16); otherwise the code's own stage.
+        if (s.stage != 0 && s.stage != info.stage && !(info.stage == 4 && s.stage == 5))
+          return Status::kValueOutOfRange;
+        break;
       default: break;
     }
     const double scalars[] = {s.weight_increment_lb, s.drag_variation_fraction,
@@ -221,7 +240,7 @@ Status build_dispersed_case(const DispersionNominal& nominal, const PreparedCase
   ws->perturbation = FlightPerturbation{};
   Mission& m = ws->mission;
   FlightPerturbation& p = ws->perturbation;
-  const int stage = (info.kind == Kind::kTipoff) ? source.stage : info.stage;
+  const int stage = dispersion_source_stage(source);
   if (stage != 0 && !in_sequence(m, stage)) return Status::kDispersionStageNotInSequence;
 
   switch (info.kind) {
@@ -307,7 +326,7 @@ Status build_dispersed_case(const DispersionNominal& nominal, const PreparedCase
   if (nominal.program != nullptr && info.kind == Kind::kVacuumThrust) {
     if (trajectory_point_count(ws->prepared) != nominal.program->point_count)
       return Status::kControlProgramSizeMismatch;
-    map_program(nominal_prepared, *nominal.program, ws->prepared, &ws->program);
+    map_control_program(nominal_prepared, *nominal.program, ws->prepared, &ws->program);
     ws->program_mapped = true;
   }
   return Status::kOk;

@@ -30,6 +30,173 @@ bool has_code(const DispersionData& data, int code) {
   return false;
 }
 
+int index_of(const DispersionData& data, int code) {
+  for (int k = 0; k < data.count; ++k) {
+    if (data.sources[k].code == code) return k;
+  }
+  return -1;
+}
+
+bool in_sequence(const Mission& mission, int code) {
+  const StageSequence& sequence = mission.vehicle.sequence;
+  for (int k = 0; k < sequence.count; ++k) {
+    if (sequence.codes[k] == code) return true;
+  }
+  return false;
+}
+
+bool is_table_kind(DispersionKind kind) {
+  return kind == DispersionKind::kVacuumThrust || kind == DispersionKind::kPitchingMoment ||
+         kind == DispersionKind::kWind;
+}
+
+// Abscissae closer than this (relative) are one point of a merged grid: the reference thrust
+// tables scale time and burn time alike, so their normalized times agree to round-off.
+constexpr double kMergeTolerance = 1e-12;
+
+// Sorted union of the abscissae of up to four tables, each scaled by 1 / scale[i] (0: skipped);
+// false when more than `capacity` points result.
+template <int N>
+struct Grid {
+  double x[N] = {};
+  int count = 0;
+};
+
+template <int G, int A, int B, int C, int D>
+bool merge_grid(const Table<A>* a, double sa, const Table<B>* b, double sb, const Table<C>* c, double sc,
+                const Table<D>* d, double sd, Grid<G>* out) {
+  out->count = 0;
+  int ia = 0, ib = 0, ic = 0, id = 0;
+  const auto next = [](auto* table, double scale, int i) {
+    return (table != nullptr && i < table->size()) ? table->x(i) / scale : HUGE_VAL;
+  };
+  for (;;) {
+    const double xa = next(a, sa, ia), xb = next(b, sb, ib), xc = next(c, sc, ic), xd = next(d, sd, id);
+    const double x = std::fmin(std::fmin(xa, xb), std::fmin(xc, xd));
+    if (x == HUGE_VAL) return true;
+    const double tolerance = kMergeTolerance * std::fmax(1.0, std::fabs(x));
+    if (xa - x <= tolerance) ++ia;
+    if (xb - x <= tolerance) ++ib;
+    if (xc - x <= tolerance) ++ic;
+    if (xd - x <= tolerance) ++id;
+    if (out->count >= G) return false;
+    out->x[out->count++] = x;
+  }
+}
+
+// Codes 1-8: the stage's thrust and consumable-weight tables and burn time blended between the
+// nominal's (c = 0) and the source's (c = 1) in normalized stage time tau = t / burn time:
+// b = b_n + c (b_s - b_n), T(tau b) = T_n(tau b_n) + c (T_s(tau b_s) - T_n(tau b_n)), W alike, on
+// the union of both grids (exactly the source's tables at c = 1, linear in c).
+Status blend_thrust(const StageData& nominal, const DispersionSource& source, double c, StageData* out) {
+  const double bn = nominal.duration_s;
+  const double bs = source.vacuum_thrust_lbf.last_x();
+  const double b = bn + c * (bs - bn);
+  if (!(bn > 0.0) || !(bs > 0.0) || !(b > 0.0)) return Status::kValueOutOfRange;
+  Grid<kMaxThrustPoints> grid;
+  if (!merge_grid(&nominal.vacuum_thrust_lbf, bn, &nominal.consumable_weight_lb, bn,
+                  &source.vacuum_thrust_lbf, bs, &source.consumable_weight_lb, bs, &grid))
+    return Status::kTooManyTablePoints;
+  out->vacuum_thrust_lbf.clear();
+  out->consumable_weight_lb.clear();
+  for (int i = 0; i < grid.count; ++i) {
+    const double tau = grid.x[i];
+    const double tn = nominal.vacuum_thrust_lbf(tau * bn), ts = source.vacuum_thrust_lbf(tau * bs);
+    const double wn = nominal.consumable_weight_lb(tau * bn), ws = source.consumable_weight_lb(tau * bs);
+    const double thrust = tn + c * (ts - tn);
+    const double weight = wn + c * (ws - wn);
+    if (!(thrust >= 0.0)) return Status::kValueOutOfRange;
+    if (!(weight >= 0.0)) return Status::kNegativeWeight;
+    if (i > 0 && weight > out->consumable_weight_lb.y(i - 1)) return Status::kConsumableWeightIncreases;
+    const double t = (tau == 1.0) ? b : tau * b;
+    Status status = out->vacuum_thrust_lbf.append(t, thrust);
+    if (ok(status)) status = out->consumable_weight_lb.append(t, weight);
+    if (!ok(status)) return status;
+  }
+  Status status = out->vacuum_thrust_lbf.finalize();
+  if (ok(status)) status = out->consumable_weight_lb.finalize();
+  if (!ok(status)) return status;
+  out->duration_s = b;
+  return Status::kOk;
+}
+
+// Codes 19-20: C_M_alpha(M) = C_n(M) + c (C_s(M) - C_n(M)) on the union of the Mach grids.
+Status blend_pitching_moment(const AeroTable& nominal, const AeroTable& source, double c, AeroTable* out) {
+  Grid<kMaxAeroTablePoints> grid;
+  if (!merge_grid(&nominal, 1.0, &source, 1.0, static_cast<const AeroTable*>(nullptr), 1.0,
+                  static_cast<const AeroTable*>(nullptr), 1.0, &grid))
+    return Status::kTooManyTablePoints;
+  AeroTable blended;
+  for (int i = 0; i < grid.count; ++i) {
+    const double mach = grid.x[i];
+    const double n = nominal.empty() ? 0.0 : nominal(mach);
+    const Status status = blended.append(mach, n + c * (source(mach) - n));
+    if (!ok(status)) return status;
+  }
+  const Status status = blended.finalize();
+  if (!ok(status)) return status;
+  *out = blended;
+  return Status::kOk;
+}
+
+// Codes 36-38: the sample's wind, the sum of the drawn profiles each scaled by its draw c (a
+// negative c reverses the wind vector). One profile: its own tables, the speed times |c| (azimuth
+// turned by pi when c < 0), exactly. Two (a high/low and the yaw profile): the vector sum at every
+// altitude of the union of their grids, as speed and azimuth (unwrapped, continuous), linear
+// between the points as the tables are.
+struct ScaledWind {
+  const WindProfile* profile = nullptr;
+  double scale = 0.0;
+};
+
+Status compose_wind(const ScaledWind* winds, int count, WindProfile* out) {
+  out->speed_ft_s.clear();
+  out->azimuth_rad.clear();
+  if (count == 1) {
+    const WindProfile& w = *winds[0].profile;
+    const double c = winds[0].scale;
+    for (int i = 0; i < w.speed_ft_s.size(); ++i) {
+      const Status status = out->speed_ft_s.append(w.speed_ft_s.x(i), std::fabs(c) * w.speed_ft_s.y(i));
+      if (!ok(status)) return status;
+    }
+    for (int i = 0; i < w.azimuth_rad.size(); ++i) {
+      const Status status =
+          out->azimuth_rad.append(w.azimuth_rad.x(i), w.azimuth_rad.y(i) + (c < 0.0 ? kPi : 0.0));
+      if (!ok(status)) return status;
+    }
+  } else {
+    const WindProfile& a = *winds[0].profile;
+    const WindProfile& b = *winds[1].profile;
+    Grid<kMaxWindTablePoints> grid;
+    if (!merge_grid(&a.speed_ft_s, 1.0, &a.azimuth_rad, 1.0, &b.speed_ft_s, 1.0, &b.azimuth_rad, 1.0, &grid))
+      return Status::kTooManyTablePoints;
+    double previous = 0.0;
+    bool have_previous = false;
+    for (int i = 0; i < grid.count; ++i) {
+      const double h = grid.x[i];
+      double north = 0.0, east = 0.0;
+      for (int k = 0; k < count; ++k) {
+        const WindProfile& w = *winds[k].profile;
+        const double speed = winds[k].scale * w.speed_ft_s(h);
+        const double azimuth = w.azimuth_rad(h);
+        north += speed * std::cos(azimuth);
+        east += speed * std::sin(azimuth);
+      }
+      const double speed = std::hypot(north, east);
+      double azimuth = (speed > 0.0) ? std::atan2(east, north) : previous;
+      if (have_previous) azimuth = previous + std::remainder(azimuth - previous, 2.0 * kPi);
+      previous = azimuth;
+      have_previous = have_previous || speed > 0.0;
+      Status status = out->speed_ft_s.append(h, speed);
+      if (ok(status)) status = out->azimuth_rad.append(h, azimuth);
+      if (!ok(status)) return status;
+    }
+  }
+  Status status = out->speed_ft_s.finalize();
+  if (ok(status)) status = out->azimuth_rad.finalize();
+  return status;
+}
+
 }  // namespace
 
 bool monte_carlo_draws_source(const DispersionNominal& nominal, const DispersionData& data, int k) {
@@ -47,8 +214,31 @@ bool monte_carlo_draws_source(const DispersionNominal& nominal, const Dispersion
     case DispersionKind::kThrustMisalignment: return nominal.body_dynamics;
     case DispersionKind::kTipoff:
       return nominal.mission != nullptr && nominal.mission->options.stage_is_spun(s.stage);
-    default: return false;  // thrust tables, C_M_alpha tables, winds: not sampled (monte_carlo.hpp)
+    case DispersionKind::kVacuumThrust:
+      return nominal.mission != nullptr && !s.stacked_stage4_5_tables &&
+             in_sequence(*nominal.mission, dispersion_source_stage(s));
+    case DispersionKind::kPitchingMoment: return nominal.body_dynamics;
+    case DispersionKind::kWind: return true;
+    default: return false;
   }
+}
+
+int monte_carlo_low_partner(const DispersionNominal& nominal, const DispersionData& data, int k) {
+  if (!monte_carlo_draws_source(nominal, data, k)) return -1;
+  DispersionCodeInfo info;
+  if (!dispersion_code_info(data.sources[k].code, &info) || !is_table_kind(info.kind)) return -1;
+  for (int j = 0; j < data.count; ++j) {
+    const int code = data.sources[j].code;
+    if (code != data.sources[k].code && family_leader(code) == data.sources[k].code) {
+      // The low member flies its own table only where it is a table of the same stage.
+      if (info.kind == DispersionKind::kVacuumThrust &&
+          (data.sources[j].stacked_stage4_5_tables ||
+           dispersion_source_stage(data.sources[j]) != dispersion_source_stage(data.sources[k])))
+        return -1;
+      return j;
+    }
+  }
+  return -1;
 }
 
 double counter_uniform(std::uint64_t seed, std::uint64_t sample, std::uint32_t stream) {
@@ -71,7 +261,10 @@ Status build_monte_carlo_case(const DispersionNominal& nominal, const PreparedCa
   Mission& m = ws->mission;
   FlightPerturbation& p = ws->perturbation;
   bool prepares = false;
+  bool thrust_changed = false;
   double drag_fraction = 0.0;
+  ScaledWind winds[2];
+  int wind_count = 0;
   for (int k = 0; k < data.count; ++k) {
     const DispersionSource& s = data.sources[k];
     DispersionCodeInfo info;
@@ -80,7 +273,7 @@ Status build_monte_carlo_case(const DispersionNominal& nominal, const PreparedCa
     const int leader = family_leader(s.code);
     const double z =
         counter_normal(seed, sample, static_cast<std::uint32_t>(leader)) / 3.0;  // 3 sigma -> 1 sigma
-    const int stage = (info.kind == DispersionKind::kTipoff) ? s.stage : info.stage;
+    const int stage = dispersion_source_stage(s);
     const bool yaw = info.plane == DispersionPlane::kYaw;
     switch (info.kind) {
       case DispersionKind::kWeightIncrement:
@@ -112,8 +305,40 @@ Status build_monte_carlo_case(const DispersionNominal& nominal, const PreparedCa
       case DispersionKind::kLaunchAttitude:
         for (double& offset : p.theta_offset_rad) offset += z * s.launch_change_rad;
         break;
+      case DispersionKind::kVacuumThrust:
+      case DispersionKind::kPitchingMoment:
+      case DispersionKind::kWind: {
+        // A table source: the high table for a positive draw, the pair's low table (when given)
+        // for a negative one, else the same table mirrored (a negative scale).
+        const int partner = monte_carlo_low_partner(nominal, data, k);
+        const DispersionSource& table = (partner >= 0 && z < 0.0) ? data.sources[partner] : s;
+        const double c = (partner >= 0 && z < 0.0) ? -z : z;
+        if (info.kind == DispersionKind::kVacuumThrust) {
+          const int slot = stage_index(dispersion_source_stage(table));
+          const Status status =
+              blend_thrust(nominal.mission->vehicle.stages[slot], table, c, &m.vehicle.stages[slot]);
+          if (!ok(status)) return status;
+          if (slot == 0 && !(m.vehicle.stages[0].duration_s > m.launch.liftoff_duration_s))
+            return Status::kLiftoffLongerThanStage1;
+          prepares = true;
+          thrust_changed = true;
+        } else if (info.kind == DispersionKind::kPitchingMoment) {
+          const Status status = blend_pitching_moment(nominal.mission->body_dynamics.pitching_moment_per_rad,
+                                                      table.pitching_moment_per_rad, c,
+                                                      &m.body_dynamics.pitching_moment_per_rad);
+          if (!ok(status)) return status;
+        } else if (wind_count < 2) {
+          winds[wind_count++] = ScaledWind{&table.wind, c};
+        }
+        break;
+      }
       default: break;  // not drawn (monte_carlo_draws_source)
     }
+  }
+  if (wind_count > 0) {
+    const Status status = compose_wind(winds, wind_count, &ws->wind);
+    if (!ok(status)) return status;
+    p.wind = &ws->wind;
   }
   if (drag_fraction != 0.0) {
     if (!(std::fabs(drag_fraction) < 1.0)) return Status::kValueOutOfRange;
@@ -126,8 +351,68 @@ Status build_monte_carlo_case(const DispersionNominal& nominal, const PreparedCa
       }
     }
   }
-  if (prepares) return prepare_case(m, &ws->prepared);
-  ws->prepared = nominal_prepared;
+  if (!prepares) {
+    ws->prepared = nominal_prepared;
+    return Status::kOk;
+  }
+  const Status status = prepare_case(m, &ws->prepared);
+  if (!ok(status)) return status;
+  if (thrust_changed && nominal.program != nullptr) {
+    // A changed burn time: the nominal program flown in stage time (as build_dispersed_case).
+    if (trajectory_point_count(ws->prepared) != nominal.program->point_count)
+      return Status::kControlProgramSizeMismatch;
+    map_control_program(nominal_prepared, *nominal.program, ws->prepared, &ws->program);
+    ws->program_mapped = true;
+  }
+  return Status::kOk;
+}
+
+Status check_monte_carlo_data(const DispersionNominal& nominal, const DispersionData& data, int* fault_code) {
+  *fault_code = 0;
+  if (nominal.mission == nullptr) return Status::kNotPrepared;
+  for (int k = 0; k < data.count; ++k) {
+    if (!monte_carlo_draws_source(nominal, data, k)) continue;
+    const DispersionSource& s = data.sources[k];
+    DispersionCodeInfo info;
+    if (!dispersion_code_info(s.code, &info) || !is_table_kind(info.kind)) continue;
+    const int partner = monte_carlo_low_partner(nominal, data, k);
+    for (int side = 0; side < 2; ++side) {
+      const DispersionSource& t = (side == 1 && partner >= 0) ? data.sources[partner] : s;
+      if (side == 1 && partner < 0) break;
+      *fault_code = t.code;
+      if (info.kind == DispersionKind::kVacuumThrust) {
+        const StageData& n = nominal.mission->vehicle.stages[stage_index(dispersion_source_stage(t))];
+        Grid<kMaxThrustPoints> grid;
+        if (!merge_grid(&n.vacuum_thrust_lbf, n.duration_s, &n.consumable_weight_lb, n.duration_s,
+                        &t.vacuum_thrust_lbf, t.vacuum_thrust_lbf.last_x(), &t.consumable_weight_lb,
+                        t.vacuum_thrust_lbf.last_x(), &grid))
+          return Status::kTooManyTablePoints;
+      } else if (info.kind == DispersionKind::kPitchingMoment) {
+        Grid<kMaxAeroTablePoints> grid;
+        if (!merge_grid(&nominal.mission->body_dynamics.pitching_moment_per_rad, 1.0,
+                        &t.pitching_moment_per_rad, 1.0, static_cast<const AeroTable*>(nullptr), 1.0,
+                        static_cast<const AeroTable*>(nullptr), 1.0, &grid))
+          return Status::kTooManyTablePoints;
+      }
+    }
+  }
+  // The yaw profile (38) is summed with the high or low profile (36, 37) of the same sample on the
+  // union of their grids.
+  const int yaw = index_of(data, 38);
+  if (yaw >= 0 && monte_carlo_draws_source(nominal, data, yaw)) {
+    const WindProfile& b = data.sources[yaw].wind;
+    for (int code : {36, 37}) {
+      const int k = index_of(data, code);
+      if (k < 0) continue;
+      *fault_code = code;
+      const WindProfile& a = data.sources[k].wind;
+      Grid<kMaxWindTablePoints> grid;
+      if (!merge_grid(&a.speed_ft_s, 1.0, &a.azimuth_rad, 1.0, &b.speed_ft_s, 1.0, &b.azimuth_rad, 1.0,
+                      &grid))
+        return Status::kTooManyTablePoints;
+    }
+  }
+  *fault_code = 0;
   return Status::kOk;
 }
 
@@ -149,13 +434,14 @@ Status fly_monte_carlo_sample(const DispersionNominal& nominal, const Dispersion
   Status status = build_monte_carlo_case(nominal, ws->nominal_prepared, data, seed, sample, ws);
   if (ok(status)) {
     FlightInputs inputs;
-    inputs.program = nominal.program;
+    inputs.program = ws->program_mapped ? &ws->program : nominal.program;
     inputs.body_dynamics = nominal.body_dynamics;
     inputs.perturbation = &ws->perturbation;
     status = fly_trajectory(ws->mission, ws->prepared, inputs, &ws->dispersed);
   }
   if (ok(status))
-    status = record_dispersed_trajectory(ws->mission, ws->prepared, ws->nominal, ws->dispersed, nullptr, out);
+    status = record_dispersed_trajectory(ws->mission, ws->prepared, ws->nominal, ws->dispersed,
+                                         ws->perturbation.wind, out);
   out->status = status;
   if (!ok(status)) return status;
   for (int j = 0; j < kMaxStagingPoints; ++j) {

@@ -33,6 +33,10 @@ struct SimulateCommandOptions {
   std::string deck_path;
   std::string csv_path;  // empty: no CSV
   bool json = false;
+  // IP(24) = 1 / IP(22) = 1: the radar look angles / hardover turns as CSV (radar_report.hpp,
+  // hardover_report.hpp; FILE.caseN per case of several); empty: none.
+  std::string radar_csv_path;
+  std::string hardover_csv_path;
 };
 int run_simulate_command(const SimulateCommandOptions& options, std::ostream& out, std::ostream& err);
 
@@ -46,6 +50,9 @@ struct OptimizeCommandOptions {
   // IP(23) = 1: the impact locus as CSV (impact_report.hpp); empty: none.
   std::string impact_csv_path;
   bool json = false;
+  // IP(24) = 1 / IP(22) = 1: the radar look angles / hardover turns as CSV; empty: none.
+  std::string radar_csv_path;
+  std::string hardover_csv_path;
   ProgressMode progress = ProgressMode::kAuto;  // the forward-run status line on stderr
 };
 int run_optimize_command(const OptimizeCommandOptions& options, std::ostream& out, std::ostream& err);

@@ -138,6 +138,18 @@ CLI::App* add_simulate_command(CLI::App& app, SimulateCommandOptions* options) {
                    "atomically (FILE.tmp.<pid>, then rename): on failure an\n"
                    "existing FILE is left untouched and the exit code is 1")
       ->type_name("FILE");
+  simulate
+      ->add_option("--radar-csv", options->radar_csv_path,
+                   "With IP(24) = 1: also write the radar look angles (the\n"
+                   "columns of radar --csv) to FILE as CSV, atomically\n"
+                   "(FILE.caseN.csv per case)")
+      ->type_name("FILE");
+  simulate
+      ->add_option("--hardover-csv", options->hardover_csv_path,
+                   "With IP(22) = 1: also write the hardover turns (the\n"
+                   "columns of hardover --csv) to FILE as CSV, atomically\n"
+                   "(FILE.caseN.csv per case)")
+      ->type_name("FILE");
   simulate->add_flag("--json", options->json,
                      "Print one JSON document (status, burnout state,\n"
                      "inertial velocity, orbit elements, stage events, every\n"
@@ -205,6 +217,18 @@ CLI::App* add_optimize_command(CLI::App& app, OptimizeCommandOptions* options) {
                    "per thrust failure and expended casing: failure and\n"
                    "impact times, latitudes, longitude, downrange,\n"
                    "crossrange) to FILE as CSV (FILE.caseN.csv per case)")
+      ->type_name("FILE");
+  optimize
+      ->add_option("--radar-csv", options->radar_csv_path,
+                   "With IP(24) = 1: also write the radar look angles (one\n"
+                   "row per station and point; the columns of radar --csv)\n"
+                   "to FILE as CSV, atomically (FILE.caseN.csv per case)")
+      ->type_name("FILE");
+  optimize
+      ->add_option("--hardover-csv", options->hardover_csv_path,
+                   "With IP(22) = 1: also write the hardover turns (the\n"
+                   "columns of hardover --csv) to FILE as CSV, atomically\n"
+                   "(FILE.caseN.csv per case)")
       ->type_name("FILE");
   optimize->add_flag("--json", options->json,
                      "Print one JSON document instead of the listing: the\n"

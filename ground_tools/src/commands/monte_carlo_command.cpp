@@ -89,6 +89,10 @@ bool any_sampled_kind(const DispersionData& data) {
     ScalarValue ignored;
     DispersionCase none;
     if (scalar_value(none, info.kind, &ignored)) return true;
+    // The table sources: thrust (1-8), C_M_alpha (19-20), winds (36-38).
+    if (info.kind == DispersionKind::kVacuumThrust || info.kind == DispersionKind::kPitchingMoment ||
+        info.kind == DispersionKind::kWind)
+      return true;
   }
   return false;
 }
@@ -152,16 +156,17 @@ void add_monte_carlo_options(CLI::App& command, MonteCarloCommandOptions* option
 }
 
 CLI::App* add_monte_carlo_command(CLI::App& app, MonteCarloCommandOptions* options) {
-  CLI::App* command = app.add_subcommand("montecarlo",
-                                         "Monte Carlo dispersions (beyond the manual): optimize the deck's\n"
-                                         "case, take the final nominal the dispersion analysis takes\n"
-                                         "(Sec. 15: the linearized program under IP(7) = 1, else the\n"
-                                         "optimum), and fly N samples, each drawing every scalar source of\n"
-                                         "data blocks 46-55 at once (normal, 1 sigma = the deck's value /\n"
-                                         "3). Prints the mean, standard deviation and 0.135/50/99.865 %\n"
-                                         "points of every staging-point quantity and orbit element beside\n"
-                                         "the manual's linear RSS three-sigma, the fraction reaching orbit\n"
-                                         "and the 99.7 % ellipse of the burnout point.");
+  CLI::App* command = app.add_subcommand(
+      "montecarlo",
+      "Monte Carlo dispersions (beyond the manual): optimize the deck's\n"
+      "case, take the final nominal the dispersion analysis takes\n"
+      "(Sec. 15: the linearized program under IP(7) = 1, else the\n"
+      "optimum), and fly N samples, each drawing every source of data\n"
+      "blocks 46-55 at once (normal, 1 sigma = the deck's value / 3;\n"
+      "a table source scaled by its draw). Prints the mean, standard deviation and 0.135/50/99.865 %\n"
+      "points of every staging-point quantity and orbit element beside\n"
+      "the manual's linear RSS three-sigma, the fraction reaching orbit\n"
+      "and the 99.7 % ellipse of the burnout point.");
   command->footer(
       "Examples:\n"
       "  tolip montecarlo examples/scout/mission.toml --samples 1000 --seed 1\n"
@@ -243,8 +248,8 @@ int run_monte_carlo_command(const MonteCarloCommandOptions& options, const Monte
     return fail(err, kExitBadInput,
                 deck.path +
                     ": data block 46: no dispersion source the Monte Carlo draws: give [[dispersion]] "
-                    "entries of codes 9-18 or 21-35 with their data blocks 47-52 (thrust tables, C_M_alpha "
-                    "tables and winds are not sampled; docs/theory/dispersions.md)");
+                    "entries of codes 1-38 with their data blocks 30, 35, 38 and 47-54 "
+                    "(docs/theory/dispersions.md)");
   }
   if (const std::string sign = negative_sigma_fault(deck, dispersions); !sign.empty()) {
     return fail(err, kExitBadInput, sign);
@@ -273,6 +278,20 @@ int run_monte_carlo_command(const MonteCarloCommandOptions& options, const Monte
     return fail(
         err, kExitFailure,
         std::string("the nominal did not fly: ") + status_name(status) + ": " + status_message(status));
+  }
+  // Every drawn table fits the core's tables once merged with what a sample blends it with.
+  int code = 0;
+  if (const Status status = check_monte_carlo_data(nominal, *data, &code); !ok(status)) {
+    DispersionCodeInfo info;
+    (void)dispersion_code_info(code, &info);
+    const char* block = info.kind == DispersionKind::kVacuumThrust     ? "30 and 38"
+                        : info.kind == DispersionKind::kPitchingMoment ? "35"
+                                                                       : "53 and 54";
+    return fail(err, kExitBadInput,
+                deck.path + ": data block " + block + ", dispersion code " + std::to_string(code) + " (" +
+                    info.name + "): " + status_name(status) + ": " + status_message(status) +
+                    " once merged with the grid it is blended with (the nominal's table, or the yaw "
+                    "wind profile)");
   }
   bool any_drawn = false;
   for (int k = 0; k < data->count; ++k) any_drawn = any_drawn || monte_carlo_draws_source(nominal, *data, k);

@@ -20,6 +20,7 @@
 #include "tolip_ground/deck.hpp"
 #include "tolip_ground/dispersion_report.hpp"
 #include "tolip_ground/dispersion_run.hpp"
+#include "tolip_ground/hardover_report.hpp"
 #include "tolip_ground/hardover_run.hpp"
 #include "tolip_ground/impact_report.hpp"
 #include "tolip_ground/impact_run.hpp"
@@ -27,6 +28,7 @@
 #include "tolip_ground/optimization_report.hpp"
 #include "tolip_ground/optimization_run.hpp"
 #include "tolip_ground/progress.hpp"
+#include "tolip_ground/radar_report.hpp"
 #include "tolip_ground/radar_run.hpp"
 #include "tolip_ground/report.hpp"
 #include "tolip_ground/unused_inputs.hpp"
@@ -51,6 +53,8 @@ struct CaseOutput {
   std::string csv_path;              // empty: no CSV
   std::string dispersions_csv_path;  // empty: no dispersion CSV
   std::string impact_csv_path;       // empty: no impact-locus CSV
+  std::string radar_csv_path;        // empty: no radar CSV
+  std::string hardover_csv_path;     // empty: no hardover CSV
   bool json = false;
   std::string prefix;  // before the case's diagnostics ("case N: " in a several-case deck)
   std::ostream* listing = nullptr;
@@ -239,6 +243,18 @@ int optimize_case(const Deck& deck, const DeckCase& deck_case, OptimizerObserver
     output->stop = true;
     return kExitFailure;
   }
+  if (!output->radar_csv_path.empty() && mission->options.radar() &&
+      !write_csv_or_report(output->radar_csv_path, err,
+                           [&radar](std::ostream& csv) { write_radar_csv(csv, radar); })) {
+    output->stop = true;
+    return kExitFailure;
+  }
+  if (!output->hardover_csv_path.empty() && mission->options.hardover() &&
+      !write_csv_or_report(output->hardover_csv_path, err,
+                           [&hardover](std::ostream& csv) { write_hardover_csv(csv, hardover); })) {
+    output->stop = true;
+    return kExitFailure;
+  }
 
   if (output->json) {
     output->document = optimization_json(report);
@@ -265,7 +281,8 @@ int run_optimize_command(const OptimizeCommandOptions& options, std::ostream& ou
     return kExitBadInput;
   }
   const std::size_t cases = deck.cases.size();
-  for (const std::string& csv : {options.csv_path, options.dispersions_csv_path, options.impact_csv_path}) {
+  for (const std::string& csv : {options.csv_path, options.dispersions_csv_path, options.impact_csv_path,
+                                 options.radar_csv_path, options.hardover_csv_path}) {
     if (std::string csv_error; !csv_spares_the_deck(csv, options.deck_path, cases, &csv_error)) {
       err << "tolip: " << csv_error << '\n';
       return kExitBadInput;
@@ -292,6 +309,11 @@ int run_optimize_command(const OptimizeCommandOptions& options, std::ostream& ou
     output.impact_csv_path = options.impact_csv_path.empty()
                                  ? ""
                                  : case_file_path(options.impact_csv_path, deck_case.number, cases);
+    output.radar_csv_path =
+        options.radar_csv_path.empty() ? "" : case_file_path(options.radar_csv_path, deck_case.number, cases);
+    output.hardover_csv_path = options.hardover_csv_path.empty()
+                                   ? ""
+                                   : case_file_path(options.hardover_csv_path, deck_case.number, cases);
     output.json = options.json;
     output.prefix = case_message_prefix(deck_case.number, cases);
     output.listing = &listing;

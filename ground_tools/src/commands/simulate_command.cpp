@@ -15,10 +15,12 @@
 #include "tolip_ground/card_deck.hpp"
 #include "tolip_ground/commands.hpp"
 #include "tolip_ground/deck.hpp"
+#include "tolip_ground/hardover_report.hpp"
 #include "tolip_ground/hardover_run.hpp"
 #include "tolip_ground/impact_report.hpp"
 #include "tolip_ground/impact_run.hpp"
 #include "tolip_ground/input_echo.hpp"
+#include "tolip_ground/radar_report.hpp"
 #include "tolip_ground/radar_run.hpp"
 #include "tolip_ground/report.hpp"
 #include "tolip_ground/unused_inputs.hpp"
@@ -75,9 +77,11 @@ int run_simulate_command(const SimulateCommandOptions& options, std::ostream& ou
     return kExitBadInput;
   }
   const std::size_t cases = deck.cases.size();
-  if (std::string csv_error; !csv_spares_the_deck(options.csv_path, options.deck_path, cases, &csv_error)) {
-    err << "tolip: " << csv_error << '\n';
-    return kExitBadInput;
+  for (const std::string& csv : {options.csv_path, options.radar_csv_path, options.hardover_csv_path}) {
+    if (std::string csv_error; !csv_spares_the_deck(csv, options.deck_path, cases, &csv_error)) {
+      err << "tolip: " << csv_error << '\n';
+      return kExitBadInput;
+    }
   }
   // Inputs read but not acted on are named, never dropped (tolip_ground/unused_inputs.hpp).
   print_deck_input_warnings(err, options.deck_path, deck);
@@ -159,6 +163,17 @@ int run_simulate_command(const SimulateCommandOptions& options, std::ostream& ou
         !write_csv_or_report(
             case_file_path(options.csv_path, deck_case.number, cases), err,
             [&report = run.report](std::ostream& csv) { write_trajectory_csv(csv, report); })) {
+      return kExitFailure;
+    }
+    // IP(24) / IP(22): the radar look angles and the hardover turns, each atomically.
+    if (!options.radar_csv_path.empty() && deck_case.mission->options.radar() &&
+        !write_csv_or_report(case_file_path(options.radar_csv_path, deck_case.number, cases), err,
+                             [&radar](std::ostream& csv) { write_radar_csv(csv, radar); })) {
+      return kExitFailure;
+    }
+    if (!options.hardover_csv_path.empty() && deck_case.mission->options.hardover() &&
+        !write_csv_or_report(case_file_path(options.hardover_csv_path, deck_case.number, cases), err,
+                             [&hardover](std::ostream& csv) { write_hardover_csv(csv, hardover); })) {
       return kExitFailure;
     }
 

@@ -84,7 +84,7 @@ std::vector<BlockSpec> make_blocks() {
       {45, "HARDOVER DATA", F::kReal, 26, S::kWords, kHardoverGroup, 0, "", "", false},
       {46, "DISPERSION TRAJECTORY CODE AND TITLE", F::kText, 2, S::kWords, kDispersionGroup, 0, "", "",
        false},
-      {47, "STAGE WEIGHT INCREMENT", F::kReal, 1, S::kWords, kDispersionGroup, bits({1, 2, 3, 4}), "", "",
+      {47, "STAGE WEIGHT INCREMENT", F::kReal, 1, S::kWords, kDispersionGroup, bits({1, 2, 3, 4, 5}), "", "",
        false},
       {48, "PERCENTAGE DRAG VARIATION", F::kReal, 1, S::kWords, kDispersionGroup, 0, "", "", false},
       {49, "STAGE 1 THRUST MISALIGNMENT", F::kReal, 2, S::kWords, kDispersionGroup, bits({1}), "", "", false},

@@ -911,16 +911,18 @@ class Builder {
       const deck_detail::DispersionCodes* codes = deck_detail::find_dispersion(code);
       if (codes == nullptr) continue;  // the TOML reader names the unknown code
       int stage = codes->stage_of(code);
-      if (stage < 0) {  // the tip-off: stage 4 or 5, as the cards give it
-        const bool four = block_given(set, 51, 4);
-        const bool five = block_given(set, 51, 5);
+      if (stage <
+          0) {  // the tip-off (51), thrust 7-8 (30) and weight 15-16 (47): stage 4 or 5, as the cards give it
+        const int block = codes->items.front().block;
+        const bool four = block_given(set, block, 4);
+        const bool five = block_given(set, block, 5);
         if (four && five) {
-          fail(ref(51, 5, 0),
-               "dispersion code " + str(code) +
-                   ": data block 51 given for stage codes 4 and 5; expected one tip-off stage");
+          fail(ref(block, 5, 0), "dispersion code " + str(code) + ": data block " + str(block) +
+                                     " given for stage codes 4 and 5; expected one stage");
         }
         stage = five ? 5 : 4;
-        if (four || five) scalar(path, "stage", str(stage), ref(51, stage, 0));
+        // The tip-off always names its stage; the others only stage 5 (4 is their default).
+        if ((four && block == 51) || five) scalar(path, "stage", str(stage), ref(block, stage, 0));
       }
       // The words first: after a sub-table header a TOML key would belong to the sub-table.
       for (const deck_detail::DispersionItem& item : codes->items) {

@@ -289,6 +289,18 @@ void read_hardover(Section& root, const Mission& mission, const FieldTarget& tar
 }
 
 // ---- data blocks 46-55 --------------------------------------------------------------------------
+// Codes 7-8 and 15-16: `stage` = 4 (default) or 5, stage 5 of a five-stage vehicle (the card's
+// stage code; no squeeze).
+int read_stage_4_or_5(Section& entry, int code, int block) {
+  const int stage =
+      entry.optional_integer("stage", block, "stage the code disperses, 4 or 5 (five stages)").value_or(4);
+  if (stage != 4 && stage != 5) {
+    entry.fail_at("stage", block,
+                  "dispersion code " + str(code) + " applies to stage 4, or 5 on a five-stage vehicle");
+  }
+  return stage;
+}
+
 void read_dispersion(Section& entry, int code, DispersionCase* out) {
   const std::string label = "code " + str(code) + " (" + dispersion_name(code) + ")";
   const DispersionCodes& codes = *find_dispersion(code);  // the code was checked by the caller
@@ -303,6 +315,7 @@ void read_dispersion(Section& entry, int code, DispersionCase* out) {
   switch (codes.kind) {
     case DispersionKind::kThrust: {
       out->stage = card_stage;
+      if (card_stage < 0) out->stage = read_stage_4_or_5(entry, code, 30);
       const std::string stage = "stage " + str(out->stage);
       out->vacuum_thrust_lbf = read_table(
           entry, item(30).key, 30, item(30).x_key, item(30).y_key, "stage time in s", "vacuum thrust in lbf",
@@ -321,6 +334,7 @@ void read_dispersion(Section& entry, int code, DispersionCase* out) {
     }
     case DispersionKind::kWeightIncrement:
       out->stage = card_stage;
+      if (card_stage < 0) out->stage = read_stage_4_or_5(entry, code, 47);
       out->weight_increment_lb = entry.number(item(47).key, 47, "jettison weight increment (signed), lb");
       break;
     case DispersionKind::kDrag:

@@ -609,6 +609,9 @@ int weight_stage(int code) { return (code - 7) / 2; }
 int stage_one(int) { return 1; }
 int deadband_stage(int code) { return code <= 26 ? 2 : 3; }
 int tipoff_stage(int) { return -1; }
+// Codes 7-8 and 15-16 name stage 4, or stage 5 of a five-stage vehicle when the card's stage code
+// (TOML `stage`) says 5: every stage dispersed without the manual's squeeze.
+int stage_4_or_5(int) { return -1; }
 int no_stage(int) { return 0; }
 
 std::vector<DispersionCodes> make_dispersion_codes() {
@@ -626,16 +629,24 @@ std::vector<DispersionCodes> make_dispersion_codes() {
        8,
        DispersionKind::kThrust,
        "vacuum thrust variation",
-       "data blocks 30 and 38 (stage code 4) and, five-stage, 55",
+       "data blocks 30 and 38 (stage code 4, or 5 for stage 5's own tables) and, for the five-stage "
+       "squeeze, 55",
        {thrust, weight, {55, 1, 2, "stage_durations_s", "", ""}},
-       &thrust_stage},
+       &stage_4_or_5},
       {9,
-       16,
+       14,
        DispersionKind::kWeightIncrement,
        "weight increment",
        "data block 47 (stage code {stage})",
        {{47, 1, 1, "weight_increment_lb", "", ""}},
        &weight_stage},
+      {15,
+       16,
+       DispersionKind::kWeightIncrement,
+       "weight increment",
+       "data block 47 (stage code 4 or 5)",
+       {{47, 1, 1, "weight_increment_lb", "", ""}},
+       &stage_4_or_5},
       {17,
        18,
        DispersionKind::kDrag,

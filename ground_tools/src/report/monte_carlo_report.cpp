@@ -72,6 +72,16 @@ void orbit_altitudes(const Constants& constants, const DispersedTrajectory& t, d
   *apogee_nmi = s.apogee_altitude_ft / kFeetPerNauticalMile;
 }
 
+// Whether `code` is the low code of a table pair whose high code is drawn: its table flies the
+// pair's negative draws (monte_carlo_low_partner), so it is sampled without a draw of its own.
+bool flies_low_table(const MonteCarloInputs& in, int code) {
+  for (int k = 0; k < in.data->count; ++k) {
+    const int partner = monte_carlo_low_partner(in.nominal, *in.data, k);
+    if (partner >= 0 && in.data->sources[partner].code == code) return true;
+  }
+  return false;
+}
+
 // A quantity of a record, in report units; `Get` picks it.
 template <typename Get>
 QuantityStatistics quantity(const Quantity& q, const MonteCarloInputs& in, const MonteCarloSummary& summary,
@@ -89,19 +99,39 @@ QuantityStatistics quantity(const Quantity& q, const MonteCarloInputs& in, const
   }
   out.statistic = statistic_of(std::move(values));
   // The linear three-sigma: the RSS of the deterministic dispersions of the sources drawn (each the
-  // source's three-sigma value; one per high/low pair, the code the pair's draw is keyed on).
+  // source's three-sigma value; one per high/low pair, the code the pair's draw is keyed on). A table
+  // pair whose negative draws fly the low table (monte_carlo_low_partner) contributes the mean of
+  // its two squares: half the draws go each way.
+  const auto linear_of = [&in](int code) -> const DispersedTrajectory* {
+    for (int k = 0; k < in.linear->count; ++k) {
+      if (in.linear->trajectories[k].code == code) return &in.linear->trajectories[k];
+    }
+    return nullptr;
+  };
   double squares = 0.0;
   for (int code : summary.sampled_codes) {
-    const DispersedTrajectory* found = nullptr;
-    for (int k = 0; k < in.linear->count; ++k) {
-      if (in.linear->trajectories[k].code == code) found = &in.linear->trajectories[k];
-    }
+    if (flies_low_table(in, code)) continue;  // counted with its high code
+    const DispersedTrajectory* found = linear_of(code);
     if (found == nullptr || !ok(found->status)) {
       squares = kNaN;
       break;
     }
     const double d = get(*found, -1, true) * q.scale;
-    squares += d * d;
+    int partner = -1;
+    for (int k = 0; k < in.data->count; ++k) {
+      if (in.data->sources[k].code == code) partner = monte_carlo_low_partner(in.nominal, *in.data, k);
+    }
+    if (partner < 0) {
+      squares += d * d;
+      continue;
+    }
+    const DispersedTrajectory* low = linear_of(in.data->sources[partner].code);
+    if (low == nullptr || !ok(low->status)) {
+      squares = kNaN;
+      break;
+    }
+    const double l = get(*low, -1, true) * q.scale;
+    squares += 0.5 * (d * d + l * l);
   }
   out.rss_three_sigma = std::sqrt(squares);
   return out;
@@ -206,8 +236,8 @@ MonteCarloSummary summarize_monte_carlo(const MonteCarloInputs& in) {
   for (int k = 0; k < in.data->count; ++k) {
     const int code = in.data->sources[k].code;
     if (code == kNominalDispersionCode) continue;
-    (monte_carlo_draws_source(in.nominal, *in.data, k) ? s.sampled_codes : s.not_sampled_codes)
-        .push_back(code);
+    const bool sampled = monte_carlo_draws_source(in.nominal, *in.data, k) || flies_low_table(in, code);
+    (sampled ? s.sampled_codes : s.not_sampled_codes).push_back(code);
   }
   const double threshold_nmi = in.orbit_perigee_nmi;
   s.perigee_altitude_nmi.assign(samples.samples.size(), kNaN);

@@ -64,8 +64,8 @@ bool dispersion_code_info(int code, DispersionCodeInfo* info);
 // One block 46 card with its data, in core units (angles rad, stations ft).
 struct DispersionSource {
   int code = 0;
-  int stage = 0;                     // codes 30-32: spun stage 4 or 5; otherwise the table's stage
-  char title[13] = {};               // block 46 title, 2A6
+  int stage = 0;        // codes 30-32: spun stage 4 or 5; 7-8, 15-16: 4 or 5; otherwise the table's stage
+  char title[13] = {};  // block 46 title, 2A6
   ThrustTable vacuum_thrust_lbf;     // codes 1-8: block 30 replacement table (stage time)
   WeightTable consumable_weight_lb;  // codes 1-8: block 38 replacement table
   // Codes 7-8 with block 55: the manual's five-stage squeeze (stages 4 and 5 stacked in the stage-4
@@ -158,7 +158,13 @@ struct DispersionWorkspace {
   FlightPerturbation perturbation;
   Trajectory nominal;
   Trajectory dispersed;
+  WindProfile wind;  // a Monte Carlo sample's wind (the drawn profiles, scaled and summed)
 };
+
+// The stage a source disperses: the code table's, the card's stage for a tip-off (30-32), and
+// stage 5 for the stage-4 thrust and weight codes (7-8, 15-16) whose card names stage 5 (five
+// stages without the manual's squeeze; docs/theory/dispersions.md).
+int dispersion_source_stage(const DispersionSource& source);
 
 // Checks the data against the nominal before anything flies: known codes in increasing order,
 // the tables finalized, tables of codes 1-8 within the capacities. kOk or the first fault
@@ -172,6 +178,13 @@ Status validate_dispersion_data(const DispersionData& data, int* fault_code);
 // dispersed timeline: a thrust code changes the burn time, and the program is flown in stage time).
 Status build_dispersed_case(const DispersionNominal& nominal, const PreparedCase& nominal_prepared,
                             const DispersionSource& source, DispersionWorkspace* workspace);
+
+// The nominal per-point program carried onto a dispersed timeline (codes 1-8 change a burn time):
+// a stage whose grid is the nominal's keeps its values; one whose grid changed flies the nominal
+// program as a function of stage time, linear between the nominal points and continued at the
+// last step's rate past the nominal burnout. `nominal` and `dispersed` are prepare_case() results.
+void map_control_program(const PreparedCase& nominal, const ControlProgram& program,
+                         const PreparedCase& dispersed, ControlProgram* out);
 
 // Records the staging variables, orbit elements and max q-bar alpha of `flown` into *out (values
 // only; dispersions are filled by run_dispersions). `reference` is the nominal trajectory (its

@@ -24,12 +24,24 @@ double counter_normal(std::uint64_t seed, std::uint64_t sample, std::uint32_t st
 // absent (otherwise the pair's high code speaks for both).
 bool monte_carlo_draws_source(const DispersionNominal& nominal, const DispersionData& data, int k);
 
+// For a drawn table source k (thrust 1-8, C_M_alpha 19-20, winds 36-37) whose pair's low code is
+// given too (the same stage for thrust): the index of that low code, whose table a negative draw
+// flies; -1 otherwise (a negative draw then mirrors the drawn table about the nominal).
+int monte_carlo_low_partner(const DispersionNominal& nominal, const DispersionData& data, int k);
+
+// Checks, before any sample flies, that every drawn table source fits the core's tables once
+// merged with what it is blended or summed with (kTooManyTablePoints, *fault_code the code).
+Status check_monte_carlo_data(const DispersionNominal& nominal, const DispersionData& data, int* fault_code);
+
 // Builds sample `sample` about the nominal into *workspace: every scalar source of `data` at once,
 // normal with 1 sigma = the deck's (three-sigma) value / 3, one draw per high/low pair (keyed by its
 // high code) and one per yaw code: weight increments (9-16), drag (17-18), misalignment (21-23,
 // with body dynamics), deadbands (24-29), tip-off (30-32, spun stages), launch azimuth (33) and
-// attitude (34-35). Not sampled in this version: thrust tables (1-8), C_M_alpha tables (19-20),
-// winds (36-38). `nominal_prepared` is the nominal's prepare_case().
+// attitude (34-35); and the table sources with c = the draw (z / 3): thrust 1-8 (thrust, consumed
+// weight and burn time blended between the nominal's and the code's tables, c = 1 the code's) and
+// C_M_alpha 19-20 (with body dynamics) alike, winds 36-38 (the profile scaled by c; the high/low and
+// the yaw profile of a sample summed as vectors). A negative draw of a pair flies its low table
+// (monte_carlo_low_partner) or the mirror. `nominal_prepared` is the nominal's prepare_case().
 Status build_monte_carlo_case(const DispersionNominal& nominal, const PreparedCase& nominal_prepared,
                               const DispersionData& data, std::uint64_t seed, std::uint64_t sample,
                               DispersionWorkspace* workspace);
