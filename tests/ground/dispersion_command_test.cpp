@@ -266,5 +266,36 @@ TEST(Sec15DispersionCommand, FiveStageVehicleDispersesStage5WithoutTheSqueeze) {
   }
 }
 
+// `tolip dispersions` (the analysis alone, whatever IP(21) says) computes exactly what optimize's
+// IP(21) = 1 step does: the same member, to the bit, and its CSV is optimize's --dispersions-csv.
+TEST(Sec15DispersionsCommand, StandaloneAnalysisEqualsTheOptimizeStepBitForBit) {
+  ScratchDirectory scratch("dispersions_standalone");
+  const std::string csv = (scratch / "standalone.csv").string();
+  const CommandResult run = run_tolip_executable({"dispersions", mission_deck(), "--json", "--csv", csv});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const nlohmann::json d = nlohmann::json::parse(run.out);
+  EXPECT_EQ(d["optimizer_status"], "kOk");
+  ASSERT_TRUE(runs().document.contains("dispersions"));
+  EXPECT_EQ(d["dispersions"], runs().document["dispersions"]);
+  EXPECT_EQ(read_text_file(csv), read_text_file(runs().csv_path));
+  const CommandResult listing = run_tolip_executable({"dispersions", mission_deck()});
+  ASSERT_EQ(listing.exit_code, 0) << listing.err;
+  EXPECT_NE(listing.out.find("THREE-SIGMA VARIATIONS"), std::string::npos);
+  EXPECT_EQ(listing.out.find("ITERATION"), std::string::npos);  // the analysis alone
+}
+
+// A deck without data block 46 is bad input for the standalone command: exit 2, the block named,
+// nothing on stdout and no CSV.
+TEST(Sec15DispersionsCommand, DeckWithoutBlock46IsBadInputNamingTheBlock) {
+  ScratchDirectory scratch("dispersions_none");
+  const std::string csv = (scratch / "none.csv").string();
+  const CommandResult run = run_tolip_executable(
+      {"dispersions", std::string(TOLIP_EXAMPLES_DIR) + "/strapon/mission.toml", "--csv", csv});
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_TRUE(run.out.empty());
+  EXPECT_NE(run.err.find("data block 46 (dispersion)"), std::string::npos) << run.err;
+  EXPECT_FALSE(std::ifstream(csv).good());
+}
+
 }  // namespace
 }  // namespace tolip::test

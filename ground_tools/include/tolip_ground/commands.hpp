@@ -57,6 +57,16 @@ struct OptimizeCommandOptions {
 };
 int run_optimize_command(const OptimizeCommandOptions& options, std::ostream& out, std::ostream& err);
 
+// `tolip dispersions DECK [--csv FILE] [--json]`: optimize each case as `optimize` does and run the
+// dispersion analysis (manual Sec. 15, data blocks 46-55) about its final nominal whatever IP(21)
+// says; reports only that analysis (dispersion_run.hpp, docs/cli.md).
+struct DispersionsCommandOptions {
+  std::string deck_path;
+  std::string csv_path;  // empty: no CSV (FILE.caseN per case of several)
+  bool json = false;
+};
+int run_dispersions_command(const DispersionsCommandOptions& options, std::ostream& out, std::ostream& err);
+
 // `tolip impact DECK [--csv FILE] [--json]`: the nominal impact locus (manual Sec. 17, data blocks
 // 42-43) of each case about the trajectory `simulate` flies (impact_run.hpp, docs/cli.md).
 struct ImpactCommandOptions {

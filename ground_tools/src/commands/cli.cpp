@@ -250,6 +250,51 @@ CLI::App* add_optimize_command(CLI::App& app, OptimizeCommandOptions* options) {
   return optimize;
 }
 
+// tolip dispersions: the dispersion analysis of each case of a deck about its final nominal.
+CLI::App* add_dispersions_command(CLI::App& app, DispersionsCommandOptions* options) {
+  CLI::App* dispersions = app.add_subcommand("dispersions",
+                                             "Dispersion analysis (manual Sec. 15, data blocks 46-55):\n"
+                                             "optimize each case as 'optimize' does, then fly every\n"
+                                             "dispersion code of the deck about the final nominal (the\n"
+                                             "linearized program under IP(7), else the optimum), whatever\n"
+                                             "IP(21) says. Prints per dispersed trajectory the staging\n"
+                                             "variables and orbit elements with their dispersions, the\n"
+                                             "summary of the individual dispersions and the three-sigma\n"
+                                             "variations by sum and root-sum-square, without and with\n"
+                                             "winds. With IP(21) = 1 'optimize' prints the same pages\n"
+                                             "after its own.");
+  dispersions->footer(
+      "Examples:\n"
+      "  tolip dispersions examples/scout/mission.toml\n"
+      "  tolip dispersions examples/scout/mission.toml --csv dispersions.csv\n"
+      "  tolip dispersions examples/scout/mission.toml --json > dispersions.json\n"
+      "Exit codes: 0 every case's analysis computed; 1 a case has no final\n"
+      "nominal (the optimization did not converge) or a dispersed\n"
+      "trajectory failed (everything is still printed), or the CSV not\n"
+      "written (nothing printed); 2 bad command line or deck (also a deck\n"
+      "without data block 46, or dispersion data the core cannot hold:\n"
+      "the message names the block, the code and the field).\n"
+      "Full reference: docs/cli.md, 'tolip dispersions'.");
+  dispersions
+      ->add_option("DECK", options->deck_path,
+                   "TOML deck or card deck of one or more cases, recognised\n"
+                   "by content (docs/deck-format.md)")
+      ->required()
+      ->type_name("FILE");
+  dispersions
+      ->add_option("--csv", options->csv_path,
+                   "Also write the analysis to FILE as CSV, the rows of\n"
+                   "'optimize --dispersions-csv' (FILE.caseN.csv per case of a\n"
+                   "several-case deck), atomically; on failure an existing FILE\n"
+                   "is left untouched")
+      ->type_name("FILE");
+  dispersions->add_flag("--json", options->json,
+                        "Print JSON instead of the listing: per case (an array for\n"
+                        "a deck of several) case, optimizer_status and the member\n"
+                        "'dispersions' of 'optimize --json' (docs/cli.md)");
+  return dispersions;
+}
+
 // tolip impact: the nominal impact locus of each case of a deck.
 CLI::App* add_impact_command(CLI::App& app, ImpactCommandOptions* options) {
   CLI::App* impact = app.add_subcommand("impact",
@@ -598,6 +643,7 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
   InspectCommandOptions inspect_options;
   ConvertCommandOptions convert_options;
   MonteCarloCommandOptions monte_carlo_options;
+  DispersionsCommandOptions dispersions_options;
   ImpactCommandOptions impact_options;
   RadarCommandOptions radar_options;
   HardoverCommandOptions hardover_options;
@@ -609,6 +655,7 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
   CLI::App* inspect = add_inspect_command(app, &inspect_options);
   CLI::App* convert = add_convert_command(app, &convert_options);
   CLI::App* monte_carlo = add_monte_carlo_command(app, &monte_carlo_options);
+  CLI::App* dispersions = add_dispersions_command(app, &dispersions_options);
   CLI::App* impact = add_impact_command(app, &impact_options);
   CLI::App* radar = add_radar_command(app, &radar_options);
   CLI::App* hardover = add_hardover_command(app, &hardover_options);
@@ -624,6 +671,7 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
   if (inspect->parsed()) return run_inspect_command(inspect_options, out, err);
   if (convert->parsed()) return run_convert_command(convert_options, out, err);
   if (monte_carlo->parsed()) return run_monte_carlo_command(monte_carlo_options, out, err);
+  if (dispersions->parsed()) return run_dispersions_command(dispersions_options, out, err);
   if (impact->parsed()) return run_impact_command(impact_options, out, err);
   if (radar->parsed()) return run_radar_command(radar_options, out, err);
   if (hardover->parsed()) return run_hardover_command(hardover_options, out, err);

@@ -272,6 +272,12 @@ void write_dispersion_pages(Pager& pager, const DispersionStep& step) {
 
 }  // namespace report_detail
 
+void write_dispersion_listing(std::ostream& out, const Mission& mission, const DeckListingOptions* listing,
+                              const DispersionStep& step) {
+  report_detail::Pager pager(out, mission, listing);
+  report_detail::write_dispersion_pages(pager, step);
+}
+
 json dispersion_json(const DispersionStep& step) {
   json out = json::object();
   out["status"] = status_name(step.status);
