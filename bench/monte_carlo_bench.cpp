@@ -65,4 +65,58 @@ void BM_MonteCarloSamples(benchmark::State& state) {
 // Wall-clock time: the threads' work is what is measured, not the calling thread's CPU time.
 BENCHMARK(BM_MonteCarloSamples)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// One sample on the calling thread, CPU time: the per-core rate of issue 11's "10,000 dispersed
+// trajectories per second per core" (samples 0, 1, 2, ... in turn, each built, prepared, flown and
+// recorded as run_monte_carlo() does).
+void BM_MonteCarloOneSample(benchmark::State& state) {
+  const Prepared& p = prepared();
+  auto ws = std::make_unique<tolip::DispersionWorkspace>();
+  if (!tolip::ok(tolip::prepare_monte_carlo(p.nominal, ws.get()))) std::exit(1);
+  tolip::DispersedTrajectory nominal_values;
+  tolip::record_dispersed_trajectory(*p.nominal.mission, ws->nominal_prepared, ws->nominal, ws->nominal,
+                                     nullptr, &nominal_values);
+  tolip::DispersedTrajectory out;
+  std::uint64_t sample = 0;
+  for (auto _ : state) {
+    const tolip::Status status = tolip::fly_monte_carlo_sample(p.nominal, *p.data, 1, sample++ % kSamples,
+                                                               nominal_values, ws.get(), &out);
+    benchmark::DoNotOptimize(status);
+  }
+  state.counters["samples_per_s"] = benchmark::Counter(1.0, benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(BM_MonteCarloOneSample)->Unit(benchmark::kMicrosecond);
+
+// The parts of one sample: building its case (the copy of the mission and prepared case, the draws,
+// prepare_case when a weight or the azimuth changes), then the flight alone.
+void BM_MonteCarloSampleCase(benchmark::State& state) {
+  const Prepared& p = prepared();
+  auto ws = std::make_unique<tolip::DispersionWorkspace>();
+  if (!tolip::ok(tolip::prepare_monte_carlo(p.nominal, ws.get()))) std::exit(1);
+  std::uint64_t sample = 0;
+  for (auto _ : state) {
+    const tolip::Status status = tolip::build_monte_carlo_case(p.nominal, ws->nominal_prepared, *p.data, 1,
+                                                               sample++ % kSamples, ws.get());
+    benchmark::DoNotOptimize(status);
+  }
+}
+BENCHMARK(BM_MonteCarloSampleCase)->Unit(benchmark::kMicrosecond);
+
+void BM_MonteCarloSampleFlight(benchmark::State& state) {
+  const Prepared& p = prepared();
+  auto ws = std::make_unique<tolip::DispersionWorkspace>();
+  if (!tolip::ok(tolip::prepare_monte_carlo(p.nominal, ws.get()))) std::exit(1);
+  if (!tolip::ok(tolip::build_monte_carlo_case(p.nominal, ws->nominal_prepared, *p.data, 1, 0, ws.get())))
+    std::exit(1);
+  tolip::FlightInputs inputs;
+  inputs.program = p.nominal.program;
+  inputs.body_dynamics = p.nominal.body_dynamics;
+  inputs.perturbation = &ws->perturbation;
+  for (auto _ : state) {
+    const tolip::Status status = tolip::fly_trajectory(ws->mission, ws->prepared, inputs, &ws->dispersed);
+    benchmark::DoNotOptimize(status);
+  }
+  state.counters["points"] = ws->dispersed.point_count;
+}
+BENCHMARK(BM_MonteCarloSampleFlight)->Unit(benchmark::kMicrosecond);
+
 }  // namespace

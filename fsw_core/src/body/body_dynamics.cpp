@@ -108,7 +108,10 @@ MissileAxes missile_axes_platform(double theta_rad, double chi_rad) {
 }
 
 BodyAngles body_angles_of_attack(double theta_rad, double chi_rad, const Matrix3& platform_to_local) {
-  const MissileAxes axes = missile_axes_platform(theta_rad, chi_rad);
+  return body_angles_of_attack(missile_axes_platform(theta_rad, chi_rad), platform_to_local);
+}
+
+BodyAngles body_angles_of_attack(const MissileAxes& axes, const Matrix3& platform_to_local) {
   const Vector3 v = platform_to_local.row(1).transpose();  // unit V in P (C^T i_y)
   const double v_mx = axes.x.dot(v);
   const double v_my = axes.y.dot(v);
@@ -121,6 +124,12 @@ BodyAngles body_angles_of_attack(double theta_rad, double chi_rad, const Matrix3
 
 BodyForces body_forces(const UnitMoments& moments, const BodyAngles& angles, double normal_force_lbf_per_rad,
                        double theta_rad, double chi_rad, const Matrix3& platform_to_local) {
+  return body_forces(moments, angles, normal_force_lbf_per_rad, missile_axes_platform(theta_rad, chi_rad),
+                     platform_to_local);
+}
+
+BodyForces body_forces(const UnitMoments& moments, const BodyAngles& angles, double normal_force_lbf_per_rad,
+                       const MissileAxes& axes, const Matrix3& platform_to_local) {
   BodyForces f;
   if (std::fabs(moments.control_lever_ft) >= kMinimumLeverFt) {
     f.control_x_lbf = moments.m_alpha_lbf_ft_per_rad * angles.beta_rad / moments.control_lever_ft;
@@ -130,7 +139,6 @@ BodyForces body_forces(const UnitMoments& moments, const BodyAngles& angles, dou
   f.missile_z_lbf = f.control_z_lbf + normal_force_lbf_per_rad * angles.alpha_rad;
   // Sec. 11: F_jx = F_mx cos chi - F_mz sin theta sin chi, F_jy = -F_mx sin chi - F_mz sin theta cos chi,
   // F_jz = F_mz cos theta, i.e. F_mx m_x + F_mz m_z.
-  const MissileAxes axes = missile_axes_platform(theta_rad, chi_rad);
   f.platform_lbf = f.missile_x_lbf * axes.x + f.missile_z_lbf * axes.z;
   f.local_lbf = platform_to_local * f.platform_lbf;
   return f;
@@ -155,15 +163,17 @@ Status evaluate_body_dynamics(const BodyDynamicsBlocks& data, const BodyDynamics
   const Status status = steady_state_attitude(gains, out->moments, command, out->velocity, &out->attitude);
   const Matrix3& angle_frame =
       (in.air_platform_to_local != nullptr) ? *in.air_platform_to_local : in.platform_to_local;
-  out->angles = body_angles_of_attack(out->attitude.theta_rad, out->attitude.chi_rad, angle_frame);
-  out->forces = body_forces(out->moments, out->angles, in.normal_force_lbf_per_rad, out->attitude.theta_rad,
-                            out->attitude.chi_rad, in.platform_to_local);
+  // The attitude's sines and cosines once, for the angles, the forces and the caller's thrust axis.
+  out->axes = missile_axes_platform(out->attitude.theta_rad, out->attitude.chi_rad);
+  out->angles = body_angles_of_attack(out->axes, angle_frame);
+  out->forces =
+      body_forces(out->moments, out->angles, in.normal_force_lbf_per_rad, out->axes, in.platform_to_local);
   if (misaligned && std::fabs(out->moments.control_lever_ft) >= kMinimumLeverFt) {
     // The misalignment force and the control force that trims its moment (Sec. 15).
     const double factor = 1.0 - thrust_lever_ft / out->moments.control_lever_ft;
     out->forces.missile_z_lbf += -in.net_thrust_lbf * in.misalignment_pitch_rad * factor;
     out->forces.missile_x_lbf += -in.net_thrust_lbf * in.misalignment_yaw_rad * factor;
-    const MissileAxes axes = missile_axes_platform(out->attitude.theta_rad, out->attitude.chi_rad);
+    const MissileAxes& axes = out->axes;
     out->forces.platform_lbf = out->forces.missile_x_lbf * axes.x + out->forces.missile_z_lbf * axes.z;
     out->forces.local_lbf = in.platform_to_local * out->forces.platform_lbf;
   }

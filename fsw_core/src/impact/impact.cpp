@@ -171,6 +171,8 @@ Status fly_to_impact(const Mission& mission, const PreparedCase& prepared, const
   stage.data = scratch;
   stage.thrust = nullptr;
   stage.weight_above_consumable_lb = weight_lb;
+  EvaluationScratch memo;  // the drag table's interval, the held attitude's sine and cosine
+  stage.scratch = &memo;
   const BallisticFlight flight(mission, prepared, stage);
   const double g0 = mission.constants.g0_ft_s2;
   const double mass_slug = weight_lb / g0;

@@ -53,18 +53,22 @@ bool all_finite(const OrbitElements& e) {
 }  // namespace
 
 InertialVelocity inertial_velocity(const Constants& constants, const StateVector& state) {
-  const double v = state(kStateV);
   const double gamma = state(kStateGamma);
-  const double r = state(kStateR);
   const double psi = state(kStatePsi);
-  const double lambda = state(kStateLambda);
+  return inertial_velocity(constants, state, std::sin(gamma), std::cos(gamma), std::sin(psi), std::cos(psi),
+                           std::cos(state(kStateLambda)));
+}
+
+InertialVelocity inertial_velocity(const Constants& constants, const StateVector& state, double sin_gamma,
+                                   double cos_gamma, double sin_psi, double cos_psi, double cos_lambda) {
+  const double v = state(kStateV);
+  const double r = state(kStateR);
   // Local up / north / east components; the Earth's rotation adds omega r cos(lambda) eastward.
   // Same quantities as the INER formulas, but V_I from its components avoids the cancellation
   // of the printed sum when the relative velocity is nearly westward.
-  const double up_ft_s = v * std::sin(gamma);
-  const double north_ft_s = v * std::cos(gamma) * std::cos(psi);
-  const double east_ft_s =
-      v * std::cos(gamma) * std::sin(psi) + constants.earth_rotation_rate_rad_s * r * std::cos(lambda);
+  const double up_ft_s = v * sin_gamma;
+  const double north_ft_s = v * cos_gamma * cos_psi;
+  const double east_ft_s = v * cos_gamma * sin_psi + constants.earth_rotation_rate_rad_s * r * cos_lambda;
   const double horizontal_ft_s = std::hypot(north_ft_s, east_ft_s);
   InertialVelocity out;
   out.velocity_ft_s = std::hypot(horizontal_ft_s, up_ft_s);
@@ -170,14 +174,16 @@ double downrange_angle_rad(double launch_latitude_rad, double launch_longitude_r
                            double longitude_rad) {
   // The manual's cos(DR) = sin lambda0 sin lambda + cos lambda0 cos lambda cos(dtau), evaluated as
   // atan2(|n0 x n|, n0 . n): acos loses half the digits near lift-off, where DR is tiny.
-  const double d_lon = longitude_rad - launch_longitude_rad;
-  const double cos_lat0 = std::cos(launch_latitude_rad);
-  const double sin_lat0 = std::sin(launch_latitude_rad);
-  const double cos_lat = std::cos(latitude_rad);
-  const double sin_lat = std::sin(latitude_rad);
-  const double dot = sin_lat0 * sin_lat + cos_lat0 * cos_lat * std::cos(d_lon);
+  return downrange_angle_rad(std::sin(launch_latitude_rad), std::cos(launch_latitude_rad),
+                             std::sin(latitude_rad), std::cos(latitude_rad),
+                             longitude_rad - launch_longitude_rad);
+}
+
+double downrange_angle_rad(double sin_lat0, double cos_lat0, double sin_lat, double cos_lat, double d_lon) {
+  const double cos_d_lon = std::cos(d_lon);
+  const double dot = sin_lat0 * sin_lat + cos_lat0 * cos_lat * cos_d_lon;
   const double cross_x = cos_lat * std::sin(d_lon);
-  const double cross_y = cos_lat0 * sin_lat - sin_lat0 * cos_lat * std::cos(d_lon);
+  const double cross_y = cos_lat0 * sin_lat - sin_lat0 * cos_lat * cos_d_lon;
   return std::atan2(std::hypot(cross_x, cross_y), dot);
 }
 

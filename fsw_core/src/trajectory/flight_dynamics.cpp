@@ -40,11 +40,16 @@ double zero_alpha_theta_rad(const PreparedCase& prepared, const StateVector& sta
 void evaluate_flight(const Mission& mission, const PreparedCase& prepared, const StageContext& stage,
                      const StepCommand& command, double t, const StateVector& state, double weight_offset_lb,
                      Evaluation* out) {
+  evaluate_flight(mission, prepared, stage, command, t, state, StateTrig(state), weight_offset_lb, out);
+}
+
+void evaluate_flight(const Mission& mission, const PreparedCase& prepared, const StageContext& stage,
+                     const StepCommand& command, double t, const StateVector& state, const StateTrig& trig,
+                     double weight_offset_lb, Evaluation* out) {
   const Constants& constants = mission.constants;
   const StageData& data = *stage.data;
   const double stage_time = t - stage.start_s;
   const double v = state[kStateV];
-  const StateTrig trig(state);
   const double surface_radius = oblate_radius_ft(constants, trig.sin_lambda, trig.cos_lambda);
   out->altitude_ft = state[kStateR] - surface_radius;
 
@@ -61,9 +66,16 @@ void evaluate_flight(const Mission& mission, const PreparedCase& prepared, const
     }
   }
 
-  out->weight_lb = stage.weight_above_consumable_lb + weight_offset_lb +
-                   (is_powered_stage(stage.code) ? data.consumable_weight_lb(stage_time) : 0.0);
-  out->vacuum_thrust_lbf = (stage.thrust != nullptr) ? (*stage.thrust)(stage_time) : 0.0;
+  EvaluationScratch* scratch = stage.scratch;
+  double consumable_lb = 0.0;
+  if (is_powered_stage(stage.code)) {
+    consumable_lb = (scratch != nullptr) ? data.consumable_weight_lb(stage_time, &scratch->weight_hint)
+                                         : data.consumable_weight_lb(stage_time);
+  }
+  out->weight_lb = stage.weight_above_consumable_lb + weight_offset_lb + consumable_lb;
+  out->vacuum_thrust_lbf = (stage.thrust == nullptr) ? 0.0
+                           : (scratch != nullptr)    ? (*stage.thrust)(stage_time, &scratch->thrust_hint)
+                                                     : (*stage.thrust)(stage_time);
   out->net_thrust_lbf =
       (stage.thrust != nullptr) ? out->vacuum_thrust_lbf - pressure * data.nozzle_exit_area_ft2 : 0.0;
 
@@ -110,7 +122,9 @@ void evaluate_flight(const Mission& mission, const PreparedCase& prepared, const
     // about the command, with stage 1's data in stage 1 and in the coast after it.
     const AeroTable& normal_slope = mission.vehicle.lift_curve_slope_per_rad;
     const bool aero = density > 0.0 && !normal_slope.empty();
-    const double c_n_alpha = aero ? normal_slope(out->mach) : 0.0;
+    const double c_n_alpha = !aero                  ? 0.0
+                             : (scratch != nullptr) ? normal_slope(out->mach, &scratch->lift_hint)
+                                                    : normal_slope(out->mach);
     BodyDynamicsInputs body;
     body.conditions.stage = 1;
     body.conditions.cg_stage_time_s = (stage.code == 1) ? stage_time : mission.vehicle.stages[0].duration_s;
@@ -146,20 +160,41 @@ void evaluate_flight(const Mission& mission, const PreparedCase& prepared, const
     out->chi_rad = result.attitude.chi_rad;
     out->control_deflection_rad = result.attitude.pitch_deflection_rad;
     body_force_local = result.forces.local_lbf;
+    // The thrust axis is the missile axis m_y the body dynamics resolved with the same sines and
+    // cosines: thrust_axis_platform(theta, chi) exactly (its chi = 0 form has a plain 0 and cos theta).
+    const Vector3& m_y = result.axes.y;
+    const Vector3 axis = (out->chi_rad == 0.0) ? Vector3(0.0, m_y.y(), m_y.z()) : m_y;
+    out->thrust_axis_local = platform_to_local * axis;
+  } else if (scratch != nullptr && out->chi_rad == 0.0) {
+    // thrust_axis_platform(theta, 0) with theta's sine and cosine kept from the last evaluation
+    // that flew the same theta (RK4's midpoints, held attitudes).
+    if (!scratch->has_theta || !(scratch->theta_rad == out->theta_rad)) {
+      scratch->has_theta = true;
+      scratch->theta_rad = out->theta_rad;
+      scratch->cos_theta = std::cos(out->theta_rad);
+      scratch->sin_theta = std::sin(out->theta_rad);
+    }
+    out->thrust_axis_local = platform_to_local * Vector3(0.0, scratch->cos_theta, scratch->sin_theta);
+  } else {
+    out->thrust_axis_local = platform_to_local * thrust_axis_platform(out->theta_rad, out->chi_rad);
   }
-  out->thrust_axis_local = platform_to_local * thrust_axis_platform(out->theta_rad, out->chi_rad);
 
   out->drag_lbf = 0.0;
   out->lift_lbf = 0.0;
   Vector3 wind_force_local = Vector3::Zero();  // drag and lift along the air frame (winds only)
   if (density > 0.0) {
     const double q_s = out->dynamic_pressure_lbf_ft2 * data.reference_area_ft2;
-    if (!data.drag_coefficient.empty()) out->drag_lbf = q_s * data.drag_coefficient(out->mach);
+    if (!data.drag_coefficient.empty()) {
+      out->drag_lbf = q_s * ((scratch != nullptr) ? data.drag_coefficient(out->mach, &scratch->drag_hint)
+                                                  : data.drag_coefficient(out->mach));
+    }
     if (!command.body_dynamics && data.uses_lift_table && !mission.vehicle.lift_curve_slope_per_rad.empty()) {
       // Alpha (an atan2) is needed on the integration path only where there is lift.
       const double alpha = windy ? air_angle_of_attack_rad(local_to_air, out->thrust_axis_local)
                                  : angle_of_attack_rad(out->thrust_axis_local);
-      out->lift_lbf = q_s * mission.vehicle.lift_curve_slope_per_rad(out->mach) * alpha;
+      const AeroTable& slope = mission.vehicle.lift_curve_slope_per_rad;
+      out->lift_lbf =
+          q_s * ((scratch != nullptr) ? slope(out->mach, &scratch->lift_hint) : slope(out->mach)) * alpha;
     }
     if (windy) {
       // Drag against the air-relative velocity, lift along a_z: given to the equations as local

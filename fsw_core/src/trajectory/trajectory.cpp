@@ -33,7 +33,8 @@ class Flight {
          Trajectory* trajectory)
       : mission_(mission), prepared_(prepared),
         program_(inputs.feedback != nullptr ? inputs.live_program : inputs.program), inputs_(inputs),
-        trajectory_(trajectory) {}
+        trajectory_(trajectory), sin_launch_latitude_(std::sin(mission.launch.geocentric_latitude_rad)),
+        cos_launch_latitude_(std::cos(mission.launch.geocentric_latitude_rad)) {}
 
   Status run();
 
@@ -45,8 +46,8 @@ class Flight {
                          const StateVector& state);
   void perturb_command(const StageContext& stage, double t, StepCommand* command) const;
   double program_theta(int point, double t) const;
-  Status record(const StageContext& stage, double t, const StateVector& state, const StepCommand& command,
-                const Evaluation& eval);
+  Status record(const StageContext& stage, double t, const StateVector& state, const StateTrig& trig,
+                const StepCommand& command, const Evaluation& eval);
   Status record_pad_point();
   Status resume(StateVector* state);
 
@@ -57,6 +58,9 @@ class Flight {
   Trajectory* trajectory_;
   LatchedSegment latched_;
   bool window_end_latched_ = false;
+  // The launch point's, for every point's downrange.
+  double sin_launch_latitude_;
+  double cos_launch_latitude_;
 };
 
 void Flight::latch_segments(const StageContext& stage, double t, const StateVector& state) {
@@ -153,7 +157,8 @@ void Flight::perturb_command(const StageContext& stage, double t, StepCommand* c
   command->chi_rad += perturbation->chi_offset_rad[slot];
 }
 
-Status Flight::record(const StageContext& stage, double t, const StateVector& state,
+// `trig` is StateTrig(state), shared with the point's evaluation.
+Status Flight::record(const StageContext& stage, double t, const StateVector& state, const StateTrig& trig,
                       const StepCommand& command, const Evaluation& eval) {
   if (trajectory_->point_count >= kMaxTrajectoryPoints) return Status::kTrajectoryStorageFull;
   const Constants& constants = mission_.constants;
@@ -183,9 +188,10 @@ Status Flight::record(const StageContext& stage, double t, const StateVector& st
                                     mission_.atmosphere.base_density_slug_ft3[0], state[kStateV])
           : 0.0;
   p.downrange_rad =
-      downrange_angle_rad(mission_.launch.geocentric_latitude_rad, mission_.launch.longitude_rad,
-                          state[kStateLambda], p.earth_longitude_rad);
-  p.inertial = inertial_velocity(constants, state);
+      downrange_angle_rad(sin_launch_latitude_, cos_launch_latitude_, trig.sin_lambda, trig.cos_lambda,
+                          p.earth_longitude_rad - mission_.launch.longitude_rad);
+  p.inertial = inertial_velocity(constants, state, trig.sin_gamma, trig.cos_gamma, trig.sin_psi, trig.cos_psi,
+                                 trig.cos_lambda);
   p.heading_hold = command.heading_hold;
   p.alpha_zero = command.mode == AttitudeMode::kZeroAlpha;
   p.body_dynamics = command.body_dynamics;
@@ -254,13 +260,15 @@ Status Flight::record_pad_point() {
   command.mode = AttitudeMode::kHeld;
   command.theta_start_rad = command.theta_end_rad = kHalfPi;
   command.heading_hold = mission_.launch.heading_hold_until_s > 0.0;
-  return record(stage1, 0.0, pad, command, eval);
+  return record(stage1, 0.0, pad, StateTrig(pad), command, eval);
 }
 
 Status Flight::fly_stage(int slot, StateVector* state) {
   const StageTimeline& line = prepared_.timeline[slot];
   StageContext stage = make_stage_context(mission_, prepared_, line);
   stage.perturbation = inputs_.perturbation;
+  EvaluationScratch scratch;
+  stage.scratch = &scratch;
   const bool powered = stage.thrust != nullptr;
 
   StageEvent& event = trajectory_->stages[trajectory_->stage_count];
@@ -282,9 +290,10 @@ Status Flight::fly_stage(int slot, StateVector* state) {
     StepCommand command = command_at(stage, point, t, line.step_s, *state);
     perturb_command(stage, t, &command);
     command.body_dynamics = body_dynamics;
-    evaluate_flight(mission_, prepared_, stage, command, t, *state, 0.0, &eval);
+    const StateTrig trig(*state);
+    evaluate_flight(mission_, prepared_, stage, command, t, *state, trig, 0.0, &eval);
     if (!eval.derivative.allFinite()) return Status::kNonFiniteState;  // nothing NaN is stored
-    Status status = record(stage, t, *state, command, eval);
+    Status status = record(stage, t, *state, trig, command, eval);
     if (!ok(status)) return status;
     if (eval.altitude_ft < kImpactAltitudeFt) return Status::kAltitudeBelowSurface;
     if (!ok(eval.body_status)) return eval.body_status;
@@ -338,9 +347,10 @@ Status Flight::fly_stage(int slot, StateVector* state) {
         body_dynamics ? command.theta_start_rad + last_theta_step_rad : command.theta_start_rad;
   }
   command.body_dynamics = body_dynamics;
-  evaluate_flight(mission_, prepared_, stage, command, t_end, *state, 0.0, &eval);
+  const StateTrig trig(*state);
+  evaluate_flight(mission_, prepared_, stage, command, t_end, *state, trig, 0.0, &eval);
   if (!eval.derivative.allFinite()) return Status::kNonFiniteState;
-  const Status status = record(stage, t_end, *state, command, eval);
+  const Status status = record(stage, t_end, *state, trig, command, eval);
   if (!ok(status)) return status;
   if (eval.altitude_ft < kImpactAltitudeFt) return Status::kAltitudeBelowSurface;
   if (!ok(eval.body_status)) return eval.body_status;

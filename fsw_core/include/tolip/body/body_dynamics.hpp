@@ -106,6 +106,8 @@ struct BodyAngles {
   double beta_rad = 0.0;
 };
 BodyAngles body_angles_of_attack(double theta_rad, double chi_rad, const Matrix3& platform_to_local);
+// The same with the attitude's missile axes already computed (missile_axes_platform(theta, chi)).
+BodyAngles body_angles_of_attack(const MissileAxes& axes, const Matrix3& platform_to_local);
 
 // Sec. 11 forces: F_CNLX = M_alpha beta / (X_delta - X_CG), F_CNLZ = M_alpha alpha / (X_delta - X_CG),
 // F_mx = F_CNLX + F_alpha beta, F_mz = F_CNLZ + F_alpha alpha, resolved to P along m_x, m_z and to L
@@ -120,6 +122,9 @@ struct BodyForces {
 };
 BodyForces body_forces(const UnitMoments& moments, const BodyAngles& angles, double normal_force_lbf_per_rad,
                        double theta_rad, double chi_rad, const Matrix3& platform_to_local);
+// The same with the attitude's missile axes already computed.
+BodyForces body_forces(const UnitMoments& moments, const BodyAngles& angles, double normal_force_lbf_per_rad,
+                       const MissileAxes& axes, const Matrix3& platform_to_local);
 
 // One SIXD evaluation.
 struct BodyDynamicsInputs {
@@ -143,6 +148,9 @@ struct BodyDynamicsResult {
   UnitMoments moments;
   PlatformVelocityAngles velocity;
   SteadyAttitude attitude;
+  // missile_axes_platform(attitude.theta_rad, attitude.chi_rad): computed once per evaluation and
+  // shared by the angles, the forces and the caller (the thrust axis is axes.y).
+  MissileAxes axes;
   BodyAngles angles;
   BodyForces forces;
 };

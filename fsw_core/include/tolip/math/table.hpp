@@ -52,6 +52,17 @@ class Table {
     return y_[i] + slope_[i] * (x - x_[i]);
   }
 
+  // The same with a search hint: *hint is the interval of an earlier look-up (any int; -1 at the
+  // start). The interval holding x is tried first, then the next one, then the search; *hint
+  // becomes the interval used. The interval, and so the value, is the one the plain look-up finds,
+  // bit for bit: the hint only spares the search when consecutive look-ups stay close (the
+  // integration's stage times and Mach numbers).
+  double operator()(double x, int* hint) const {
+    const int i = hinted_interval(x, hint);
+    if (i < 0) return y_[0];
+    return y_[i] + slope_[i] * (x - x_[i]);
+  }
+
   // Value and dy/dx (zero outside the table).
   double value_and_slope(double x, double* slope) const {
     const int i = interval(x);
@@ -93,6 +104,15 @@ class Table {
       }
     }
     return lo;
+  }
+
+  int hinted_interval(double x, int* hint) const {
+    const int h = *hint;
+    if (h >= 0 && h + 1 < count_) {
+      if (x_[h] <= x && x < x_[h + 1]) return h;
+      if (h + 2 < count_ && x_[h + 1] <= x && x < x_[h + 2]) return *hint = h + 1;
+    }
+    return *hint = interval(x);
   }
 
   double x_[Capacity] = {};

@@ -19,6 +19,10 @@ struct InertialVelocity {
   double azimuth_rad = 0.0;            // psi_I, east of north
 };
 InertialVelocity inertial_velocity(const Constants& constants, const StateVector& state);
+// The same with the sines and cosines of the state's gamma, psi and lambda already at hand (a
+// trajectory point's, from its derivative evaluation): the same result, bit for bit.
+InertialVelocity inertial_velocity(const Constants& constants, const StateVector& state, double sin_gamma,
+                                   double cos_gamma, double sin_psi, double cos_psi, double cos_lambda);
 
 enum class OrbitType : int { kElliptic, kParabolic, kHyperbolic };
 
@@ -63,6 +67,10 @@ Status compute_orbit_elements(const Constants& constants, const StateVector& sta
 // both given by geocentric latitude and EARTH-FIXED longitude.
 double downrange_angle_rad(double launch_latitude_rad, double launch_longitude_rad, double latitude_rad,
                            double longitude_rad);
+// The same from the sines and cosines of both latitudes and the longitude difference
+// longitude - launch longitude (a flight's launch point is fixed, its point's latitude is at hand).
+double downrange_angle_rad(double sin_launch_latitude, double cos_launch_latitude, double sin_latitude,
+                           double cos_latitude, double longitude_difference_rad);
 // Small-angle crossrange of a dispersed point relative to the nominal point and azimuth psi_n
 // (positive to the right looking downrange), as a central angle.
 double crossrange_angle_rad(double nominal_latitude_rad, double nominal_longitude_rad,

@@ -6,6 +6,7 @@
 
 #include "tolip/core/state.hpp"
 #include "tolip/core/status.hpp"
+#include "tolip/frames/frames.hpp"
 #include "tolip/mission/mission.hpp"
 #include "tolip/trajectory/wind.hpp"
 #include "tolip/vehicle/prepared_case.hpp"
@@ -29,6 +30,22 @@ struct FlightPerturbation {
   double thrust_station_ft = 0.0;
 };
 
+// A flight's memo for evaluate_flight: the interval each table look-up found last (the next
+// evaluation's stage time and Mach usually fall in the same one: Table's hinted look-up) and the
+// sine and cosine of the last pitch attitude of a held or linear command (RK4's two midpoint
+// evaluations fly the same theta). Owned by one flight and never shared between threads; it only
+// spares work: every evaluation is the one computed without it, bit for bit.
+struct EvaluationScratch {
+  int thrust_hint = -1;
+  int weight_hint = -1;
+  int drag_hint = -1;
+  int lift_hint = -1;
+  bool has_theta = false;
+  double theta_rad = 0.0;
+  double sin_theta = 0.0;
+  double cos_theta = 0.0;
+};
+
 // The stage being flown.
 struct StageContext {
   int code = 0;
@@ -39,6 +56,7 @@ struct StageContext {
   // weight is this plus the stage's own consumable weight remaining.
   double weight_above_consumable_lb = 0.0;
   const FlightPerturbation* perturbation = nullptr;  // dispersed trajectories only
+  EvaluationScratch* scratch = nullptr;              // null: every look-up searched afresh
 };
 
 StageContext make_stage_context(const Mission& mission, const PreparedCase& prepared,
@@ -100,6 +118,11 @@ struct Evaluation {
 void evaluate_flight(const Mission& mission, const PreparedCase& prepared, const StageContext& stage,
                      const StepCommand& command, double t, const StateVector& state, double weight_offset_lb,
                      Evaluation* out);
+// The same with the state's sines and cosines already computed (trig = StateTrig(state)), for a
+// caller that needs them too.
+void evaluate_flight(const Mission& mission, const PreparedCase& prepared, const StageContext& stage,
+                     const StepCommand& command, double t, const StateVector& state, const StateTrig& trig,
+                     double weight_offset_lb, Evaluation* out);
 
 // True where the attitude at the start of a step is the alpha = 0 attitude of the state there,
 // whatever the pitch program says: the end of the zero-alpha window (IP(11)), where the next
