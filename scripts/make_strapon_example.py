@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Generate the second bundled example, examples/strapon/mission.toml (illustrative data).
+"""Generate the second bundled example, examples/strapon/mission.toml and five_elements.toml.
 
     python3 scripts/make_strapon_example.py [--out DIR]
 
@@ -16,6 +16,12 @@ A vehicle unlike the Scout-class one (docs/user-guide.md "A second example: stra
   a 28.5 deg launch site, so the launch azimuth is adjusted);
 * a spherical Earth without J2 (inverse flattening 0, J2 0; rotating);
 * a crude initial pitch program of a few straight lines, of the kind a user writes first.
+
+five_elements.toml is the same vehicle, site and crude start aimed at a five-element elliptic
+target: the three elements above plus the longitude of the ascending node (code 12, 30 deg, reached
+by adjusting the launch time of day, parameter 7, from the deck's 15:00 UT) and the argument of
+perigee (code 13, 50 deg, about 3.4 deg before the 53.4 deg where the three-element optimum puts
+its perigee: the in-plane shape of the ascent places it).
 
 Every figure is illustrative, chosen to be plausible for a small 1960s launcher; none is the data
 of a real vehicle. The thrust histories are constant with short ramps, the consumable weight the
@@ -47,6 +53,9 @@ TABLE_STEP_S = 5.0
 
 PERIGEE_ALTITUDE_NMI = 80.0
 APOGEE_ALTITUDE_NMI = 500.0
+
+NODE_LONGITUDE_DEG = 30.0          # five_elements.toml: inertial, from the vernal equinox
+ARGUMENT_OF_PERIGEE_DEG = 50.0     # five_elements.toml
 
 
 def fmt(value):
@@ -125,7 +134,7 @@ def orbit_targets():
     return rp, -MU_FT3_S2 / a
 
 
-def deck():
+def deck(five_elements=False):
     (t1, f1, w1, p1), (t2, f2, w2, p2), (t3, f3, w3, p3) = stage_tables()
     rp, two_e = orbit_targets()
     out = []
@@ -136,12 +145,20 @@ def deck():
     w("# Illustrative strap-on launcher (not the data of any real vehicle): two boosters burning in")
     w("# parallel with a liquid core (stages 1 and 2 back to back, no coast between them), a short")
     w("# separation coast and a long steered upper stage; an elliptic 80 x 500 n.mi. orbit at 40 deg")
-    w("# inclination given by its orbit elements; a spherical, J2-free, rotating Earth. The optimization")
+    if five_elements:
+        w("# inclination, its node at 30 deg and its perigee 50 deg from the node: five orbit elements;")
+        w("# a spherical, J2-free, rotating Earth. Launch time and azimuth are adjusted. The optimization")
+    else:
+        w("# inclination given by its orbit elements; a spherical, J2-free, rotating Earth. The optimization")
     w("# starts from a crude pitch program of four straight lines. docs/user-guide.md describes the case.")
     w("")
     w("[case]")
-    w('title = "STRAP-ON LAUNCHER (ILLUSTRATIVE), 80 X 500 NMI AT 40 DEG"')
-    w('heading = "MAXIMUM PAYLOAD FROM A CRUDE FOUR-LINE PITCH PROGRAM"')
+    if five_elements:
+        w('title = "STRAP-ON LAUNCHER (ILLUSTRATIVE), FIVE ORBIT ELEMENTS"')
+        w('heading = "80 X 500 NMI, I 40, NODE 30, PERIGEE 50 DEG FROM A CRUDE PROGRAM"')
+    else:
+        w('title = "STRAP-ON LAUNCHER (ILLUSTRATIVE), 80 X 500 NMI AT 40 DEG"')
+        w('heading = "MAXIMUM PAYLOAD FROM A CRUDE FOUR-LINE PITCH PROGRAM"')
     w('date = "2026-12-01"')
     w("")
     w("[options]  # data block 4, IP(n)")
@@ -266,6 +283,23 @@ def deck():
     w("deadband_optimization_deg = 0.2")
     w("deadband_linearization_deg = 0.05")
     w("")
+    if five_elements:
+        w("[[constraint]]  # longitude of the ascending node (inertial); the launch time places it")
+        w("code = 12")
+        w("desired_deg = " + fmt(NODE_LONGITUDE_DEG))
+        w("deadband_optimization_deg = 0.2")
+        w("deadband_linearization_deg = 0.05")
+        w("")
+        w("[[constraint]]  # argument of perigee; the in-plane shape of the ascent places it")
+        w("code = 13")
+        w("desired_deg = " + fmt(ARGUMENT_OF_PERIGEE_DEG))
+        w("deadband_optimization_deg = 0.5")
+        w("deadband_linearization_deg = 0.2")
+        w("")
+        w("[[adjustable_parameter]]  # launch time of day (the deck's 15:00 UT gives a node near 28 deg)")
+        w("code = 7")
+        w("weight = 1e-06                               # the manual's recommendation (data block 27)")
+        w("")
     w("[[adjustable_parameter]]  # launch azimuth")
     w("code = 6")
     w("weight = 2.0")
@@ -294,6 +328,8 @@ def main():
     os.makedirs(args.out, exist_ok=True)
     with open(os.path.join(args.out, "mission.toml"), "w", newline="\n") as f:
         f.write(deck())
+    with open(os.path.join(args.out, "five_elements.toml"), "w", newline="\n") as f:
+        f.write(deck(five_elements=True))
 
 
 if __name__ == "__main__":

@@ -115,10 +115,13 @@ bool within_deadbands(const Problem& problem, const double achieved[kMaxConstrai
   return tolip::within_deadbands(problem, 1, achieved);
 }
 
-// Constraint errors measured in deadbands (the guidance runs' figure of merit).
-double error_norm(const Problem& problem, const double achieved[kMaxConstraints]) {
+// Constraint errors measured in deadbands (the guidance runs' figure of merit), without the
+// constraints a guidance step defers (nullptr: none).
+double error_norm(const Problem& problem, const double achieved[kMaxConstraints],
+                  const bool* deferred = nullptr) {
   double sum = 0.0;
   for (int i = 1; i < problem.count; ++i) {
+    if (deferred != nullptr && deferred[i]) continue;
     const double e = correction(problem, i, achieved) / problem.deadband[i];
     sum += e * e;
   }
@@ -158,6 +161,9 @@ struct Steering {
   // The independent steerability of each constraint: sqrt(pivot dP^2), the deadbands the typical
   // control change dP^2 moves it with the others held (0 for the payoff and inactive constraints).
   double steerability_deadbands[kMaxConstraints] = {};
+  // Held because they are deferred (the argument of perigee while the shape is corrected, below):
+  // the guidance runs' figure of merit leaves them out too.
+  bool deferred[kMaxConstraints] = {};
   SquareMatrix matrix = SquareMatrix::Identity();  // integral of Lambda Lambda^T + S Y^-1 S^T (scaled)
   Eigen::LLT<SquareMatrix> cholesky;
 };
@@ -233,11 +239,30 @@ void hold_weak_directions(const Problem& problem, double dp2, SquareMatrix* m, S
   }
 }
 
+// Deferred argument of perigee (issue 17). The argument of perigee (13) is the orientation of the
+// ellipse in its plane: where the perigee lies depends on the orbit's shape, and its sensitivity
+// to the controls grows as 1 / e. From a crude start (a 0.38 eccentric, suborbital orbit whose
+// perigee lies 110 deg from the target's), its linearization is meaningless: one step asking for
+// the 110 deg wrecks energy and perigee radius, and no halving recovers. Guidance therefore
+// steers the shape first: while any other constraint is outside its deadband, the argument of
+// perigee is held (identity row and column, no requested change, judged by its deadband like a
+// weak direction), then steered with the others. Only decks constraining code 13 are affected.
+bool deferred_in_guidance(const Problem& problem, int i, const double achieved[kMaxConstraints]) {
+  if (problem.codes[i].kind != ConstraintQuantity::kArgumentOfPerigee) return false;
+  for (int j = 1; j < problem.count; ++j) {
+    if (j == i || problem.codes[j].kind == ConstraintQuantity::kArgumentOfPerigee) continue;
+    if (!(std::fabs(correction(problem, j, achieved)) <= problem.deadband[j])) return true;
+  }
+  return false;
+}
+
 Status build_steering(const Problem& problem, const BackwardRun& backward, const LaunchColumns& launch,
-                      const bool* free_points, double g0_, int first, double dp2, Steering* steering) {
+                      const bool* free_points, double g0_, int first, double dp2, Steering* steering,
+                      const bool* deferred = nullptr) {
   steering->first = first;
   for (int i = 0; i < kMaxConstraints; ++i) {
-    steering->held[i] = false;
+    steering->deferred[i] = deferred != nullptr && i >= first && i < problem.count && deferred[i];
+    steering->held[i] = steering->deferred[i];
     steering->steerability_deadbands[i] = 0.0;
   }
   SquareMatrix m = SquareMatrix::Zero();
@@ -564,7 +589,11 @@ void Iteration::record(RunKind kind, Status run_status, bool successful, double 
     r.payoff_partials[i] = partials_[i];
     // The initial nominal follows no backward run: nothing was steered or held.
     r.constraint_held[i] = kind != RunKind::kInitialNominal && result_->constraint_held[i];
-    if (r.constraint_held[i]) ++result_->held_runs[i];
+    if (r.constraint_held[i] && result_->constraint_deferred[i]) {
+      ++result_->deferred_runs[i];
+    } else if (r.constraint_held[i]) {
+      ++result_->held_runs[i];
+    }
   }
   if (ws_->observer != nullptr) ws_->observer->on_forward_run(r, *result_);
 }
@@ -637,12 +666,16 @@ Status Iteration::backward(int first, Steering* steering) {
   if (first == 0) {
     *steering = optimization;
   } else {
+    bool deferred[kMaxConstraints] = {};
+    for (int i = 1; i < problem_.count; ++i)
+      deferred[i] = deferred_in_guidance(problem_, i, nominal_achieved_);
     const Status guidance = build_steering(problem_, ws_->backward, launch_columns_, roles_.free,
-                                           ws_->mission.constants.g0_ft_s2, first, dp2, steering);
+                                           ws_->mission.constants.g0_ft_s2, first, dp2, steering, deferred);
     if (ok(status)) status = guidance;
   }
   for (int i = 0; i < kMaxConstraints; ++i) {
     result_->constraint_held[i] = steering->held[i];
+    result_->constraint_deferred[i] = steering->deferred[i];
     result_->steerability_deadbands[i] = steering->steerability_deadbands[i];
   }
   return status;
@@ -755,14 +788,14 @@ Status Iteration::run(const Mission& input) {
          result_->forward_runs < budget - 1) {
     status = backward(1, &steering);
     if (!ok(status)) return status;
-    const double before = error_norm(problem_, nominal_achieved_);
+    const double before = error_norm(problem_, nominal_achieved_, steering.deferred);
     double fraction = 1.0;
     for (int attempt = 0;; ++attempt, fraction *= 0.5) {
       ++result_->guidance_runs;
       status = fly_candidate(steering, corrections(nominal_achieved_), fraction);
       const bool flown = ok(status);
       if (!flown) ++result_->crashed_runs;
-      const bool better = flown && error_norm(problem_, candidate_achieved_) < before;
+      const bool better = flown && error_norm(problem_, candidate_achieved_, steering.deferred) < before;
       record(RunKind::kGuidance, status, better && within_deadbands(problem_, candidate_achieved_), 0.0);
       if (better || result_->forward_runs >= budget - 1) break;
       if (flown ? attempt >= kGuidanceStepHalvings : attempt >= kCrashRecoveryHalvings) break;
@@ -895,6 +928,8 @@ Status optimize_trajectory(const Mission& mission, OptimizerWorkspace* workspace
     result->constraint_held[i] = false;
     result->steerability_deadbands[i] = 0.0;
     result->held_runs[i] = 0;
+    result->constraint_deferred[i] = false;
+    result->deferred_runs[i] = 0;
   }
   Problem problem;
   Status status = make_problem(mission, &problem);

@@ -94,6 +94,8 @@ json held_constraints_json(const OptimizerResult& result, int rows) {
       entry["message"] = "constraint " + std::to_string(i) + " (code " + std::to_string(result.codes[i]) +
                          ") has no first-order effect: held by deadband";
     }
+    // Deferred (argument of perigee while the orbit's shape is corrected): member only when > 0.
+    if (result.deferred_runs[i] > 0) entry["deferred_runs"] = result.deferred_runs[i];
     array.push_back(std::move(entry));
   }
   return array;

@@ -393,6 +393,13 @@ void write_summary(Pager& pager, const OptimizationReport& report,
                ") HAS NO FIRST-ORDER EFFECT: HELD BY DEADBAND ON " + std::to_string(result.held_runs[i]) +
                " OF " + std::to_string(result.forward_runs) + " RUNS");
   }
+  for (int i = 1; i < std::min(result.constraint_count, kMaxConstraints); ++i) {
+    if (result.deferred_runs[i] == 0) continue;
+    pager.reserve(1);
+    pager.emit("   CONSTRAINT " + std::to_string(i) + " (CODE " + std::to_string(result.codes[i]) +
+               ") DEFERRED UNTIL THE OTHERS MET THEIR DEADBANDS ON " +
+               std::to_string(result.deferred_runs[i]) + " GUIDANCE RUNS");
+  }
   pager.emit(labelled("CASE RESULT",
                       ok(report.case_status)
                           ? std::string("kOk")

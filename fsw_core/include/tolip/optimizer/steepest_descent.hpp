@@ -101,6 +101,11 @@ struct OptimizerResult {
   bool constraint_held[kMaxConstraints] = {};
   double steerability_deadbands[kMaxConstraints] = {};
   int held_runs[kMaxConstraints] = {};
+  // Guidance runs on which constraint i was deferred instead (the argument of perigee while another
+  // constraint is outside its deadband: docs/theory/optimizer.md "Deferred argument of perigee");
+  // those runs are not counted in held_runs.
+  bool constraint_deferred[kMaxConstraints] = {};
+  int deferred_runs[kMaxConstraints] = {};
   // Forward runs that failed (below the surface, a non-finite state, ...) and were recovered from:
   // the next attempt started again from the last good nominal with a smaller step.
   int crashed_runs = 0;
