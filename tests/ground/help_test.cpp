@@ -28,6 +28,8 @@ const std::vector<CommandHelp>& every_command() {
       {"impact", {"DECK", "--csv", "--json"}},
       {"radar", {"DECK", "--csv", "--json"}},
       {"hardover", {"DECK", "--csv", "--json"}},
+      {"hil",
+       {"DECK", "--table", "--scenario", "--seed", "--rate-hz", "--telemetry", "--mission-id", "--json"}},
   };
   return commands;
 }
@@ -88,7 +90,8 @@ TEST(Help, UnknownCommandIsNamedAndTheCommandsListed) {
   EXPECT_EQ(
       result.err,
       "tolip: unknown command 'simulat'; the commands are: atmosphere, simulate, optimize, plot, export, "
-      "inspect, convert, montecarlo, impact, radar, hardover\nRun 'tolip --help' for more information.\n");
+      "inspect, convert, montecarlo, impact, radar, hardover, hil\nRun 'tolip --help' for more "
+      "information.\n");
   const CommandResult bare = run_tolip_executable({});
   EXPECT_EQ(bare.exit_code, 2);
   EXPECT_TRUE(contains(bare.err, "A subcommand is required")) << "no word at all: CLI11's own message";
