@@ -30,6 +30,8 @@ const std::vector<CommandHelp>& every_command() {
       {"impact", {"DECK", "--csv", "--json"}},
       {"radar", {"DECK", "--csv", "--json"}},
       {"hardover", {"DECK", "--csv", "--json"}},
+      {"hil",
+       {"DECK", "--table", "--scenario", "--seed", "--rate-hz", "--telemetry", "--mission-id", "--json"}},
   };
   return commands;
 }
@@ -90,7 +92,8 @@ TEST(Help, UnknownCommandIsNamedAndTheCommandsListed) {
   EXPECT_EQ(
       result.err,
       "tolip: unknown command 'simulat'; the commands are: atmosphere, simulate, optimize, plot, export, "
-      "inspect, convert, montecarlo, dispersions, impact, radar, hardover\nRun 'tolip --help' for more "
+      "inspect, convert, montecarlo, dispersions, impact, radar, hardover, hil
+Run 'tolip --help' for more "
       "information.\n");
   const CommandResult bare = run_tolip_executable({});
   EXPECT_EQ(bare.exit_code, 2);

@@ -134,6 +134,14 @@ const char* status_name(Status status) {
     case Status::kHardoverBodyDataMissing: return "kHardoverBodyDataMissing";
     case Status::kHardoverPointInvalid: return "kHardoverPointInvalid";
     case Status::kTooManyHardoverTurns: return "kTooManyHardoverTurns";
+    case Status::kHalPortMissing: return "kHalPortMissing";
+    case Status::kHalClockOverrun: return "kHalClockOverrun";
+    case Status::kHalSensorInvalid: return "kHalSensorInvalid";
+    case Status::kHalActuatorRejected: return "kHalActuatorRejected";
+    case Status::kHalTableStoreFailed: return "kHalTableStoreFailed";
+    case Status::kHalTelemetryFailed: return "kHalTelemetryFailed";
+    case Status::kHalDiscretesInvalid: return "kHalDiscretesInvalid";
+    case Status::kHalLinkFrameCorrupt: return "kHalLinkFrameCorrupt";
   }
   return "kUnknownStatus";
 }
@@ -387,6 +395,17 @@ const char* status_message(Status status) {
     case Status::kHardoverPointInvalid:
       return "a hardover turn must start at a moving point of powered stage 1, 2 or 3 before its burnout";
     case Status::kTooManyHardoverTurns: return "more hardover turns than the core holds";
+    case Status::kHalPortMissing:
+      return "a hardware-abstraction port of the flight application has no function or a non-positive clock "
+             "period";
+    case Status::kHalClockOverrun:
+      return "the minor-cycle clock reports an overrun: the previous cycle ran past its frame";
+    case Status::kHalSensorInvalid: return "the inertial platform gave no valid sample this cycle";
+    case Status::kHalActuatorRejected: return "the actuators refused the command";
+    case Status::kHalTableStoreFailed: return "the non-volatile table store could not be read";
+    case Status::kHalTelemetryFailed: return "the telemetry sink refused a frame";
+    case Status::kHalDiscretesInvalid: return "the stage discretes could not be read";
+    case Status::kHalLinkFrameCorrupt: return "a link frame was lost or failed its CRC";
   }
   return "unknown status";
 }

@@ -105,6 +105,84 @@ Status validate_hardover_data(const Mission& mission, const HardoverData& data, 
   return Status::kOk;
 }
 
+RigidBodyMoment rigid_body_moment(const Mission& mission, const HardoverData& data, const Evaluation& ev,
+                                  const RigidBodyInputs& in) {
+  RigidBodyMoment out;
+  const int code = in.body_stage;
+  const HardoverStage& stage = data.stages[code - 1];
+  const BodyDynamicsBlocks& body = mission.body_dynamics;
+  const Constants& constants = mission.constants;
+  const bool stage1 = code == 1;
+  double consumable_slope_lb_s = 0.0;
+  if (in.flown != nullptr && !in.flown->consumable_weight_lb.empty()) {
+    (void)in.flown->consumable_weight_lb.value_and_slope(in.flown_stage_time_s, &consumable_slope_lb_s);
+  }
+  const double mass_rate_slug_s = consumable_slope_lb_s / constants.g0_ft_s2;
+  double inertia_rate = 0.0;
+  const double inertia_slug_ft2 =
+      stage.pitch_inertia_slug_ft2.value_and_slope(in.body_stage_time_s, &inertia_rate);
+  const double alpha_rad = in.alpha_rad;
+  const double thrust_lbf = ev.net_thrust_lbf;
+  const double alpha_t_rad = in.misalignment_rad;
+  const double delta_rad = in.deflection_rad;
+  const double jet_force_lbf = in.jet_force_lbf;
+  const double eta_rate_rad_s = in.rate_rad_s;
+  const double v_ft_s = in.speed_ft_s;
+
+  // Atmosphere (stage 1 only): q, drag, lift, restoring and damping moments.
+  const double q_lbf_ft2 = stage1 ? ev.dynamic_pressure_lbf_ft2 : 0.0;
+  MomentConditions conditions;
+  conditions.stage = code;
+  conditions.cg_stage_time_s = in.body_stage_time_s;
+  conditions.mach = ev.mach;
+  conditions.dynamic_pressure_lbf_ft2 = q_lbf_ft2;
+  conditions.vacuum_thrust_lbf = ev.vacuum_thrust_lbf;
+  const bool lift = stage1 && in.flown != nullptr && q_lbf_ft2 > 0.0 && in.flown->uses_lift_table &&
+                    !mission.vehicle.lift_curve_slope_per_rad.empty();
+  const double c_l_alpha = lift ? mission.vehicle.lift_curve_slope_per_rad(ev.mach) : 0.0;
+  conditions.normal_force_slope_per_rad = c_l_alpha;
+  const UnitMoments moments = unit_moments(body, conditions);
+  const double x_cg_ft = moments.cg_station_ft;
+
+  double normal_force_lbf = 0.0;  // FORCEN
+  double moment_lbf_ft = 0.0;
+  double lift_lbf = 0.0;
+  if (stage1) {
+    lift_lbf = q_lbf_ft2 * in.flown->reference_area_ft2 * c_l_alpha * alpha_rad;
+    const double fin_force_lbf =
+        q_lbf_ft2 > 0.0 ? body.fin_normal_force_per_rad(ev.mach) * q_lbf_ft2 * body.reference_area_ft2 : 0.0;
+    normal_force_lbf = -thrust_lbf * alpha_t_rad -
+                       delta_rad * body.control_surfaces_per_plane *
+                           (fin_force_lbf + ev.vacuum_thrust_lbf * body.jet_vane_effectiveness_per_rad);
+    const double l_ref = body.reference_length_ft;
+    const double pitch_damping = q_lbf_ft2 > 0.0
+                                     ? data.pitch_damping_per_rad(ev.mach) * eta_rate_rad_s * l_ref *
+                                           q_lbf_ft2 * body.reference_area_ft2 * l_ref / (2.0 * v_ft_s)
+                                     : 0.0;
+    moment_lbf_ft = delta_rad * moments.m_delta_lbf_ft_per_rad +                      // 1. control deflection
+                    thrust_lbf * alpha_t_rad * (stage.thrust_station_ft - x_cg_ft) +  // 2. misalignment
+                    alpha_rad * moments.m_alpha_lbf_ft_per_rad +                      // 3. angle of attack
+                    pitch_damping;                                                    // 4. pitch damping
+  } else {
+    // Modes 1-3 (Sec. 16) take one of the two terms; the bench may apply both (a misaligned stage
+    // steered by its jets). A term whose force is zero adds an exact zero.
+    normal_force_lbf = -thrust_lbf * alpha_t_rad - jet_force_lbf;
+    moment_lbf_ft = thrust_lbf * alpha_t_rad * (stage.thrust_station_ft - x_cg_ft) +  // 2. misalignment
+                    jet_force_lbf * (stage.control_jet_station_ft - x_cg_ft);         // 6. control jets
+  }
+  // 5. jet damping, every stage.
+  const double jet_arm_ft = x_cg_ft - stage.thrust_station_ft;
+  moment_lbf_ft += eta_rate_rad_s * (mass_rate_slug_s * jet_arm_ft * jet_arm_ft + inertia_rate);
+
+  out.moment_lbf_ft = moment_lbf_ft;
+  out.normal_force_lbf = normal_force_lbf;
+  out.lift_lbf = lift_lbf;
+  out.dynamic_pressure_lbf_ft2 = q_lbf_ft2;
+  out.inertia_slug_ft2 = inertia_slug_ft2;
+  out.cg_station_ft = x_cg_ft;
+  return out;
+}
+
 Status compute_hardover_turn(const Mission& mission, const PreparedCase& prepared,
                              const Trajectory& trajectory, const HardoverData& data, int point,
                              HardoverMode mode, HardoverDirection direction, HardoverTurn* turn) {
@@ -122,7 +200,6 @@ Status compute_hardover_turn(const Mission& mission, const PreparedCase& prepare
   if (!(p.stage_time_s < line.duration_s - kTimeTolerance_s)) return Status::kHardoverPointInvalid;
   const StageContext context = make_stage_context(mission, prepared, line);
   const HardoverStage& stage = data.stages[code - 1];
-  const BodyDynamicsBlocks& body = mission.body_dynamics;
   const Constants& constants = mission.constants;
   const double sign = static_cast<double>(static_cast<int>(direction));
 
@@ -172,62 +249,26 @@ Status compute_hardover_turn(const Mission& mission, const PreparedCase& prepare
     Evaluation ev;
     evaluate_flight(mission, prepared, context, held, t_s, state, 0.0, &ev);
     const double mass_slug = ev.weight_lb / constants.g0_ft_s2;
-    double consumable_slope_lb_s = 0.0;
-    (void)context.data->consumable_weight_lb.value_and_slope(stage_time_s, &consumable_slope_lb_s);
-    const double mass_rate_slug_s = consumable_slope_lb_s / constants.g0_ft_s2;
-    double inertia_rate = 0.0;
-    const double inertia_slug_ft2 = stage.pitch_inertia_slug_ft2.value_and_slope(stage_time_s, &inertia_rate);
     const double alpha_rad = eta_rad - gamma_rad;
     const double thrust_lbf = ev.net_thrust_lbf;
-
-    // Atmosphere (stage 1 only): q, drag, lift, restoring and damping moments.
-    const double q_lbf_ft2 = stage1 ? ev.dynamic_pressure_lbf_ft2 : 0.0;
-    MomentConditions conditions;
-    conditions.stage = code;
-    conditions.cg_stage_time_s = stage_time_s;
-    conditions.mach = ev.mach;
-    conditions.dynamic_pressure_lbf_ft2 = q_lbf_ft2;
-    conditions.vacuum_thrust_lbf = ev.vacuum_thrust_lbf;
-    const StageData& stage_data = *context.data;
-    const bool lift = stage1 && q_lbf_ft2 > 0.0 && stage_data.uses_lift_table &&
-                      !mission.vehicle.lift_curve_slope_per_rad.empty();
-    const double c_l_alpha = lift ? mission.vehicle.lift_curve_slope_per_rad(ev.mach) : 0.0;
-    conditions.normal_force_slope_per_rad = c_l_alpha;
-    const UnitMoments moments = unit_moments(body, conditions);
-    const double x_cg_ft = moments.cg_station_ft;
-
-    double normal_force_lbf = 0.0;  // FORCEN
-    double moment_lbf_ft = 0.0;
-    double drag_lbf = 0.0;
-    double lift_lbf = 0.0;
-    if (stage1) {
-      drag_lbf = ev.drag_lbf;
-      lift_lbf = q_lbf_ft2 * stage_data.reference_area_ft2 * c_l_alpha * alpha_rad;
-      const double fin_force_lbf =
-          q_lbf_ft2 > 0.0 ? body.fin_normal_force_per_rad(ev.mach) * q_lbf_ft2 * body.reference_area_ft2
-                          : 0.0;
-      normal_force_lbf = -thrust_lbf * alpha_t_rad -
-                         delta_rad * body.control_surfaces_per_plane *
-                             (fin_force_lbf + ev.vacuum_thrust_lbf * body.jet_vane_effectiveness_per_rad);
-      const double l_ref = body.reference_length_ft;
-      const double pitch_damping = q_lbf_ft2 > 0.0
-                                       ? data.pitch_damping_per_rad(ev.mach) * eta_rate_rad_s * l_ref *
-                                             q_lbf_ft2 * body.reference_area_ft2 * l_ref / (2.0 * v_ft_s)
-                                       : 0.0;
-      moment_lbf_ft = delta_rad * moments.m_delta_lbf_ft_per_rad +  // 1. control deflection
-                      thrust_lbf * alpha_t_rad * (stage.thrust_station_ft - x_cg_ft) +  // 2. misalignment
-                      alpha_rad * moments.m_alpha_lbf_ft_per_rad +                      // 3. angle of attack
-                      pitch_damping;                                                    // 4. pitch damping
-    } else if (mode == HardoverMode::kThrustMisalignment) {
-      normal_force_lbf = -thrust_lbf * alpha_t_rad;
-      moment_lbf_ft = thrust_lbf * alpha_t_rad * (stage.thrust_station_ft - x_cg_ft);
-    } else {
-      normal_force_lbf = -jet_force_lbf;
-      moment_lbf_ft = jet_force_lbf * (stage.control_jet_station_ft - x_cg_ft);  // 6. control jets
-    }
-    // 5. jet damping, every stage.
-    const double jet_arm_ft = x_cg_ft - stage.thrust_station_ft;
-    moment_lbf_ft += eta_rate_rad_s * (mass_rate_slug_s * jet_arm_ft * jet_arm_ft + inertia_rate);
+    RigidBodyInputs body_inputs;
+    body_inputs.body_stage = code;
+    body_inputs.body_stage_time_s = stage_time_s;
+    body_inputs.flown = context.data;
+    body_inputs.flown_stage_time_s = stage_time_s;
+    body_inputs.alpha_rad = alpha_rad;
+    body_inputs.rate_rad_s = eta_rate_rad_s;
+    body_inputs.speed_ft_s = v_ft_s;
+    body_inputs.deflection_rad = delta_rad;
+    body_inputs.misalignment_rad = alpha_t_rad;
+    body_inputs.jet_force_lbf = jet_force_lbf;
+    const RigidBodyMoment loads = rigid_body_moment(mission, data, ev, body_inputs);
+    const double q_lbf_ft2 = loads.dynamic_pressure_lbf_ft2;
+    const double drag_lbf = stage1 ? ev.drag_lbf : 0.0;
+    const double lift_lbf = loads.lift_lbf;
+    const double normal_force_lbf = loads.normal_force_lbf;
+    const double moment_lbf_ft = loads.moment_lbf_ft;
+    const double inertia_slug_ft2 = loads.inertia_slug_ft2;
 
     // The thrust along the body axis is reduced by the misalignment (HARDOVR).
     const double axial_thrust_lbf = thrust_lbf * std::cos(alpha_t_rad);

@@ -4,6 +4,7 @@
 // "tolip: <message>", and returns the process exit code.
 #pragma once
 
+#include <cstdint>
 #include <ostream>
 #include <string>
 
@@ -93,6 +94,20 @@ struct HardoverCommandOptions {
   bool json = false;
 };
 int run_hardover_command(const HardoverCommandOptions& options, std::ostream& out, std::ostream& err);
+
+// `tolip hil DECK --table FILE [--scenario NAME] [--seed S] [--rate-hz HZ] [--telemetry FILE]
+// [--mission-id TEXT] [--json]`: the hardware-in-the-loop bench (docs/hil.md, docs/cli.md).
+struct HilCommandOptions {
+  std::string deck_path;
+  std::string table_path;
+  std::string scenario = "nominal";
+  std::uint64_t seed = 1;
+  double rate_hz = 50.0;
+  std::string telemetry_path;  // empty: no CSV
+  std::string mission_id;      // the identifier the table was exported with; empty: the case title's
+  bool json = false;
+};
+int run_hil_command(const HilCommandOptions& options, std::ostream& out, std::ostream& err);
 
 // `tolip convert DECK --to OUT [--format toml|cards] [--case N]`: a card deck to TOML and back.
 struct ConvertCommandOptions {

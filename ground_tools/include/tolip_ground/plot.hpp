@@ -133,6 +133,12 @@ std::vector<Figure> radar_figures(const nlohmann::json& document);
 // mode. None when the member is absent or holds no turn; throws PlotDataError when malformed.
 std::vector<Figure> hardover_figures(const nlohmann::json& document);
 
+// The HIL bench figures of a document (member "hil_series" of `tolip hil --json`, docs/cli.md):
+// "hil_theta" (commanded and flown theta), "hil_tracking_error" (pitch and yaw), "hil_actuators"
+// (fins in deg, jets in % of full force) against time. None without the member; throws
+// PlotDataError when malformed.
+std::vector<Figure> hil_figures(const nlohmann::json& document);
+
 // The largest magnitude drawn: a value beyond it (1e308, a diverged run) is drawn as a gap, like
 // a JSON null; gnuplot cannot scale an axis to it.
 inline constexpr double kMaxPlotMagnitude = 1e30;

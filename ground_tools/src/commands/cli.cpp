@@ -593,6 +593,51 @@ CLI::App* add_hardover_command(CLI::App& app, HardoverCommandOptions* options) {
   return hardover;
 }
 
+// tolip hil: the hardware-in-the-loop bench (docs/hil.md).
+CLI::App* add_hil_command(CLI::App& app, HilCommandOptions* options) {
+  CLI::App* hil = app.add_subcommand("hil",
+                                     "Hardware-in-the-loop bench (docs/hil.md): upload a table image\n"
+                                     "through the flight-side loader of the flight application, fly it\n"
+                                     "minor cycle by minor cycle against the simulated vehicle (the\n"
+                                     "core's trajectory physics with rigid-body pitch and yaw, actuators,\n"
+                                     "noisy sensors) from lift-off to the final burnout, with a fault\n"
+                                     "scenario, and report burnout and orbit beside the ground prediction.");
+  hil->footer(
+      "Examples:\n"
+      "  tolip export examples/scout/reference_optimum.toml --out table.bin\n"
+      "  tolip hil examples/scout/reference_optimum.toml --table table.bin\n"
+      "  tolip hil DECK --table table.bin --scenario sensor-dropout --telemetry tm.csv\n"
+      "Scenarios: nominal, upload-corrupt, upload-truncated, sensor-dropout,\n"
+      "actuator-stuck, actuator-hardover, late-ignition, thrust-misalignment,\n"
+      "link-loss, link-corruption (docs/hil.md).\n"
+      "Exit codes: 0 flown (whatever the vehicle did: the report says); 1 the\n"
+      "prediction or the bench failed, or the telemetry not written; 2 bad\n"
+      "command line, deck, table image (fails validation), unknown scenario,\n"
+      "or a table that does not belong to the deck (mission identifier,\n"
+      "segment count).\n"
+      "Full reference: docs/cli.md, 'tolip hil'; docs/hil.md.");
+  hil->add_option("DECK", options->deck_path,
+                  "TOML deck or card deck of one case, with data blocks 33-37 and 44-45")
+      ->required()
+      ->type_name("FILE");
+  hil->add_option("--table", options->table_path, "The table image to upload (tolip export)")
+      ->required()
+      ->type_name("FILE");
+  hil->add_option("--scenario", options->scenario, "Fault scenario (default nominal; docs/hil.md)")
+      ->type_name("NAME");
+  hil->add_option("--seed", options->seed, "Seed of the sensor noise and biases (default 1)")->type_name("S");
+  hil->add_option("--rate-hz", options->rate_hz, "Minor-cycle rate, 10-1000 Hz (default 50)")
+      ->type_name("HZ");
+  hil->add_option("--telemetry", options->telemetry_path, "Write the telemetry, one row per cycle, as CSV")
+      ->type_name("FILE");
+  hil->add_option("--mission-id", options->mission_id,
+                  "The mission identifier the table was exported with (default:\n"
+                  "the case title's, as tolip export gives it)")
+      ->type_name("TEXT");
+  hil->add_flag("--json", options->json, "Print one JSON document instead of the report (docs/cli.md)");
+  return hil;
+}
+
 // The program's own footer and version flag; exactly one command, whose options stay its own.
 void configure_program(CLI::App& app) {
   app.footer(kFooter);
@@ -647,6 +692,7 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
   ImpactCommandOptions impact_options;
   RadarCommandOptions radar_options;
   HardoverCommandOptions hardover_options;
+  HilCommandOptions hil_options;
   CLI::App* atmosphere = add_atmosphere_command(app, &atmosphere_options);
   CLI::App* simulate = add_simulate_command(app, &simulate_options);
   CLI::App* optimize = add_optimize_command(app, &optimize_options);
@@ -659,6 +705,7 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
   CLI::App* impact = add_impact_command(app, &impact_options);
   CLI::App* radar = add_radar_command(app, &radar_options);
   CLI::App* hardover = add_hardover_command(app, &hardover_options);
+  CLI::App* hil = add_hil_command(app, &hil_options);
 
   if (const int exit_code = parse_command_line(app, argc, argv, out, err); exit_code != kRunCommand) {
     return exit_code;
@@ -675,6 +722,7 @@ int run_tolip(int argc, const char* const* argv, std::ostream& out, std::ostream
   if (impact->parsed()) return run_impact_command(impact_options, out, err);
   if (radar->parsed()) return run_radar_command(radar_options, out, err);
   if (hardover->parsed()) return run_hardover_command(hardover_options, out, err);
+  if (hil->parsed()) return run_hil_command(hil_options, out, err);
   err << "tolip: no command given\n";
   return kExitBadInput;
 }

@@ -148,6 +148,15 @@ enum class Status : int {
   kHardoverBodyDataMissing,
   kHardoverPointInvalid,
   kTooManyHardoverTurns,
+  // Hardware abstraction and the flight application (hal/hal.hpp, docs/hil.md)
+  kHalPortMissing,
+  kHalClockOverrun,
+  kHalSensorInvalid,
+  kHalActuatorRejected,
+  kHalTableStoreFailed,
+  kHalTelemetryFailed,
+  kHalDiscretesInvalid,
+  kHalLinkFrameCorrupt,
 };
 
 const char* status_name(Status status);

@@ -101,6 +101,35 @@ struct HardoverFault {
   int stage = 0;       // 1-3, 4 for the CMQ table, 0 when not staged
 };
 
+// The rigid-body pitch (or yaw) loads of Sec. 16 at one evaluation, shared by the hardover turns
+// and the HIL bench's plant (hal_sim): the moment about the c.g. (1. control deflection delta
+// M_delta, 2. thrust misalignment T alpha_T (X_TA - X_CG), 3. angle of attack alpha M_alpha,
+// 4. pitch damping CMQ, stage 1; 5. jet damping, every stage; 6. control jets F (X_TAC - X_CG),
+// stages 2-3), the normal force FORCEN, the lift, I_yy. Stage 1 has the atmosphere; the upper
+// stages do not (Sec. 16). `ev` is evaluate_flight's evaluation of the stage flown.
+struct RigidBodyInputs {
+  int body_stage = 1;                // 1-3: the block 33-37 / 44-45 data of the stack flying
+  double body_stage_time_s = 0.0;    // time in that stage's tables (I_yy, c.g.)
+  const StageData* flown = nullptr;  // the stage flown: consumption rate, reference area, lift
+  double flown_stage_time_s = 0.0;   // its stage time
+  double alpha_rad = 0.0;            // angle of attack in the plane of the moment
+  double rate_rad_s = 0.0;           // attitude rate in that plane
+  double speed_ft_s = 0.0;           // V (pitch damping)
+  double deflection_rad = 0.0;       // stage 1 fins and jet vanes
+  double misalignment_rad = 0.0;     // thrust misalignment alpha_T
+  double jet_force_lbf = 0.0;        // stages 2-3: control-jet force (signed)
+};
+struct RigidBodyMoment {
+  double moment_lbf_ft = 0.0;
+  double normal_force_lbf = 0.0;          // FORCEN
+  double lift_lbf = 0.0;                  // stage 1: q S C_L_alpha alpha
+  double dynamic_pressure_lbf_ft2 = 0.0;  // the q used (0 in stages 2-3)
+  double inertia_slug_ft2 = 0.0;
+  double cg_station_ft = 0.0;
+};
+RigidBodyMoment rigid_body_moment(const Mission& mission, const HardoverData& data, const Evaluation& ev,
+                                  const RigidBodyInputs& inputs);
+
 // Checks what the turns of every stage 1-3 in the sequence need (block 45 step limits and counts,
 // the output interval against kMaxHardoverSamples, the I_yy tables positive, the CMQ table, the
 // body-dynamics data of blocks 33-37 for stage 1 and the c.g. histories of stages 1-3).
