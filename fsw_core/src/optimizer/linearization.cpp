@@ -453,7 +453,7 @@ void check_coast7_rates(const Mission& mission, const LinearProgram& p, Lineariz
 }
 
 Status linearize_pitch_program(const OptimizerWorkspace& optimized, LinearizationWorkspace* ws,
-                               LinearizationResult* out) {
+                               LinearizationResult* out, SixDGainDesign* gains) {
   out->forward_runs = 0;
   out->backward_runs = 0;
   out->programs_computed = 0;
@@ -604,6 +604,10 @@ Status linearize_pitch_program(const OptimizerWorkspace& optimized, Linearizatio
       if (!ok(status)) return out->status = status;
       for (int j = 0; j < c.count; ++j) out->point_mass_achieved[j] = achieved[j];
       out->body_dynamics = true;
+      if (gains != nullptr) {
+        status = gains->before_body_dynamics(ws->nominal, &ws->mission);
+        if (!ok(status)) return out->status = status;
+      }
       status = fly_linearized(*ws, true, &ws->candidate);
       ++out->reference_flights;
       if (!ok(status)) return out->status = status;

@@ -148,6 +148,17 @@ enum class Status : int {
   kHardoverBodyDataMissing,
   kHardoverPointInvalid,
   kTooManyHardoverTurns,
+  // Autopilot gain design and schedules (autopilot/autopilot_design.hpp, table/table_image.hpp; issue 16)
+  kAutopilotDampingNotPositive,
+  kAutopilotFrequencyNotPositive,
+  kAutopilotRequestInvalid,
+  kAutopilotModelInvalid,
+  kAutopilotFrequencyBeyondDeflection,
+  kAutopilotGainOutOfRange,
+  kTooManyGainSchedulePoints,
+  kGainScheduleStageInvalid,
+  kGainScheduleTimesNotMonotonic,
+  kTableImageVersion2,
 };
 
 const char* status_name(Status status);
