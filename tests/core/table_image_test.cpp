@@ -42,19 +42,24 @@ TEST(TableImage, HasTheDocumentedFixedSizeAndOffsets) {
   EXPECT_EQ(kTableHeaderSize, 96u);
   EXPECT_EQ(kOffsetStageGains, 168u);
   EXPECT_EQ(kOffsetSegments, 328u);
-  EXPECT_EQ(kOffsetCrc, 808u);
-  EXPECT_EQ(kTableImageSize, 812u);
+  EXPECT_EQ(kOffsetSchedule, 808u);
+  EXPECT_EQ(kOffsetCrc, 1576u);
+  EXPECT_EQ(kTableImageSize, 1580u);
+  EXPECT_EQ(kOffsetScheduleCapacity, 80u);
+  EXPECT_EQ(kOffsetScheduleRecordSize, 82u);
+  EXPECT_EQ(kOffsetScheduleCount, 84u);
+  EXPECT_EQ(kOffsetHeaderReserved2, 86u);
 }
 
 TEST(TableImage, WritesEveryHeaderFieldLittleEndianAtItsOffset) {
   const GuidanceTable table = test::make_test_table();
   const Image image = encode(table);
   EXPECT_EQ(std::memcmp(image.data(), "TLGT", 4), 0);
-  EXPECT_EQ(image[4], 0x02);  // format version 2, little-endian u16
+  EXPECT_EQ(image[4], 0x03);  // format version 3, little-endian u16
   EXPECT_EQ(image[5], 0x00);
   EXPECT_EQ(image[6], 96);    // header size
-  EXPECT_EQ(image[8], 0x2C);  // image size 812 = 0x032C
-  EXPECT_EQ(image[9], 0x03);
+  EXPECT_EQ(image[8], 0x2C);  // image size 1580 = 0x062C
+  EXPECT_EQ(image[9], 0x06);
   EXPECT_EQ(image[10], 0x00);
   EXPECT_EQ(image[12], 15);  // segment capacity
   EXPECT_EQ(image[14], 32);  // segment record size
@@ -69,10 +74,13 @@ TEST(TableImage, WritesEveryHeaderFieldLittleEndianAtItsOffset) {
   // Lift-off duration 3.0 = 0x4008000000000000, least significant byte first.
   const std::uint8_t three[8] = {0, 0, 0, 0, 0, 0, 0x08, 0x40};
   EXPECT_EQ(std::memcmp(image.data() + kOffsetLiftoffDuration, three, 8), 0);
-  // The CRC covers bytes [0, 808) and is stored little-endian at 808.
+  EXPECT_EQ(image[80], kMaxGainSchedulePoints);  // schedule capacity 24
+  EXPECT_EQ(image[82], 32);                      // schedule record size
+  EXPECT_EQ(get_u16_le(image.data() + 84), static_cast<std::uint16_t>(table.schedule_count));
+  // The CRC covers bytes [0, 1576) and is stored little-endian at 1576.
   const std::uint32_t crc = crc32(image.data(), kOffsetCrc);
-  EXPECT_EQ(image[808], crc & 0xFFu);
-  EXPECT_EQ(image[811], (crc >> 24) & 0xFFu);
+  EXPECT_EQ(image[1576], crc & 0xFFu);
+  EXPECT_EQ(image[1579], (crc >> 24) & 0xFFu);
   EXPECT_EQ(stored_table_crc(image.data()), crc);
 }
 
@@ -81,7 +89,7 @@ TEST(TableImage, UnusedSegmentRecordsAreZero) {
   const Image image = encode(table);
   for (std::size_t i =
            kOffsetSegments + static_cast<std::size_t>(table.segment_count) * kTableSegmentRecordSize;
-       i < kOffsetCrc; ++i) {
+       i < kOffsetSchedule; ++i) {
     ASSERT_EQ(image[i], 0) << "byte " << i;
   }
 }

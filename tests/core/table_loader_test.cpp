@@ -133,8 +133,8 @@ TEST_F(TableLoader, RejectsOversizedImageAndKeepsActiveTable) {
   Image image = candidate_;
   image.push_back(0);
   expect_rejected_keeping_active(image, Status::kTableImageSizeMismatch, "one byte long");
-  expect_rejected_keeping_active(patched([](std::uint8_t* b) { put_u32_le(b + kOffsetImageSize, 813); }),
-                                 Status::kTableImageSizeMismatch, "size field 813");
+  expect_rejected_keeping_active(patched([](std::uint8_t* b) { put_u32_le(b + kOffsetImageSize, 1581); }),
+                                 Status::kTableImageSizeMismatch, "size field 1581");
 }
 
 TEST_F(TableLoader, RejectsBadMagicAndKeepsActiveTable) {
@@ -146,8 +146,11 @@ TEST_F(TableLoader, RejectsBadMagicAndKeepsActiveTable) {
 TEST_F(TableLoader, RejectsWrongVersionAndKeepsActiveTable) {
   expect_rejected_keeping_active(patched([](std::uint8_t* b) { put_u16_le(b + kOffsetFormatVersion, 1); }),
                                  Status::kTableImageUnsupportedVersion, "version 1");
-  expect_rejected_keeping_active(patched([](std::uint8_t* b) { put_u16_le(b + kOffsetFormatVersion, 3); }),
-                                 Status::kTableImageUnsupportedVersion, "version 3");
+  expect_rejected_keeping_active(patched([](std::uint8_t* b) { put_u16_le(b + kOffsetFormatVersion, 2); }),
+                                 Status::kTableImageUnsupportedVersion,
+                                 "version 2 field in a version-3 image");
+  expect_rejected_keeping_active(patched([](std::uint8_t* b) { put_u16_le(b + kOffsetFormatVersion, 4); }),
+                                 Status::kTableImageUnsupportedVersion, "version 4");
   expect_rejected_keeping_active(patched([](std::uint8_t* b) { put_u16_le(b + kOffsetFormatVersion, 0); }),
                                  Status::kTableImageUnsupportedVersion, "version 0");
 }
@@ -241,13 +244,16 @@ TEST_F(TableLoader, RejectsRateOutsideLimitsAndKeepsActiveTable) {
 TEST_F(TableLoader, RejectsReservedBytesAndBadTextAndKeepsActiveTable) {
   expect_rejected_keeping_active(patched([](std::uint8_t* b) { b[kOffsetHeaderReserved1] = 1; }),
                                  Status::kTableImageReservedBytesSet, "header reserved word");
-  expect_rejected_keeping_active(patched([](std::uint8_t* b) { b[kOffsetHeaderReserved2 + 15] = 1; }),
-                                 Status::kTableImageReservedBytesSet, "header reserved tail");
+  expect_rejected_keeping_active(
+      patched([](std::uint8_t* b) { b[kOffsetHeaderReserved2 + kHeaderReserved2Bytes - 1] = 1; }),
+      Status::kTableImageReservedBytesSet, "header reserved tail");
   expect_rejected_keeping_active(
       patched([](std::uint8_t* b) { b[kOffsetSegments + kSegmentOffsetReserved] = 1; }),
       Status::kTableImageReservedBytesSet, "segment reserved bytes");
-  expect_rejected_keeping_active(patched([](std::uint8_t* b) { b[kOffsetCrc - 1] = 1; }),
+  expect_rejected_keeping_active(patched([](std::uint8_t* b) { b[kOffsetSchedule - 1] = 1; }),
                                  Status::kTableImageReservedBytesSet, "unused segment record");
+  expect_rejected_keeping_active(patched([](std::uint8_t* b) { b[kOffsetCrc - 1] = 1; }),
+                                 Status::kTableImageReservedBytesSet, "unused gain schedule record");
   expect_rejected_keeping_active(patched([](std::uint8_t* b) { b[kOffsetMissionId + 2] = 0x07; }),
                                  Status::kTableImageTextInvalid, "control character in mission id");
   expect_rejected_keeping_active(patched([](std::uint8_t* b) { b[kOffsetMissionId + 31] = 'Z'; }),

@@ -92,8 +92,7 @@ TEST(Help, UnknownCommandIsNamedAndTheCommandsListed) {
   EXPECT_EQ(
       result.err,
       "tolip: unknown command 'simulat'; the commands are: atmosphere, simulate, optimize, plot, export, "
-      "inspect, convert, montecarlo, dispersions, impact, radar, hardover, hil
-Run 'tolip --help' for more "
+      "inspect, convert, montecarlo, dispersions, impact, radar, hardover, hil\nRun 'tolip --help' for more "
       "information.\n");
   const CommandResult bare = run_tolip_executable({});
   EXPECT_EQ(bare.exit_code, 2);

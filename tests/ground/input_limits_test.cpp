@@ -35,7 +35,7 @@ TEST(InputLimits, InspectOfAnEndlessDeviceStopsAtTheImageSizeAndExitsTwo) {
   EXPECT_EQ(result.exit_code, 2) << result.err;
   EXPECT_TRUE(result.out.empty()) << result.out;
   EXPECT_EQ(result.err,
-            "tolip: /dev/zero: more than 812 bytes: a guidance table image is at most 812 bytes "
+            "tolip: /dev/zero: more than 1580 bytes: a guidance table image is at most 1580 bytes "
             "(docs/cli.md, \"Input limits\")\n");
 }
 

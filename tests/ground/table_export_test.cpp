@@ -312,8 +312,8 @@ TEST(ExportCli, CHeaderHoldsTheImageBytesInTheTableSection) {
   EXPECT_TRUE(contains(result.out, "pitch_table.h"));
   const std::string text = read_text_file(header);
   EXPECT_TRUE(contains(text, "__attribute__((section(\".tolip_table\")"));
-  EXPECT_TRUE(contains(text, "const uint8_t flight_table[812] = {"));
-  EXPECT_TRUE(contains(text, "extern const uint8_t flight_table[812];"));
+  EXPECT_TRUE(contains(text, "const uint8_t flight_table[1580] = {"));
+  EXPECT_TRUE(contains(text, "extern const uint8_t flight_table[1580];"));
   // The array's bytes, in order, are the .bin file.
   Image parsed;
   std::size_t at = text.find("= {");
@@ -449,7 +449,7 @@ TEST(InspectCli, PrintsAValidImageInEngineeringUnits) {
   ASSERT_EQ(result.exit_code, 0) << result.err;
   EXPECT_TRUE(result.err.empty()) << result.err;
   for (const char* part :
-       {"guidance table image: valid", "format version       2", "812 bytes",
+       {"guidance table image: valid", "format version       3", "1580 bytes",
         "SCOUT-CLASS 4-STAGE, WALLOPS ISL", "1970-01-01T00:00:00Z", "lift-off duration    3.000000 s",
         "max 5.000000 deg/s", "max deflection       10.000000 deg", "theta -22.259653370 deg",
         "segments             10 of 15", "K_theta   1.200000  K_q   0.350000"}) {

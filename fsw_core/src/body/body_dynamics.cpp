@@ -20,6 +20,33 @@ int clamp_stage(int stage) {
 
 }  // namespace
 
+AutopilotGains scheduled_stage1_gains(const BodyDynamicsBlocks& data, double stage_time_s) {
+  AutopilotGains g;
+  g.position_gain = data.position_gain[0];
+  g.rate_gain_s = data.rate_gain_s[0];
+  const int n = data.stage1_schedule_count;
+  if (n <= 0 || n > kMaxGainSchedulePointsPerStage) return g;
+  const double* t = data.stage1_schedule_time_s;
+  if (!(stage_time_s > t[0])) {
+    g.position_gain = data.stage1_schedule_k_theta[0];
+    g.rate_gain_s = data.stage1_schedule_k_q_s[0];
+    return g;
+  }
+  if (!(stage_time_s < t[n - 1])) {
+    g.position_gain = data.stage1_schedule_k_theta[n - 1];
+    g.rate_gain_s = data.stage1_schedule_k_q_s[n - 1];
+    return g;
+  }
+  int j = 0;
+  while (j + 2 < n && !(stage_time_s < t[j + 1])) ++j;
+  const double f = (stage_time_s - t[j]) / (t[j + 1] - t[j]);
+  g.position_gain = data.stage1_schedule_k_theta[j] +
+                    f * (data.stage1_schedule_k_theta[j + 1] - data.stage1_schedule_k_theta[j]);
+  g.rate_gain_s =
+      data.stage1_schedule_k_q_s[j] + f * (data.stage1_schedule_k_q_s[j + 1] - data.stage1_schedule_k_q_s[j]);
+  return g;
+}
+
 UnitMoments unit_moments(const BodyDynamicsBlocks& data, const MomentConditions& c) {
   const int k = clamp_stage(c.stage) - 1;
   UnitMoments m;
@@ -152,6 +179,8 @@ Status evaluate_body_dynamics(const BodyDynamicsBlocks& data, const BodyDynamics
   AutopilotGains gains;
   gains.position_gain = data.position_gain[k];
   gains.rate_gain_s = data.rate_gain_s[k];
+  if (k == 0 && data.stage1_schedule_count > 0)
+    gains = scheduled_stage1_gains(data, in.conditions.cg_stage_time_s);
   const bool misaligned = in.misalignment_pitch_rad != 0.0 || in.misalignment_yaw_rad != 0.0;
   AutopilotCommand command = in.command;
   const double thrust_lever_ft = in.thrust_station_ft - out->moments.cg_station_ft;  // X_T - XCGL

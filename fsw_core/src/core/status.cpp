@@ -142,6 +142,16 @@ const char* status_name(Status status) {
     case Status::kHalTelemetryFailed: return "kHalTelemetryFailed";
     case Status::kHalDiscretesInvalid: return "kHalDiscretesInvalid";
     case Status::kHalLinkFrameCorrupt: return "kHalLinkFrameCorrupt";
+    case Status::kAutopilotDampingNotPositive: return "kAutopilotDampingNotPositive";
+    case Status::kAutopilotFrequencyNotPositive: return "kAutopilotFrequencyNotPositive";
+    case Status::kAutopilotRequestInvalid: return "kAutopilotRequestInvalid";
+    case Status::kAutopilotModelInvalid: return "kAutopilotModelInvalid";
+    case Status::kAutopilotFrequencyBeyondDeflection: return "kAutopilotFrequencyBeyondDeflection";
+    case Status::kAutopilotGainOutOfRange: return "kAutopilotGainOutOfRange";
+    case Status::kTooManyGainSchedulePoints: return "kTooManyGainSchedulePoints";
+    case Status::kGainScheduleStageInvalid: return "kGainScheduleStageInvalid";
+    case Status::kGainScheduleTimesNotMonotonic: return "kGainScheduleTimesNotMonotonic";
+    case Status::kTableImageVersion2: return "kTableImageVersion2";
   }
   return "kUnknownStatus";
 }
@@ -406,6 +416,27 @@ const char* status_message(Status status) {
     case Status::kHalTelemetryFailed: return "the telemetry sink refused a frame";
     case Status::kHalDiscretesInvalid: return "the stage discretes could not be read";
     case Status::kHalLinkFrameCorrupt: return "a link frame was lost or failed its CRC";
+    case Status::kAutopilotDampingNotPositive: return "autopilot damping ratio must be positive";
+    case Status::kAutopilotFrequencyNotPositive: return "autopilot natural frequency must be positive";
+    case Status::kAutopilotRequestInvalid:
+      return "autopilot design attitude error and deflection limit must be positive, actuator time constant "
+             "not negative";
+    case Status::kAutopilotModelInvalid:
+      return "no short-period model at this point: pitch inertia and control moment M_delta must be positive";
+    case Status::kAutopilotFrequencyBeyondDeflection:
+      return "the deflection limit cannot deliver the requested autopilot frequency for the design attitude "
+             "error";
+    case Status::kAutopilotGainOutOfRange:
+      return "designed autopilot gain outside the table's range [0, 100]";
+    case Status::kTooManyGainSchedulePoints: return "more gain schedule points than the table holds";
+    case Status::kGainScheduleStageInvalid:
+      return "gain schedule record of a stage code outside 1-10, or records not in flight order";
+    case Status::kGainScheduleTimesNotMonotonic:
+      return "gain schedule times not strictly increasing within a stage";
+    case Status::kTableImageVersion2:
+      return "table image format version 2 (812 bytes, no autopilot gain schedule): this loader reads "
+             "version 3 "
+             "only; export the case again";
   }
   return "unknown status";
 }

@@ -155,10 +155,10 @@ RigidBodyMoment rigid_body_moment(const Mission& mission, const HardoverData& da
                        delta_rad * body.control_surfaces_per_plane *
                            (fin_force_lbf + ev.vacuum_thrust_lbf * body.jet_vane_effectiveness_per_rad);
     const double l_ref = body.reference_length_ft;
-    const double pitch_damping = q_lbf_ft2 > 0.0
-                                     ? data.pitch_damping_per_rad(ev.mach) * eta_rate_rad_s * l_ref *
-                                           q_lbf_ft2 * body.reference_area_ft2 * l_ref / (2.0 * v_ft_s)
-                                     : 0.0;
+    const double pitch_damping = q_lbf_ft2 > 0.0 ? aerodynamic_pitch_damping_moment(
+                                                       data.pitch_damping_per_rad(ev.mach), eta_rate_rad_s,
+                                                       l_ref, q_lbf_ft2, body.reference_area_ft2, v_ft_s)
+                                                 : 0.0;
     moment_lbf_ft = delta_rad * moments.m_delta_lbf_ft_per_rad +                      // 1. control deflection
                     thrust_lbf * alpha_t_rad * (stage.thrust_station_ft - x_cg_ft) +  // 2. misalignment
                     alpha_rad * moments.m_alpha_lbf_ft_per_rad +                      // 3. angle of attack
@@ -172,7 +172,7 @@ RigidBodyMoment rigid_body_moment(const Mission& mission, const HardoverData& da
   }
   // 5. jet damping, every stage.
   const double jet_arm_ft = x_cg_ft - stage.thrust_station_ft;
-  moment_lbf_ft += eta_rate_rad_s * (mass_rate_slug_s * jet_arm_ft * jet_arm_ft + inertia_rate);
+  moment_lbf_ft += jet_damping_moment(eta_rate_rad_s, mass_rate_slug_s, jet_arm_ft, inertia_rate);
 
   out.moment_lbf_ft = moment_lbf_ft;
   out.normal_force_lbf = normal_force_lbf;

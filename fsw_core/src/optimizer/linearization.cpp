@@ -584,15 +584,22 @@ Status next_program(const LinearConstraints& c, const LinearProgram& base, const
 // the constraints and the rate limits are met again. The first 6D flight, of the accepted program
 // itself, is the trajectory the next backward run linearizes about: the counterpart of the
 // manual's backward run, which integrates the 6D trajectory itself, and not a linearization
-// attempt (docs/theory/linearization.md). Records the point-mass result first.
+// attempt (docs/theory/linearization.md). Records the point-mass result first. With designed
+// autopilot gains (`gains`, issue 16) the schedule is designed along the accepted point-mass
+// trajectory before the first 6D flight.
 Status switch_to_body_dynamics(const LinearConstraints& c, const LinearProgram& program,
-                               LinearizationWorkspace* ws, double* achieved, LinearizationResult* out) {
+                               SixDGainDesign* gains, LinearizationWorkspace* ws, double* achieved,
+                               LinearizationResult* out) {
   out->point_mass_met = true;
   out->point_mass_program = program;
   Status status = linearized_payoff(ws->mission, ws->nominal, &out->point_mass_payoff);
   if (!ok(status)) return status;
   for (int j = 0; j < c.count; ++j) out->point_mass_achieved[j] = achieved[j];
   out->body_dynamics = true;
+  if (gains != nullptr) {
+    status = gains->before_body_dynamics(ws->nominal, &ws->mission);
+    if (!ok(status)) return status;
+  }
   status = fly_linearized(*ws, true, &ws->candidate);
   ++out->reference_flights;
   if (!ok(status)) return status;
@@ -622,7 +629,7 @@ Status record_result(const LinearConstraints& c, const LinearProgram& program, c
 }  // namespace
 
 Status linearize_pitch_program(const OptimizerWorkspace& optimized, LinearizationWorkspace* ws,
-                               LinearizationResult* out) {
+                               LinearizationResult* out, SixDGainDesign* gains) {
   out->forward_runs = 0;
   out->backward_runs = 0;
   out->programs_computed = 0;
@@ -676,7 +683,7 @@ Status linearize_pitch_program(const OptimizerWorkspace& optimized, Linearizatio
     success = out->rate_limits_met && out->constraints_met;
 
     if (success && six_d_after_success && !out->body_dynamics) {
-      status = switch_to_body_dynamics(c, program, ws, achieved, out);
+      status = switch_to_body_dynamics(c, program, gains, ws, achieved, out);
       if (!ok(status)) return out->status = status;
       out->constraints_met = within_deadbands(c, 0, achieved);
       success = out->rate_limits_met && out->constraints_met;

@@ -48,8 +48,10 @@ Status GuidanceExecutor::step(double t, GuidanceCommand* command) const {
 
   GuidanceCommand out;
   out.stage_code = stage;
-  out.k_theta = table->gains[stage - 1].k_theta;
-  out.k_q_s = table->gains[stage - 1].k_q_s;
+  // The gains in force: the stage's schedule (version 3) at its stage time, else its constant record.
+  const StageGains gains = scheduled_gains(*table, stage, t - stage_start_s_[stage - 1]);
+  out.k_theta = gains.k_theta;
+  out.k_q_s = gains.k_q_s;
   out.max_deflection_rad = table->max_deflection_rad;
 
   // Spun stages (IP(9), the one rule of tolip::stage_is_spun) hold the table's attitudes; stages 4

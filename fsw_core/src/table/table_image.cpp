@@ -140,6 +140,14 @@ Status validate_guidance_table(const GuidanceTable& t) {
       return Status::kValueNotFinite;
     }
   }
+  if (t.schedule_count < 0 || t.schedule_count > kMaxGainSchedulePoints)
+    return Status::kTooManyGainSchedulePoints;
+  for (int i = 0; i < t.schedule_count; ++i) {
+    const GainSchedulePoint& p = t.schedule[i];
+    if (!std::isfinite(p.stage_time_s) || !std::isfinite(p.k_theta) || !std::isfinite(p.k_q_s)) {
+      return Status::kValueNotFinite;
+    }
+  }
 
   // Documented ranges.
   if (t.spin_option < 0 || t.spin_option > 3) return Status::kValueOutOfRange;
@@ -187,6 +195,25 @@ Status validate_guidance_table(const GuidanceTable& t) {
     }
   }
 
+  // Gain schedule (version 3): stages that fly an autopilot, flight order, strictly increasing
+  // stage times within a stage, gains in the constant records' range.
+  for (int i = 0; i < t.schedule_count; ++i) {
+    const GainSchedulePoint& p = t.schedule[i];
+    if (!is_segment_stage(t.spin_option, p.stage_code)) return Status::kGainScheduleStageInvalid;
+    if (!in_range(p.stage_time_s, 0.0, kTableMaxSegmentStartS) || !in_range(p.k_theta, 0.0, kTableMaxGain) ||
+        !in_range(p.k_q_s, 0.0, kTableMaxGain)) {
+      return Status::kValueOutOfRange;
+    }
+    if (i > 0) {
+      const GainSchedulePoint& a = t.schedule[i - 1];
+      const int order_a = flight_order_index(a.stage_code);
+      const int order_b = flight_order_index(p.stage_code);
+      if (order_b < order_a) return Status::kGainScheduleStageInvalid;
+      if (order_b == order_a && !(p.stage_time_s > a.stage_time_s))
+        return Status::kGainScheduleTimesNotMonotonic;
+    }
+  }
+
   // Rates inside the limit the image itself carries.
   const double rate_limit = t.max_pitch_rate_rad_s * (1.0 + kTableRateLimitRelativeTolerance);
   for (int i = 0; i < t.segment_count; ++i) {
@@ -213,6 +240,9 @@ Status encode_table_image(const GuidanceTable& t, std::uint8_t* image, std::size
   put_u16_le(image + kOffsetSegmentCount, static_cast<std::uint16_t>(t.segment_count));
   put_u16_le(image + kOffsetStageGainCount, static_cast<std::uint16_t>(kTableStageGainCount));
   put_u16_le(image + kOffsetSpinOption, static_cast<std::uint16_t>(t.spin_option));
+  put_u16_le(image + kOffsetScheduleCapacity, static_cast<std::uint16_t>(kMaxGainSchedulePoints));
+  put_u16_le(image + kOffsetScheduleRecordSize, static_cast<std::uint16_t>(kTableScheduleRecordSize));
+  put_u16_le(image + kOffsetScheduleCount, static_cast<std::uint16_t>(t.schedule_count));
   put_u64_le(image + kOffsetCreatedUnixS, static_cast<std::uint64_t>(t.created_unix_s));
   put_text(image + kOffsetMissionId, t.mission_id, kTableMissionIdBytes);
   put_text(image + kOffsetGeneratorVersion, t.generator_version, kTableGeneratorVersionBytes);
@@ -239,14 +269,35 @@ Status encode_table_image(const GuidanceTable& t, std::uint8_t* image, std::size
     put_f64_le(record + kSegmentOffsetTheta, s.theta_start_rad);
     put_f64_le(record + kSegmentOffsetRate, s.rate_rad_s);
   }
+  for (int i = 0; i < t.schedule_count; ++i) {
+    std::uint8_t* record = image + kOffsetSchedule + static_cast<std::size_t>(i) * kTableScheduleRecordSize;
+    const GainSchedulePoint& p = t.schedule[i];
+    put_u16_le(record + kScheduleOffsetStageCode, static_cast<std::uint16_t>(p.stage_code));
+    put_f64_le(record + kScheduleOffsetTime, p.stage_time_s);
+    put_f64_le(record + kScheduleOffsetKTheta, p.k_theta);
+    put_f64_le(record + kScheduleOffsetKq, p.k_q_s);
+  }
   reseal_table_image(image);
   return Status::kOk;
 }
 
 // ---- decoding ------------------------------------------------------------------------------------
 
-Status decode_table_image(const std::uint8_t* image, std::size_t size, GuidanceTable* table) {
+Status table_image_size_status(const std::uint8_t* image, std::size_t size) {
+  // A version-2 image (812 bytes, no gain schedule) is named by its version, not by its size.
+  if (image != nullptr && size == kTableVersion2ImageSize && image[0] == kTableMagic[0] &&
+      image[1] == kTableMagic[1] && image[2] == kTableMagic[2] && image[3] == kTableMagic[3] &&
+      get_u16_le(image + kOffsetFormatVersion) == 2u) {
+    return Status::kTableImageVersion2;
+  }
   if (image == nullptr || size < kTableImageSize) return Status::kTableImageTruncated;
+  if (size > kTableImageSize) return Status::kTableImageSizeMismatch;
+  return Status::kOk;
+}
+
+Status decode_table_image(const std::uint8_t* image, std::size_t size, GuidanceTable* table) {
+  const Status sized = table_image_size_status(image, size);
+  if (!ok(sized)) return sized;
   if (size > kTableImageSize) return Status::kTableImageSizeMismatch;
   for (std::size_t i = 0; i < 4; ++i) {
     if (image[kOffsetMagic + i] != kTableMagic[i]) return Status::kTableImageBadMagic;
@@ -258,15 +309,28 @@ Status decode_table_image(const std::uint8_t* image, std::size_t size, GuidanceT
   if (get_u16_le(image + kOffsetHeaderSize) != kTableHeaderSize ||
       get_u16_le(image + kOffsetSegmentCapacity) != static_cast<std::uint16_t>(kMaxLinearSegments) ||
       get_u16_le(image + kOffsetSegmentRecordSize) != kTableSegmentRecordSize ||
-      get_u16_le(image + kOffsetStageGainCount) != kTableStageGainCount) {
+      get_u16_le(image + kOffsetStageGainCount) != kTableStageGainCount ||
+      get_u16_le(image + kOffsetScheduleCapacity) != static_cast<std::uint16_t>(kMaxGainSchedulePoints) ||
+      get_u16_le(image + kOffsetScheduleRecordSize) != kTableScheduleRecordSize) {
     return Status::kTableImageLayoutMismatch;
   }
   if (crc32(image, kOffsetCrc) != stored_table_crc(image)) return Status::kTableImageCrcMismatch;
 
   const std::uint16_t count = get_u16_le(image + kOffsetSegmentCount);
   if (count > static_cast<std::uint16_t>(kMaxLinearSegments)) return Status::kTooManyLinearSegments;
-  if (!all_zero(image + kOffsetHeaderReserved1, 2) || !all_zero(image + kOffsetHeaderReserved2, 16)) {
+  const std::uint16_t schedule_count = get_u16_le(image + kOffsetScheduleCount);
+  if (schedule_count > static_cast<std::uint16_t>(kMaxGainSchedulePoints))
+    return Status::kTooManyGainSchedulePoints;
+  if (!all_zero(image + kOffsetHeaderReserved1, 2) ||
+      !all_zero(image + kOffsetHeaderReserved2, kHeaderReserved2Bytes)) {
     return Status::kTableImageReservedBytesSet;
+  }
+  for (std::size_t i = 0; i < static_cast<std::size_t>(kMaxGainSchedulePoints); ++i) {
+    const std::uint8_t* record = image + kOffsetSchedule + i * kTableScheduleRecordSize;
+    const bool used = i < schedule_count;
+    if (used ? !all_zero(record + kScheduleOffsetReserved, 6) : !all_zero(record, kTableScheduleRecordSize)) {
+      return Status::kTableImageReservedBytesSet;
+    }
   }
   for (std::size_t i = 0; i < static_cast<std::size_t>(kMaxLinearSegments); ++i) {
     const std::uint8_t* record = image + kOffsetSegments + i * kTableSegmentRecordSize;
@@ -313,10 +377,51 @@ Status decode_table_image(const std::uint8_t* image, std::size_t size, GuidanceT
     s.theta_start_rad = get_f64_le(record + kSegmentOffsetTheta);
     s.rate_rad_s = get_f64_le(record + kSegmentOffsetRate);
   }
+  decoded.schedule_count = static_cast<int>(schedule_count);
+  for (std::size_t i = 0; i < schedule_count; ++i) {
+    const std::uint8_t* record = image + kOffsetSchedule + i * kTableScheduleRecordSize;
+    GainSchedulePoint& p = decoded.schedule[i];
+    p.stage_code = static_cast<int>(get_u16_le(record + kScheduleOffsetStageCode));
+    p.stage_time_s = get_f64_le(record + kScheduleOffsetTime);
+    p.k_theta = get_f64_le(record + kScheduleOffsetKTheta);
+    p.k_q_s = get_f64_le(record + kScheduleOffsetKq);
+  }
   const Status valid = validate_guidance_table(decoded);
   if (!ok(valid)) return valid;
   *table = decoded;
   return Status::kOk;
+}
+
+// ---- gain schedule -------------------------------------------------------------------------------
+
+StageGains scheduled_gains(const GuidanceTable& t, int stage_code, double stage_time_s) {
+  StageGains out = (stage_code >= 1 && stage_code <= kMaxStages) ? t.gains[stage_code - 1] : StageGains{};
+  int previous = -1;  // last point of the stage at or before stage_time_s
+  int next = -1;      // first point of the stage after it
+  for (int i = 0; i < kMaxGainSchedulePoints; ++i) {
+    if (i >= t.schedule_count) break;
+    const GainSchedulePoint& p = t.schedule[i];
+    if (p.stage_code != stage_code) continue;
+    if (p.stage_time_s <= stage_time_s) {
+      previous = i;
+    } else {
+      next = i;
+      break;
+    }
+  }
+  if (previous < 0 && next < 0) return out;
+  if (previous < 0 || next < 0) {
+    const GainSchedulePoint& p = t.schedule[previous < 0 ? next : previous];
+    out.k_theta = p.k_theta;
+    out.k_q_s = p.k_q_s;
+    return out;
+  }
+  const GainSchedulePoint& a = t.schedule[previous];
+  const GainSchedulePoint& b = t.schedule[next];
+  const double f = (stage_time_s - a.stage_time_s) / (b.stage_time_s - a.stage_time_s);
+  out.k_theta = a.k_theta + f * (b.k_theta - a.k_theta);
+  out.k_q_s = a.k_q_s + f * (b.k_q_s - a.k_q_s);
+  return out;
 }
 
 }  // namespace tolip

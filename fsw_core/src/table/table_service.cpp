@@ -12,8 +12,8 @@ int GuidanceTableService::inactive_index() const {
 Status GuidanceTableService::stage(const std::uint8_t* image, std::size_t size) {
   const int target = inactive_index();
   state_[target] = BufferState::kEmpty;
-  if (image == nullptr || size < kTableImageSize) return Status::kTableImageTruncated;
-  if (size > kTableImageSize) return Status::kTableImageSizeMismatch;
+  const Status sized = table_image_size_status(image, size);
+  if (!ok(sized)) return sized;
   for (std::size_t i = 0; i < kTableImageSize; ++i) raw_[target][i] = image[i];
   state_[target] = BufferState::kStaged;
   return Status::kOk;

@@ -9,7 +9,7 @@
 
 namespace tolip::ground {
 
-// The caps (bytes). A table image has the fixed size of its format (kTableImageSize, 812 bytes);
+// The caps (bytes). A table image has the fixed size of its format (kTableImageSize, 1580 bytes);
 // the others are generous documented limits, far above any real input.
 inline constexpr std::size_t kMaxDeckFileBytes = std::size_t{8} << 20;     // 8 MiB: ~100,000 cards
 inline constexpr std::size_t kMaxResultFileBytes = std::size_t{64} << 20;  // 64 MiB: ~240 cases of Scout JSON

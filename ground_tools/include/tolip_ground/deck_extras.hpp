@@ -35,6 +35,17 @@ struct BodyDynamicsData {
   std::array<int, 3> impact_every_nth_step = {1, 1, 1};                           // DA6D(17-19), stages 1-3
 };
 
+// Autopilot gain design (issue 16, docs/theory/autopilot-design.md): data block 33 words 21-30, a
+// TOLIP extension of DA6D (not manual words), in [body_dynamics]. Defaults: constants (0).
+struct AutopilotDesignData {
+  int designed = 0;                                                    // 21: 1 designed gains, 0 DA6D(1-6)
+  std::array<double, 3> natural_frequency_rad_s = {2.75, 2.75, 2.75};  // 22-24, stages 1-3
+  std::array<double, 3> damping_ratio = {0.7, 0.7, 0.7};               // 25-27, stages 1-3
+  double attitude_error_rad = 0.017453292519943295;                    // 28 (deck: deg), 1 deg
+  double actuator_time_constant_s = 0.0;                               // 29, 0: no actuator lag
+  int points_per_stage = 6;                                            // 30, 1-8
+};
+
 // Data block 41: one card per station.
 struct RadarStation {
   std::string id;    // 2A6, at most 12 characters
@@ -121,6 +132,7 @@ struct DeckListingOptions {
 struct DeckExtras {
   DeckListingOptions listing;
   BodyDynamicsData body_dynamics;
+  AutopilotDesignData autopilot;
   std::vector<RadarStation> radar_stations;
   ImpactData impact;
   HardoverData hardover;

@@ -33,6 +33,8 @@ namespace tolip::ground {
 
 // Maximum deflection when the deck gives no data block 45 word 11: 10 deg.
 inline constexpr double kDefaultMaxDeflectionRad = 10.0 * kDegToRad;
+// The image's deflection limit: data block 45 word 11 when the deck has [hardover], else the default.
+double table_max_deflection_rad(const DeckExtras& extras);
 // Section the C header places the image in (the flight image's linker script maps it).
 inline constexpr const char* kTableLinkerSection = ".tolip_table";
 inline constexpr const char* kDefaultTableSymbol = "tolip_pitch_table";

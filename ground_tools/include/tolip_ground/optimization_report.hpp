@@ -21,6 +21,7 @@
 namespace tolip::ground {
 struct DispersionStep;
 struct ImpactStep;
+struct AutopilotStep;
 }  // namespace tolip::ground
 
 namespace tolip::ground {
@@ -73,6 +74,8 @@ struct OptimizationReport {
   const RadarStep* radar = nullptr;
   // The hardover turns from the final nominal (IP(22) = 1, Sec. 16; hardover_run.hpp): null unless asked for.
   const HardoverStep* hardover = nullptr;
+  // The designed autopilot gain schedule (issue 16; autopilot_run.hpp): null unless asked for.
+  const AutopilotStep* autopilot = nullptr;
 };
 
 // One adjustable parameter of data block 6: degrees for attitudes and the launch azimuth,

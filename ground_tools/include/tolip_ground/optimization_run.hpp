@@ -51,6 +51,9 @@ struct OptimizationRun {
   LinearizationStep linearization;
   ExchangeRatioStep exchange_ratios;
   InitialNominalBodyDynamicsStep initial_nominal_6d;
+  // Designed autopilot gains with IP(6) = 1 (issue 16, autopilot_run.hpp): set by the caller before
+  // run_optimization; the linearization calls it before its 6D runs. Null: the deck's constants.
+  SixDGainDesign* six_d_gains = nullptr;
 };
 
 // Runs the job for a validated mission. `observer` (may be null) sees every optimizer forward run.

@@ -138,6 +138,12 @@ std::vector<Figure> hardover_figures(const nlohmann::json& document);
 // (fins in deg, jets in % of full force) against time. None without the member; throws
 // PlotDataError when malformed.
 std::vector<Figure> hil_figures(const nlohmann::json& document);
+// The autopilot figures of a document (member "autopilot", docs/cli.md; issue 16):
+// "autopilot_gains", K_theta (left axis) and K_q (s, right axis) against time from launch, and
+// "autopilot_margins", the upper gain margin (dB, left) and the phase margin (deg, right) at the
+// actuator; a break between stages. None when the member is absent or holds no point; throws
+// PlotDataError when malformed.
+std::vector<Figure> autopilot_figures(const nlohmann::json& document);
 
 // The largest magnitude drawn: a value beyond it (1e308, a diverged run) is drawn as a gap, like
 // a JSON null; gnuplot cannot scale an axis to it.

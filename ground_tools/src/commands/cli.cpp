@@ -424,14 +424,14 @@ CLI::App* add_export_command(CLI::App& app, ExportCommandOptions* options) {
                    "(docs/deck-format.md)")
       ->required()
       ->type_name("FILE");
-  export_command->add_option("--out", options->out_path, "The binary image (812 bytes)")
+  export_command->add_option("--out", options->out_path, "The binary image (1580 bytes)")
       ->required()
       ->type_name("FILE");
   export_command
       ->add_option("--c-header", options->c_header_path,
                    "Also write the image as a C const array NAME in the\n"
                    "linker section .tolip_table, with the macros\n"
-                   "TOLIP_TABLE_IMAGE_<SYMBOL>_H_SIZE (812u) and\n"
+                   "TOLIP_TABLE_IMAGE_<SYMBOL>_H_SIZE (1580u) and\n"
                    "TOLIP_TABLE_IMAGE_<SYMBOL>_H_CRC32, <SYMBOL> = NAME\n"
                    "upper-cased (include guard TOLIP_TABLE_IMAGE_<SYMBOL>_H)")
       ->type_name("FILE");
@@ -469,7 +469,7 @@ CLI::App* add_inspect_command(CLI::App& app, InspectCommandOptions* options) {
       "  tolip inspect table.bin\n"
       "  tolip inspect table.bin --json\n"
       "Exit codes: 0 valid; 2 bad command line, unreadable file (a\n"
-      "directory, or larger than an image: at most 812 bytes are read) or\n"
+      "directory, or larger than an image: at most 1580 bytes are read) or\n"
       "invalid image (stderr names the status, e.g. kTableImageCrcMismatch).\n"
       "Full reference: docs/cli.md, 'tolip inspect'.");
   inspect->add_option("IMAGE", options->image_path, "Table image written by tolip export")

@@ -12,6 +12,7 @@
 #include "tolip/table/table_image.hpp"
 #include "tolip/vehicle/prepared_case.hpp"
 #include "tolip_ground/atomic_file.hpp"
+#include "tolip_ground/autopilot_run.hpp"
 #include "tolip_ground/card_deck.hpp"
 #include "tolip_ground/commands.hpp"
 #include "tolip_ground/deck_extras.hpp"
@@ -107,12 +108,35 @@ int run_export_command(const ExportCommandOptions& options, std::ostream& out, s
   // The pitch program: the linearized optimum when the deck asks for linearization (IP(7) = 1),
   // which needs the optimization first; else data block 40 (docs/table-format.md). A program that
   // misses a constraint or a rate limit is not exported.
+  // Designed autopilot gains (issue 16): the request is checked before anything runs.
+  const bool designed = extras->autopilot.designed != 0;
+  AutopilotPlan plan;
+  std::string plan_error;
+  if (designed && !plan_autopilot_design(*mission, *extras, &plan, &plan_error)) {
+    err << "tolip: " << options.deck_path << ": " << plan_error << '\n';
+    return kExitBadInput;
+  }
+  std::unique_ptr<SixDAutopilotGains> six_d_gains;
   OptimizationRun run;
+  if (designed && mission->options.linearization() && mission->options.body_dynamics_6d() == 1) {
+    six_d_gains = std::make_unique<SixDAutopilotGains>(plan);
+    run.six_d_gains = six_d_gains.get();
+  }
   const Mission* table_mission = mission.get();
   const PreparedCase* table_case = prepared.get();
   const LinearProgram* linearized = nullptr;
   if (mission->options.linearization()) {
     run_optimization(*mission, nullptr, &run);
+    if (six_d_gains != nullptr && six_d_gains->called() && !ok(six_d_gains->status())) {
+      AutopilotStep failed;
+      failed.outcome = StepOutcome::kRun;
+      failed.status = six_d_gains->status();
+      failed.fault_stage = six_d_gains->fault_stage();
+      failed.trajectory_kind = "point-mass linearized program";
+      err << "tolip: " << options.deck_path << ": no table exported: " << autopilot_fault_text(failed)
+          << '\n';
+      return kExitBadInput;
+    }
     // The same rule as `optimize` (optimization_job_status): a case that optimize would not pass is
     // not exported.
     const JobVerdict verdict = optimization_job_verdict(run);
@@ -129,6 +153,31 @@ int run_export_command(const ExportCommandOptions& options, std::ostream& out, s
     linearized = &run.linearization.result->program;
   }
 
+  // The gain schedule along the final nominal: the linearized trajectory, else the deck's program.
+  AutopilotStep autopilot;
+  if (designed) {
+    std::unique_ptr<Trajectory> simulated;
+    const Trajectory* nominal = nullptr;
+    if (linearized != nullptr) {
+      nominal = &run.linearization.workspace->nominal;
+    } else {
+      simulated = std::make_unique<Trajectory>();
+      const Status flown = fly_trajectory(*mission, *prepared, simulated.get());
+      if (!ok(flown)) {
+        err << "tolip: " << status_name(flown) << ": " << status_message(flown) << '\n';
+        return kExitFailure;
+      }
+      nominal = simulated.get();
+    }
+    run_autopilot_step(*table_mission, plan, *nominal,
+                       linearized != nullptr ? "linearized program" : "simulated", &autopilot);
+    if (!ok(autopilot.status)) {
+      err << "tolip: " << options.deck_path << ": no table exported: " << autopilot_fault_text(autopilot)
+          << '\n';
+      return kExitBadInput;
+    }
+  }
+
   TableBuildOptions build;
   build.mission_id = options.mission_id;
   build.created_unix_s = stamp;
@@ -139,6 +188,7 @@ int run_export_command(const ExportCommandOptions& options, std::ostream& out, s
     err << "tolip: " << options.deck_path << ": " << build_error << '\n';
     return kExitBadInput;
   }
+  if (designed) apply_gain_schedule(*autopilot.schedule, table.get());
   std::uint8_t image[kTableImageSize];
   const Status encoded = encode_table_image(*table, image, sizeof image);
   if (!ok(encoded)) {
@@ -175,8 +225,10 @@ int run_export_command(const ExportCommandOptions& options, std::ostream& out, s
   std::snprintf(crc, sizeof crc, "0x%08X", static_cast<unsigned>(stored_table_crc(image)));
   out << "wrote " << options.out_path << " (" << sizeof image << " bytes, CRC-32 " << crc << ", "
       << table->segment_count << " segments from "
-      << (linearized != nullptr ? "the linearized program" : "data block 40") << ", mission id '"
-      << table->mission_id << "')\n";
+      << (linearized != nullptr ? "the linearized program" : "data block 40")
+      << (designed ? ", " + std::to_string(table->schedule_count) + " designed gain schedule points"
+                   : std::string())
+      << ", mission id '" << table->mission_id << "')\n";
   if (!options.c_header_path.empty()) {
     out << "wrote " << options.c_header_path << " (C array " << options.symbol << " in section "
         << kTableLinkerSection << ")\n";

@@ -15,6 +15,7 @@
 #include "tolip/orbit/orbit_elements.hpp"
 #include "tolip/trajectory/trajectory.hpp"
 #include "tolip_ground/atomic_file.hpp"
+#include "tolip_ground/autopilot_run.hpp"
 #include "tolip_ground/card_deck.hpp"
 #include "tolip_ground/commands.hpp"
 #include "tolip_ground/deck.hpp"
@@ -103,11 +104,37 @@ int optimize_case(const Deck& deck, const DeckCase& deck_case, OptimizerObserver
     return kExitBadInput;
   }
 
+  // Designed autopilot gains (issue 16, autopilot_run.hpp): the request checked before anything runs.
+  const bool autopilot_designed = deck_case.extras.autopilot.designed != 0;
+  AutopilotPlan autopilot_plan;
+  std::string autopilot_error;
+  if (autopilot_designed &&
+      !plan_autopilot_design(*mission, deck_case.extras, &autopilot_plan, &autopilot_error)) {
+    err << "tolip: " << output->prefix << deck.path << ": " << autopilot_error << '\n';
+    output->stop = true;
+    return kExitBadInput;
+  }
+
   // The optimization, then the linearization and exchange ratios the deck asks for
   // (tolip_ground/optimization_run.hpp); the workspaces are large and live on the heap.
   OptimizationRun run;
+  std::unique_ptr<SixDAutopilotGains> six_d_gains;
+  if (autopilot_designed && mission->options.linearization() && mission->options.body_dynamics_6d() == 1) {
+    six_d_gains = std::make_unique<SixDAutopilotGains>(autopilot_plan);
+    run.six_d_gains = six_d_gains.get();
+  }
   run_optimization(*mission, observer, &run);
   progress.clear();  // before anything else goes to stderr
+  if (six_d_gains != nullptr && six_d_gains->called() && !ok(six_d_gains->status())) {
+    AutopilotStep failed;
+    failed.outcome = StepOutcome::kRun;
+    failed.status = six_d_gains->status();
+    failed.fault_stage = six_d_gains->fault_stage();
+    failed.trajectory_kind = "point-mass linearized program";
+    err << "tolip: " << output->prefix << deck.path << ": " << autopilot_fault_text(failed) << '\n';
+    output->stop = true;
+    return kExitBadInput;
+  }
   OptimizerWorkspace* const workspace = run.workspace.get();
   const OptimizerResult* const result = run.result.get();
   const Status optimizer_status = run.optimizer_status;
@@ -191,6 +218,26 @@ int optimize_case(const Deck& deck, const DeckCase& deck_case, OptimizerObserver
       skip_hardover_step(why, &hardover);
     }
     report.hardover = &hardover;
+  }
+  // The autopilot gain schedule along the final nominal (issue 16; autopilot_run.hpp).
+  AutopilotStep autopilot;
+  if (autopilot_designed) {
+    FinalNominal nominal;
+    std::string kind;
+    Status why = Status::kOk;
+    if (final_nominal_flight(*mission, run, &nominal, &kind, &why)) {
+      run_autopilot_step(*nominal.mission, autopilot_plan, *nominal.trajectory, kind, &autopilot);
+      autopilot.six_d_scheduled = six_d_gains != nullptr && six_d_gains->called();
+      if (!ok(autopilot.status)) {
+        err << "tolip: " << output->prefix << deck.path << ": " << autopilot_fault_text(autopilot) << '\n';
+        output->stop = true;
+        return kExitBadInput;
+      }
+    } else {
+      autopilot.outcome = StepOutcome::kSkipped;
+      autopilot.status = why;
+    }
+    report.autopilot = &autopilot;
   }
   // The radar tracking of the final nominal (IP(24) = 1, Sec. 18; radar_run.hpp).
   RadarStep radar;

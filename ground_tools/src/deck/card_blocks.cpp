@@ -59,7 +59,7 @@ std::vector<BlockSpec> make_blocks() {
        "CD", false},
       {32, "LIFT COEFFICIENT PER ALPHA TABLE TL1", F::kReal, kTableWords, S::kTable, kOpt, 0, "MACH",
        "CL ALPHA, PER RAD", false},
-      {33, "DATA FOR 6D SIMULATION DA6D", F::kReal, 20, S::kWords, kOpt | kHardoverGroup | kImpactGroup, 0,
+      {33, "DATA FOR 6D SIMULATION DA6D", F::kReal, 30, S::kWords, kOpt | kHardoverGroup | kImpactGroup, 0,
        "", "", false},
       {34, "FIN NORMAL FORCE COEFFICIENT PER DELTA", F::kReal, kTableWords, S::kTable, kOpt, 0, "MACH",
        "CN DELTA, PER RAD PER FIN", false},

@@ -485,6 +485,46 @@ std::vector<FieldDescription> make_fields() {
                     3)),
       R::kAtLeastOne));
 
+  // ---- data block 33 words 21-30: autopilot gain design (issue 16; a TOLIP extension of DA6D, not
+  // manual words; docs/theory/autopilot-design.md). Optional, with the defaults of
+  // AutopilotDesignData; the design checks the values (exit 2 naming stage and key).
+  using AP = AutopilotDesignData;
+  constexpr auto kAP = &DeckExtras::autopilot;
+  f.push_back(with_default(
+      ranged(integer(real(33, 21, "body_dynamics", "autopilot_designed_gains", "AUTOPILOT GAINS: 1 DESIGNED",
+                          "DA6D(21) autopilot gains: 1 designed along the trajectory, 0 DA6D(1-6) constants",
+                          "", &in_extras<kAP, &AP::designed>)),
+             R::kFlag),
+      0.0));
+  f.push_back(
+      array(with_default(real(33, 22, "body_dynamics", "autopilot_natural_frequency_rad_s",
+                              "AUTOPILOT FREQUENCY, RAD/S, STAGE {i}",
+                              "DA6D(22-24) closed-loop attitude natural frequency of stages 1-3, rad/s", "",
+                              &in_extras_array<kAP, &AP::natural_frequency_rad_s>),
+                         2.75),
+            3));
+  f.push_back(array(with_default(real(33, 25, "body_dynamics", "autopilot_damping_ratio",
+                                      "AUTOPILOT DAMPING RATIO, STAGE {i}",
+                                      "DA6D(25-27) closed-loop attitude damping ratio of stages 1-3", "",
+                                      &in_extras_array<kAP, &AP::damping_ratio>),
+                                 0.7),
+                    3));
+  f.push_back(degrees(with_default(
+      real(33, 28, "body_dynamics", "autopilot_attitude_error_deg", "AUTOPILOT DESIGN ATTITUDE ERROR, DEG",
+           "DA6D(28) attitude error the deflection limit must cover, deg", "",
+           &in_extras<kAP, &AP::attitude_error_rad>),
+      1.0)));
+  f.push_back(with_default(
+      real(33, 29, "body_dynamics", "autopilot_actuator_time_constant_s", "ACTUATOR TIME CONSTANT, S",
+           "DA6D(29) first-order actuator lag of the margins, s (0: none)", "",
+           &in_extras<kAP, &AP::actuator_time_constant_s>),
+      0.0));
+  f.push_back(with_default(
+      integer(real(33, 30, "body_dynamics", "autopilot_points_per_stage",
+                   "AUTOPILOT SCHEDULE POINTS PER STAGE", "DA6D(30) gain schedule points per stage 1-3 (1-8)",
+                   "", &in_extras<kAP, &AP::points_per_stage>)),
+      6.0));
+
   // ---- data block 45: the hardover words (all required when [hardover.parameters] is given) -----
   using H = HardoverData;
   constexpr auto kH = &DeckExtras::hardover;

@@ -93,6 +93,21 @@ std::vector<InputWarning> unused_inputs(const Mission& mission, const DeckExtras
       break;
     }
   }
+  // Data block 33 words 22-30 (autopilot design, issue 16): they act only with designed gains.
+  const AutopilotDesignData& ap = extras.autopilot;
+  const AutopilotDesignData ap_default;
+  if (ap.designed == 0 && (ap.natural_frequency_rad_s != ap_default.natural_frequency_rad_s ||
+                           ap.damping_ratio != ap_default.damping_ratio ||
+                           ap.attitude_error_rad != ap_default.attitude_error_rad ||
+                           ap.actuator_time_constant_s != ap_default.actuator_time_constant_s ||
+                           ap.points_per_stage != ap_default.points_per_stage)) {
+    warn(33, "DA6D(22-30)",
+         "body_dynamics.autopilot_natural_frequency_rad_s/autopilot_damping_ratio/"
+         "autopilot_attitude_error_deg/"
+         "autopilot_actuator_time_constant_s/autopilot_points_per_stage",
+         "the autopilot design data have no effect: body_dynamics.autopilot_designed_gains is 0, the table "
+         "and the 6D runs use the constant gains DA6D(1-6)");
+  }
   // Data block 37: the stage-4 c.g. history (XCG4). Stage 1's flies the body dynamics; stages 2-3's
   // the dispersions and the hardover turns, which Sec. 15 and 16 take in stages 1-3 only; stage 4 is
   // spun or flies the point-mass program, so nothing reads XCG4.

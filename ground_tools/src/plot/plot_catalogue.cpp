@@ -827,6 +827,7 @@ DocumentFigures figures_for_document(const nlohmann::json& document) {
   // One figure per radar station (member "radar"; radar_plots.cpp).
   for (Figure& figure : hardover_figures(document)) add(figure.name, std::move(figure));
   for (Figure& figure : hil_figures(document)) add(figure.name, std::move(figure));
+  for (Figure& figure : autopilot_figures(document)) add(figure.name, std::move(figure));
   for (Figure& figure : radar_figures(document)) add(figure.name, std::move(figure));
   return result;
 }

@@ -9,6 +9,7 @@
 
 #include "tolip/core/constants.hpp"
 #include "tolip/core/state.hpp"
+#include "tolip_ground/autopilot_run.hpp"
 #include "tolip_ground/dispersion_report.hpp"
 #include "tolip_ground/hardover_report.hpp"
 #include "tolip_ground/impact_report.hpp"
@@ -288,6 +289,7 @@ json optimization_json(const OptimizationReport& report) {
   if (report.impact != nullptr) additions["impact"] = impact_json(*report.impact);
   if (report.hardover != nullptr) additions["hardover"] = hardover_json(*report.hardover);
   if (report.radar != nullptr) additions["radar"] = radar_json(*report.radar);
+  if (report.autopilot != nullptr) additions["autopilot"] = autopilot_json(*report.autopilot);
 
   // The simulate document of the final trajectory, with the run's status and the additions placed
   // before the (long) point array.

@@ -17,6 +17,7 @@
 #include "tolip/mission/adjustable_parameter.hpp"
 #include "tolip/optimizer/constraint_parameters.hpp"
 #include "tolip/optimizer/constraint_set.hpp"
+#include "tolip_ground/autopilot_run.hpp"
 #include "tolip_ground/dispersion_report.hpp"
 #include "tolip_ground/hardover_report.hpp"
 #include "tolip_ground/impact_report.hpp"
@@ -784,6 +785,7 @@ void write_optimization_listing(std::ostream& out, const OptimizationReport& rep
   if (report.impact != nullptr) report_detail::write_impact_pages(pager, *report.impact);
   if (report.hardover != nullptr) report_detail::write_hardover_pages(pager, *report.hardover);
   if (report.radar != nullptr) report_detail::write_radar_pages(pager, *report.radar);
+  if (report.autopilot != nullptr) report_detail::write_autopilot_pages(pager, *report.autopilot);
 }
 
 }  // namespace tolip::ground

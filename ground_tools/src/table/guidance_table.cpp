@@ -14,6 +14,12 @@
 #include "tolip_ground/version.hpp"
 
 namespace tolip::ground {
+
+double table_max_deflection_rad(const DeckExtras& extras) {
+  return (extras.hardover.present && extras.hardover.stage1_fin_vane_deflection_rad > 0.0)
+             ? extras.hardover.stage1_fin_vane_deflection_rad
+             : kDefaultMaxDeflectionRad;
+}
 namespace {
 
 // The stage of the timeline that holds time `t` from launch: [start, start + duration), the later
@@ -110,9 +116,7 @@ bool build_guidance_table(const Mission& mission, const DeckExtras& extras, cons
   t.min_pitch_rate_change_rad_s = mission.control.min_pitch_rate_change_rad_s;
 
   // Data block 45 word 11 (stage 1 fin and vane deflection), else the documented default.
-  t.max_deflection_rad = (extras.hardover.present && extras.hardover.stage1_fin_vane_deflection_rad > 0.0)
-                             ? extras.hardover.stage1_fin_vane_deflection_rad
-                             : kDefaultMaxDeflectionRad;
+  t.max_deflection_rad = table_max_deflection_rad(extras);
 
   // Data block 17 and IP(9): spun stages hold their attitudes (IP(9) = 1 spins stage 5 on stage 4's);
   // stages 4 and 5 that IP(9) leaves continuous fly segments, and their attitude words are zero.
@@ -280,6 +284,16 @@ void write_table_listing(std::ostream& out, const GuidanceTable& t, std::uint32_
                   s.start_stage_time_s, s.theta_start_rad * kRadToDeg, s.rate_rad_s * kRadToDeg);
     out << line;
   }
+  std::snprintf(line, sizeof line, "  gain schedule        %d of %d\n", t.schedule_count,
+                kMaxGainSchedulePoints);
+  out << line;
+  if (t.schedule_count > 0) out << "     #  stage  time (stage s)   K_theta      K_q (s)\n";
+  for (int i = 0; i < t.schedule_count; ++i) {
+    const GainSchedulePoint& p = t.schedule[i];
+    std::snprintf(line, sizeof line, "    %2d  %5d  %14.6f  %10.6f  %10.6f\n", i, p.stage_code,
+                  p.stage_time_s, p.k_theta, p.k_q_s);
+    out << line;
+  }
 }
 
 nlohmann::ordered_json table_json(const GuidanceTable& t, std::uint32_t crc, std::size_t image_size) {
@@ -299,6 +313,14 @@ nlohmann::ordered_json table_json(const GuidanceTable& t, std::uint32_t crc, std
                             {"start_stage_time_s", s.start_stage_time_s},
                             {"theta_start_deg", s.theta_start_rad * kRadToDeg},
                             {"rate_deg_s", s.rate_rad_s * kRadToDeg}});
+  }
+  json schedule = json::array();
+  for (int i = 0; i < t.schedule_count; ++i) {
+    const GainSchedulePoint& p = t.schedule[i];
+    schedule.push_back(json{{"stage", p.stage_code},
+                            {"stage_time_s", p.stage_time_s},
+                            {"k_theta", p.k_theta},
+                            {"k_q_s", p.k_q_s}});
   }
   return json{
       {"valid", true},
@@ -320,6 +342,7 @@ nlohmann::ordered_json table_json(const GuidanceTable& t, std::uint32_t crc, std
       {"stage5_chi_deg", t.stage5_chi_rad * kRadToDeg},
       {"gains", std::move(gains)},
       {"segments", std::move(segments)},
+      {"gain_schedule", std::move(schedule)},
   };
 }
 

@@ -43,6 +43,18 @@ struct UnitMoments {
 // with n = control_surfaces_per_plane. Stage 1's tables (blocks 34-36) serve every stage.
 UnitMoments unit_moments(const BodyDynamicsBlocks& data, const MomentConditions& conditions);
 
+// The rigid-body damping moments of Sec. 16 (lbf ft), shared by the hardover turns and the
+// autopilot design: term 4, aerodynamic pitch damping C_M_q eta-dot l_ref q S l_ref / (2 V), and
+// term 5, jet damping eta-dot (m-dot (X_CG - X_TA)^2 + I-dot).
+inline double aerodynamic_pitch_damping_moment(double cmq_per_rad, double rate_rad_s, double l_ref_ft,
+                                               double q_lbf_ft2, double area_ft2, double speed_ft_s) {
+  return cmq_per_rad * rate_rad_s * l_ref_ft * q_lbf_ft2 * area_ft2 * l_ref_ft / (2.0 * speed_ft_s);
+}
+inline double jet_damping_moment(double rate_rad_s, double mass_rate_slug_s, double jet_arm_ft,
+                                 double inertia_rate_slug_ft2_s) {
+  return rate_rad_s * (mass_rate_slug_s * jet_arm_ft * jet_arm_ft + inertia_rate_slug_ft2_s);
+}
+
 // gamma_w and A_zw (Sec. 7): V_P = C^-1 (0, |V|, 0) = |V| (C21, C22, C23) ([C] is orthonormal, so
 // C^-1 = C^T), gamma_w = atan(V_jz / sqrt(V_jx^2 + V_jy^2)), A_zw = atan2(V_jx, V_jy).
 struct PlatformVelocityAngles {
@@ -55,6 +67,12 @@ struct AutopilotGains {
   double position_gain = 0.0;  // K_theta, rad/rad
   double rate_gain_s = 0.0;    // K_q (K_theta-dot), s
 };
+
+// The stage-1 gains in force at stage-1 time `stage_time_s`: DA6D(1), DA6D(4) when the mission has
+// no designed schedule (stage1_schedule_count = 0); else the schedule, linear in time between its
+// points and held at its ends (the coast after stage 1 reads it at stage 1's duration: the last
+// point's gains). The same rule as the table image's executor (table/table_image.hpp).
+AutopilotGains scheduled_stage1_gains(const BodyDynamicsBlocks& data, double stage_time_s);
 
 // The commanded attitude and its rates (theta_c-dot is the pitch program's rate; chi_c and
 // chi_c-dot are 0 in stages 1-3, Sec. 7).

@@ -49,5 +49,11 @@ inline constexpr int kMaxHardoverTurns = 3 * (kMaxPoweredSteps + 3);
 inline constexpr int kMaxHardoverSamples = 102;
 // Modified (Sec. 14) thrust table of one stage: one entry per integration time plus the lift-off one.
 inline constexpr int kMaxModifiedThrustPoints = kMaxPoweredSteps + 2;
+// Autopilot gain schedules (issue 16, docs/theory/autopilot-design.md): designed in stages 1-3 (the
+// stages data block 33 gives gains for), at most 8 points per stage; the table image (format
+// version 3) holds them all.
+inline constexpr int kGainScheduleStages = 3;
+inline constexpr int kMaxGainSchedulePointsPerStage = 8;
+inline constexpr int kMaxGainSchedulePoints = kGainScheduleStages * kMaxGainSchedulePointsPerStage;
 
 }  // namespace tolip

@@ -157,6 +157,17 @@ enum class Status : int {
   kHalTelemetryFailed,
   kHalDiscretesInvalid,
   kHalLinkFrameCorrupt,
+  // Autopilot gain design and schedules (autopilot/autopilot_design.hpp, table/table_image.hpp; issue 16)
+  kAutopilotDampingNotPositive,
+  kAutopilotFrequencyNotPositive,
+  kAutopilotRequestInvalid,
+  kAutopilotModelInvalid,
+  kAutopilotFrequencyBeyondDeflection,
+  kAutopilotGainOutOfRange,
+  kTooManyGainSchedulePoints,
+  kGainScheduleStageInvalid,
+  kGainScheduleTimesNotMonotonic,
+  kTableImageVersion2,
 };
 
 const char* status_name(Status status);

@@ -188,6 +188,14 @@ struct BodyDynamicsBlocks {
   AeroTable pitching_moment_per_rad;      // block 35: Mach -> C_M_alpha about X_FS, per rad
   AeroTable fin_pitching_moment_per_rad;  // block 36: Mach -> C_M_delta about X_FS, per rad per fin
   CgTable cg_station_ft[kCgTableStages];  // block 37: XCG1-XCG4, stage time s -> c.g. station ft
+  // Designed stage-1 autopilot gains (issue 16, docs/theory/autopilot-design.md): when
+  // stage1_schedule_count > 0 the steady state of Sec. 7 (stage 1 and the coast after it) takes
+  // K_theta and K_q from this schedule, linear in stage-1 time and held at its ends, instead of
+  // DA6D(1), DA6D(4). 0 (the deck's constants) leaves every result as before, bit for bit.
+  int stage1_schedule_count = 0;
+  double stage1_schedule_time_s[kMaxGainSchedulePointsPerStage] = {};
+  double stage1_schedule_k_theta[kMaxGainSchedulePointsPerStage] = {};
+  double stage1_schedule_k_q_s[kMaxGainSchedulePointsPerStage] = {};
 };
 
 struct Mission {

@@ -115,7 +115,19 @@ void check_coast7_rates(const Mission& mission, const LinearProgram& program, Li
 // linearized trajectory is workspace->nominal. Returns kOk when every constraint is within its
 // linearization deadband and every rate limit is met; otherwise a named status with the best
 // program found.
+// IP(6) = 1 with designed autopilot gains (issue 16): called once, when the point-mass program
+// met everything and before the first 6D flight, with the accepted point-mass trajectory; it may
+// set the stage-1 gain schedule of `mission` (BodyDynamicsBlocks::stage1_schedule_*), which every
+// 6D run then flies. A status other than kOk ends the linearization with it.
+class SixDGainDesign {
+ public:
+  virtual Status before_body_dynamics(const Trajectory& point_mass_nominal, Mission* mission) = 0;
+
+ protected:
+  ~SixDGainDesign() = default;
+};
+
 Status linearize_pitch_program(const OptimizerWorkspace& optimized, LinearizationWorkspace* workspace,
-                               LinearizationResult* result);
+                               LinearizationResult* result, SixDGainDesign* gains = nullptr);
 
 }  // namespace tolip

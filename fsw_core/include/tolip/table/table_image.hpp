@@ -20,14 +20,17 @@ namespace tolip {
 // ---- format constants (docs/table-format.md, "Layout") ------------------------------------------
 inline constexpr std::uint8_t kTableMagic[4] = {0x54, 0x4C, 0x47, 0x54};  // "TLGT"
 // Version 2 added the stage 4-5 control word (IP(9)) and pitch segments in stages 4, 5 and coasts
-// 9, 10 when IP(9) does not spin them (docs/table-format.md, "Versioning").
-inline constexpr std::uint16_t kTableFormatVersion = 2;
+// 9, 10 when IP(9) does not spin them; version 3 the autopilot gain schedule records (issue 16)
+// after the segments (docs/table-format.md, "Versioning").
+inline constexpr std::uint16_t kTableFormatVersion = 3;
+inline constexpr std::size_t kTableVersion2ImageSize = 812;  // rejected by its version (and size)
 inline constexpr std::size_t kTableHeaderSize = 96;
 inline constexpr std::size_t kTableMissionIdBytes = 32;
 inline constexpr std::size_t kTableGeneratorVersionBytes = 16;
 inline constexpr std::size_t kTableSegmentRecordSize = 32;
 inline constexpr std::size_t kTableStageGainCount = static_cast<std::size_t>(kMaxStages);  // codes 1-10
 inline constexpr std::size_t kTableStageGainRecordSize = 16;
+inline constexpr std::size_t kTableScheduleRecordSize = 32;
 
 // Header field offsets.
 inline constexpr std::size_t kOffsetMagic = 0;
@@ -43,7 +46,11 @@ inline constexpr std::size_t kOffsetHeaderReserved1 = 22;  // 2 bytes, zero
 inline constexpr std::size_t kOffsetCreatedUnixS = 24;
 inline constexpr std::size_t kOffsetMissionId = 32;
 inline constexpr std::size_t kOffsetGeneratorVersion = 64;
-inline constexpr std::size_t kOffsetHeaderReserved2 = 80;  // 16 bytes, zero
+inline constexpr std::size_t kOffsetScheduleCapacity = 80;    // u16: kMaxGainSchedulePoints
+inline constexpr std::size_t kOffsetScheduleRecordSize = 82;  // u16: 32
+inline constexpr std::size_t kOffsetScheduleCount = 84;       // u16: records used
+inline constexpr std::size_t kOffsetHeaderReserved2 = 86;     // 10 bytes, zero
+inline constexpr std::size_t kHeaderReserved2Bytes = 10;
 // Body field offsets.
 inline constexpr std::size_t kOffsetLiftoffDuration = 96;
 inline constexpr std::size_t kOffsetMaxPitchRate = 104;
@@ -57,18 +64,25 @@ inline constexpr std::size_t kOffsetStage5Chi = 160;
 inline constexpr std::size_t kOffsetStageGains = 168;
 inline constexpr std::size_t kOffsetSegments =
     kOffsetStageGains + kTableStageGainCount * kTableStageGainRecordSize;  // 328
-inline constexpr std::size_t kOffsetCrc =
+inline constexpr std::size_t kOffsetSchedule =
     kOffsetSegments + static_cast<std::size_t>(kMaxLinearSegments) * kTableSegmentRecordSize;  // 808
-inline constexpr std::size_t kTableImageSize = kOffsetCrc + 4;                                 // 812
+inline constexpr std::size_t kOffsetCrc =
+    kOffsetSchedule + static_cast<std::size_t>(kMaxGainSchedulePoints) * kTableScheduleRecordSize;  // 1576
+inline constexpr std::size_t kTableImageSize = kOffsetCrc + 4;                                      // 1580
 
 // Offsets inside one segment record and one gain record.
-inline constexpr std::size_t kSegmentOffsetStageCode = 0;  // u16
-inline constexpr std::size_t kSegmentOffsetReserved = 2;   // 6 bytes, zero
-inline constexpr std::size_t kSegmentOffsetStartTime = 8;  // f64
-inline constexpr std::size_t kSegmentOffsetTheta = 16;     // f64
-inline constexpr std::size_t kSegmentOffsetRate = 24;      // f64
-inline constexpr std::size_t kGainOffsetKTheta = 0;        // f64
-inline constexpr std::size_t kGainOffsetKq = 8;            // f64
+inline constexpr std::size_t kSegmentOffsetStageCode = 0;   // u16
+inline constexpr std::size_t kSegmentOffsetReserved = 2;    // 6 bytes, zero
+inline constexpr std::size_t kSegmentOffsetStartTime = 8;   // f64
+inline constexpr std::size_t kSegmentOffsetTheta = 16;      // f64
+inline constexpr std::size_t kSegmentOffsetRate = 24;       // f64
+inline constexpr std::size_t kGainOffsetKTheta = 0;         // f64
+inline constexpr std::size_t kGainOffsetKq = 8;             // f64
+inline constexpr std::size_t kScheduleOffsetStageCode = 0;  // u16
+inline constexpr std::size_t kScheduleOffsetReserved = 2;   // 6 bytes, zero
+inline constexpr std::size_t kScheduleOffsetTime = 8;       // f64, stage time s
+inline constexpr std::size_t kScheduleOffsetKTheta = 16;    // f64
+inline constexpr std::size_t kScheduleOffsetKq = 24;        // f64
 
 // ---- documented ranges (docs/table-format.md, "Ranges") -----------------------------------------
 inline constexpr double kTableMaxLiftoffDurationS = 60.0;                  // (0, 60] s
@@ -98,6 +112,16 @@ struct StageGains {
   double k_q_s = 0.0;    // autopilot rate gain K_q, s (rad per rad/s)
 };
 
+// One point of an autopilot gain schedule (format version 3): the gains in force at `stage_time_s`
+// of stage `stage_code`; the executor interpolates linearly in stage time between the points of
+// the stage in force and holds the first (last) point's gains before (after) them.
+struct GainSchedulePoint {
+  int stage_code = 0;         // a stage the image's IP(9) does not spin
+  double stage_time_s = 0.0;  // s from the ignition (start) of that stage
+  double k_theta = 0.0;       // rad/rad
+  double k_q_s = 0.0;         // s
+};
+
 struct GuidanceTable {
   // Header.
   std::uint16_t format_version = kTableFormatVersion;
@@ -120,7 +144,16 @@ struct GuidanceTable {
   StageGains gains[kMaxStages];  // by stage_index(code), codes 1-10
   int segment_count = 0;
   GuidanceSegment segments[kMaxLinearSegments];
+  // Autopilot gain schedule (version 3): in flight order of the stages, strictly increasing times
+  // within a stage. A stage without points flies its constant `gains` record.
+  int schedule_count = 0;
+  GainSchedulePoint schedule[kMaxGainSchedulePoints];
 };
+
+// The gains in force in stage `stage_code` at `stage_time_s`: linear in time between the stage's
+// schedule points, held at the first and last; the stage's constant record when it has none.
+// One bounded pass over kMaxGainSchedulePoints records (+, -, *, / only).
+StageGains scheduled_gains(const GuidanceTable& table, int stage_code, double stage_time_s);
 
 // True for the stage codes a pitch segment may belong to: the stage codes 1-10 that IP(9)
 // (`spin_option`) does not spin: 1, 2, 3, 6, 7, 8 always; 4, 9 unless IP(9) = 1; 5, 10 when IP(9) = 3
@@ -138,6 +171,11 @@ Status validate_guidance_table(const GuidanceTable& table);
 // Serializes `table` into exactly kTableImageSize bytes (CRC included). Validates first and writes
 // nothing when the table is invalid. Unused segment records are zero.
 Status encode_table_image(const GuidanceTable& table, std::uint8_t* image, std::size_t image_size);
+
+// The size checks of an upload: kTableImageVersion2 for a version-2 image (812 bytes, magic and
+// version 2: no gain schedule, another layout), kTableImageTruncated / kTableImageSizeMismatch
+// for any other size than kTableImageSize; kOk otherwise.
+Status table_image_size_status(const std::uint8_t* image, std::size_t size);
 
 // Checks the raw image (size, magic, version, layout, CRC, reserved bytes) and decodes it into
 // *table, then validates the contents. *table is written only when the whole image is valid.
