@@ -7,8 +7,8 @@
 // part of the stage (from its first to its last point where the vehicle moves and has control
 // power: vacuum thrust, or q-bar in stage 1; the pad point and an upper stage's burnout point are
 // not), each taken at the trajectory point of that stage nearest to it (the points are where the
-// trajectory has its flight condition exactly); a point already taken is not taken twice. Stages 2 and 3 fly without
-// atmosphere (q-bar = 0, as the Sec. 16 hardover turns of those stages).
+// trajectory has its flight condition exactly); a point already taken is not taken twice. Stages 2 and 3 fly
+// without atmosphere (q-bar = 0, as the Sec. 16 hardover turns of those stages).
 #pragma once
 
 #include "tolip/autopilot/autopilot_design.hpp"
