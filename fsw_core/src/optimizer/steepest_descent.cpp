@@ -526,6 +526,7 @@ double Iteration::typical_control_measure() const {
 // the surface, say) has no payoff or constraint values of its own: they are NaN, flagged by its
 // status, rather than the previous run's.
 void Iteration::record(RunKind kind, Status run_status, bool successful, double attempted) {
+  // cppcheck-suppress unassignedVariable ; the sink of a record beyond the capacity, written through r
   IterationRecord overflow;
   const bool stored = result_->iteration_count < kMaxOptimizerIterations;
   IterationRecord& r = stored ? result_->iterations[result_->iteration_count++] : overflow;
@@ -759,12 +760,11 @@ Status Iteration::run(const Mission& input) {
   // Optimization: ask for payoff improvement, judged by the corrected payoff; halve on failure.
   const bool guidance_converged = within_deadbands(problem_, nominal_achieved_);
   double attempt_size = 0.0;
-  double best_corrected = -1e300;
   bool first_attempt = true;
   while (within_deadbands(problem_, nominal_achieved_) && result_->forward_runs < budget - 1) {
     status = backward(0, &steering);
     if (!ok(status)) return status;
-    best_corrected = corrected_payoff(nominal_achieved_);
+    const double best_corrected = corrected_payoff(nominal_achieved_);
     const ConstraintVector dphi = corrections(nominal_achieved_);
     if (first_attempt) {
       if (!initial_payoff_improvement(problem_, steering, steered_part(steering, dphi),
