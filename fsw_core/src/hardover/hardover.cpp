@@ -248,6 +248,9 @@ Status compute_hardover_turn(const Mission& mission, const PreparedCase& prepare
       limit_reached_at_s = elapsed_s;
     }
     bool stop = true;
+    // Two branches stop as tumbling on purpose (an attitude past the limit, and equations that
+    // lose meaning); they are kept apart because their conditions differ in kind.
+    // NOLINTNEXTLINE(bugprone-branch-clone)
     if (stage_time_s >= line.duration_s - kTimeTolerance_s) {
       turn->stop = HardoverStop::kEndOfStage;
     } else if (elapsed_s >= kTurnLimit_s - kTimeTolerance_s) {

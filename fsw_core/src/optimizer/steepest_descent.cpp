@@ -404,6 +404,8 @@ void shape_program(const Mission& mission, const Trajectory& nominal, const Poin
 // dtheta_j = G_j . nu_k / w_j for every later point. After the last closed-loop point the program
 // stays as last computed: the open loop with K = nu at the switch (eq. 9-3). Adjustable parameters
 // and the payload are decided at launch with the open-loop law.
+// final and never deleted through the base (no heap in the core):
+// NOLINTNEXTLINE(cppcoreguidelines-virtual-class-destructor)
 class ClosedLoopSteering final : public PitchFeedback {
  public:
   ClosedLoopSteering(const Problem& problem, const BackwardRun& backward, const PointRoles& roles,
@@ -740,6 +742,7 @@ Status Iteration::run(const Mission& input) {
     if (!ok(status)) return status;
     const double before = error_norm(problem_, nominal_achieved_);
     double fraction = 1.0;
+    // The loop counts attempts (an int); the halved fraction rides along. NOLINTNEXTLINE(cert-flp30-c)
     for (int attempt = 0;; ++attempt, fraction *= 0.5) {
       ++result_->guidance_runs;
       status = fly_candidate(steering, corrections(nominal_achieved_), fraction);
