@@ -29,6 +29,13 @@ TOLIP_DEBIAN_PACKAGES=(
   libnewlib-arm-none-eabi
   libstdc++-arm-none-eabi-newlib
   qemu-system-arm
+  # Certification-style evidence (issue 14; docs/verification/): clang-tidy and cppcheck for
+  # StaticAnalysis_* (scripts/static_analysis.sh), gcovr for the coverage preset
+  # (scripts/coverage.sh), clang 14 with its libFuzzer and sanitizer runtimes for the fuzz preset
+  # (scripts/fuzz.sh).
+  clang-tidy cppcheck
+  gcovr
+  clang-14 libclang-rt-14-dev
 )
 
 # True when the package is fully installed ("install ok installed"; a removed package whose

@@ -289,11 +289,13 @@ Status compute_hardover_turn(const Mission& mission, const PreparedCase& prepare
       limit_reached_at_s = elapsed_s;
     }
     bool stop = true;
+    // Two branches stop as tumbling on purpose (an attitude past the limit, and equations that
+    // lose meaning); they are kept apart because their conditions differ in kind.
     if (stage_time_s >= line.duration_s - kTimeTolerance_s) {
       turn->stop = HardoverStop::kEndOfStage;
     } else if (elapsed_s >= kTurnLimit_s - kTimeTolerance_s) {
       turn->stop = HardoverStop::kTimeLimit;
-    } else if (tumbling) {
+    } else if (tumbling) {  // NOLINT(bugprone-branch-clone): the same stop as below, on purpose
       turn->stop = HardoverStop::kTumbling;
     } else if (limit_reached_at_s >= 0.0 &&
                elapsed_s >= limit_reached_at_s + kAfterQbarAlphaLimit_s - kTimeTolerance_s) {

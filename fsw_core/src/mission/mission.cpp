@@ -148,8 +148,8 @@ Status optional_table(const Table<N>& table, const Check& check, int data_block,
 bool known_constraint_code(int code) {
   if (code >= 0 && code <= 14) return true;
   if (code >= 15 && code <= 99) {
-    const int parameter = code % 10;
-    return parameter >= 5 && parameter <= 9;
+    const int parameter = code % 10;  // 0-9
+    return parameter >= 5;
   }
   return code >= 100 && code <= 102;
 }
@@ -896,6 +896,7 @@ Status check_body_dynamics(const Mission& mission, const Check& check) {
   // F_CNL = M_alpha alpha / (X_delta - X_CG) (Sec. 11): the stage-1 c.g. (piecewise linear, its
   // values held past the ends) stays within its tabulated range, so X_delta must lie outside it.
   const CgTable& cg = b.cg_station_ft[0];
+  // cppcheck-suppress duplicateAssignExpression ; both extremes start at the first station
   double lowest = cg.y(0);
   double highest = cg.y(0);
   for (int i = 1; i < cg.size(); ++i) {

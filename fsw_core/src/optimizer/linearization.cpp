@@ -150,6 +150,7 @@ void update_rates_and_stages(const Trajectory& t, LinearProgram* p) {
 // reach dynamic-size triangular blocks, which reference the heap; this loop does not.)
 bool solve_in_place(KktMatrix* a, KktVector* b, KktVector* x) {
   KktMatrix& m = *a;
+  // cppcheck-suppress constVariable ; written below through Eigen's operator() (r(row) -= ...)
   KktVector& r = *b;
   for (int col = 0; col < kKktSize; ++col) {
     int pivot = col;

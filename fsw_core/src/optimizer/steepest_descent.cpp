@@ -447,6 +447,8 @@ void shape_program(const Mission& mission, const Trajectory& nominal, const Poin
 // dtheta_j = G_j . nu_k / w_j for every later point. After the last closed-loop point the program
 // stays as last computed: the open loop with K = nu at the switch (eq. 9-3). Adjustable parameters
 // and the payload are decided at launch with the open-loop law.
+// final and never deleted through the base (no heap in the core):
+// NOLINTNEXTLINE(cppcoreguidelines-virtual-class-destructor)
 class ClosedLoopSteering final : public PitchFeedback {
  public:
   ClosedLoopSteering(const Problem& problem, const BackwardRun& backward, const PointRoles& roles,
@@ -569,6 +571,7 @@ double Iteration::typical_control_measure() const {
 // the surface, say) has no payoff or constraint values of its own: they are NaN, flagged by its
 // status, rather than the previous run's.
 void Iteration::record(RunKind kind, Status run_status, bool successful, double attempted) {
+  // cppcheck-suppress unassignedVariable ; the sink of a record beyond the capacity, written through r
   IterationRecord overflow;
   const bool stored = result_->iteration_count < kMaxOptimizerIterations;
   IterationRecord& r = stored ? result_->iterations[result_->iteration_count++] : overflow;
@@ -790,6 +793,7 @@ Status Iteration::run(const Mission& input) {
     if (!ok(status)) return status;
     const double before = error_norm(problem_, nominal_achieved_, steering.deferred);
     double fraction = 1.0;
+    // The loop counts attempts (an int); the halved fraction rides along. NOLINTNEXTLINE(cert-flp30-c)
     for (int attempt = 0;; ++attempt, fraction *= 0.5) {
       ++result_->guidance_runs;
       status = fly_candidate(steering, corrections(nominal_achieved_), fraction);
@@ -810,12 +814,11 @@ Status Iteration::run(const Mission& input) {
   // Optimization: ask for payoff improvement, judged by the corrected payoff; halve on failure.
   const bool guidance_converged = within_deadbands(problem_, nominal_achieved_);
   double attempt_size = 0.0;
-  double best_corrected = -1e300;
   bool first_attempt = true;
   while (within_deadbands(problem_, nominal_achieved_) && result_->forward_runs < budget - 1) {
     status = backward(0, &steering);
     if (!ok(status)) return status;
-    best_corrected = corrected_payoff(nominal_achieved_);
+    const double best_corrected = corrected_payoff(nominal_achieved_);
     const ConstraintVector dphi = corrections(nominal_achieved_);
     if (first_attempt) {
       if (!initial_payoff_improvement(problem_, steering, steered_part(steering, dphi),

@@ -84,7 +84,7 @@ Status GuidanceExecutor::step(double t, GuidanceCommand* command) const {
     const int order = flight_order_index(segment.stage_code);
     if (order > order_now) break;                           // segments are in flight order (validated)
     if (!stage_started_[segment.stage_code - 1]) continue;  // its stage was skipped
-    double since_start;
+    double since_start = 0.0;
     if (order == order_now) {
       if (segment.start_stage_time_s > stage_time) break;
       since_start = stage_time - segment.start_stage_time_s;

@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# A bounded libFuzzer campaign over every target of fuzz/ (issue 14; docs/verification/fuzzing.md).
+#
+#   scripts/fuzz.sh [SECONDS] [TARGET...]     default 60 s each; targets toml_deck card_deck
+#                                             table_image plot_result
+#
+# Builds the fuzz preset (clang 14, ASan + UBSan) when needed, then runs each target for SECONDS
+# on one core, starting from its checked-in corpus (fuzz/corpus/TARGET, read only) and growing a
+# working corpus in build-fuzz/work/TARGET; its keyword dictionary (fuzz/dict) when it has one.
+# A crash, leak, timeout or undefined behaviour leaves its input in build-fuzz/artifacts/TARGET/:
+# reproduce it with build-fuzz/fuzz/tolip_fuzz_TARGET FILE, fix it, and copy the file into
+# fuzz/regressions/TARGET/ so that ctest --preset fuzz replays it from then on.
+# Prints one line per target: executions, seconds, executions per second, corpus size, findings.
+set -uo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+seconds=${1:-60}
+shift || true
+targets=("$@")
+[[ ${#targets[@]} -gt 0 ]] || targets=(toml_deck card_deck table_image plot_result)
+build="$root/build-fuzz"
+cd "$root"
+if [[ "${TOLIP_FUZZ_NO_BUILD:-0}" != 1 ]]; then  # TOLIP_FUZZ_NO_BUILD=1: run the targets as built
+  if [[ ! -f "$build/CMakeCache.txt" ]]; then nice -n 10 cmake --preset fuzz >/dev/null || exit 1; fi
+  nice -n 10 cmake --build --preset fuzz || exit 1
+fi
+status=0
+for t in "${targets[@]}"; do
+  exe="$build/fuzz/tolip_fuzz_$t"
+  work="$build/work/$t"
+  artifacts="$build/artifacts/$t"
+  mkdir -p "$work" "$artifacts"
+  dict=()
+  [[ -f "$root/fuzz/dict/$t.dict" ]] && dict=(-dict="$root/fuzz/dict/$t.dict")
+  log="$build/work/$t.log"
+  nice -n 10 "$exe" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=65536 \
+    -artifact_prefix="$artifacts/" -print_final_stats=1 "${dict[@]}" \
+    "$work" "$root/fuzz/corpus/$t" > "$log" 2>&1
+  rc=$?
+  runs=$(grep -oE '^stat::number_of_executed_units: *[0-9]+' "$log" | grep -oE '[0-9]+$' || echo 0)
+  secs=$(grep -oE '^Done [0-9]+ runs in [0-9]+ second' "$log" | grep -oE 'in [0-9]+' | grep -oE '[0-9]+' || echo "$seconds")
+  corpus=$(find "$work" -type f | wc -l)
+  found=$(find "$artifacts" -type f | wc -l)
+  echo "fuzz.sh: $t: ${runs} executions in ${secs} s ($(( runs / (secs > 0 ? secs : 1) ))/s), corpus ${corpus}, findings ${found}, exit ${rc} (log $log)"
+  [[ $rc -eq 0 && $found -eq 0 ]] || status=1
+done
+exit $status
