@@ -3,6 +3,7 @@
 #include <limits>
 #include <string>
 
+#include "plot_json.hpp"
 #include "tolip_ground/plot.hpp"
 
 namespace tolip::ground {
@@ -10,23 +11,9 @@ namespace {
 
 using json = nlohmann::json;
 
-[[noreturn]] void fail(const std::string& field, const std::string& expected, const json& found) {
-  throw PlotDataError(field + ": expected " + expected + ", found " + found.type_name());
-}
-
-const json& required(const json& object, const char* key, const std::string& field) {
-  const auto it = object.find(key);
-  if (it == object.end()) throw PlotDataError(field + ": no member '" + key + "'");
-  return *it;
-}
-
-double number(const json& object, const char* key, const std::string& field) {
-  const json& value = required(object, key, field);
-  if (value.is_null()) return std::numeric_limits<double>::quiet_NaN();
-  if (!value.is_number()) fail(field + "." + key, "a number or null", value);
-  return value.get<double>();
-}
-
+using plot_json::fail;
+using plot_json::number_or_gap;
+using plot_json::required;
 }  // namespace
 
 std::vector<Figure> autopilot_figures(const nlohmann::json& document) {
@@ -64,15 +51,15 @@ std::vector<Figure> autopilot_figures(const nlohmann::json& document) {
       }
     }
     previous_stage = stage.get<int>();
-    const double t = number(p, "time_s", field);
+    const double t = number_or_gap(p, "time_s", field);
     k_theta.x.push_back(t);
-    k_theta.y.push_back(number(p, "k_theta", field));
+    k_theta.y.push_back(number_or_gap(p, "k_theta", field));
     k_q.x.push_back(t);
-    k_q.y.push_back(number(p, "k_q_s", field));
+    k_q.y.push_back(number_or_gap(p, "k_q_s", field));
     gain_margin.x.push_back(t);
-    gain_margin.y.push_back(number(p, "upper_gain_margin_db", field));
+    gain_margin.y.push_back(number_or_gap(p, "upper_gain_margin_db", field));
     phase_margin.x.push_back(t);
-    phase_margin.y.push_back(number(p, "phase_margin_deg", field));
+    phase_margin.y.push_back(number_or_gap(p, "phase_margin_deg", field));
   }
   Figure gains;
   gains.name = "autopilot_gains";

@@ -3,6 +3,7 @@
 // stage and mode.
 #include <string>
 
+#include "plot_json.hpp"
 #include "tolip_ground/plot.hpp"
 
 namespace tolip::ground {
@@ -10,23 +11,9 @@ namespace {
 
 using json = nlohmann::json;
 
-[[noreturn]] void fail(const std::string& field, const std::string& expected, const json& found) {
-  throw PlotDataError(field + ": expected " + expected + ", found " + found.type_name());
-}
-
-const json& required(const json& object, const char* key, const std::string& field) {
-  const auto it = object.find(key);
-  if (it == object.end()) throw PlotDataError(field + ": no member '" + key + "'");
-  return *it;
-}
-
-double number(const json& object, const char* key, const std::string& field) {
-  const json& value = required(object, key, field);
-  if (value.is_null()) return std::numeric_limits<double>::quiet_NaN();
-  if (!value.is_number()) fail(field + "." + key, "a number or null", value);
-  return value.get<double>();
-}
-
+using plot_json::fail;
+using plot_json::number_or_gap;
+using plot_json::required;
 }  // namespace
 
 std::vector<Figure> hardover_figures(const nlohmann::json& document) {
@@ -64,8 +51,8 @@ std::vector<Figure> hardover_figures(const nlohmann::json& document) {
     for (std::size_t i = 0; i < samples.size(); ++i) {
       const std::string at = field + ".samples[" + std::to_string(i) + "]";
       if (!samples[i].is_object()) fail(at, "an object", samples[i]);
-      series.x.push_back(number(samples[i], "time_s", at));
-      series.y.push_back(number(samples[i], "change_in_gamma_deg", at));
+      series.x.push_back(number_or_gap(samples[i], "time_s", at));
+      series.y.push_back(number_or_gap(samples[i], "change_in_gamma_deg", at));
     }
     used[m] = true;
     figure.series.push_back(std::move(series));

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include "plot_json.hpp"
 
 namespace tolip::ground::plot_detail {
 namespace {
@@ -14,10 +15,7 @@ using json = nlohmann::json;
 constexpr double kGap = std::numeric_limits<double>::quiet_NaN();
 constexpr double kPi = 3.14159265358979323846;
 
-[[noreturn]] void fail(const std::string& field, const std::string& expected, const json& found) {
-  throw PlotDataError(field + ": expected " + expected + ", found " + found.type_name());
-}
-
+using plot_json::fail;
 // A number of an object; null (a non-finite value) gives a gap; anything else is malformed.
 double number_at(const json& object, const char* key, const std::string& field) {
   const auto it = object.find(key);

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "impact_plot.hpp"
+#include "plot_json.hpp"
 #include "tolip_ground/plot.hpp"
 
 namespace tolip::ground {
@@ -17,10 +18,7 @@ constexpr double kGap = std::numeric_limits<double>::quiet_NaN();
 
 // ---- reading the document, every fault named by its field path ----------------------------------
 
-[[noreturn]] void fail(const std::string& field, const std::string& expected, const json& found) {
-  throw PlotDataError(field + ": expected " + expected + ", found " + found.type_name());
-}
-
+using plot_json::fail;
 // The member `key` of an object, or null when absent.
 const json* member(const json& object, const char* key) {
   const auto it = object.find(key);

@@ -5,6 +5,7 @@
 #include <limits>
 #include <string>
 
+#include "plot_json.hpp"
 #include "tolip_ground/plot.hpp"
 
 namespace tolip::ground {
@@ -14,23 +15,9 @@ using json = nlohmann::json;
 
 constexpr double kGap = std::numeric_limits<double>::quiet_NaN();
 
-[[noreturn]] void fail(const std::string& field, const std::string& expected, const json& found) {
-  throw PlotDataError(field + ": expected " + expected + ", found " + found.type_name());
-}
-
-const json& required(const json& object, const char* key, const std::string& field) {
-  const auto it = object.find(key);
-  if (it == object.end()) throw PlotDataError(field + ": no member '" + key + "'");
-  return *it;
-}
-
-double number_or_gap(const json& object, const char* key, const std::string& field) {
-  const json& value = required(object, key, field);
-  if (value.is_null()) return kGap;
-  if (!value.is_number()) fail(field + "." + key, "a number or null", value);
-  return value.get<double>();
-}
-
+using plot_json::fail;
+using plot_json::number_or_gap;
+using plot_json::required;
 std::string file_stem(const std::string& id) {
   std::string stem = "radar_";
   for (const char c : id) {
