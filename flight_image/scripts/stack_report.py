@@ -36,9 +36,10 @@ EDGE = re.compile(r'^edge: \{ sourcename: "([^"]+)" targetname: "([^"]+)"')
 FRAME = re.compile(r'\\n(\d+) bytes \(([a-z, ]+)\)$')
 
 
-def read_call_graph(ci_dir):
+def read_call_graph(ci_dir, exclude=()):
     frames, labels, qualifiers, callees = {}, {}, {}, {}
-    for root, _, files in os.walk(ci_dir):
+    for root, dirs, files in os.walk(ci_dir):
+        dirs[:] = [d for d in dirs if d not in exclude]  # another image's objects (same symbol names)
         for name in files:
             if not name.endswith(".ci"):
                 continue
@@ -144,6 +145,8 @@ def init_array_functions(objdump, elf):
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--ci-dir", required=True)
+    parser.add_argument("--exclude-dir", action="append", default=[],
+                        help="directory names under --ci-dir to skip (the objects of another image)")
     parser.add_argument("--elf", required=True)
     parser.add_argument("--objdump", required=True)
     parser.add_argument("--root", required=True)
@@ -155,7 +158,7 @@ def main():
     parser.add_argument("--report")
     args = parser.parse_args()
 
-    frames, labels, qualifiers, callees = read_call_graph(args.ci_dir)
+    frames, labels, qualifiers, callees = read_call_graph(args.ci_dir, args.exclude_dir)
     binary = disassemble(args.objdump, args.elf)
     constructors = init_array_functions(args.objdump, args.elf)
     problems = []

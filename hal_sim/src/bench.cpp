@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "plant.hpp"
+#include "tolip/hal/linked_flight_computer.hpp"
 #include "tolip/table/table_image.hpp"
 #include "tolip_hal_sim/link.hpp"
 
@@ -14,30 +15,23 @@ namespace tolip::sim {
 
 namespace {
 
-// Everything the simulated hardware holds for one run: both ends of the link, the store, the
-// telemetry recorder. The ports' contexts point here.
+// The plant side of the link for one run: the frames it sends and receives, the fault injection.
 struct Hardware {
   Plant* plant = nullptr;
   const BenchConfig* config = nullptr;
   BenchResult* result = nullptr;
   double dt = 0.02;
   std::uint32_t cycle = 0;
-  // Sensor link: the plant side writes the frame, the flight side decodes it at the cycle start.
+  // Sensor link: the plant side writes the cycle's frame (size 0: lost).
   std::uint8_t sensor_bytes[kSensorFrameSize] = {};
   std::size_t sensor_size = kSensorFrameSize;
-  bool sensor_decoded = false;
   bool platform_dropout = false;
-  SensorFrame sensor;  // last frame decoded (flight side)
-  std::uint32_t expected_sensor = 0;
   std::uint32_t discrete_sequence = 0;
   int last_stage_code = 1;
   // Actuator link: the flight side writes the frame, the plant side decodes it.
   std::uint8_t actuator_bytes[kActuatorFrameSize] = {};
   std::uint32_t actuator_sequence = 0;
   hal::ActuatorCommand last_good_command;
-  // Table store.
-  const std::uint8_t* store = nullptr;
-  std::size_t store_size = 0;
   // Truth at the cycle start, for the telemetry record.
   PlantTruth truth;
 };
@@ -49,61 +43,31 @@ bool link_fault(const Hardware& hw, std::uint32_t sequence) {
   return c.link_fault_period > 0 && sequence % static_cast<std::uint32_t>(c.link_fault_period) == 0;
 }
 
-Status clock_wait(void* context, std::uint32_t* cycle) {
-  Hardware& hw = *static_cast<Hardware*>(context);
-  *cycle = hw.cycle;
-  // The receiver takes the cycle's sensor frame.
-  SensorFrame frame;
-  hw.sensor_decoded = hw.sensor_size == kSensorFrameSize &&
-                      ok(decode_sensor_frame(hw.sensor_bytes, hw.sensor_size, &frame)) &&
-                      frame.sequence == hw.expected_sensor;
-  if (hw.sensor_size == 0) {
-    ++hw.result->sensor_link.frames_lost;
-  } else if (!hw.sensor_decoded) {
-    ++hw.result->sensor_link.frames_corrupt;
+// The guidance computer in process: the link's flight end called directly with the frames' bytes.
+class InProcessFlight final : public FlightLink {
+ public:
+  explicit InProcessFlight(double period_s) : computer_(period_s) {}
+  Status upload(const std::uint8_t* image, std::size_t size) override {
+    return computer_.upload(image, size);
   }
-  if (hw.sensor_decoded) hw.sensor = frame;
-  ++hw.expected_sensor;
-  return Status::kOk;
-}
+  Status cycle(const std::uint8_t* sensor, std::size_t size, std::uint8_t* actuator,
+               hal::TelemetryFrame* telemetry) override {
+    (void)computer_.run_cycle(sensor, size, actuator, telemetry);  // its faults are in its counters
+    return Status::kOk;
+  }
+  Status finish(hal::LinkReport* report) override {
+    *report = computer_.report(0, Status::kOk);
+    return Status::kOk;
+  }
 
-Status platform_read(void* context, hal::PlatformSample* sample) {
-  Hardware& hw = *static_cast<Hardware*>(context);
-  if (!hw.sensor_decoded) return Status::kHalLinkFrameCorrupt;
-  if (hw.platform_dropout) return Status::kHalSensorInvalid;
-  *sample = hw.sensor.sample;
-  return Status::kOk;
-}
+ private:
+  hal::LinkedFlightComputer computer_;
+};
 
-Status discretes_read(void* context, hal::StageDiscretes* discretes) {
-  Hardware& hw = *static_cast<Hardware*>(context);
-  if (!hw.sensor_decoded) return Status::kHalDiscretesInvalid;
-  *discretes = hw.sensor.discretes;
-  return Status::kOk;
-}
-
-Status actuators_command(void* context, const hal::ActuatorCommand& command) {
-  Hardware& hw = *static_cast<Hardware*>(context);
-  ActuatorFrame frame;
-  frame.sequence = hw.actuator_sequence;
-  frame.command = command;
-  encode_actuator_frame(frame, hw.actuator_bytes);
-  return Status::kOk;
-}
-
-Status store_read(void* context, std::uint8_t* buffer, std::size_t capacity, std::size_t* size) {
-  Hardware& hw = *static_cast<Hardware*>(context);
-  if (hw.store == nullptr) return Status::kHalTableStoreFailed;
-  const std::size_t n = hw.store_size < capacity ? hw.store_size : capacity;
-  std::memcpy(buffer, hw.store, n);
-  *size = hw.store_size;
-  return Status::kOk;
-}
-
-Status telemetry_emit(void* context, const hal::TelemetryFrame& frame) {
-  Hardware& hw = *static_cast<Hardware*>(context);
+// The telemetry record of the cycle: the flight side's frame and the plant's truth.
+void record_telemetry(const Hardware& hw, const hal::TelemetryFrame& frame) {
   BenchResult& r = *hw.result;
-  if (r.telemetry.size() >= r.telemetry.capacity()) return Status::kHalTelemetryFailed;  // never grows
+  if (r.telemetry.size() >= r.telemetry.capacity()) return;  // never grows
   TelemetryRecord record;
   record.frame = frame;
   record.theta_true_rad = hw.plant->theta_rad();
@@ -116,7 +80,6 @@ Status telemetry_emit(void* context, const hal::TelemetryFrame& frame) {
   record.fin_pitch_rad = hw.plant->fin_pitch();
   record.fin_yaw_rad = hw.plant->fin_yaw();
   r.telemetry.push_back(record);
-  return Status::kOk;
 }
 
 // The plant side of the cycle's sensor frame: truth plus bias and noise, then the link.
@@ -137,6 +100,7 @@ void send_sensor_frame(Hardware& hw, NoiseSource& noise, const double bias[4]) {
   frame.discretes.stage_code = code;
   frame.discretes.spun_up = p.spun();
   frame.discretes.sequence = hw.discrete_sequence;
+  frame.platform_invalid = hw.platform_dropout;
   encode_sensor_frame(frame, hw.sensor_bytes);
   hw.sensor_size = kSensorFrameSize;
   ++hw.result->sensor_link.frames_sent;
@@ -194,7 +158,8 @@ struct BenchSession::Impl {
   BenchResult* result = nullptr;
   Plant plant;
   Hardware hw;
-  std::unique_ptr<hal::FlightApplication> app;
+  std::unique_ptr<InProcessFlight> in_process;
+  FlightLink* flight = nullptr;
   std::uint8_t bad_upload[kTableImageSize] = {};
   std::size_t bad_size = 0;
   bool upload_fault = false;
@@ -229,17 +194,13 @@ Status BenchSession::prepare(const BenchInputs& inputs, const BenchConfig& confi
   hw.config = &s.config;
   hw.result = &r;
   hw.dt = 1.0 / config.cycle_hz;
-  hw.store = inputs.table;
-  hw.store_size = inputs.table_size;
-
-  hal::Ports ports;
-  ports.clock = {&hw, clock_wait, hw.dt};
-  ports.platform = {&hw, platform_read};
-  ports.actuators = {&hw, actuators_command};
-  ports.table_store = {&hw, store_read};
-  ports.discretes = {&hw, discretes_read};
-  ports.telemetry = {&hw, telemetry_emit};
-  s.app = std::make_unique<hal::FlightApplication>(ports);
+  s.in_process.reset();
+  if (inputs.flight != nullptr) {
+    s.flight = inputs.flight;
+  } else {
+    s.in_process = std::make_unique<InProcessFlight>(hw.dt);
+    s.flight = s.in_process.get();
+  }
 
   // The corrupted or truncated upload of the upload scenarios, prepared before the run.
   s.bad_size = 0;
@@ -265,15 +226,15 @@ Status BenchSession::prepare(const BenchInputs& inputs, const BenchConfig& confi
 Status BenchSession::fly() {
   Impl& s = *impl_;
   BenchResult& r = *s.result;
-  if (!s.app) return r.status;
+  if (s.flight == nullptr) return r.status;
   const BenchConfig& config = s.config;
   Plant* plant = &s.plant;
   Hardware* hw = &s.hw;
-  hal::FlightApplication* app = s.app.get();
+  FlightLink* flight = s.flight;
   bool uploaded = false;
   Status status = Status::kOk;
 
-  r.boot_status = app->boot();
+  r.boot_status = flight->upload(s.inputs.table, s.inputs.table_size);
   if (!ok(r.boot_status)) {
     r.status = r.boot_status;
     return r.status;
@@ -285,14 +246,21 @@ Status BenchSession::fly() {
   double pitch_sq = 0.0, yaw_sq = 0.0;
   std::uint32_t limited_cycles = 0;
   const double liftoff_s = s.inputs.mission->launch.liftoff_duration_s;
+  hal::TelemetryFrame f;
   for (std::uint32_t k = 0;; ++k) {
     if (plant->finished() || plant->lost()) break;
+    if (config.duration_s > 0.0 && static_cast<double>(k) * dt >= config.duration_s - 1e-9) {
+      r.truncated = true;
+      break;
+    }
     hw->cycle = k;
     hw->truth = plant->truth();
     hw->platform_dropout = config.scenario == Scenario::kSensorDropout && k >= dropout_start &&
                            k < dropout_start + static_cast<std::uint32_t>(config.dropout_cycles);
     send_sensor_frame(*hw, s.noise, s.bias);
-    (void)app->run_minor_cycle();  // its faults are in its counters and the telemetry
+    status = flight->cycle(hw->sensor_bytes, hw->sensor_size, hw->actuator_bytes, &f);
+    if (!ok(status)) break;
+    record_telemetry(*hw, f);
     const hal::ActuatorCommand command = receive_actuator_frame(*hw);
     plant->command_actuators(command, dt);
     if (!r.telemetry.empty()) {
@@ -304,7 +272,6 @@ Status BenchSession::fly() {
 
     // Statistics of the cycle.
     const double t = static_cast<double>(k) * dt;
-    const hal::TelemetryFrame& f = app->last_frame();
     const int code = plant->stage_code();
     if (t >= liftoff_s && code >= 1 && code <= 3 && (f.k_theta != 0.0 || f.k_q_s != 0.0)) {
       const double ep = f.theta_command_rad - plant->theta_rad();
@@ -326,14 +293,15 @@ Status BenchSession::fly() {
     // Uploads run between cycles.
     if (s.upload_fault && !uploaded && t + 1e-9 >= config.fault_time_s) {
       uploaded = true;
-      hw->store = s.bad_upload;
-      hw->store_size = s.bad_size;
-      r.upload_status = app->load_table();
+      r.upload_status = flight->upload(s.bad_upload, s.bad_size);
     }
 
     status = plant->advance(static_cast<double>(k + 1) * dt);
     if (!ok(status)) break;
   }
+  hal::LinkReport report;
+  const Status finished = flight->finish(&report);
+  if (ok(status)) status = finished;
   r.status = status;
   r.vehicle_lost = plant->lost();
   r.completed = plant->finished() && ok(status);
@@ -349,8 +317,10 @@ Status BenchSession::fly() {
     r.yaw_error_rms_rad = std::sqrt(yaw_sq / r.tracked_cycles);
   }
   r.actuator_saturation_s = limited_cycles * dt;
-  r.table_crc = app->tables().active_crc();
-  r.flight = app->counters();
+  r.table_crc = report.table_crc;
+  r.flight = report.counters;
+  r.sensor_link.frames_lost = report.sensor_frames_missing;
+  r.sensor_link.frames_corrupt = report.sensor_frames_rejected;
   return r.status;
 }
 

@@ -106,6 +106,9 @@ struct HilCommandOptions {
   std::string telemetry_path;  // empty: no CSV
   std::string mission_id;      // the identifier the table was exported with; empty: the case title's
   bool json = false;
+  std::string target = "host";  // host: in process; qemu: the Cortex-M7 image under QEMU
+  std::string image_path;       // --target qemu: the image; empty: the cortex-m7 preset's build
+  double duration_s = 0.0;      // > 0: fly only this long
 };
 int run_hil_command(const HilCommandOptions& options, std::ostream& out, std::ostream& err);
 

@@ -607,6 +607,7 @@ CLI::App* add_hil_command(CLI::App& app, HilCommandOptions* options) {
       "  tolip export examples/scout/reference_optimum.toml --out table.bin\n"
       "  tolip hil examples/scout/reference_optimum.toml --table table.bin\n"
       "  tolip hil DECK --table table.bin --scenario sensor-dropout --telemetry tm.csv\n"
+      "  tolip hil DECK --table table.bin --target qemu --image tolip_flight_pil.elf\n"
       "Scenarios: nominal, upload-corrupt, upload-truncated, sensor-dropout,\n"
       "actuator-stuck, actuator-hardover, late-ignition, thrust-misalignment,\n"
       "link-loss, link-corruption (docs/hil.md).\n"
@@ -635,6 +636,19 @@ CLI::App* add_hil_command(CLI::App& app, HilCommandOptions* options) {
                   "the case title's, as tolip export gives it)")
       ->type_name("TEXT");
   hil->add_flag("--json", options->json, "Print one JSON document instead of the report (docs/cli.md)");
+  hil->add_option("--target", options->target,
+                  "Where the flight application runs: host (in process, the default)\n"
+                  "or qemu (the Cortex-M7 image under qemu-system-arm, in lock-step\n"
+                  "over its serial port; docs/hil.md, 'Processor in the loop')")
+      ->type_name("host|qemu");
+  hil->add_option("--image", options->image_path,
+                  "The processor-in-the-loop image for --target qemu (default\n"
+                  "build-cortex-m7/flight_image/tolip_flight_pil.elf, the cortex-m7\n"
+                  "preset's build)")
+      ->type_name("FILE");
+  hil->add_option("--duration-s", options->duration_s,
+                  "Fly only the first S seconds from lift-off (default: to the final burnout)")
+      ->type_name("S");
   return hil;
 }
 

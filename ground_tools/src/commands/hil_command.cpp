@@ -2,6 +2,7 @@
 // through the flight-side loader of the flight application (fsw_core hal), flies it against the
 // simulated vehicle of hal_sim from lift-off to the final burnout, and reports the achieved
 // burnout and orbit beside the ground prediction for the same table.
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -25,11 +26,14 @@
 #include "tolip_ground/hardover_run.hpp"
 #include "tolip_ground/optimization_run.hpp"
 #include "tolip_hal_sim/bench.hpp"
+#include "tolip_hal_sim/qemu_target.hpp"
 
 namespace tolip::ground {
 namespace {
 
 constexpr double kFtPerNmi = 6076.115485564304;
+// Where the cortex-m7 preset builds the processor-in-the-loop image, from the repository root.
+constexpr const char* kDefaultPilImage = "build-cortex-m7/flight_image/tolip_flight_pil.elf";
 
 std::string scenario_list() {
   std::string names;
@@ -134,6 +138,27 @@ int run_hil_command(const HilCommandOptions& options, std::ostream& out, std::os
     return kExitBadInput;
   }
   config.cycle_hz = options.rate_hz;
+  const bool on_qemu = options.target == "qemu";
+  if (!on_qemu && options.target != "host") {
+    err << "tolip: --target '" << options.target << "': the targets are host and qemu\n";
+    return kExitBadInput;
+  }
+  if (on_qemu && options.rate_hz != hal::kDefaultMinorCycleHz) {
+    err << "tolip: --rate-hz " << options.rate_hz << ": the processor-in-the-loop image flies "
+        << hal::kDefaultMinorCycleHz << " Hz\n";
+    return kExitBadInput;
+  }
+  if (!on_qemu && !options.image_path.empty()) {
+    err << "tolip: --image: only with --target qemu\n";
+    return kExitBadInput;
+  }
+  if (!(options.duration_s >= 0.0) || !std::isfinite(options.duration_s)) {
+    err << "tolip: --duration-s " << options.duration_s << ": must be a positive number of seconds\n";
+    return kExitBadInput;
+  }
+  config.duration_s = options.duration_s;
+  const std::string image_path =
+      options.image_path.empty() ? std::string(kDefaultPilImage) : options.image_path;
   config.seed = options.seed;
   for (const std::string* path : {&options.telemetry_path}) {
     if (!path->empty() &&
@@ -247,8 +272,33 @@ int run_hil_command(const HilCommandOptions& options, std::ostream& out, std::os
   inputs.table = image.data();
   inputs.table_size = image.size();
   auto result = std::make_unique<sim::BenchResult>();
+  std::unique_ptr<sim::QemuTarget> qemu;
+  if (on_qemu) {
+    qemu = std::make_unique<sim::QemuTarget>();
+    sim::QemuOptions qemu_options;
+    qemu_options.image = image_path;
+    std::string start_error;
+    if (!qemu->start(qemu_options, &start_error)) {
+      err << "tolip: --target qemu: " << start_error << '\n';
+      return kExitBadInput;
+    }
+    inputs.flight = qemu.get();
+  }
+  const auto flight_start = std::chrono::steady_clock::now();
   const Status bench = sim::run_bench(inputs, config, result.get());
+  const double wall_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - flight_start).count();
   const sim::BenchResult& r = *result;
+  if (qemu) {
+    std::string link_error = qemu->error();
+    std::string stop_error;
+    if (link_error.empty() && !qemu->stop(&stop_error)) link_error = stop_error;
+    if (!link_error.empty()) {
+      err << "tolip: --target qemu: " << link_error << '\n';
+      return kExitBadInput;
+    }
+  }
+  const double flown_s = static_cast<double>(r.telemetry.size()) / config.cycle_hz;
 
   if (!options.telemetry_path.empty()) {
     std::string write_error;
@@ -305,6 +355,13 @@ int run_hil_command(const HilCommandOptions& options, std::ostream& out, std::os
     j["peak_qbar_alpha_lb_deg_ft2"] = r.peak_qbar_alpha_lbf_rad_ft2 * kRadToDeg;
     j["peak_qbar_alpha_time_s"] = r.peak_qbar_alpha_time_s;
     j["actuator_saturation_s"] = r.actuator_saturation_s;
+    j["target"] = {{"kind", options.target},
+                   {"image", on_qemu ? image_path : std::string()},
+                   {"cycles", r.telemetry.size()},
+                   {"wall_s", wall_s},
+                   {"cycles_per_s", wall_s > 0.0 ? static_cast<double>(r.telemetry.size()) / wall_s : 0.0},
+                   {"real_time_factor", wall_s > 0.0 ? flown_s / wall_s : 0.0}};
+    j["truncated"] = r.truncated;
     j["flight_counters"] = counters_json(r.flight);
     j["sensor_link"] = link_json(r.sensor_link);
     j["actuator_link"] = link_json(r.actuator_link);
@@ -333,7 +390,7 @@ int run_hil_command(const HilCommandOptions& options, std::ostream& out, std::os
     j["hil_series"] = series;
     out << j.dump(2) << '\n';
   } else {
-    char line[256];
+    char line[1024];
     out << "TOLIP HARDWARE-IN-THE-LOOP BENCH  scenario " << info.name << "  seed " << config.seed << "  "
         << config.cycle_hz << " Hz\n";
     out << "table " << options.table_path << " (CRC-32 " << hex32(stored_table_crc(image.data())) << ", '"
@@ -347,6 +404,7 @@ int run_hil_command(const HilCommandOptions& options, std::ostream& out, std::os
     out << "outcome: "
         << (r.completed      ? "flew to the final burnout"
             : r.vehicle_lost ? "VEHICLE LOST"
+            : r.truncated    ? "stopped by --duration-s"
                              : status_name(bench))
         << " at " << r.end_time_s << " s (stage " << r.final_stage << ")\n\n";
     out << "                          ACHIEVED      PREDICTED     DIFFERENCE\n";
@@ -383,6 +441,14 @@ int run_hil_command(const HilCommandOptions& options, std::ostream& out, std::os
         << ", corrupt " << r.sensor_link.frames_corrupt << "), actuator frames "
         << r.actuator_link.frames_sent << " (lost " << r.actuator_link.frames_lost << ", corrupt "
         << r.actuator_link.frames_corrupt << ")\n";
+    if (on_qemu) {
+      std::snprintf(line, sizeof line,
+                    "target: qemu (%s): %zu cycles in %.2f s wall, %.0f cycles/s, %.2fx real time\n",
+                    image_path.c_str(), r.telemetry.size(), wall_s,
+                    wall_s > 0.0 ? static_cast<double>(r.telemetry.size()) / wall_s : 0.0,
+                    wall_s > 0.0 ? flown_s / wall_s : 0.0);
+      out << line;
+    }
     if (!options.telemetry_path.empty()) {
       out << "telemetry: " << r.telemetry.size() << " rows to " << options.telemetry_path << '\n';
     }

@@ -20,6 +20,7 @@
 #include "tolip/core/state.hpp"
 #include "tolip/core/status.hpp"
 #include "tolip/hal/flight_application.hpp"
+#include "tolip/hal/link.hpp"
 #include "tolip/hardover/hardover.hpp"
 #include "tolip/mission/mission.hpp"
 #include "tolip/orbit/orbit_elements.hpp"
@@ -72,6 +73,8 @@ struct BenchConfig {
   double late_ignition_s = 2.0;                           //   by this much
   double misalignment_rad = 0.25 * 0.017453292519943295;  // pitch-plane thrust misalignment, stage 1
   int link_fault_period = 50;                             // every n-th sensor and actuator frame
+  // Fly only the first duration_s seconds from lift-off (0: to the final burnout).
+  double duration_s = 0.0;
 };
 
 // One telemetry record: the flight application's frame and the plant's truth at that cycle.
@@ -98,6 +101,7 @@ struct LinkCounters {
 struct BenchResult {
   Status status = Status::kOk;  // kOk: flew to the final burnout; else why the run stopped
   bool completed = false;
+  bool truncated = false;     // stopped at BenchConfig::duration_s
   bool vehicle_lost = false;  // |alpha| reached 90 deg or the vehicle hit the ground
   Status boot_status = Status::kOk;
   Status upload_status = Status::kOk;  // the mid-flight upload (upload scenarios), else kOk
@@ -125,12 +129,29 @@ struct BenchResult {
   std::vector<TelemetryRecord> telemetry;  // one per cycle (reserved before the run)
 };
 
+// The flight side of the bench, behind the frame link (docs/hil.md): the guidance computer in
+// process (hal::LinkedFlightComputer called directly, the default) or the Cortex-M7 image under
+// QEMU in lock-step over its serial port (qemu_target.hpp). Every call carries frames as bytes.
+class FlightLink {
+ public:
+  virtual ~FlightLink() = default;
+  // Uploads a table image (the boot upload first); the flight side's loader status.
+  virtual Status upload(const std::uint8_t* image, std::size_t size) = 0;
+  // One minor cycle: the cycle's sensor frame (size 0: lost in the link); the flight side's actuator
+  // frame (kActuatorFrameSize bytes) and telemetry. Not kOk: the link itself failed (the run stops).
+  virtual Status cycle(const std::uint8_t* sensor, std::size_t size, std::uint8_t* actuator,
+                       hal::TelemetryFrame* telemetry) = 0;
+  // End of the flight: the flight side's counters and table in force.
+  virtual Status finish(hal::LinkReport* report) = 0;
+};
+
 struct BenchInputs {
   const Mission* mission = nullptr;
   const PreparedCase* prepared = nullptr;
   const HardoverData* hardover = nullptr;  // data blocks 44-45 (inertia, damping, jets, stations)
   const std::uint8_t* table = nullptr;     // the table image uploaded at boot
   std::size_t table_size = 0;
+  FlightLink* flight = nullptr;  // nullptr: the guidance computer in process
 };
 
 // Number of minor cycles from lift-off to the final burnout of the case (with the scenario's late
