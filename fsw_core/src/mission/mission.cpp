@@ -203,6 +203,11 @@ Status check_options(const Options& options, const Check& check) {
     return check.fail(Status::kBodyDynamicsRelinearizationWithoutLinearization, 4, 0, "ip", 7, ip[7], "",
                       exactly(1), "IP(7) = 1 (linearization) with IP(6) = 1");
   }
+  // The q-bar x alpha limit (an extension of the options, issue 15): 0 (none) or positive.
+  TOLIP_CHECK(check.finite(options.qbar_alpha_limit_lbf_rad_ft2, 4, 0, "qbar_alpha_limit_lbf_rad_ft2",
+                           "lbf rad/ft^2"));
+  TOLIP_CHECK(check.range(options.qbar_alpha_limit_lbf_rad_ft2, at_least(0.0), Status::kOptionOutOfRange, 4,
+                          0, "qbar_alpha_limit_lbf_rad_ft2", "lbf rad/ft^2"));
   return Status::kOk;
 }
 
@@ -661,6 +666,12 @@ Status check_constraints(const ConstraintList& c, const Options& options, const 
     return check.fail(Status::kTooManyConstraints, 8, 0, "count", -1, c.count, "",
                       at_most(kMaxConstraints - 1),
                       "at most 12 counted constraints with the heating constraint (13 in all)");
+  }
+  // The q-bar x alpha constraint (options, issue 15) joins the list the same way: one more entry.
+  if (options.qbar_alpha_constraint() && c.count + (heating_listed ? 1 : 0) + 1 > kMaxConstraints) {
+    return check.fail(Status::kTooManyConstraints, 8, 0, "count", -1, c.count, "",
+                      at_most(kMaxConstraints - 1 - (heating_listed ? 1 : 0)),
+                      "room for the q-bar x alpha constraint (13 entries in all)");
   }
   // Every constraint after the payoff is scaled by its optimization deadband (it must be > 0);
   // linearization (IP(7)) holds each constraint it fits (all but inclination and node) to its

@@ -2,11 +2,13 @@
 #include "tolip/optimizer/backward_run.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include "tolip/atmosphere/atmosphere.hpp"
 #include "tolip/dynamics/vertical_flight.hpp"
 #include "tolip/earth/earth_model.hpp"
 #include "tolip/optimizer/constraint_parameters.hpp"
+#include "tolip/optimizer/qbar_alpha.hpp"
 #include "tolip/trajectory/flight_dynamics.hpp"
 #include "tolip/trajectory/liftoff.hpp"
 
@@ -174,7 +176,25 @@ class BackwardSweep {
 void BackwardSweep::inject(int point) {
   bool heating_gradient_known = false;
   StateVector heating_gradient = StateVector::Zero();
+  bool qbar_alpha_known = false;
+  StateVector qbar_alpha_state = StateVector::Zero();
+  double qbar_alpha_theta = 0.0;
   for (int j = 0; j < count_; ++j) {
+    if (terminals_[j].qbar_alpha_integral) {
+      // The q-bar x alpha excess (tolip/optimizer/qbar_alpha.hpp): forced through the state and
+      // through the point's own pitch value. A gradient that failed is the run's failure (the
+      // sweep's finiteness check stops it).
+      if (!qbar_alpha_known) {
+        if (!ok(qbar_alpha_excess_gradient(mission_, prepared_, trajectory_, point, &qbar_alpha_state,
+                                           &qbar_alpha_theta))) {
+          qbar_alpha_state.setConstant(std::numeric_limits<double>::quiet_NaN());
+        }
+        qbar_alpha_known = true;
+      }
+      state_.col(j) += qbar_alpha_state;
+      out_->theta_gradient[point](j) += qbar_alpha_theta;
+      continue;
+    }
     if (terminals_[j].heat_integral) {
       if (!heating_gradient_known) {
         heating_gradient = heat_integral_gradient(point);

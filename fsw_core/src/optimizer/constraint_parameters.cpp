@@ -15,6 +15,7 @@
 #include <cmath>
 
 #include "tolip/earth/earth_model.hpp"
+#include "tolip/optimizer/qbar_alpha.hpp"
 #include "tolip/orbit/orbit_elements.hpp"
 
 namespace tolip {
@@ -50,7 +51,8 @@ static_assert(static_cast<int>(ConstraintQuantity::kTotalHeating) == 14 &&
 bool point_finite(const ConstraintPoint& point) {
   return point.state.allFinite() && std::isfinite(point.time_from_launch_s) &&
          std::isfinite(point.weight_lb) && std::isfinite(point.density_slug_ft3) &&
-         std::isfinite(point.ddensity_dh) && std::isfinite(point.total_heating_btu_ft2);
+         std::isfinite(point.ddensity_dh) && std::isfinite(point.total_heating_btu_ft2) &&
+         std::isfinite(point.qbar_alpha_excess_s);
 }
 
 // The code must be one decode_constraint_code() produces.
@@ -335,6 +337,9 @@ Status decode_constraint_code(int code, ConstraintCode* out) {
   } else if (code == 102) {
     c.quantity = code;
     c.kind = ConstraintQuantity::kAsymptoteDeclination;
+  } else if (code == kQbarAlphaConstraintCode) {
+    c.quantity = code;
+    c.kind = ConstraintQuantity::kQbarAlphaExcess;
   } else {
     return Status::kUnknownConstraintCode;
   }
@@ -448,6 +453,7 @@ Status constraint_value(const Constants& constants, const LaunchConditions& laun
                                                                earth_fixed_longitude_rad(constants, point));
         break;
       case ConstraintQuantity::kTotalHeating: result = point.total_heating_btu_ft2; break;
+      case ConstraintQuantity::kQbarAlphaExcess: result = point.qbar_alpha_excess_s; break;
       case ConstraintQuantity::kDynamicPressure:
         result = 0.5 * point.density_slug_ft3 * x(kStateV) * x(kStateV);
         break;
@@ -525,8 +531,9 @@ Status constraint_partials(const Constants& constants, const LaunchConditions& l
         break;
       }
       case ConstraintQuantity::kTotalHeating:
-        // Integral constraint: its adjoint starts at zero; the integrand enters the adjoint
-        // equations (Sec. 13, stagnation_heating_rate_partials).
+      case ConstraintQuantity::kQbarAlphaExcess:
+        // Integral constraints: their adjoints start at zero; the integrands enter the adjoint
+        // equations (Sec. 13, stagnation_heating_rate_partials; qbar_alpha_excess_gradient).
         break;
       case ConstraintQuantity::kDynamicPressure: {
         // q = rho V^2 / 2 with rho(h), h = r - R_OBL(lambda): dq/dV = rho V, dq/dr = V^2/2 drho/dh
@@ -582,6 +589,8 @@ ConstraintPoint constraint_point_at(const Mission& mission, const Trajectory& tr
   c.time_from_launch_s = p.time_s;
   c.weight_lb = p.weight_lb;
   c.total_heating_btu_ft2 = trajectory.heat_integral_btu_ft2;
+  if (mission.options.qbar_alpha_constraint())
+    c.qbar_alpha_excess_s = qbar_alpha_excess_s(mission, trajectory);
   if (p.altitude_ft <= mission.constants.haero_ft) {
     AtmosphereSample air;
     const double radius = oblate_radius_ft(mission.constants, p.state[kStateLambda]);

@@ -6,6 +6,7 @@ namespace tolip {
 
 bool is_inequality_constraint(const ConstraintCode& code, const Options& options) {
   return code.kind == ConstraintQuantity::kTotalHeating ||
+         code.kind == ConstraintQuantity::kQbarAlphaExcess ||
          (code.kind == ConstraintQuantity::kDynamicPressure && options.qbar_constraint_type() == 1);
 }
 
@@ -59,6 +60,7 @@ Status constraint_terminals(const ConstraintSet& set, const Mission& mission, co
     terminals[i].point = constraint_point_index(set.codes[i], trajectory);
     if (terminals[i].point < 0) return Status::kValueOutOfRange;
     terminals[i].heat_integral = set.codes[i].kind == ConstraintQuantity::kTotalHeating;
+    terminals[i].qbar_alpha_integral = set.codes[i].kind == ConstraintQuantity::kQbarAlphaExcess;
     const ConstraintPoint point = constraint_point_at(mission, trajectory, terminals[i].point);
     const Status status =
         constraint_partials(mission.constants, mission.launch, set.codes[i], point, &terminals[i].partials);

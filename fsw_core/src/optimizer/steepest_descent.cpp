@@ -10,6 +10,7 @@
 #include "tolip/mission/adjustable_parameter.hpp"
 #include "tolip/optimizer/constraint_parameters.hpp"
 #include "tolip/optimizer/constraint_set.hpp"
+#include "tolip/optimizer/qbar_alpha.hpp"
 
 namespace tolip {
 namespace {
@@ -42,6 +43,9 @@ struct Problem : ConstraintSet {
   bool heating_active = false;
   double heating_limit_btu_ft2 = 0.0;
   double heating_deadband_btu_ft2 = 0.0;
+  // The q-bar x alpha limit (issue 15, tolip/optimizer/qbar_alpha.hpp) joins the same way.
+  bool qbar_alpha_listed = false;
+  bool qbar_alpha_active = false;
 };
 
 Status make_problem(const Mission& mission, Problem* problem) {
@@ -73,6 +77,11 @@ Status make_problem(const Mission& mission, Problem* problem) {
     problem->heating_deadband_btu_ft2 = list.deadband_optimization[list.count - 1];
     if (!(problem->heating_deadband_btu_ft2 > 0.0)) return Status::kValueOutOfRange;
   }
+  if (mission.options.qbar_alpha_constraint()) {
+    if (list.count + (problem->heating_listed ? 1 : 0) + 1 > kMaxConstraints)
+      return Status::kTooManyConstraints;
+    problem->qbar_alpha_listed = true;
+  }
 
   problem->adjustable_count = mission.adjustable.count;
   for (int p = 0; p < mission.adjustable.count; ++p) {
@@ -103,6 +112,17 @@ void activate_heating_if_exceeded(const Trajectory& nominal, const Options& opti
   append_constraint(heating, problem->heating_limit_btu_ft2, problem->heating_deadband_btu_ft2, options,
                     problem);
   problem->heating_active = true;
+}
+
+// The q-bar x alpha limit likewise: appended once a nominal's excess integral is positive.
+void activate_qbar_alpha_if_exceeded(const Mission& mission, const Trajectory& nominal, Problem* problem) {
+  if (!problem->qbar_alpha_listed || problem->qbar_alpha_active) return;
+  if (!(qbar_alpha_excess_s(mission, nominal) > 0.0)) return;
+  ConstraintCode code;
+  decode_constraint_code(kQbarAlphaConstraintCode, &code);
+  // Room was checked by make_problem; the deadband is a positive constant.
+  append_constraint(code, 0.0, kQbarAlphaExcessDeadbandS, mission.options, problem);
+  problem->qbar_alpha_active = true;
 }
 
 // ---- constraint values: tolip/optimizer/constraint_set.hpp -------------------------------------
@@ -538,6 +558,9 @@ class Iteration {
   double partials_[kMaxConstraints] = {};
   PointRoles roles_;
   LaunchColumns launch_columns_;
+  // A path constraint (q-bar x alpha) joined the list at the last accepted nominal: an
+  // optimization phase that it ends goes back to guidance (docs/theory/optimizer.md).
+  bool path_constraint_joined_ = false;
 };
 
 ConstraintVector Iteration::corrections(const double achieved[kMaxConstraints]) const {
@@ -769,6 +792,18 @@ void Iteration::accept_candidate() {
       nominal_achieved_[i] = ws_->nominal.heat_integral_btu_ft2;
     }
   }
+  // The q-bar x alpha limit joins at the first nominal that meets every other deadband and exceeds
+  // it: the crude programs guidance starts from have loads that mean nothing (the reference deck's
+  // initial program flies 10,100 lb deg/ft^2 at the end of coast 6), and asking guidance to remove
+  // an excess of thousands of deadbands at once sends the step below the surface.
+  if (!problem_.qbar_alpha_active && within_deadbands(problem_, nominal_achieved_)) {
+    activate_qbar_alpha_if_exceeded(ws_->mission, ws_->nominal, &problem_);
+    if (problem_.qbar_alpha_active) {
+      const int i = problem_.count - 1;
+      nominal_achieved_[i] = qbar_alpha_excess_s(ws_->mission, ws_->nominal);
+      path_constraint_joined_ = true;
+    }
+  }
 }
 
 Status Iteration::run(const Mission& input) {
@@ -787,64 +822,76 @@ Status Iteration::run(const Mission& input) {
   // reports kGuidanceDidNotConverge with the last good nominal.
   Steering steering;
   bool guidance_stuck = false;
-  while (!guidance_stuck && !within_deadbands(problem_, nominal_achieved_) &&
-         result_->forward_runs < budget - 1) {
-    status = backward(1, &steering);
-    if (!ok(status)) return status;
-    const double before = error_norm(problem_, nominal_achieved_, steering.deferred);
-    double fraction = 1.0;
-    // The loop counts attempts (an int); the halved fraction rides along. NOLINTNEXTLINE(cert-flp30-c)
-    for (int attempt = 0;; ++attempt, fraction *= 0.5) {
-      ++result_->guidance_runs;
-      status = fly_candidate(steering, corrections(nominal_achieved_), fraction);
-      const bool flown = ok(status);
-      if (!flown) ++result_->crashed_runs;
-      const bool better = flown && error_norm(problem_, candidate_achieved_, steering.deferred) < before;
-      record(RunKind::kGuidance, status, better && within_deadbands(problem_, candidate_achieved_), 0.0);
-      if (better || result_->forward_runs >= budget - 1) break;
-      if (flown ? attempt >= kGuidanceStepHalvings : attempt >= kCrashRecoveryHalvings) break;
-    }
-    if (ok(status)) {
-      accept_candidate();
-    } else {
-      guidance_stuck = true;
-    }
-  }
-
-  // Optimization: ask for payoff improvement, judged by the corrected payoff; halve on failure.
-  const bool guidance_converged = within_deadbands(problem_, nominal_achieved_);
+  bool guidance_converged = false;
   double attempt_size = 0.0;
   bool first_attempt = true;
-  while (within_deadbands(problem_, nominal_achieved_) && result_->forward_runs < budget - 1) {
-    status = backward(0, &steering);
-    if (!ok(status)) return status;
-    const double best_corrected = corrected_payoff(nominal_achieved_);
-    const ConstraintVector dphi = corrections(nominal_achieved_);
-    if (first_attempt) {
-      if (!initial_payoff_improvement(problem_, steering, steered_part(steering, dphi),
-                                      typical_control_measure(), &attempt_size)) {
-        attempt_size = ws_->mission.convergence.initial_payoff_improvement;
-        result_->initial_improvement_from_da13_1 = true;
+  // Guidance then optimization; once more from guidance when the q-bar x alpha constraint joined
+  // during the optimization and the nominal is outside its deadband (never on decks without it).
+  for (;;) {
+    path_constraint_joined_ = false;
+    while (!guidance_stuck && !within_deadbands(problem_, nominal_achieved_) &&
+           result_->forward_runs < budget - 1) {
+      status = backward(1, &steering);
+      if (!ok(status)) return status;
+      const double before = error_norm(problem_, nominal_achieved_, steering.deferred);
+      double fraction = 1.0;
+      // The loop counts attempts (an int); the halved fraction rides along. NOLINTNEXTLINE(cert-flp30-c)
+      for (int attempt = 0;; ++attempt, fraction *= 0.5) {
+        ++result_->guidance_runs;
+        status = fly_candidate(steering, corrections(nominal_achieved_), fraction);
+        const bool flown = ok(status);
+        if (!flown) ++result_->crashed_runs;
+        const bool better = flown && error_norm(problem_, candidate_achieved_, steering.deferred) < before;
+        record(RunKind::kGuidance, status, better && within_deadbands(problem_, candidate_achieved_), 0.0);
+        if (better || result_->forward_runs >= budget - 1) break;
+        if (flown ? attempt >= kGuidanceStepHalvings : attempt >= kCrashRecoveryHalvings) break;
       }
-      result_->initial_payoff_improvement = attempt_size;
-      first_attempt = false;
+      if (ok(status)) {
+        accept_candidate();
+      } else {
+        guidance_stuck = true;
+      }
     }
-    bool improved = false;
-    while (attempt_size >= ws_->mission.convergence.stop_improvement && result_->forward_runs < budget - 1) {
-      ConstraintVector dpsi = dphi;
-      dpsi(0) = attempt_size;
-      status = fly_candidate(steering, dpsi, 1.0);
-      ++result_->optimization_runs;
-      if (!ok(status)) ++result_->crashed_runs;  // recovered like any failure: half the attempt
-      improved = ok(status) && within_deadbands(problem_, candidate_achieved_) &&
-                 corrected_payoff(candidate_achieved_) > best_corrected;
-      record(RunKind::kOptimization, status, improved, attempt_size);
-      if (improved) break;
-      attempt_size *= 0.5;
+
+    // Optimization: ask for payoff improvement, judged by the corrected payoff; halve on failure.
+    guidance_converged = within_deadbands(problem_, nominal_achieved_);
+    while (within_deadbands(problem_, nominal_achieved_) && result_->forward_runs < budget - 1) {
+      status = backward(0, &steering);
+      if (!ok(status)) return status;
+      const double best_corrected = corrected_payoff(nominal_achieved_);
+      const ConstraintVector dphi = corrections(nominal_achieved_);
+      if (first_attempt) {
+        if (!initial_payoff_improvement(problem_, steering, steered_part(steering, dphi),
+                                        typical_control_measure(), &attempt_size)) {
+          attempt_size = ws_->mission.convergence.initial_payoff_improvement;
+          result_->initial_improvement_from_da13_1 = true;
+        }
+        result_->initial_payoff_improvement = attempt_size;
+        first_attempt = false;
+      }
+      bool improved = false;
+      while (attempt_size >= ws_->mission.convergence.stop_improvement &&
+             result_->forward_runs < budget - 1) {
+        ConstraintVector dpsi = dphi;
+        dpsi(0) = attempt_size;
+        status = fly_candidate(steering, dpsi, 1.0);
+        ++result_->optimization_runs;
+        if (!ok(status)) ++result_->crashed_runs;  // recovered like any failure: half the attempt
+        improved = ok(status) && within_deadbands(problem_, candidate_achieved_) &&
+                   corrected_payoff(candidate_achieved_) > best_corrected;
+        record(RunKind::kOptimization, status, improved, attempt_size);
+        if (improved) break;
+        attempt_size *= 0.5;
+      }
+      if (!improved) break;
+      ++result_->successful_optimization_runs;
+      accept_candidate();
+      if (path_constraint_joined_) first_attempt = true;  // the next phase sizes its first attempt anew
     }
-    if (!improved) break;
-    ++result_->successful_optimization_runs;
-    accept_candidate();
+    if (!(path_constraint_joined_ && guidance_converged && !guidance_stuck &&
+          !within_deadbands(problem_, nominal_achieved_) && result_->forward_runs < budget - 1)) {
+      break;
+    }
   }
   // Once guidance has succeeded every nominal is feasible, so the phase ends by one of Sec. 22's
   // two rules; which one is told by the budget.

@@ -71,6 +71,8 @@ QuantityText quantity_text(ConstraintQuantity kind) {
       return {"asymptote_right_ascension", "ASYMPTOTE RA", "rad", "RAD", 8};
     case ConstraintQuantity::kAsymptoteDeclination:
       return {"asymptote_declination", "ASYMPTOTE DECL", "rad", "RAD", 8};
+    case ConstraintQuantity::kQbarAlphaExcess:
+      return {"qbar_alpha_excess", "QBAR*ALPHA EXCESS", "s", "SEC", 8};
   }
   return {"unknown", "UNKNOWN", "", "", 6};
 }

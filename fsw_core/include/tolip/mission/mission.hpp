@@ -85,6 +85,10 @@ struct Options {
   // The linearization flies the optimized case without the in-flight attitudes (IP(11), IP(12)).
   void set_zero_alpha_window(bool on) { ip[11] = on ? 1 : 0; }
   void set_alpha_zero_at_stage2_ignition(bool on) { ip[12] = on ? 1 : 0; }
+  // Not in the manual (issue 15; docs/theory/constraints-and-ics.md "q-bar x alpha"): the limit of
+  // |q-bar alpha| over the phases with aerodynamic lift, lbf rad/ft^2 (deck: lb deg/ft^2); 0: none.
+  double qbar_alpha_limit_lbf_rad_ft2 = 0.0;
+  bool qbar_alpha_constraint() const { return qbar_alpha_limit_lbf_rad_ft2 > 0.0; }
 };
 
 // Data blocks 20 and 21 (angles in rad).

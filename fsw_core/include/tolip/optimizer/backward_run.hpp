@@ -35,6 +35,9 @@ struct ConstraintTerminal {
   // over the stored points (trapezoidal): its adjoint is driven at every point by the heating
   // rate's partials instead of starting from `partials`.
   bool heat_integral = false;
+  // The q-bar x alpha excess (code 200, tolip/optimizer/qbar_alpha.hpp), also an integral over the
+  // stored points: driven at every point by qbar_alpha_excess_gradient (state and pitch value).
+  bool qbar_alpha_integral = false;
 };
 
 struct BackwardRun {

@@ -40,7 +40,13 @@ enum class ConstraintQuantity : int {
   kHyperbolicExcessVelocity,    // 100 v_H = sqrt(2E)
   kAsymptoteRightAscension,     // 101 alpha_eH
   kAsymptoteDeclination,        // 102 delta_eH
+  // 200: not a data block 8 code (TOLIP extension, issue 15): the q-bar x alpha excess integral of
+  // tolip/optimizer/qbar_alpha.hpp, which joins the list when the limit in the options is exceeded.
+  kQbarAlphaExcess,
 };
+
+// The code the q-bar x alpha constraint carries in the optimizer's list and its reports.
+inline constexpr int kQbarAlphaConstraintCode = 200;
 
 struct ConstraintCode {
   int code = 0;                 // as written in data block 8
@@ -51,7 +57,8 @@ struct ConstraintCode {
 };
 
 // Decodes a block-8 code. Fails with kUnknownConstraintCode for anything but 0..14,
-// 10 X + 5 .. 10 X + 9 (X = 1..9) and 100..102; *out is untouched on failure.
+// 10 X + 5 .. 10 X + 9 (X = 1..9), 100..102 and kQbarAlphaConstraintCode (the optimizer's own; data
+// block 8 never lists it); *out is untouched on failure.
 Status decode_constraint_code(int code, ConstraintCode* out);
 
 // What a constraint value or its partial derivatives need at the point where it applies (the
@@ -67,6 +74,7 @@ struct ConstraintPoint {
   double density_slug_ft3 = 0.0;       // rho at the point
   double ddensity_dh = 0.0;            // d rho / dh, slug/ft^3 per ft (for q-bar partials)
   double total_heating_btu_ft2 = 0.0;  // integral of Qdot dt up to the point (code 14)
+  double qbar_alpha_excess_s = 0.0;    // the q-bar x alpha excess integral of the trajectory (code 200)
 };
 
 // Index of the mass in the 7-component adjoint vector [V, gamma, r, psi, lambda, tau, m].

@@ -27,7 +27,8 @@ struct ConstraintSet {
   bool payload_payoff = false;
 };
 
-// The inequality rule: total heating (IP(2), Sec. 13) always, dynamic pressure under IP(13) = 1.
+// The inequality rule: total heating (IP(2), Sec. 13) and the q-bar x alpha excess (issue 15)
+// always, dynamic pressure under IP(13) = 1.
 bool is_inequality_constraint(const ConstraintCode& code, const Options& options);
 
 // Appends one constraint (its inequality by the rule above); kTooManyConstraints when full,
