@@ -335,6 +335,13 @@ Status build_dispersed_case(const DispersionNominal& nominal, const PreparedCase
 Status record_dispersed_trajectory(const Mission& mission, const PreparedCase& prepared,
                                    const Trajectory& reference, const Trajectory& flown,
                                    const WindProfile* wind, DispersedTrajectory* out) {
+  return record_dispersed_trajectory(mission, prepared, reference, flown, wind, nullptr, out);
+}
+
+Status record_dispersed_trajectory(const Mission& mission, const PreparedCase& prepared,
+                                   const Trajectory& reference, const Trajectory& flown,
+                                   const WindProfile* wind, const double* air_alpha_rad,
+                                   DispersedTrajectory* out) {
   if (!ok(flown.status) || flown.point_count <= 0)
     return ok(flown.status) ? Status::kNotPrepared : flown.status;
   // Columns: the ignition of each powered stage after the first in the reference, then the final point.
@@ -364,7 +371,14 @@ Status record_dispersed_trajectory(const Mission& mission, const PreparedCase& p
     v[static_cast<int>(StagingVariable::kAltitude)] = d.altitude_ft;
     v[static_cast<int>(StagingVariable::kVelocity)] = d.state[kStateV];
     v[static_cast<int>(StagingVariable::kFlightPathAngle)] = d.state[kStateGamma];
-    v[static_cast<int>(StagingVariable::kDownrange)] = d.downrange_rad * kNauticalMilesPerRadian;
+    // The point's downrange_rad recomputed as the flight does (so lean points, which leave it 0,
+    // give the same figure bit for bit).
+    const double launch_latitude = mission.launch.geocentric_latitude_rad;
+    const double latitude = d.state[kStateLambda];
+    v[static_cast<int>(StagingVariable::kDownrange)] =
+        downrange_angle_rad(std::sin(launch_latitude), std::cos(launch_latitude), std::sin(latitude),
+                            std::cos(latitude), d.earth_longitude_rad - mission.launch.longitude_rad) *
+        kNauticalMilesPerRadian;
     // Sec. 4: crossrange from the plane of motion at the nominal staging point (0 on the nominal).
     v[static_cast<int>(StagingVariable::kCrossrange)] =
         crossrange_angle_rad(n.state[kStateLambda], n.earth_longitude_rad, n.state[kStatePsi],
@@ -391,7 +405,9 @@ Status record_dispersed_trajectory(const Mission& mission, const PreparedCase& p
   for (int k = 0; k < flown.point_count; ++k) {
     const TrajectoryPoint& point = flown.points[k];
     double alpha = point.alpha_rad;
-    if (wind != nullptr && point.dynamic_pressure_lbf_ft2 > 0.0) {
+    if (air_alpha_rad != nullptr) {
+      alpha = air_alpha_rad[k];
+    } else if (wind != nullptr && point.dynamic_pressure_lbf_ft2 > 0.0) {
       const double speed = wind->speed_ft_s(point.altitude_ft);
       if (speed != 0.0) {
         const StateTrig trig(point.state);
@@ -509,10 +525,13 @@ Status run_dispersions(const DispersionNominal& nominal, const DispersionData& d
       dispersed.program = ws->program_mapped ? &ws->program : nominal.program;
       dispersed.body_dynamics = nominal.body_dynamics;
       dispersed.perturbation = &ws->perturbation;
+      // Only what the record reads (lean points, the air-relative alpha kept from the flight).
+      dispersed.lean_points = true;
+      dispersed.air_alpha_rad = ws->air_alpha_rad;
       code_status = fly_trajectory(ws->mission, ws->prepared, dispersed, &ws->dispersed);
       if (ok(code_status)) {
         code_status = record_dispersed_trajectory(ws->mission, ws->prepared, ws->nominal, ws->dispersed,
-                                                  ws->perturbation.wind, &out);
+                                                  ws->perturbation.wind, ws->air_alpha_rad, &out);
       }
     }
     out.status = code_status;

@@ -438,11 +438,14 @@ Status fly_monte_carlo_sample(const DispersionNominal& nominal, const Dispersion
     inputs.program = ws->program_mapped ? &ws->program : nominal.program;
     inputs.body_dynamics = nominal.body_dynamics;
     inputs.perturbation = &ws->perturbation;
+    // Only what the record reads (lean points, the air-relative alpha kept from the flight).
+    inputs.lean_points = true;
+    inputs.air_alpha_rad = ws->air_alpha_rad;
     status = fly_trajectory(ws->mission, ws->prepared, inputs, &ws->dispersed);
   }
   if (ok(status))
     status = record_dispersed_trajectory(ws->mission, ws->prepared, ws->nominal, ws->dispersed,
-                                         ws->perturbation.wind, out);
+                                         ws->perturbation.wind, ws->air_alpha_rad, out);
   out->status = status;
   if (!ok(status)) return status;
   for (int j = 0; j < kMaxStagingPoints; ++j) {

@@ -111,6 +111,8 @@ void evaluate_flight(const Mission& mission, const PreparedCase& prepared, const
     }
   }
 
+  out->windy = windy;
+  if (windy) out->local_to_air = local_to_air;
   out->density_slug_ft3 = density;
   out->dynamic_pressure_lbf_ft2 = 0.5 * density * air_speed * air_speed;
   out->mach = (speed_of_sound > 0.0) ? air_speed / speed_of_sound : 0.0;
@@ -165,16 +167,28 @@ void evaluate_flight(const Mission& mission, const PreparedCase& prepared, const
     const Vector3& m_y = result.axes.y;
     const Vector3 axis = (out->chi_rad == 0.0) ? Vector3(0.0, m_y.y(), m_y.z()) : m_y;
     out->thrust_axis_local = platform_to_local * axis;
-  } else if (scratch != nullptr && out->chi_rad == 0.0) {
-    // thrust_axis_platform(theta, 0) with theta's sine and cosine kept from the last evaluation
-    // that flew the same theta (RK4's midpoints, held attitudes).
+  } else if (scratch != nullptr) {
+    // thrust_axis_platform(theta, chi) with theta's (and chi's) sine and cosine kept from the last
+    // evaluation that flew the same angle (RK4's midpoints, held attitudes, a stage's constant chi).
     if (!scratch->has_theta || !(scratch->theta_rad == out->theta_rad)) {
       scratch->has_theta = true;
       scratch->theta_rad = out->theta_rad;
       scratch->cos_theta = std::cos(out->theta_rad);
       scratch->sin_theta = std::sin(out->theta_rad);
     }
-    out->thrust_axis_local = platform_to_local * Vector3(0.0, scratch->cos_theta, scratch->sin_theta);
+    if (out->chi_rad == 0.0) {
+      out->thrust_axis_local = platform_to_local * Vector3(0.0, scratch->cos_theta, scratch->sin_theta);
+    } else {
+      if (!scratch->has_chi || !(scratch->chi_rad == out->chi_rad)) {
+        scratch->has_chi = true;
+        scratch->chi_rad = out->chi_rad;
+        scratch->cos_chi = std::cos(out->chi_rad);
+        scratch->sin_chi = std::sin(out->chi_rad);
+      }
+      const double ct = scratch->cos_theta;
+      out->thrust_axis_local =
+          platform_to_local * Vector3(ct * scratch->sin_chi, ct * scratch->cos_chi, scratch->sin_theta);
+    }
   } else {
     out->thrust_axis_local = platform_to_local * thrust_axis_platform(out->theta_rad, out->chi_rad);
   }

@@ -171,7 +171,6 @@ Status Flight::record(const StageContext& stage, double t, const StateVector& st
   p.altitude_ft = eval.altitude_ft;
   p.earth_longitude_rad =
       std::remainder(state[kStateTau] - constants.earth_rotation_rate_rad_s * t, 2.0 * kPi);
-  p.geodetic_latitude_rad = geodetic_from_geocentric_rad(constants, state[kStateLambda]);
   p.weight_lb = eval.weight_lb;
   p.vacuum_thrust_lbf = eval.vacuum_thrust_lbf;
   p.net_thrust_lbf = eval.net_thrust_lbf;
@@ -182,6 +181,23 @@ Status Flight::record(const StageContext& stage, double t, const StateVector& st
   p.chi_rad = eval.chi_rad;
   p.drag_lbf = eval.drag_lbf;
   p.lift_lbf = eval.lift_lbf;
+  p.heading_hold = command.heading_hold;
+  p.alpha_zero = command.mode == AttitudeMode::kZeroAlpha;
+  p.body_dynamics = command.body_dynamics;
+  p.control_deflection_rad = static_cast<float>(eval.control_deflection_rad);
+  if (inputs_.air_alpha_rad != nullptr) {
+    inputs_.air_alpha_rad[trajectory_->point_count] =
+        eval.windy ? air_angle_of_attack_rad(eval.local_to_air, eval.thrust_axis_local) : p.alpha_rad;
+  }
+  if (inputs_.lean_points) {
+    p.geodetic_latitude_rad = 0.0;
+    p.heating_rate_btu_ft2_s = 0.0;
+    p.downrange_rad = 0.0;
+    p.inertial = InertialVelocity{};
+    ++trajectory_->point_count;
+    return Status::kOk;
+  }
+  p.geodetic_latitude_rad = geodetic_from_geocentric_rad(constants, state[kStateLambda]);
   p.heating_rate_btu_ft2_s =
       (mission_.misc.nose_radius_ft > 0.0)
           ? stagnation_heating_rate(mission_.misc.nose_radius_ft, eval.density_slug_ft3,
@@ -192,10 +208,6 @@ Status Flight::record(const StageContext& stage, double t, const StateVector& st
                           p.earth_longitude_rad - mission_.launch.longitude_rad);
   p.inertial = inertial_velocity(constants, state, trig.sin_gamma, trig.cos_gamma, trig.sin_psi, trig.cos_psi,
                                  trig.cos_lambda);
-  p.heading_hold = command.heading_hold;
-  p.alpha_zero = command.mode == AttitudeMode::kZeroAlpha;
-  p.body_dynamics = command.body_dynamics;
-  p.control_deflection_rad = static_cast<float>(eval.control_deflection_rad);
   // The heating integral by the trapezoidal rule over the stored points.
   if (trajectory_->point_count > 0) {
     const TrajectoryPoint& previous = trajectory_->points[trajectory_->point_count - 1];
@@ -211,7 +223,8 @@ Status Flight::record(const StageContext& stage, double t, const StateVector& st
 Status Flight::resume(StateVector* state) {
   const Trajectory& from = *inputs_.resume_from;
   const int slot = inputs_.resume_stage_slot;
-  if (inputs_.feedback != nullptr || inputs_.injection_point >= 0) return Status::kValueOutOfRange;
+  if (inputs_.feedback != nullptr || inputs_.injection_point >= 0 || inputs_.air_alpha_rad != nullptr)
+    return Status::kValueOutOfRange;
   if (!ok(from.status) || slot <= 0 || slot >= prepared_.stage_count || slot >= from.stage_count ||
       from.stages[slot].code != prepared_.timeline[slot].code) {
     return Status::kValueOutOfRange;

@@ -159,6 +159,8 @@ struct DispersionWorkspace {
   Trajectory nominal;
   Trajectory dispersed;
   WindProfile wind;  // a Monte Carlo sample's wind (the drawn profiles, scaled and summed)
+  // The dispersed flight's air-relative angle of attack at every point (FlightInputs::air_alpha_rad).
+  double air_alpha_rad[kMaxTrajectoryPoints] = {};
 };
 
 // The stage a source disperses: the code table's, the card's stage for a tip-off (30-32), and
@@ -192,6 +194,12 @@ void map_control_program(const PreparedCase& nominal, const ControlProgram& prog
 Status record_dispersed_trajectory(const Mission& mission, const PreparedCase& prepared,
                                    const Trajectory& reference, const Trajectory& flown,
                                    const WindProfile* wind, DispersedTrajectory* out);
+// The same with the flight's air-relative angles of attack (FlightInputs::air_alpha_rad of the
+// flight of `flown`; null: recomputed from the points under `wind` as above), bit for bit the same.
+Status record_dispersed_trajectory(const Mission& mission, const PreparedCase& prepared,
+                                   const Trajectory& reference, const Trajectory& flown,
+                                   const WindProfile* wind, const double* air_alpha_rad,
+                                   DispersedTrajectory* out);
 
 // The whole analysis: flies the nominal (code 40 plane), every source, and the three-sigma groups
 // when code 40 is among the sources. Returns the nominal's status (a dispersed trajectory that

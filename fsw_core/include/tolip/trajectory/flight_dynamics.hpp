@@ -44,6 +44,12 @@ struct EvaluationScratch {
   double theta_rad = 0.0;
   double sin_theta = 0.0;
   double cos_theta = 0.0;
+  // The same for a non-zero yaw attitude (chi of a deadband, tip-off or spun stage: constant over
+  // the stage), so thrust_axis_platform(theta, chi) is formed from kept sines and cosines.
+  bool has_chi = false;
+  double chi_rad = 0.0;
+  double sin_chi = 0.0;
+  double cos_chi = 0.0;
 };
 
 // The stage being flown.
@@ -111,6 +117,10 @@ struct Evaluation {
   // and the status of eq. 7-6 (kBodyDynamicsNotTrimmable when the body had to follow the command).
   double control_deflection_rad = 0.0;
   Status body_status = Status::kOk;
+  // Under a wind (FlightPerturbation::wind) where the air is dense and the air-relative velocity
+  // is not zero: true, with the local -> air frame of wind.hpp the forces were resolved in.
+  bool windy = false;
+  Matrix3 local_to_air = Matrix3::Identity();
 };
 
 // Evaluates the model at time t (from launch). `weight_offset_lb` is added to the vehicle weight

@@ -129,6 +129,16 @@ struct FlightInputs {
   int resume_stage_slot = 0;
   // A dispersed trajectory's changes to the flight (Sec. 15; flight_dynamics.hpp). Null: none.
   const FlightPerturbation* perturbation = nullptr;
+  // Lean points (a Monte Carlo sample's flight): every point leaves geodetic_latitude_rad,
+  // heating_rate_btu_ft2_s, downrange_rad and inertial at 0 (and heat_integral_btu_ft2 at 0), what
+  // record_dispersed_trajectory() does not read. The flight and every other member are the full
+  // run's, bit for bit.
+  bool lean_points = false;
+  // Optional output, kMaxTrajectoryPoints values of the caller's: at every point the angle of
+  // attack against the air mass where the evaluation there was windy (Evaluation::windy), else
+  // the point's alpha_rad; what record_dispersed_trajectory() would recompute from the point. Not
+  // with resume_from (kValueOutOfRange).
+  double* air_alpha_rad = nullptr;
 };
 
 Status fly_trajectory(const Mission& mission, const PreparedCase& prepared, const FlightInputs& inputs,
