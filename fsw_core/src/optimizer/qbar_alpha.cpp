@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "tolip/frames/frames.hpp"
 #include "tolip/trajectory/flight_dynamics.hpp"
 
 namespace tolip {
@@ -24,8 +25,8 @@ int stage_slot_of(const Trajectory& trajectory, int point) {
 }
 
 // q-bar alpha of the model at (x, theta) with the point's stage, time and yaw: the evaluation the
-// forward run made there, with the attitude held (alpha is the in-plane angle of the thrust axis,
-// tolip/frames angle_of_attack_rad: atan2 of its i_z and i_y components).
+// forward run made there, with the attitude held (alpha as the trajectory defines it: the in-plane
+// angle of the thrust axis, angle_of_attack_rad).
 double model_qbar_alpha(const Mission& mission, const PreparedCase& prepared, const StageContext& stage,
                         const TrajectoryPoint& p, const StateVector& x, double theta_rad) {
   StepCommand command;
@@ -35,7 +36,7 @@ double model_qbar_alpha(const Mission& mission, const PreparedCase& prepared, co
   command.step_start_s = p.time_s;
   Evaluation e;
   evaluate_flight(mission, prepared, stage, command, p.time_s, x, 0.0, &e);
-  return e.dynamic_pressure_lbf_ft2 * std::atan2(e.thrust_axis_local.z(), e.thrust_axis_local.y());
+  return e.dynamic_pressure_lbf_ft2 * angle_of_attack_rad(e.thrust_axis_local);
 }
 
 }  // namespace

@@ -544,6 +544,8 @@ class Iteration {
   Status launch_sensitivities();
   Status fly_candidate(const Steering& steering, const ConstraintVector& dpsi, double step_fraction);
   void accept_candidate();
+  Status guidance_phase(int budget, Steering* steering);
+  Status optimization_phase(int budget, Steering* steering);
   void record(RunKind kind, Status run_status, bool successful, double attempted);
   ConstraintVector corrections(const double achieved[kMaxConstraints]) const;
   double corrected_payoff(const double achieved[kMaxConstraints]) const;
@@ -561,6 +563,9 @@ class Iteration {
   // A path constraint (q-bar x alpha) joined the list at the last accepted nominal: an
   // optimization phase that it ends goes back to guidance (docs/theory/optimizer.md).
   bool path_constraint_joined_ = false;
+  bool guidance_stuck_ = false;  // a guidance step that never flew ended guidance
+  double attempt_size_ = 0.0;    // the optimization's payoff-improvement attempt
+  bool first_attempt_ = true;    // the next optimization phase sizes its first attempt
 };
 
 ConstraintVector Iteration::corrections(const double achieved[kMaxConstraints]) const {
@@ -806,6 +811,75 @@ void Iteration::accept_candidate() {
   }
 }
 
+// Guidance, as run() describes it. A failed backward run is returned; a step that never flew ends
+// guidance with guidance_stuck_ set.
+Status Iteration::guidance_phase(int budget, Steering* steering_out) {
+  Steering& steering = *steering_out;
+  while (!guidance_stuck_ && !within_deadbands(problem_, nominal_achieved_) &&
+         result_->forward_runs < budget - 1) {
+    Status status = backward(1, &steering);
+    if (!ok(status)) return status;
+    const double before = error_norm(problem_, nominal_achieved_, steering.deferred);
+    double fraction = 1.0;
+    // The loop counts attempts (an int); the halved fraction rides along. NOLINTNEXTLINE(cert-flp30-c)
+    for (int attempt = 0;; ++attempt, fraction *= 0.5) {
+      ++result_->guidance_runs;
+      status = fly_candidate(steering, corrections(nominal_achieved_), fraction);
+      const bool flown = ok(status);
+      if (!flown) ++result_->crashed_runs;
+      const bool better = flown && error_norm(problem_, candidate_achieved_, steering.deferred) < before;
+      record(RunKind::kGuidance, status, better && within_deadbands(problem_, candidate_achieved_), 0.0);
+      if (better || result_->forward_runs >= budget - 1) break;
+      if (flown ? attempt >= kGuidanceStepHalvings : attempt >= kCrashRecoveryHalvings) break;
+    }
+    if (ok(status)) {
+      accept_candidate();
+    } else {
+      guidance_stuck_ = true;
+    }
+  }
+  return Status::kOk;
+}
+
+// Optimization: ask for payoff improvement, judged by the corrected payoff; halve on failure. The
+// first attempt (again after a path constraint joined) is sized by the DA13 rules.
+Status Iteration::optimization_phase(int budget, Steering* steering_out) {
+  Steering& steering = *steering_out;
+  while (within_deadbands(problem_, nominal_achieved_) && result_->forward_runs < budget - 1) {
+    Status status = backward(0, &steering);
+    if (!ok(status)) return status;
+    const double best_corrected = corrected_payoff(nominal_achieved_);
+    const ConstraintVector dphi = corrections(nominal_achieved_);
+    if (first_attempt_) {
+      if (!initial_payoff_improvement(problem_, steering, steered_part(steering, dphi),
+                                      typical_control_measure(), &attempt_size_)) {
+        attempt_size_ = ws_->mission.convergence.initial_payoff_improvement;
+        result_->initial_improvement_from_da13_1 = true;
+      }
+      result_->initial_payoff_improvement = attempt_size_;
+      first_attempt_ = false;
+    }
+    bool improved = false;
+    while (attempt_size_ >= ws_->mission.convergence.stop_improvement && result_->forward_runs < budget - 1) {
+      ConstraintVector dpsi = dphi;
+      dpsi(0) = attempt_size_;
+      status = fly_candidate(steering, dpsi, 1.0);
+      ++result_->optimization_runs;
+      if (!ok(status)) ++result_->crashed_runs;  // recovered like any failure: half the attempt
+      improved = ok(status) && within_deadbands(problem_, candidate_achieved_) &&
+                 corrected_payoff(candidate_achieved_) > best_corrected;
+      record(RunKind::kOptimization, status, improved, attempt_size_);
+      if (improved) break;
+      attempt_size_ *= 0.5;
+    }
+    if (!improved) break;
+    ++result_->successful_optimization_runs;
+    accept_candidate();
+    if (path_constraint_joined_) first_attempt_ = true;  // the next phase sizes its first attempt anew
+  }
+  return Status::kOk;
+}
+
 Status Iteration::run(const Mission& input) {
   ws_->mission = input;
   Status status = prepare_case(ws_->mission, &ws_->prepared);
@@ -821,74 +895,17 @@ Status Iteration::run(const Mission& input) {
   // failed run never becomes the nominal; if no step flies, guidance ends there and the case
   // reports kGuidanceDidNotConverge with the last good nominal.
   Steering steering;
-  bool guidance_stuck = false;
-  bool guidance_converged = false;
-  double attempt_size = 0.0;
-  bool first_attempt = true;
   // Guidance then optimization; once more from guidance when the q-bar x alpha constraint joined
   // during the optimization and the nominal is outside its deadband (never on decks without it).
+  bool guidance_converged = false;
   for (;;) {
     path_constraint_joined_ = false;
-    while (!guidance_stuck && !within_deadbands(problem_, nominal_achieved_) &&
-           result_->forward_runs < budget - 1) {
-      status = backward(1, &steering);
-      if (!ok(status)) return status;
-      const double before = error_norm(problem_, nominal_achieved_, steering.deferred);
-      double fraction = 1.0;
-      // The loop counts attempts (an int); the halved fraction rides along. NOLINTNEXTLINE(cert-flp30-c)
-      for (int attempt = 0;; ++attempt, fraction *= 0.5) {
-        ++result_->guidance_runs;
-        status = fly_candidate(steering, corrections(nominal_achieved_), fraction);
-        const bool flown = ok(status);
-        if (!flown) ++result_->crashed_runs;
-        const bool better = flown && error_norm(problem_, candidate_achieved_, steering.deferred) < before;
-        record(RunKind::kGuidance, status, better && within_deadbands(problem_, candidate_achieved_), 0.0);
-        if (better || result_->forward_runs >= budget - 1) break;
-        if (flown ? attempt >= kGuidanceStepHalvings : attempt >= kCrashRecoveryHalvings) break;
-      }
-      if (ok(status)) {
-        accept_candidate();
-      } else {
-        guidance_stuck = true;
-      }
-    }
-
-    // Optimization: ask for payoff improvement, judged by the corrected payoff; halve on failure.
+    status = guidance_phase(budget, &steering);
+    if (!ok(status)) return status;
     guidance_converged = within_deadbands(problem_, nominal_achieved_);
-    while (within_deadbands(problem_, nominal_achieved_) && result_->forward_runs < budget - 1) {
-      status = backward(0, &steering);
-      if (!ok(status)) return status;
-      const double best_corrected = corrected_payoff(nominal_achieved_);
-      const ConstraintVector dphi = corrections(nominal_achieved_);
-      if (first_attempt) {
-        if (!initial_payoff_improvement(problem_, steering, steered_part(steering, dphi),
-                                        typical_control_measure(), &attempt_size)) {
-          attempt_size = ws_->mission.convergence.initial_payoff_improvement;
-          result_->initial_improvement_from_da13_1 = true;
-        }
-        result_->initial_payoff_improvement = attempt_size;
-        first_attempt = false;
-      }
-      bool improved = false;
-      while (attempt_size >= ws_->mission.convergence.stop_improvement &&
-             result_->forward_runs < budget - 1) {
-        ConstraintVector dpsi = dphi;
-        dpsi(0) = attempt_size;
-        status = fly_candidate(steering, dpsi, 1.0);
-        ++result_->optimization_runs;
-        if (!ok(status)) ++result_->crashed_runs;  // recovered like any failure: half the attempt
-        improved = ok(status) && within_deadbands(problem_, candidate_achieved_) &&
-                   corrected_payoff(candidate_achieved_) > best_corrected;
-        record(RunKind::kOptimization, status, improved, attempt_size);
-        if (improved) break;
-        attempt_size *= 0.5;
-      }
-      if (!improved) break;
-      ++result_->successful_optimization_runs;
-      accept_candidate();
-      if (path_constraint_joined_) first_attempt = true;  // the next phase sizes its first attempt anew
-    }
-    if (!(path_constraint_joined_ && guidance_converged && !guidance_stuck &&
+    status = optimization_phase(budget, &steering);
+    if (!ok(status)) return status;
+    if (!(path_constraint_joined_ && guidance_converged && !guidance_stuck_ &&
           !within_deadbands(problem_, nominal_achieved_) && result_->forward_runs < budget - 1)) {
       break;
     }
