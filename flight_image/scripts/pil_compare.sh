@@ -59,5 +59,6 @@ if rows < 100 or host["flight_counters"]["cycles"] != rows:
 t = qemu["target"]
 print(f"PASS: {rows} cycles, telemetry byte-identical; counters {qemu['flight_counters']}; "
       f"sensor link {qemu['sensor_link']}, actuator link {qemu['actuator_link']}; "
-      f"QEMU {t['wall_s']:.2f} s wall, {t['cycles_per_s']:.0f} cycles/s, {t['real_time_factor']:.2f}x real time")
+      f"QEMU {t['wall_s']:.2f} s wall, {t['cycles_per_s']:.0f} cycles/s, {t['real_time_factor']:.2f}x real time; "
+      f"target: {t['console'].strip().splitlines()[-1] if t['console'].strip() else '(no console output)'}")
 PY

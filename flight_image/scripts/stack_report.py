@@ -11,18 +11,25 @@ Inputs:
     callees are the targets of their bl / b instructions.
 
 The bound of a function is its own frame plus the largest bound among its callees; the graph must
-be acyclic (the core has no recursion, so a cycle fails the check). An indirect call must be
-resolved from the image: the only one, the constructor loop of the start-up code, calls the
-functions listed between __init_array_start and __init_array_end (the linker script keeps the
-.init_array input sections inside .text).
+be acyclic (the core has no recursion, so a cycle fails the check).
+
+An indirect call (a call through a function pointer: the start-up code's constructor loop, the
+flight application's hal ports, the link's byte channel) may reach any function whose address the
+image holds: the constructors listed between __init_array_start and __init_array_end (the linker
+script keeps the .init_array input sections inside .text), and every function whose Thumb address
+is a data word of the image (the literal pools and read-only data the disassembly shows as .word,
+the initialized data of .data), the vector table excepted (its handlers are entered by exceptions,
+accounted for by --handler). Every indirect call site is bounded by the deepest of them all.
 
 A function GCC reports with a dynamic frame (alloca: Eigen's blocked triangular solves, built with
 EIGEN_ALLOCA) is accepted only when its code in the linked image moves the stack pointer down by
 constants alone (push, vpush, "sub sp, #N"; no "sub sp, rN"): its frame is then bounded by all of
 them added up, as if every allocation were taken at once.
 
-Checks: the bound from --root fits in --stack-size and covers the high-water mark measured on the
-target (--measured: the "TARGET stack high-water N bytes" line of the QEMU run).
+Checks: the bound from --root fits in the reserved stack (--stack-size, by default the image's
+__stack_top - __stack_limit) and covers the high-water mark measured on the target (--measured: a
+file holding the image's "stack high-water N bytes" line from a QEMU run: the demo's "TARGET stack
+high-water", the PIL image's "PIL END ... stack high-water").
 """
 import argparse
 import os
@@ -65,14 +72,19 @@ def read_call_graph(ci_dir, exclude=()):
 def disassemble(objdump, elf):
     out = subprocess.run([objdump, "-d", "--no-show-raw-insn", elf], check=True, capture_output=True,
                          text=True).stdout
-    functions, current = {}, None
+    functions, current, words = {}, None, set()
     header = re.compile(r'^[0-9a-f]+ <([^>]+)>:$')
+    section = None
     for line in out.splitlines():
+        if line.startswith("Disassembly of section "):
+            section = line[len("Disassembly of section "):].rstrip(":")
+            continue
         m = header.match(line)
         if m:
             current = m.group(1)
             # Two local functions of the same name (different objects) add up: an over-estimate.
-            functions.setdefault(current, {"frame": 0, "calls": set(), "indirect": False, "sp_by_register": False})
+            functions.setdefault(current, {"frame": 0, "calls": set(), "indirect": False, "sp_by_register": False,
+                                           "movt": False})
             continue
         if current is None or "\t" not in line:
             continue
@@ -81,7 +93,13 @@ def disassemble(objdump, elf):
             continue
         mnemonic = parts[1].strip()
         operands = parts[2].strip() if len(parts) > 2 else ""
+        if mnemonic == ".word":
+            if section != ".vectors":
+                words.add(int(operands.split()[0], 16))  # a literal pool or read-only data word
+            continue
         f = functions[current]
+        if mnemonic.startswith("movt"):
+            f["movt"] = True  # an address built in registers would escape the data-word scan
         if mnemonic in ("push", "push.w", "stmdb") and ("sp!" in operands or mnemonic.startswith("push")):
             regs = operands[operands.find("{") + 1:operands.find("}")]
             f["frame"] += 4 * count_registers(regs)
@@ -101,7 +119,56 @@ def disassemble(objdump, elf):
             f["calls"].add(m.group(1))  # tail call (or a branch into another function)
         elif mnemonic == "blx" and not m:
             f["indirect"] = True
-    return functions
+    return functions, words
+
+
+def symbol_table(objdump, elf):
+    """Addresses by name and function names by (even) address, from nm."""
+    symbols = subprocess.run([objdump.replace("objdump", "nm"), elf], check=True, capture_output=True,
+                             text=True).stdout
+    by_address, by_name, functions = {}, {}, {}
+    for line in symbols.splitlines():
+        p = line.split()
+        if len(p) == 3:
+            by_address.setdefault(int(p[0], 16) & ~1, p[2])
+            by_name[p[2]] = int(p[0], 16)
+            if p[1] in "Tt" and not p[2].startswith("$"):
+                functions.setdefault(int(p[0], 16) & ~1, p[2])
+    return by_address, by_name, functions
+
+
+def data_words(objdump, elf, sections):
+    """The aligned little-endian words of the named sections (initialized data)."""
+    words = set()
+    for name in sections:
+        out = subprocess.run([objdump, "-s", "-j", name, elf], capture_output=True, text=True).stdout
+        data, base = b"", None
+        for line in out.splitlines():
+            m = re.match(r'^ ([0-9a-f]+) ((?:[0-9a-f]{2,8} ?)+)', line)
+            if m:
+                if base is None:
+                    base = int(m.group(1), 16)
+                data += bytes.fromhex("".join(m.group(2).split()))
+        if base is None:
+            continue
+        first = (-base) % 4
+        for i in range(first, len(data) - 3, 4):
+            words.add(int.from_bytes(data[i:i + 4], "little"))
+    return words
+
+
+def address_taken_functions(objdump, elf, literal_words):
+    """Functions whose Thumb address (bit 0 set) is a data word of the image, vectors excepted."""
+    _, _, functions = symbol_table(objdump, elf)
+    words = set(literal_words) | data_words(objdump, elf, [".data"])
+    return sorted({functions[w & ~1] for w in words if w & 1 and (w & ~1) in functions})
+
+
+def reserved_stack(objdump, elf):
+    _, by_name, _ = symbol_table(objdump, elf)
+    if "__stack_top" not in by_name or "__stack_limit" not in by_name:
+        raise SystemExit("no __stack_top/__stack_limit in " + elf + ": give --stack-size")
+    return by_name["__stack_top"] - by_name["__stack_limit"]
 
 
 def count_registers(text):
@@ -117,14 +184,7 @@ def count_registers(text):
 
 
 def init_array_functions(objdump, elf):
-    symbols = subprocess.run([objdump.replace("objdump", "nm"), elf], check=True, capture_output=True,
-                             text=True).stdout
-    by_address, by_name = {}, {}
-    for line in symbols.splitlines():
-        p = line.split()
-        if len(p) == 3:
-            by_address.setdefault(int(p[0], 16) & ~1, p[2])
-            by_name[p[2]] = int(p[0], 16)
+    by_address, by_name, _ = symbol_table(objdump, elf)
     start, end = by_name.get("__init_array_start"), by_name.get("__init_array_end")
     if start is None or end is None:
         raise SystemExit("no __init_array_start/__init_array_end in " + elf)
@@ -153,15 +213,22 @@ def main():
     parser.add_argument("--also", action="append", default=[], help="other roots to report")
     parser.add_argument("--handler", action="append", default=[],
                         help="exception handlers that may run on top of the deepest chain")
-    parser.add_argument("--stack-size", type=int, required=True)
+    parser.add_argument("--stack-size", type=int,
+                        help="the reserved stack in bytes (default: __stack_top - __stack_limit of --elf)")
     parser.add_argument("--measured")
     parser.add_argument("--report")
     args = parser.parse_args()
 
     frames, labels, qualifiers, callees = read_call_graph(args.ci_dir, args.exclude_dir)
-    binary = disassemble(args.objdump, args.elf)
+    binary, literal_words = disassemble(args.objdump, args.elf)
     constructors = init_array_functions(args.objdump, args.elf)
-    problems = []
+    address_taken = [f for f in address_taken_functions(args.objdump, args.elf, literal_words)
+                     if f not in constructors]
+    indirect_targets = constructors + address_taken
+    if args.stack_size is None:
+        args.stack_size = reserved_stack(args.objdump, args.elf)
+    problems = [f"{name}: movw/movt in the image: a function address built in registers escapes the "
+                f"indirect-call scan" for name, f in binary.items() if f["movt"]]
 
     def symbol(name):
         return name.rsplit(":", 1)[-1]  # .ci titles of file-local functions are "path:symbol"
@@ -180,7 +247,7 @@ def main():
             result = set(callees.get(name, set()))
             if "__indirect_call" in result:
                 result.discard("__indirect_call")
-                result.update(constructors)
+                result.update(indirect_targets)
             return result
         if name in binary:
             if binary[name]["indirect"]:
@@ -218,16 +285,30 @@ def main():
         visiting.discard(name)
         return own + best, (name,) + chain
 
+    def label(name):
+        text = labels.get(name, name)
+        return symbol(name) if re.match(r'^\d', text) else text  # GCC mislabels .part clones
+
+    def reachable(root):
+        seen, todo = set(), [root]
+        while todo:
+            n = todo.pop()
+            if n in seen:
+                continue
+            seen.add(n)
+            todo.extend(callees_of(n))
+        return seen
+
     lines = []
     total, chain = bound(args.root)
     lines.append(f"Static worst-case stack bound from {args.root}: {total} bytes (stack region {args.stack_size} bytes)")
     lines.append("Deepest call chain (own frame in bytes, source of the figure):")
     for name in chain:
         own, source = frame_of(name)
-        lines.append(f"  {own if own is not None else 0:6d}  [{source:4s}] {labels.get(name, name)}")
+        lines.append(f"  {own if own is not None else 0:6d}  [{source:4s}] {label(name)}")
     for root in args.also:
         b, c = bound(root)
-        lines.append(f"Bound from {labels.get(root, root)}: {b} bytes ({len(c)} frames deep)")
+        lines.append(f"Bound from {label(root)}: {b} bytes ({len(c)} frames deep)")
     # An exception taken at the deepest point stacks an extended (FPU) frame of 26 words, then runs
     # its handler on the same (main) stack.
     if args.handler:
@@ -236,21 +317,23 @@ def main():
         lines.append(f"Plus the deepest exception handler ({handler_bound} bytes) and its FPU exception frame "
                      f"({exception_frame} bytes): {total + handler_bound + exception_frame} bytes")
         total += handler_bound + exception_frame
-    if constructors:
-        lines.append("Indirect calls: only the start-up constructor loop, resolved from .init_array: "
-                     + ", ".join(f"{c} ({bound(c)[0]} bytes)" for c in constructors))
-    else:
-        lines.append("Indirect calls: only the start-up constructor loop, and .init_array is empty")
+    callers = sorted(label(n) for n in reachable(args.root) if "__indirect_call" in callees.get(n, ()))
+    lines.append("Indirect call sites reached: " + (", ".join(callers) if callers else "none"))
+    lines.append("Constructors (.init_array): "
+                 + (", ".join(f"{c} ({bound(c)[0]} bytes)" for c in constructors) if constructors else "none"))
+    lines.append("Other address-taken functions (indirect call targets): "
+                 + (", ".join(f"{label(f)} ({bound(f)[0]} bytes)" for f in address_taken)
+                    if address_taken else "none"))
     for name in sorted(dynamic_frames):
         lines.append(f"Dynamic frame bounded from the image (constant-size allocations only): "
-                     f"{frame_of(name)[0]} bytes [ci+] {labels.get(name, name)}")
+                     f"{frame_of(name)[0]} bytes [ci+] {label(name)}")
 
     measured = None
     if args.measured:
         with open(args.measured, encoding="utf-8", errors="replace") as f:
-            m = re.search(r'TARGET stack high-water (\d+) bytes', f.read())
+            m = re.search(r'stack high-water (\d+) bytes', f.read())
         if not m:
-            problems.append("no 'TARGET stack high-water' line in " + args.measured)
+            problems.append("no 'stack high-water N bytes' line in " + args.measured)
         else:
             measured = int(m.group(1))
             lines.append(f"Measured high-water mark on the target (painted stack, QEMU run): {measured} bytes")

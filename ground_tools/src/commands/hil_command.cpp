@@ -360,7 +360,8 @@ int run_hil_command(const HilCommandOptions& options, std::ostream& out, std::os
                    {"cycles", r.telemetry.size()},
                    {"wall_s", wall_s},
                    {"cycles_per_s", wall_s > 0.0 ? static_cast<double>(r.telemetry.size()) / wall_s : 0.0},
-                   {"real_time_factor", wall_s > 0.0 ? flown_s / wall_s : 0.0}};
+                   {"real_time_factor", wall_s > 0.0 ? flown_s / wall_s : 0.0},
+                   {"console", qemu ? qemu->log() : std::string()}};
     j["truncated"] = r.truncated;
     j["flight_counters"] = counters_json(r.flight);
     j["sensor_link"] = link_json(r.sensor_link);
