@@ -145,7 +145,7 @@ void BM_HilQemuLockStep50Hz(benchmark::State& state) {
     std::string error;
     if (!qemu.start(options, &error)) {
       state.SkipWithError(("QEMU did not start: " + error).c_str());
-      return;
+      break;
     }
     tolip::sim::BenchInputs inputs;
     inputs.mission = &p.run.linearization.workspace->mission;
@@ -160,12 +160,13 @@ void BM_HilQemuLockStep50Hz(benchmark::State& state) {
     state.SetIterationTime(seconds);
     if (!tolip::ok(status) || !qemu.stop(&error)) {
       state.SkipWithError(("the lock-step flight failed: " + qemu.error() + error).c_str());
-      return;
+      break;
     }
     wall_s += seconds;
     flown_s += static_cast<double>(result->telemetry.size()) / config.cycle_hz;
     cycles += static_cast<double>(result->telemetry.size());
   }
+  if (state.error_occurred() || wall_s <= 0.0) return;
   state.counters["flight_s"] = flown_s / static_cast<double>(state.iterations());
   state.counters["cycles"] = cycles / static_cast<double>(state.iterations());
   state.counters["cycles_per_s"] = cycles / wall_s;

@@ -8,6 +8,7 @@
 // cortex-m7` (FlightTarget_Pil*).
 #include <gtest/gtest.h>
 #include <sys/socket.h>
+#include <sys/time.h>
 #include <unistd.h>
 
 #include <cstddef>
@@ -115,6 +116,8 @@ class ServedFlightEnd {
     EXPECT_EQ(::socketpair(AF_UNIX, SOCK_STREAM, 0, fds), 0);
     host_fd_ = fds[0];
     flight_.fd = fds[1];
+    timeval timeout{10, 0};  // a test's own reads never hang on a silent flight end
+    ::setsockopt(host_fd_, SOL_SOCKET, SO_RCVTIMEO, &timeout, sizeof timeout);
     thread_ = std::thread([this] { served_ = computer_->serve(flight_.channel()); });
   }
   ~ServedFlightEnd() {
@@ -126,8 +129,10 @@ class ServedFlightEnd {
   ServedFlightEnd& operator=(const ServedFlightEnd&) = delete;
 
   int host_fd() const { return host_fd_; }
-  // Waits for serve to return (after the end frame) and gives its status.
+  // Closes the host's end and waits for serve to return: kOk when it had answered the end frame,
+  // the channel's failure when the host stopped before it (a failed flight never hangs the test).
   Status join() {
+    close_host_end();
     if (thread_.joinable()) thread_.join();
     return served_;
   }
