@@ -511,18 +511,23 @@ class ClosedLoopSteering final : public PitchFeedback {
       pitch_remaining_ -= g * g.transpose() / w;
     }
     next_removed_ = point;
-    // A constraint the pitch controls still ahead can no longer move (a path constraint whose
-    // excess lies on points already flown: the q-bar x alpha excess of the first seconds, which
-    // only the payload, decided at launch, still couples) is held from here on, by the rule of
-    // the launch steering (hold_weak_directions); otherwise its residual would be spread over
-    // the other constraints' controls through that coupling.
+    // A path constraint whose excess lies on points already flown (the q-bar x alpha excess of
+    // the first seconds) and that the pitch controls still ahead can no longer move, by the rule
+    // of the launch steering (hold_weak_directions), is held from here on: only the payload,
+    // decided at launch, still couples it, and through that coupling its residual would be spread
+    // over the other constraints' controls of the later stages. (Terminal constraints keep the
+    // manual's closed loop: docs/theory/optimizer.md.)
     SquareMatrix pitch = pitch_remaining_;
     Steering weak;
     weak.first = steering_.first;
     hold_weak_directions(problem_, dp2_, &pitch, &weak);
+    for (int i = 0; i < kMaxConstraints; ++i) {
+      const bool path = i < problem_.count && problem_.codes[i].kind == ConstraintQuantity::kQbarAlphaExcess;
+      weak.held[i] = path && weak.held[i] && !steering_.held[i];
+    }
     SquareMatrix m = remaining_;
     for (int i = steering_.first; i < problem_.count; ++i) {
-      if (!weak.held[i] || steering_.held[i]) continue;
+      if (!weak.held[i]) continue;
       m.row(i).setZero();
       m.col(i).setZero();
       m(i, i) = 1.0;
