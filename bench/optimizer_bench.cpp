@@ -14,11 +14,14 @@
 namespace {
 
 // `name` is a deck path under examples/: "scout/mission.toml", "scout/reference_optimum.toml",
-// "strapon/mission.toml".
+// "strapon/mission.toml", "scout/mission_qalpha.toml".
 tolip::Mission& load(const char* name) {
-  static std::unique_ptr<tolip::Mission> missions[3];
+  static std::unique_ptr<tolip::Mission> missions[4];
   const std::string deck(name);
-  const int slot = deck == "scout/mission.toml" ? 0 : deck == "scout/reference_optimum.toml" ? 1 : 2;
+  const int slot = deck == "scout/mission.toml"             ? 0
+                   : deck == "scout/reference_optimum.toml" ? 1
+                   : deck == "strapon/mission.toml"         ? 2
+                                                            : 3;
   if (!missions[slot]) {
     missions[slot] = tolip::ground::make_mission();
     tolip::ground::DeckError error;
@@ -52,6 +55,14 @@ void BM_FullReferenceOptimization(benchmark::State& state) {
   optimize_repeatedly(state, load("scout/mission.toml"));
 }
 BENCHMARK(BM_FullReferenceOptimization)->Unit(benchmark::kMillisecond);
+
+// The reference mission with the 3,500 lb deg/ft^2 q-bar x alpha limit (issue 15,
+// examples/scout/mission_qalpha.toml): the limit joins at the first feasible nominal, guidance
+// removes its excess, the optimization runs along it (30 forward, 26 backward runs).
+void BM_FullQAlphaOptimization(benchmark::State& state) {
+  optimize_repeatedly(state, load("scout/mission_qalpha.toml"));
+}
+BENCHMARK(BM_FullQAlphaOptimization)->Unit(benchmark::kMillisecond);
 
 // The second example (examples/strapon): boosters and core back to back, an elliptic target by
 // orbit elements, a spherical Earth, the launch azimuth adjusted (two extra forward runs per

@@ -14,6 +14,8 @@ README.md) and writes, in the TOML deck format of docs/deck-format.md:
 * examples/scout/reference_optimum.toml -- the same mission flying the oracle's optimum: the
   pitch table through the optimized nodes, the optimized stage-4 theta, coast-8 duration (steps
   stay 40) and payload;
+* examples/scout/mission_qalpha.toml -- mission.toml with a q-bar x alpha load limit of 3,500
+  lb deg/ft^2 (options.qbar_alpha_limit_lb_deg_ft2, an extension of this project, issue 15);
 * examples/scout/mission.dat -- mission.toml as a heritage card deck (80-column card images, the
   card format of docs/deck-format.md "The card deck"), punched from the TOML deck with the same
   rules as `tolip convert mission.toml --to mission.dat` (a test checks both agree and that the
@@ -184,6 +186,12 @@ HARDOVER_WORDS = [  # block 45 word -> deck key (docs/deck-format.md)
     "upper_max_step_s", "upper_min_step_s", "upper_max_steps_per_turn",
 ]
 
+# The load limit of examples/scout/mission_qalpha.toml, lb deg/ft^2 (issue 15).
+QALPHA_LIMIT_LB_DEG_FT2 = 3500.0
+# Its forward-run budget DA13(3): the reference's 30 ends one run short (the q-alpha guidance takes 8
+# runs after the limit joins; docs/theory/constraints-and-ics.md).
+QALPHA_BUDGET = (40, "the reference's 30 ends the q-alpha case one run short")
+
 # Adjustable-parameter codes of block 6 -> keys of the reference's weighting_block27.
 WEIGHT_KEYS = {1: "stage4_theta", 3: "coast_after_stage3"}
 
@@ -201,7 +209,14 @@ def header(deck, ref, variant):
         ref["disclaimer"].split(".")[0] + ".",
         "",
     )
-    if variant == "initial":
+    if variant == "qalpha":
+        deck.comment(
+            "The maximum-payload optimization case of examples/scout/mission.toml (the crude initial",
+            "program, stage-4 theta -20 deg, coast 8 = 450 s, payload 250 lb) with a structural load",
+            "limit |q-bar x alpha| <= %s lb deg/ft^2 over the phases with aerodynamic lift (an" % f"{QALPHA_LIMIT_LB_DEG_FT2:,.0f}",
+            "extension of this project, not in the manual: docs/theory/constraints-and-ics.md).",
+        )
+    elif variant == "initial":
         deck.comment(
             "The maximum-payload optimization case as the oracle started it: the crude initial",
             "pitch program (data block 40), stage-4 theta -20 deg, coast 8 = 450 s, payload 250 lb.",
@@ -218,7 +233,9 @@ def header(deck, ref, variant):
 def case_section(deck, variant, ref):
     deck.table("case", "data blocks 1-3")
     deck.string("title", "SCOUT-CLASS 4-STAGE, WALLOPS ISLAND TO 300 NMI CIRCULAR ORBIT", "block 1, 12A6")
-    if variant == "initial":
+    if variant == "qalpha":
+        heading = "MAXIMUM PAYLOAD, QBAR*ALPHA <= %.0f LB DEG/FT2" % QALPHA_LIMIT_LB_DEG_FT2
+    elif variant == "initial":
         heading = "MAXIMUM PAYLOAD FROM THE CRUDE INITIAL PITCH PROGRAM"
     else:
         heading = "REFERENCE OPTIMUM, PAYLOAD %.3f LB" % ref["oracle_solution"]["payload_lb"]
@@ -226,7 +243,7 @@ def case_section(deck, variant, ref):
     deck.string("date", ref["mission"]["launch"]["launch_utc"][:10], "block 3, 2A6")
 
 
-def options_section(deck, ref):
+def options_section(deck, ref, variant):
     deck.table("options", "data block 4, IP(n)")
     for key, value in ref["mission"]["block4_options_IP"].items():
         n = int(key.split("_")[0])
@@ -239,6 +256,9 @@ def options_section(deck, ref):
             deck.flag(name, value == 1, "IP(%d)" % n)
         else:
             deck.number(name, value, "IP(%d)" % n)
+    if variant == "qalpha":
+        deck.number("qbar_alpha_limit_lb_deg_ft2", QALPHA_LIMIT_LB_DEG_FT2,
+                    "extension (issue 15): |q-bar x alpha| limit, lb deg/ft^2 (0 or absent: none)")
 
 
 def constants_sections(deck, ref):
@@ -328,7 +348,7 @@ def vehicle_sections(deck, ref, variant):
             deck.array("cd", drags[key]["cd"])
 
 
-def mission_sections(deck, ref, variant):
+def mission_sections(deck, ref, variant, budget=None):
     mission = ref["mission"]
     oracle = ref["oracle_solution"]
     launch = mission["launch"]
@@ -418,7 +438,10 @@ def mission_sections(deck, ref, variant):
     deck.table("convergence", "data block 28, DA13 (payoff units: lb)")
     deck.number("initial_payoff_improvement", block28["initial_payoff_improvement_lb"], "DA13(1)")
     deck.number("stop_improvement", block28["stop_when_attempt_below_lb"], "DA13(2)")
-    deck.number("max_forward_trajectories", block28["max_forward_trajectories"], "DA13(3)")
+    if budget is None:
+        deck.number("max_forward_trajectories", block28["max_forward_trajectories"], "DA13(3)")
+    else:
+        deck.number("max_forward_trajectories", budget[0], "DA13(3): " + budget[1])
     deck.number("max_linearization_iterations", block28["max_linearization_iterations"], "DA13(4)")
 
     deck.table("output_frequency", "data block 9, IB4: every computed point, all stages")
@@ -664,10 +687,11 @@ def build(ref, variant):
     deck = Deck()
     header(deck, ref, variant)
     case_section(deck, variant, ref)
-    options_section(deck, ref)
+    options_section(deck, ref, variant)
+    flown = "initial" if variant == "qalpha" else variant  # the q-alpha deck flies the initial case
     constants_sections(deck, ref)
-    vehicle_sections(deck, ref, variant)
-    mission_sections(deck, ref, variant)
+    vehicle_sections(deck, ref, flown)
+    mission_sections(deck, ref, flown, QALPHA_BUDGET if variant == "qalpha" else None)
     deck.blank()
     deck.comment("=" * 94)
     deck.comment("Optional computations (IP(6), IP(21)-IP(24)): data blocks 33-37 and 41-55.")
@@ -1120,7 +1144,8 @@ def main(argv):
     if ref.get("schema") != "tolip-scout-reference/1":
         raise SystemExit("unexpected reference schema %r" % ref.get("schema"))
     os.makedirs(args.out, exist_ok=True)
-    for name, variant in (("mission.toml", "initial"), ("reference_optimum.toml", "optimum")):
+    for name, variant in (("mission.toml", "initial"), ("reference_optimum.toml", "optimum"),
+                          ("mission_qalpha.toml", "qalpha")):
         path = os.path.join(args.out, name)
         text = build(ref, variant)
         with open(path, "w", encoding="utf-8", newline="\n") as handle:

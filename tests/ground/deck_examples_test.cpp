@@ -315,7 +315,8 @@ TEST(Sec22Deck, ExamplesMatchTheirGenerator) {
       "python3 '" + std::string(TOLIP_SOURCE_DIR) + "/scripts/make_scout_examples.py'" + " --reference '" +
       std::string(TOLIP_REFERENCE_DIR) + "/scout_reference.json'" + " --out '" + out + "' > /dev/null";
   ASSERT_EQ(std::system(command.c_str()), 0) << command;
-  for (const char* name : {"mission.toml", "reference_optimum.toml", "mission.dat", "cases.dat"}) {
+  for (const char* name :
+       {"mission.toml", "reference_optimum.toml", "mission_qalpha.toml", "mission.dat", "cases.dat"}) {
     EXPECT_EQ(read_text(out + "/" + name), read_text(example_path(std::string("scout/") + name)))
         << name << " differs from scripts/make_scout_examples.py output";
   }

@@ -473,10 +473,27 @@ class ClosedLoopSteering final : public PitchFeedback {
  public:
   ClosedLoopSteering(const Problem& problem, const BackwardRun& backward, const PointRoles& roles,
                      const Mission& mission, const Trajectory& nominal, const ControlProgram& nominal_program,
-                     const Steering& steering, const ConstraintVector& dpsi, double mass_change_slug)
+                     const Steering& steering, const ConstraintVector& dpsi, double mass_change_slug,
+                     double dp2)
       : problem_(problem), backward_(backward), roles_(roles), mission_(mission), nominal_(nominal),
         nominal_program_(nominal_program), steering_(steering), dpsi_(steered_part(steering, dpsi)),
-        mass_change_slug_(mass_change_slug), remaining_(steering.matrix) {
+        mass_change_slug_(mass_change_slug), dp2_(dp2), remaining_(steering.matrix) {
+    // The same sum over the pitch controls alone (the adjustable parameters and the payload are
+    // decided at launch: in flight they move nothing), with the rows of the constraints the
+    // steering leaves out kept at the identity.
+    pitch_remaining_.setZero();
+    for (int k = 0; k < backward.point_count; ++k) {
+      const double w = backward.quadrature_weight_s[k];
+      if (!(w > 0.0) || !roles.free[k]) continue;
+      const ConstraintVector g = scaled(problem, backward.theta_gradient[k], steering);
+      pitch_remaining_ += g * g.transpose() / w;
+    }
+    for (int i = 0; i < kMaxConstraints; ++i) {
+      if (i >= steering.first && i < problem.count && !steering.held[i]) continue;
+      pitch_remaining_.row(i).setZero();
+      pitch_remaining_.col(i).setZero();
+      pitch_remaining_(i, i) = 1.0;
+    }
     // The closed-loop points: the first kMaxClosedLoopPoints step starts after lift-off.
     for (int s = 0, n = 0; s < nominal.step_count && n < kMaxClosedLoopPoints; ++s, ++n) {
       last_point_ = nominal.steps[s].point;
@@ -491,9 +508,31 @@ class ClosedLoopSteering final : public PitchFeedback {
       if (!(w > 0.0) || !roles_.free[j]) continue;
       const ConstraintVector g = scaled(problem_, backward_.theta_gradient[j], steering_);
       remaining_ -= g * g.transpose() / w;
+      pitch_remaining_ -= g * g.transpose() / w;
     }
     next_removed_ = point;
-    const Eigen::LLT<SquareMatrix> cholesky(remaining_);
+    // A path constraint whose excess lies on points already flown (the q-bar x alpha excess of
+    // the first seconds) and that the pitch controls still ahead can no longer move, by the rule
+    // of the launch steering (hold_weak_directions), is held from here on: only the payload,
+    // decided at launch, still couples it, and through that coupling its residual would be spread
+    // over the other constraints' controls of the later stages. (Terminal constraints keep the
+    // manual's closed loop: docs/theory/optimizer.md.)
+    SquareMatrix pitch = pitch_remaining_;
+    Steering weak;
+    weak.first = steering_.first;
+    hold_weak_directions(problem_, dp2_, &pitch, &weak);
+    for (int i = 0; i < kMaxConstraints; ++i) {
+      const bool path = i < problem_.count && problem_.codes[i].kind == ConstraintQuantity::kQbarAlphaExcess;
+      weak.held[i] = path && weak.held[i] && !steering_.held[i];
+    }
+    SquareMatrix m = remaining_;
+    for (int i = steering_.first; i < problem_.count; ++i) {
+      if (!weak.held[i]) continue;
+      m.row(i).setZero();
+      m.col(i).setZero();
+      m(i, i) = 1.0;
+    }
+    const Eigen::LLT<SquareMatrix> cholesky(m);
     if (cholesky.info() != Eigen::Success) return;  // keep the program as planned
 
     AdjointVector dx;
@@ -502,7 +541,11 @@ class ClosedLoopSteering final : public PitchFeedback {
     ConstraintVector rhs = dpsi_;
     const AdjointMatrix& lambda = backward_.lambda[point];
     for (int i = steering_.first; i < problem_.count; ++i) {
-      if (!steering_.held[i]) rhs(i) -= lambda.col(i).dot(dx) / problem_.deadband[i];
+      if (weak.held[i]) {
+        rhs(i) = 0.0;
+      } else if (!steering_.held[i]) {
+        rhs(i) -= lambda.col(i).dot(dx) / problem_.deadband[i];
+      }
     }
     const ConstraintVector nu = cholesky.solve(rhs);
     for (int j = point; j < backward_.point_count; ++j) {
@@ -524,7 +567,9 @@ class ClosedLoopSteering final : public PitchFeedback {
   const Steering& steering_;  // outlives the forward run it steers
   const ConstraintVector dpsi_;
   const double mass_change_slug_;
-  SquareMatrix remaining_;  // M over the controls not yet flown
+  const double dp2_;              // eq. 5-31's typical control measure (the weak-direction rule)
+  SquareMatrix remaining_;        // M over the controls not yet flown
+  SquareMatrix pitch_remaining_;  // its pitch-control part (no adjustable parameters, no payload)
   int next_removed_ = 0;
   int last_point_ = 0;
 };
@@ -774,7 +819,7 @@ Status Iteration::fly_candidate(const Steering& steering, const ConstraintVector
   const double mass_change_slug =
       (m.vehicle.payload_lb - ws_->mission.vehicle.payload_lb) / m.constants.g0_ft_s2;
   ClosedLoopSteering closed_loop(problem_, b, roles_, ws_->mission, ws_->nominal, ws_->program, steering,
-                                 step_fraction * dpsi, mass_change_slug);
+                                 step_fraction * dpsi, mass_change_slug, typical_control_measure());
   FlightInputs inputs;
   inputs.feedback = &closed_loop;
   inputs.live_program = &ws_->candidate_program;
@@ -874,8 +919,11 @@ Status Iteration::optimization_phase(int budget, Steering* steering_out) {
     }
     if (!improved) break;
     ++result_->successful_optimization_runs;
+    const bool joined_before = path_constraint_joined_;
     accept_candidate();
-    if (path_constraint_joined_) first_attempt_ = true;  // the next phase sizes its first attempt anew
+    // A path constraint that joined at this nominal ends the phase: the next sizes its first attempt
+    // anew (a join earlier, in guidance, leaves the halved attempt as it is).
+    if (path_constraint_joined_ && !joined_before) first_attempt_ = true;
   }
   return Status::kOk;
 }

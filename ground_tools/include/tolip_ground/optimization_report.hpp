@@ -59,6 +59,10 @@ struct OptimizationReport {
   Status linearization_status = Status::kNotPrepared;
   // The optimum's payoff the linearized payoff is compared with (payoff units).
   double optimum_payoff = 0.0;
+  // The linearized trajectory and the case it flew (LinearizationWorkspace::nominal, ::mission):
+  // null unless the linearization ran and finished (its peak q-bar x alpha is reported).
+  const Trajectory* linearized_trajectory = nullptr;
+  const Mission* linearized_mission = nullptr;
   // Body dynamics (IP(6), Sec. 7, 10, 11). With 1, the 6D re-linearization's figures are in
   // `linearization`; with 2, the deck's own program flown point mass and 6D (null unless flown;
   // `initial_nominal_6d_status` says why not).
@@ -98,6 +102,23 @@ struct PayoffSummary {
   double value = 0.0;      // achieved; NaN when it could not be evaluated
   double corrected = 0.0;  // corrected to zero constraint error (eq. 9-21); NaN unless the optimizer finished
 };
+
+// The peak |q-bar x alpha| of a trajectory (issue 15; docs/theory/constraints-and-ics.md "The q-bar x
+// alpha path constraint"): over the phases with aerodynamic lift (the points the load limit covers:
+// stages using the lift table of data block 32, in the atmosphere) and over every point, each with
+// its time (lb deg/ft^2 as the deck gives the limit), the deck's limit (0: none) and the excess
+// integral J of constraint code 200 (s). `met` is the optimizer's criterion: no limit, or J within
+// its deadband kQbarAlphaExcessDeadbandS (the peak itself may then exceed the limit by about 1 %).
+struct QbarAlphaSummary {
+  double lift_peak_lb_deg_ft2 = 0.0;
+  double lift_peak_time_s = 0.0;
+  double peak_lb_deg_ft2 = 0.0;
+  double peak_time_s = 0.0;
+  double limit_lb_deg_ft2 = 0.0;
+  double excess_integral_s = 0.0;
+  bool met = true;
+};
+QbarAlphaSummary qbar_alpha_summary(const Mission& mission, const Trajectory& trajectory);
 
 // "payload", "velocity" or "altitude" from IP(1) (0, 1, 2); "unknown" otherwise.
 const char* payoff_kind_name(int ip1);

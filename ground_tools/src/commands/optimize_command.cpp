@@ -192,7 +192,13 @@ int optimize_case(const Deck& deck, const DeckCase& deck_case, OptimizerObserver
     report.initial_nominal_point_mass = run.initial_nominal_6d.point_mass.get();
     report.initial_nominal_6d = run.initial_nominal_6d.body_dynamics.get();
   }
-  if (run.linearization.outcome == StepOutcome::kRun) report.linearization = run.linearization.result.get();
+  if (run.linearization.outcome == StepOutcome::kRun) {
+    report.linearization = run.linearization.result.get();
+    if (report.linearization->finished && run.linearization.workspace != nullptr) {
+      report.linearized_trajectory = &run.linearization.workspace->nominal;
+      report.linearized_mission = &run.linearization.workspace->mission;
+    }
+  }
   // The dispersion analysis about the final nominal (IP(21) = 1, Sec. 15; dispersion_run.hpp).
   DispersionStep dispersions;
   if (mission->options.dispersions()) {

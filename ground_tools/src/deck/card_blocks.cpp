@@ -39,7 +39,7 @@ std::vector<BlockSpec> make_blocks() {
       {12, "ATMOSPHERE CT3 BASE MOLECULAR TEMPERATURE", F::kReal, 8, S::kWords, kOpt, 0, "", "", false},
       {13, "ATMOSPHERE CT4 LAPSE RATE", F::kReal, 8, S::kWords, kOpt, 0, "", "", false},
       {14, "ATMOSPHERE CT5 BASE DENSITY", F::kReal, 8, S::kWords, kOpt, 0, "", "", false},
-      {15, "EXTENSIONS: PAYLOAD, HEADING HOLD, LIFT STAGES", F::kReal, 3, S::kWords, kOpt, 0, "", "", true},
+      {15, "EXTENSIONS: PAYLOAD, HEADING HOLD, LIFT STAGES", F::kReal, 4, S::kWords, kOpt, 0, "", "", true},
       {16, "STAGE DURATIONS AND INTEGRATION STEPS DA1", F::kReal, 20, S::kWords, kOpt, 0, "", "", false},
       {17, "INPUT DATA DA2", F::kReal, 20, S::kWords, kOpt, 0, "", "", false},
       {18, "PITCH PROGRAM LINEARIZATION TIMES TLIN", F::kReal, 17, S::kComplete, kOpt, 0, "", "", false},

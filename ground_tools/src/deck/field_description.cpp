@@ -163,6 +163,18 @@ std::vector<FieldDescription> make_fields() {
   f.push_back(option_flag(23, "impact", "IMPACT LOCUS", "IP(23) nominal impact locus", &option<23>));
   f.push_back(option_flag(24, "radar", "RADAR TRACKING", "IP(24) radar tracking coordinates", &option<24>));
   for (FieldDescription& option_field : f) option_field.core_name = "options.ip[{w}]";
+  {
+    // Not in the manual (issue 15): the q-bar x alpha load limit, lb deg/ft^2 in the deck, lbf
+    // rad/ft^2 in the core; 0 (or absent): no limit. On the cards the extension block 15 word 4.
+    FieldDescription q = with_default(
+        degrees(real(15, 4, "options", "qbar_alpha_limit_lb_deg_ft2", "QBAR*ALPHA LIMIT, LB DEG/FT2 (EXT.)",
+                     "q-bar x alpha limit (extension), lb deg/ft^2 (0: none)",
+                     "options.qbar_alpha_limit_lbf_rad_ft2",
+                     &in_mission<&Mission::options, &Options::qbar_alpha_limit_lbf_rad_ft2>)),
+        0.0);
+    q.message_block = 4;  // an option in the TOML deck; on the cards the extension block 15
+    f.push_back(q);
+  }
 
   // ---- data block 10: CT1 (the core keeps its value when a key is absent) ----------------------
   using K = Constants;

@@ -131,6 +131,20 @@ json exchange_ratios_json(const OptimizationReport& report) {
   return array;
 }
 
+// The peak q-bar x alpha of a trajectory (docs/cli.md "qbar_alpha").
+json qbar_alpha_json(const Mission& mission, const Trajectory& trajectory) {
+  const QbarAlphaSummary q = qbar_alpha_summary(mission, trajectory);
+  return json{
+      {"lift_peak_lb_deg_ft2", number(q.lift_peak_lb_deg_ft2)},
+      {"lift_peak_time_s", number(q.lift_peak_time_s)},
+      {"peak_lb_deg_ft2", number(q.peak_lb_deg_ft2)},
+      {"peak_time_s", number(q.peak_time_s)},
+      {"limit_lb_deg_ft2", q.limit_lb_deg_ft2 > 0.0 ? number(q.limit_lb_deg_ft2) : json(nullptr)},
+      {"excess_integral_s", number(q.excess_integral_s)},
+      {"met", q.met},
+  };
+}
+
 // The linearized program (docs/cli.md): null when asked for but not run; otherwise the best program
 // found, with the status that says whether it meets the constraints and the rate limits.
 json linearized_json(const OptimizationReport& report) {
@@ -181,6 +195,9 @@ json linearized_json(const OptimizationReport& report) {
       {"coast7_below_min_rate", r.coast7_below_min_rate},
       {"coast7_below_min_rate_change", r.coast7_below_min_rate_change},
       {"constraints", std::move(constraints)},
+      {"qbar_alpha", report.linearized_trajectory != nullptr && report.linearized_mission != nullptr
+                         ? qbar_alpha_json(*report.linearized_mission, *report.linearized_trajectory)
+                         : json(nullptr)},
   };
 }
 
@@ -280,6 +297,9 @@ json optimization_json(const OptimizationReport& report) {
   additions["iterations_dropped"] = result.iterations_dropped;
   additions["failed_runs_recovered"] = result.crashed_runs;
   additions["held_constraints"] = held_constraints_json(result, static_cast<int>(constraints.size()));
+  if (report.final_trajectory.trajectory != nullptr && report.final_trajectory.trajectory->point_count > 0) {
+    additions["qbar_alpha"] = qbar_alpha_json(mission, *report.final_trajectory.trajectory);
+  }
   if (report.exchange_ratios_requested) additions["exchange_ratios"] = exchange_ratios_json(report);
   if (report.linearization_requested) additions["linearized"] = linearized_json(report);
   if (report.body_dynamics_option == 1 || report.body_dynamics_option == 2) {

@@ -17,6 +17,7 @@
 #include "tolip/mission/adjustable_parameter.hpp"
 #include "tolip/optimizer/constraint_parameters.hpp"
 #include "tolip/optimizer/constraint_set.hpp"
+#include "tolip/optimizer/qbar_alpha.hpp"
 #include "tolip_ground/autopilot_run.hpp"
 #include "tolip_ground/dispersion_report.hpp"
 #include "tolip_ground/hardover_report.hpp"
@@ -354,6 +355,24 @@ void write_iteration_details(Pager& pager, const OptimizationReport& report,
   }
 }
 
+// The peak q-bar x alpha lines of a trajectory (issue 15): the lift phases' peak and time, the
+// limit and whether it is met, and the peak over every stage.
+void write_qbar_alpha_peak(Pager& pager, const std::string& label, const QbarAlphaSummary& q) {
+  pager.reserve(2);
+  std::string line = "   PEAK QBAR*ALPHA, LIFT PHASES (" + label +
+                     ") = " + trimmed(number_cell(q.lift_peak_lb_deg_ft2, 1, 20)) +
+                     " LB DEG/FT2 AT T = " + trimmed(number_cell(q.lift_peak_time_s, 2, 12)) + " S";
+  if (q.limit_lb_deg_ft2 > 0.0) {
+    line += "; LIMIT " + trimmed(number_cell(q.limit_lb_deg_ft2, 1, 20)) +
+            (q.met ? " MET (EXCESS INTEGRAL " : " EXCEEDED (EXCESS INTEGRAL ") +
+            trimmed(e_cell(q.excess_integral_s, 14)) + " S)";
+  }
+  pager.emit(line);
+  pager.emit("   PEAK QBAR*ALPHA, ALL STAGES (" + label +
+             ") = " + trimmed(number_cell(q.peak_lb_deg_ft2, 1, 20)) +
+             " LB DEG/FT2 AT T = " + trimmed(number_cell(q.peak_time_s, 2, 12)) + " S");
+}
+
 void write_summary(Pager& pager, const OptimizationReport& report,
                    const std::vector<ConstraintSummary>& constraints,
                    const std::vector<AdjustableSummary>& adjustable) {
@@ -419,6 +438,14 @@ void write_summary(Pager& pager, const OptimizationReport& report,
         "PAYLOAD INCREMENT",
         trimmed(number_cell(mission.vehicle.payload_lb - report.initial_mission->vehicle.payload_lb, 4, 20)),
         "LB"));
+  }
+  if (report.final_trajectory.trajectory != nullptr && report.final_trajectory.trajectory->point_count > 0) {
+    write_qbar_alpha_peak(pager, "OPTIMIZED",
+                          qbar_alpha_summary(mission, *report.final_trajectory.trajectory));
+  }
+  if (report.linearized_trajectory != nullptr && report.linearized_mission != nullptr) {
+    write_qbar_alpha_peak(pager, "LINEARIZED",
+                          qbar_alpha_summary(*report.linearized_mission, *report.linearized_trajectory));
   }
   pager.emit("");
 
@@ -602,6 +629,20 @@ void write_linearized_program(Pager& pager, const OptimizationReport& report) {
 }
 
 }  // namespace
+
+QbarAlphaSummary qbar_alpha_summary(const Mission& mission, const Trajectory& trajectory) {
+  QbarAlphaSummary q;
+  const QbarAlphaPeak lift = peak_qbar_alpha(mission, trajectory, true);
+  const QbarAlphaPeak all = peak_qbar_alpha(mission, trajectory, false);
+  q.lift_peak_lb_deg_ft2 = lift.value_lbf_rad_ft2 * kRadToDeg;
+  q.lift_peak_time_s = lift.time_s;
+  q.peak_lb_deg_ft2 = all.value_lbf_rad_ft2 * kRadToDeg;
+  q.peak_time_s = all.time_s;
+  q.limit_lb_deg_ft2 = mission.options.qbar_alpha_limit_lbf_rad_ft2 * kRadToDeg;
+  q.excess_integral_s = qbar_alpha_excess_s(mission, trajectory);
+  q.met = !mission.options.qbar_alpha_constraint() || q.excess_integral_s <= kQbarAlphaExcessDeadbandS;
+  return q;
+}
 
 const char* payoff_kind_name(int ip1) {
   switch (ip1) {
