@@ -1,8 +1,9 @@
 // The optional analyses' data and the small tables they lean on (issue 14 structural coverage):
 // every rejection of validate_hardover_data (Sec. 16, data blocks 44-45), validate_impact_data
 // (Sec. 17, blocks 42-43 and DA6D(17-19)) and validate_atmosphere_table (Sec. 19, blocks 11-14)
-// names its Status and word; the stage-1 gain schedule of body dynamics (Sec. 7) interpolates
-// linearly between its points and holds its end values, against a hand computation.
+// names its Status and word; so does every change perturb_stage_parameter (Sec. 8) cannot make; the stage-1
+// gain schedule of body dynamics (Sec. 7) interpolates linearly between its points and holds its end values,
+// against a hand computation.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -16,6 +17,8 @@
 #include "tolip/body/body_dynamics.hpp"
 #include "tolip/hardover/hardover.hpp"
 #include "tolip/impact/impact.hpp"
+#include "tolip/optimizer/constraint_parameters.hpp"
+#include "tolip/optimizer/exchange_ratios.hpp"
 
 namespace tolip {
 namespace {
@@ -308,6 +311,71 @@ TEST(BodyDynamics, Sec7_StageOneGainScheduleIsLinearBetweenItsPointsAndHeldBeyon
   b.cg_station_ft[2].clear();
   c.stage = 3;
   EXPECT_EQ(unit_moments(b, c).cg_station_ft, b.cg_station_ft[0](3.0));
+}
+
+// Sec. 8: a parameter change that has no meaning is refused, not made; one that needs no change
+// (drag of a stage without a drag table) changes nothing; the burn-rate change carries the stage-1
+// zero-alpha window (data block 22) with the stage's time, t / f by hand.
+TEST(Sec8ExchangeRatios, ParameterChangesThatCannotBeMadeAreRefused) {
+  auto base = reference();
+  auto out = std::make_unique<Mission>();
+  EXPECT_EQ(perturb_stage_parameter(*base, 2, ExchangeParameter::kJettisonWeight, 1.0, base.get()),
+            Status::kValueOutOfRange)
+      << "the output may not be the input";
+  EXPECT_EQ(perturb_stage_parameter(*base, 6, ExchangeParameter::kJettisonWeight, 1.0, out.get()),
+            Status::kUnknownStageCode)
+      << "a coast";
+  EXPECT_EQ(perturb_stage_parameter(*base, 5, ExchangeParameter::kJettisonWeight, 1.0, out.get()),
+            Status::kUnknownStageCode)
+      << "a stage not flown";
+  EXPECT_EQ(perturb_stage_parameter(*base, 2, ExchangeParameter::kBurnRate, -100.0, out.get()),
+            Status::kValueOutOfRange);
+  EXPECT_EQ(perturb_stage_parameter(*base, 2, ExchangeParameter::kSpecificImpulse, -150.0, out.get()),
+            Status::kValueOutOfRange);
+  const double w0 = test::stage(*base, 3).consumable_weight_lb.y(0);
+  EXPECT_EQ(perturb_stage_parameter(*base, 3, ExchangeParameter::kPropellantWeight, -w0, out.get()),
+            Status::kValueOutOfRange);
+  ASSERT_EQ(perturb_stage_parameter(*base, 3, ExchangeParameter::kDrag, 2.0, out.get()), Status::kOk);
+  EXPECT_TRUE(test::stage(*out, 3).drag_coefficient.empty()) << "stage 3 has no drag table";
+  test::stage(*base, 2).reference_area_ft2 = 0.0;
+  EXPECT_EQ(perturb_stage_parameter(*base, 2, ExchangeParameter::kDrag, 2.0, out.get()),
+            Status::kValueOutOfRange);
+  EXPECT_EQ(perturb_stage_parameter(*base, 2, static_cast<ExchangeParameter>(9), 2.0, out.get()),
+            Status::kValueOutOfRange);
+  base = reference();
+  ASSERT_TRUE(base->options.zero_alpha_window());
+  ASSERT_EQ(perturb_stage_parameter(*base, 1, ExchangeParameter::kBurnRate, 25.0, out.get()), Status::kOk);
+  EXPECT_DOUBLE_EQ(out->control.zero_alpha_start_s, base->control.zero_alpha_start_s / 1.25);
+  EXPECT_DOUBLE_EQ(out->control.zero_alpha_end_s, base->control.zero_alpha_end_s / 1.25);
+  EXPECT_DOUBLE_EQ(test::stage(*out, 1).duration_s, test::stage(*base, 1).duration_s / 1.25);
+}
+
+// Sec. 5 partials: no output, a state that is not finite, and no inertial velocity are refused.
+TEST(Sec5ConstraintPartials, GuardsRefuseWhatHasNoPartials) {
+  const Constants constants{};
+  StateVector x = StateVector::Zero();
+  x[kStateR] = constants.earth_equatorial_radius_ft;
+  InertialJacobian j;
+  EXPECT_EQ(inertial_variable_partials(constants, x, nullptr), Status::kValueOutOfRange);
+  StateVector bad = x;
+  bad[kStateV] = kNaN;
+  EXPECT_EQ(inertial_variable_partials(constants, bad, &j), Status::kNonFiniteState);
+  // At rest (V = 0 relative to the Earth) at the pole, where the Earth's rotation adds no speed:
+  // no inertial velocity, so no flight-path angle or heading to differentiate.
+  x[kStateLambda] = 0.5 * kPi;
+  EXPECT_EQ(inertial_variable_partials(constants, x, &j), Status::kZeroVelocity);
+  ConstraintPoint point;
+  point.state = x;
+  Eigen::Matrix<double, 6, 1> partials;
+  EXPECT_EQ(stagnation_heating_rate_partials(constants, 0.5, 0.0023769, point, nullptr),
+            Status::kValueOutOfRange);
+  point.ddensity_dh = kNaN;
+  EXPECT_EQ(stagnation_heating_rate_partials(constants, 0.5, 0.0023769, point, &partials),
+            Status::kValueNotFinite);
+  point.ddensity_dh = 0.0;
+  point.state[kStateGamma] = HUGE_VAL;
+  EXPECT_EQ(stagnation_heating_rate_partials(constants, 0.5, 0.0023769, point, &partials),
+            Status::kValueNotFinite);
 }
 
 }  // namespace
