@@ -3,7 +3,8 @@
 // validate_dispersion_data names its Status and code; build_dispersed_case refuses what cannot fly;
 // the Monte Carlo rules of which source is drawn, which low table pairs with which high one, and
 // the scalar sources moved by their own draw (z = counter_normal(seed, sample, leader) / 3, the
-// deck's change being three sigma) against a hand computation of the changed case.
+// deck's change being three sigma) against a hand computation of the changed case. One flight:
+// the max |q-bar alpha| recomputed from the wind equals the one from the flight's own air alpha.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -383,6 +384,40 @@ TEST(MonteCarlo, UnionGridsBeyondTheTableCapacityAreNamedByCode) {
   EXPECT_EQ(check_monte_carlo_data(nominal_of(*f, true), d, &fault_code), Status::kTooManyTablePoints);
   EXPECT_EQ(fault_code, 19);
   EXPECT_EQ(check_monte_carlo_data(nominal_of(*f, false), d, &fault_code), Status::kOk) << "not drawn in 3D";
+}
+
+// FlightInputs::air_alpha_rad is "what record_dispersed_trajectory() would recompute from the
+// point": recorded from the wind alone, the max |q-bar alpha| of a windy flight is the one recorded
+// from the flight's own air-relative alpha; without the wind it is the inertial alpha's, another.
+TEST(Sec15Dispersions, MaxQbarAlphaRecomputedFromTheWindIsTheFlightsOwn) {
+  auto f = make_fixture();
+  WindProfile wind;
+  table(&wind.speed_ft_s, {0.0, 2.0e4, 6.0e4, 2.0e5}, {20.0, 120.0, 150.0, 0.0});
+  table(&wind.azimuth_rad, {0.0, 2.0e5}, {0.3, 0.8});
+  FlightPerturbation perturbation;
+  perturbation.wind = &wind;
+  FlightInputs inputs;
+  inputs.perturbation = &perturbation;
+  inputs.air_alpha_rad = f->workspace.air_alpha_rad;
+  auto flown = std::make_unique<Trajectory>();
+  ASSERT_EQ(fly_trajectory(f->mission, f->prepared, inputs, flown.get()), Status::kOk);
+  auto from_alpha = std::make_unique<DispersedTrajectory>();
+  auto from_wind = std::make_unique<DispersedTrajectory>();
+  auto inertial = std::make_unique<DispersedTrajectory>();
+  ASSERT_EQ(record_dispersed_trajectory(f->mission, f->prepared, *flown, *flown, &wind,
+                                        f->workspace.air_alpha_rad, from_alpha.get()),
+            Status::kOk);
+  ASSERT_EQ(record_dispersed_trajectory(f->mission, f->prepared, *flown, *flown, &wind, from_wind.get()),
+            Status::kOk);
+  ASSERT_EQ(record_dispersed_trajectory(f->mission, f->prepared, *flown, *flown, nullptr, inertial.get()),
+            Status::kOk);
+  ASSERT_GT(from_alpha->max_qbar_alpha_lbf_rad_ft2, 0.0);
+  EXPECT_NEAR(from_wind->max_qbar_alpha_lbf_rad_ft2, from_alpha->max_qbar_alpha_lbf_rad_ft2,
+              1e-9 * from_alpha->max_qbar_alpha_lbf_rad_ft2);
+  EXPECT_EQ(from_wind->max_qbar_alpha_time_s, from_alpha->max_qbar_alpha_time_s);
+  EXPECT_GT(std::fabs(inertial->max_qbar_alpha_lbf_rad_ft2 - from_alpha->max_qbar_alpha_lbf_rad_ft2),
+            1e-3 * from_alpha->max_qbar_alpha_lbf_rad_ft2)
+      << "a 100 ft/s wind moves the angle of attack";
 }
 
 }  // namespace
