@@ -2,14 +2,18 @@
 // telemetry, tick and end, reply and upload frames decode to what was encoded, field for field;
 // any one byte changed, a wrong size or type, or a field out of its range is rejected as
 // kHalLinkFrameCorrupt with the output untouched. The CRC is recomputed here (crc32 of the table
-// image) to reach the field checks behind it.
+// image) to reach the field checks behind it. The flight side's serial loop (LinkedFlightComputer::
+// serve) answers a byte stream frame by frame: noise skipped, each upload and end frame replied to
+// with its status, each sensor or tick frame with an actuator and a telemetry frame.
 #include <gtest/gtest.h>
 
 #include <cstdint>
 #include <cstring>
 #include <vector>
 
+#include "support/guidance_table_fixture.hpp"
 #include "tolip/hal/link.hpp"
+#include "tolip/hal/linked_flight_computer.hpp"
 #include "tolip/table/crc32.hpp"
 
 namespace tolip::hal {
@@ -202,6 +206,114 @@ TEST(HalLink, UploadFrameCarriesTheImageAndRefusesWhatCannotBeAnUpload) {
   reseal(&long_word);
   EXPECT_EQ(decode_upload_frame(long_word.data(), long_word.size(), &sequence, &carried, &carried_size),
             Status::kHalLinkFrameCorrupt);
+}
+
+// A byte stream in, the flight side's frames out.
+struct Stream {
+  Bytes in;
+  std::size_t next = 0;
+  Bytes out;
+  static Status read(void* context, std::uint8_t* byte) {
+    Stream& s = *static_cast<Stream*>(context);
+    if (s.next >= s.in.size()) return Status::kHalPortMissing;  // the stream ran out
+    *byte = s.in[s.next++];
+    return Status::kOk;
+  }
+  static Status write(void* context, const std::uint8_t* bytes, std::size_t size) {
+    Stream& s = *static_cast<Stream*>(context);
+    s.out.insert(s.out.end(), bytes, bytes + size);
+    return Status::kOk;
+  }
+  void add(const Bytes& frame) { in.insert(in.end(), frame.begin(), frame.end()); }
+};
+
+Bytes short_frame(std::uint8_t type, std::uint32_t sequence) {
+  Bytes frame(kShortFrameSize);
+  encode_short_frame(type, sequence, frame.data());
+  return frame;
+}
+
+TEST(HalLink, SerialLoopAnswersEveryFrameAndSkipsNoise) {
+  static LinkedFlightComputer computer(0.02);
+  EXPECT_EQ(computer.serve(ByteChannel{}), Status::kHalPortMissing) << "no channel";
+  Stream stream;
+  stream.in = {0x00u, 0x13u, kFrameSync, 0x99u};  // noise, then a sync byte before an unknown type
+  const test::Image image = test::encode(test::make_test_table());
+  Bytes upload(kMaxUploadFrameSize);
+  std::size_t upload_size = 0;
+  ASSERT_EQ(encode_upload_frame(1u, image.data(), image.size(), upload.data(), &upload_size), Status::kOk);
+  upload.resize(upload_size);
+  stream.add(upload);
+  Bytes corrupt_upload = upload;
+  corrupt_upload[2] = 2u;  // sequence 2, CRC now wrong
+  stream.add(corrupt_upload);
+  Bytes oversized(kUploadHeaderSize);
+  oversized[0] = kFrameSync;
+  oversized[1] = kUploadFrameType;
+  oversized[2] = 3u;
+  oversized[6] = 0xFFu;
+  oversized[7] = 0xFFu;  // a length beyond kMaxUploadBytes: answered without reading it
+  stream.add(oversized);
+  stream.add(short_frame(kTickFrameType, 4u));
+  SensorFrame sensor;
+  sensor.sequence = 1u;  // the cycle it belongs to (the tick was cycle 0)
+  sensor.discretes.stage_code = 1;
+  Bytes sensor_frame(kSensorFrameSize);
+  encode_sensor_frame(sensor, sensor_frame.data());
+  stream.add(sensor_frame);
+  Bytes bad_sensor = sensor_frame;
+  bad_sensor[10] ^= 0x01u;
+  stream.add(bad_sensor);
+  Bytes bad_end = short_frame(kEndFrameType, 7u);
+  bad_end[9] ^= 0x01u;
+  stream.add(bad_end);
+  stream.add(short_frame(kEndFrameType, 8u));
+  stream.add(short_frame(kTickFrameType, 9u));  // after the end: never read
+  ASSERT_EQ(computer.serve(ByteChannel{&stream, Stream::read, Stream::write}), Status::kOk);
+  EXPECT_EQ(stream.next, stream.in.size() - kShortFrameSize);
+
+  // Out: reply 1 (loaded), reply 2 (corrupt), reply 3 (corrupt), three cycles (actuator and
+  // telemetry frames), reply 7 (corrupt end), reply 8 (the end, with the counters).
+  const Bytes& out = stream.out;
+  const std::size_t cycle_bytes = kActuatorFrameSize + kTelemetryFrameSize;
+  ASSERT_EQ(out.size(), 5 * kReplyFrameSize + 3 * cycle_bytes);
+  const auto reply_at = [&](std::size_t offset) {
+    LinkReport r;
+    EXPECT_EQ(decode_reply_frame(out.data() + offset, kReplyFrameSize, &r), Status::kOk) << offset;
+    return r;
+  };
+  const LinkReport loaded = reply_at(0);
+  EXPECT_EQ(loaded.sequence, 1u);
+  EXPECT_EQ(loaded.status, Status::kOk);
+  EXPECT_EQ(reply_at(kReplyFrameSize).status, Status::kHalLinkFrameCorrupt);
+  EXPECT_EQ(reply_at(kReplyFrameSize).sequence, 2u);
+  EXPECT_EQ(reply_at(2 * kReplyFrameSize).status, Status::kHalLinkFrameCorrupt);
+  EXPECT_EQ(reply_at(2 * kReplyFrameSize).sequence, 3u);
+  std::size_t at = 3 * kReplyFrameSize;
+  for (std::uint32_t cycle = 0; cycle < 3; ++cycle, at += cycle_bytes) {
+    ActuatorFrame actuator;
+    EXPECT_EQ(decode_actuator_frame(out.data() + at, kActuatorFrameSize, &actuator), Status::kOk);
+    std::uint32_t sequence = 99;
+    TelemetryFrame telemetry;
+    EXPECT_EQ(decode_telemetry_frame(out.data() + at + kActuatorFrameSize, kTelemetryFrameSize, &sequence,
+                                     &telemetry),
+              Status::kOk);
+    EXPECT_EQ(sequence, cycle) << "the telemetry of cycle " << cycle;
+  }
+  const LinkReport bad = reply_at(at);
+  EXPECT_EQ(bad.status, Status::kHalLinkFrameCorrupt);
+  EXPECT_EQ(bad.sequence, 7u);
+  const LinkReport end = reply_at(at + kReplyFrameSize);
+  EXPECT_EQ(end.status, Status::kOk);
+  EXPECT_EQ(end.sequence, 8u);
+  EXPECT_EQ(end.sensor_frames_missing, 1u) << "the tick";
+  EXPECT_EQ(end.sensor_frames_rejected, 1u) << "the sensor frame with a changed byte";
+  EXPECT_EQ(end.table_crc, loaded.table_crc);
+
+  // A stream that ends inside a frame returns the channel's failure.
+  Stream cut;
+  cut.add(Bytes(upload.begin(), upload.begin() + 20));
+  EXPECT_EQ(computer.serve(ByteChannel{&cut, Stream::read, Stream::write}), Status::kHalPortMissing);
 }
 
 }  // namespace
