@@ -316,5 +316,27 @@ TEST(HalLink, SerialLoopAnswersEveryFrameAndSkipsNoise) {
   EXPECT_EQ(computer.serve(ByteChannel{&cut, Stream::read, Stream::write}), Status::kHalPortMissing);
 }
 
+// The flight side without the serial loop: an upload of nothing does not boot it, nor replace the
+// table in force once booted; a sensor frame of another cycle is rejected, a missing one counted,
+// with or without somewhere to put the actuator and telemetry frames.
+TEST(HalLink, UploadsAndCyclesOutsideTheLoopKeepTheirAccount) {
+  static LinkedFlightComputer computer(0.02);
+  EXPECT_NE(computer.upload(nullptr, 0), Status::kOk) << "an empty store does not boot";
+  const test::Image image = test::encode(test::make_test_table());
+  ASSERT_EQ(computer.upload(image.data(), image.size()), Status::kOk);
+  const std::uint32_t crc = computer.application().tables().active_crc();
+  EXPECT_NE(computer.upload(nullptr, 0), Status::kOk);
+  EXPECT_EQ(computer.application().tables().active_crc(), crc) << "the table in force stays";
+  SensorFrame sensor;
+  sensor.sequence = 5u;  // cycle 0 expects sequence 0
+  Bytes frame(kSensorFrameSize);
+  encode_sensor_frame(sensor, frame.data());
+  (void)computer.run_cycle(frame.data(), frame.size(), nullptr, nullptr);
+  EXPECT_EQ(computer.sensor_frames_rejected(), 1u);
+  (void)computer.run_cycle(nullptr, 0, nullptr, nullptr);
+  EXPECT_EQ(computer.sensor_frames_missing(), 1u);
+  EXPECT_EQ(computer.application().counters().cycles, 2u);
+}
+
 }  // namespace
 }  // namespace tolip::hal
