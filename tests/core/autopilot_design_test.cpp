@@ -208,6 +208,67 @@ TEST(AutopilotDesign, Issue16_BadRequestsAreRejectedByName) {
             Status::kAutopilotGainOutOfRange);
 }
 
+// Every word of the request and of the model is checked on its own: one not finite, or out of
+// its range, names the request or the model; the gain beyond the table's K_q range (100 s) too.
+TEST(AutopilotDesign, Issue16_EveryRequestAndModelWordIsCheckedOnItsOwn) {
+  const double nan = std::nan("");
+  const ShortPeriodModel good_model = model(2.5, 6.0, -0.1);
+  const AutopilotRequest good_request = request(2.5, 0.7, 0.02);
+  AutopilotDesign d;
+  ASSERT_EQ(design_autopilot_gains(good_model, good_request, &d), Status::kOk);
+  struct RequestEdit {
+    double AutopilotRequest::*word;
+    double value;
+    Status status;
+  };
+  const RequestEdit request_edits[] = {
+      {&AutopilotRequest::damping_ratio, nan, Status::kAutopilotDampingNotPositive},
+      {&AutopilotRequest::damping_ratio, HUGE_VAL, Status::kAutopilotDampingNotPositive},
+      {&AutopilotRequest::natural_frequency_rad_s, nan, Status::kAutopilotFrequencyNotPositive},
+      {&AutopilotRequest::attitude_error_rad, 0.0, Status::kAutopilotRequestInvalid},
+      {&AutopilotRequest::attitude_error_rad, nan, Status::kAutopilotRequestInvalid},
+      {&AutopilotRequest::max_deflection_rad, -0.1, Status::kAutopilotRequestInvalid},
+      {&AutopilotRequest::actuator_time_constant_s, nan, Status::kAutopilotRequestInvalid},
+      {&AutopilotRequest::actuator_time_constant_s, HUGE_VAL, Status::kAutopilotRequestInvalid},
+  };
+  for (const RequestEdit& e : request_edits) {
+    AutopilotRequest r = good_request;
+    r.*e.word = e.value;
+    EXPECT_EQ(design_autopilot_gains(good_model, r, &d), e.status) << e.value;
+  }
+  struct ModelEdit {
+    double ShortPeriodModel::*word;
+    double value;
+  };
+  const ModelEdit model_edits[] = {
+      {&ShortPeriodModel::pitch_inertia_slug_ft2, 0.0},
+      {&ShortPeriodModel::pitch_inertia_slug_ft2, nan},
+      {&ShortPeriodModel::m_delta_lbf_ft_per_rad, 0.0},
+      {&ShortPeriodModel::a_per_s2, nan},
+      {&ShortPeriodModel::a_per_s2, -HUGE_VAL},
+      {&ShortPeriodModel::b_per_s2, HUGE_VAL},
+      {&ShortPeriodModel::c_per_s, nan},
+  };
+  for (const ModelEdit& e : model_edits) {
+    ShortPeriodModel m = good_model;
+    m.*e.word = e.value;
+    EXPECT_EQ(design_autopilot_gains(m, good_request, &d), Status::kAutopilotModelInvalid) << e.value;
+  }
+  // By hand, a = c = 0, b = 0.01 per s^2, w = 0.5 rad/s (and deflection to spare): K_theta = w^2 / b
+  // = 25, K_q = 2 zeta w / b = 70 s at zeta = 0.7, and 150 s (beyond the table's 100 s) at zeta = 1.5.
+  AutopilotRequest r = request(0.5, 0.7);
+  r.max_deflection_rad = 1e3;
+  ShortPeriodModel slow = model(0.0, 0.01, 0.0);
+  ASSERT_EQ(design_autopilot_gains(slow, r, &d), Status::kOk);
+  EXPECT_NEAR(d.k_q_s, 70.0, 1e-12);
+  EXPECT_NEAR(d.k_theta, 25.0, 1e-12);
+  r.damping_ratio = 1.5;
+  EXPECT_EQ(design_autopilot_gains(slow, r, &d), Status::kAutopilotGainOutOfRange);
+  // No deliverable frequency without an attitude error to deliver it for.
+  r.attitude_error_rad = 0.0;
+  EXPECT_EQ(max_deliverable_frequency_rad_s(slow, r), 0.0);
+}
+
 // The model from the reference data (blocks 33-37) at a stage-1 flight condition: M_alpha and
 // M_delta are unit_moments()'s, the damping terms the Sec. 16 expressions shared with the hardover
 // module, and dividing by I gives a, b, c.

@@ -118,6 +118,27 @@ TEST(GainScheduleDesign, Issue16_BadRequestsNameTheStage) {
   EXPECT_EQ(design_gain_schedule(f.mission, f.trajectory, f.hardover, kRequests, kAll,
                                  kMaxGainSchedulePointsPerStage + 1, &schedule, &stage),
             Status::kTooManyGainSchedulePoints);
+  EXPECT_EQ(design_gain_schedule(f.mission, f.trajectory, f.hardover, kRequests, kAll, 0, &schedule, nullptr),
+            Status::kTooManyGainSchedulePoints)
+      << "at least one point per stage";
+  // A designed stage needs its pitch inertia (data block 44); without the fault record as well.
+  static HardoverData no_inertia;
+  no_inertia = f.hardover;
+  no_inertia.stages[1].pitch_inertia_slug_ft2.clear();
+  EXPECT_EQ(design_gain_schedule(f.mission, f.trajectory, no_inertia, kRequests, kAll, 6, &schedule, &stage),
+            Status::kHardoverInertiaMissing);
+  EXPECT_EQ(stage, 2);
+  EXPECT_EQ(design_gain_schedule(f.mission, f.trajectory, no_inertia, kRequests, kAll, 6, &schedule, nullptr),
+            Status::kHardoverInertiaMissing);
+  // Stage 1 alone, one point: one record, at the first controllable point of stage 1 (stages not
+  // asked for are not designed, so stage 2's missing inertia does not matter).
+  const bool stage1_only[kGainScheduleStages] = {true, false, false};
+  ASSERT_EQ(
+      design_gain_schedule(f.mission, f.trajectory, no_inertia, kRequests, stage1_only, 1, &schedule, &stage),
+      Status::kOk);
+  ASSERT_EQ(schedule.count, 1);
+  EXPECT_EQ(schedule.points[0].stage_code, 1);
+  EXPECT_EQ(stage, 0);
 }
 
 }  // namespace

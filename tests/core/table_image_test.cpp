@@ -198,6 +198,88 @@ TEST(TableImage, ValidationChecksEveryDocumentedRange) {
   EXPECT_EQ(validate_guidance_table(test::make_test_table()), Status::kOk);
 }
 
+// docs/table-format.md: every word is checked on its own (a NaN named as such, wherever it is),
+// and a decoded header names the layout field that differs from this build's.
+TEST(TableImage, EveryWordAndLayoutFieldIsCheckedOnItsOwn) {
+  GuidanceTable good = test::make_test_table();
+  good.schedule_count = 1;
+  good.schedule[0].stage_code = 1;
+  good.schedule[0].stage_time_s = 5.0;
+  good.schedule[0].k_theta = 1.0;
+  good.schedule[0].k_q_s = 0.1;
+  ASSERT_EQ(validate_guidance_table(good), Status::kOk);
+  struct Case {
+    const char* what;
+    void (*mutate)(GuidanceTable*);
+    Status expected;
+  };
+  static const Case cases[] = {
+      {"format version", [](GuidanceTable* t) { t->format_version = 2; },
+       Status::kTableImageUnsupportedVersion},
+      {"negative segment count", [](GuidanceTable* t) { t->segment_count = -1; },
+       Status::kTooManyLinearSegments},
+      {"mission id without its NUL",
+       [](GuidanceTable* t) {
+         for (char& c : t->mission_id) c = 'A';
+       },
+       Status::kTableImageTextInvalid},
+      {"K_q not finite",
+       [](GuidanceTable* t) { t->gains[3].k_q_s = std::numeric_limits<double>::infinity(); },
+       Status::kValueNotFinite},
+      {"segment rate not finite",
+       [](GuidanceTable* t) { t->segments[1].rate_rad_s = std::numeric_limits<double>::quiet_NaN(); },
+       Status::kValueNotFinite},
+      {"segment start not finite",
+       [](GuidanceTable* t) { t->segments[1].start_stage_time_s = std::numeric_limits<double>::infinity(); },
+       Status::kValueNotFinite},
+      {"negative schedule count", [](GuidanceTable* t) { t->schedule_count = -1; },
+       Status::kTooManyGainSchedulePoints},
+      {"schedule beyond capacity", [](GuidanceTable* t) { t->schedule_count = kMaxGainSchedulePoints + 1; },
+       Status::kTooManyGainSchedulePoints},
+      {"schedule time not finite",
+       [](GuidanceTable* t) { t->schedule[0].stage_time_s = std::numeric_limits<double>::quiet_NaN(); },
+       Status::kValueNotFinite},
+      {"schedule K_theta not finite",
+       [](GuidanceTable* t) { t->schedule[0].k_theta = std::numeric_limits<double>::infinity(); },
+       Status::kValueNotFinite},
+      {"schedule K_q not finite",
+       [](GuidanceTable* t) { t->schedule[0].k_q_s = std::numeric_limits<double>::quiet_NaN(); },
+       Status::kValueNotFinite},
+      {"schedule K_theta beyond 100", [](GuidanceTable* t) { t->schedule[0].k_theta = 101.0; },
+       Status::kValueOutOfRange},
+  };
+  for (const Case& c : cases) {
+    GuidanceTable table = good;
+    c.mutate(&table);
+    EXPECT_EQ(validate_guidance_table(table), c.expected) << c.what;
+  }
+
+  // Decoding: each layout word of the header altered alone is a layout mismatch (the CRC is not
+  // reached); a version-2 image is named by its version only when its magic is the table's.
+  const Image image = encode(good);
+  const std::size_t layout[] = {kOffsetHeaderSize,     kOffsetSegmentCapacity,  kOffsetSegmentRecordSize,
+                                kOffsetStageGainCount, kOffsetScheduleCapacity, kOffsetScheduleRecordSize};
+  GuidanceTable decoded;
+  for (std::size_t offset : layout) {
+    Image altered = image;
+    altered[offset] ^= 0x01u;
+    EXPECT_EQ(decode_table_image(altered.data(), altered.size(), &decoded), Status::kTableImageLayoutMismatch)
+        << "offset " << offset;
+  }
+  Image version2(image.begin(), image.begin() + kTableVersion2ImageSize);
+  version2[kOffsetFormatVersion] = 2u;
+  version2[kOffsetFormatVersion + 1] = 0u;
+  EXPECT_EQ(table_image_size_status(version2.data(), version2.size()), Status::kTableImageVersion2);
+  for (std::size_t i = 1; i < 4; ++i) {
+    Image other = version2;
+    other[kOffsetMagic + i] ^= 0x20u;
+    EXPECT_EQ(table_image_size_status(other.data(), other.size()), Status::kTableImageTruncated) << i;
+  }
+  version2[kOffsetFormatVersion] = 3u;
+  EXPECT_EQ(table_image_size_status(version2.data(), version2.size()), Status::kTableImageTruncated);
+  EXPECT_EQ(table_image_size_status(nullptr, kTableImageSize), Status::kTableImageTruncated);
+}
+
 TEST(TableImage, ZeroSegmentsAndAFullTableOfFifteenAreValid) {
   GuidanceTable empty = test::make_test_table();
   empty.segment_count = 0;

@@ -1,0 +1,424 @@
+// Dispersion data (manual Sec. 15, Sec. 22 data blocks 46-55) and the Monte Carlo draws of them
+// (issue 11, dispersion/monte_carlo.hpp), without flying: every rejection of
+// validate_dispersion_data names its Status and code; build_dispersed_case refuses what cannot fly;
+// the Monte Carlo rules of which source is drawn, which low table pairs with which high one, and
+// the scalar sources moved by their own draw (z = counter_normal(seed, sample, leader) / 3, the
+// deck's change being three sigma) against a hand computation of the changed case. One flight:
+// the max |q-bar alpha| recomputed from the wind equals the one from the flight's own air alpha.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <memory>
+
+#include "support/reference_mission.hpp"
+#include "tolip/dispersion/dispersion.hpp"
+#include "tolip/dispersion/monte_carlo.hpp"
+
+namespace tolip {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+struct Fixture {
+  Mission mission;
+  PreparedCase prepared;
+  DispersionData data;
+  DispersionWorkspace workspace;
+};
+
+std::unique_ptr<Fixture> make_fixture() {
+  auto f = std::make_unique<Fixture>();
+  test::build_reference_mission(test::ReferenceProgram::kOptimum, &f->mission);
+  EXPECT_EQ(prepare_case(f->mission, &f->prepared), Status::kOk);
+  return f;
+}
+
+DispersionNominal nominal_of(const Fixture& f, bool body_dynamics) {
+  DispersionNominal n;
+  n.mission = &f.mission;
+  n.body_dynamics = body_dynamics;
+  return n;
+}
+
+DispersionSource& add(DispersionData* data, int code) {
+  DispersionSource& s = data->sources[data->count++];
+  s = DispersionSource{};
+  s.code = code;
+  DispersionCodeInfo info;
+  EXPECT_TRUE(dispersion_code_info(code, &info));
+  s.stage = info.stage;
+  return s;
+}
+
+template <int N>
+void table(Table<N>* t, std::initializer_list<double> x, std::initializer_list<double> y,
+           bool finalize = true) {
+  t->clear();
+  auto yi = y.begin();
+  for (double xi : x) ASSERT_EQ(t->append(xi, *yi++), Status::kOk);
+  if (finalize) {
+    ASSERT_EQ(t->finalize(), Status::kOk);
+  }
+}
+
+// A valid code-3 source (stage 2 thrust and weight, 0-40 s).
+void thrust_source(DispersionSource* s) {
+  table(&s->vacuum_thrust_lbf, {0.0, 20.0, 40.0}, {50000.0, 45000.0, 0.0});
+  table(&s->consumable_weight_lb, {0.0, 20.0, 40.0}, {6000.0, 3000.0, 0.0});
+}
+
+struct DataRejection {
+  const char* what;
+  int code;
+  void (*edit)(DispersionSource&);
+  Status status;
+};
+
+TEST(Sec22DispersionBlocks, EveryRejectionNamesItsStatusAndCode) {
+  static const DataRejection rows[] = {
+      {"thrust code of another stage", 3, [](DispersionSource& s) { s.stage = 3; }, Status::kValueOutOfRange},
+      {"thrust table given", 3, [](DispersionSource& s) { s.vacuum_thrust_lbf.clear(); },
+       Status::kTableEmpty},
+      {"weight table given", 3, [](DispersionSource& s) { s.consumable_weight_lb.clear(); },
+       Status::kTableEmpty},
+      {"thrust table finalized", 3, [](DispersionSource& s) { s.vacuum_thrust_lbf.set_y(1, 1.0); },
+       Status::kTableNotMonotonic},
+      {"weight table finalized", 3, [](DispersionSource& s) { s.consumable_weight_lb.set_y(1, 1.0); },
+       Status::kTableNotMonotonic},
+      {"as many weight as thrust points", 3,
+       [](DispersionSource& s) {
+         table(&s.consumable_weight_lb, {0.0, 40.0}, {6000.0, 0.0});
+       },
+       Status::kThrustWeightTimesDiffer},
+      {"tables from stage time 0", 3,
+       [](DispersionSource& s) {
+         table(&s.vacuum_thrust_lbf, {1.0, 20.0, 40.0}, {1.0, 1.0, 0.0});
+         table(&s.consumable_weight_lb, {1.0, 20.0, 40.0}, {2.0, 1.0, 0.0});
+       },
+       Status::kValueOutOfRange},
+      {"a burn longer than 0 s", 3,
+       [](DispersionSource& s) {
+         table(&s.vacuum_thrust_lbf, {0.0}, {1.0});
+         table(&s.consumable_weight_lb, {0.0}, {1.0});
+       },
+       Status::kValueOutOfRange},
+      {"the same times", 3,
+       [](DispersionSource& s) {
+         table(&s.consumable_weight_lb, {0.0, 21.0, 40.0}, {6000.0, 3000.0, 0.0});
+       },
+       Status::kThrustWeightTimesDiffer},
+      {"thrust >= 0", 3,
+       [](DispersionSource& s) {
+         table(&s.vacuum_thrust_lbf, {0.0, 20.0, 40.0}, {1.0, -1.0, 0.0});
+       },
+       Status::kValueOutOfRange},
+      {"weight >= 0", 3,
+       [](DispersionSource& s) {
+         table(&s.consumable_weight_lb, {0.0, 20.0, 40.0}, {6000.0, -1.0, -2.0});
+       },
+       Status::kNegativeWeight},
+      {"weight not increasing", 3,
+       [](DispersionSource& s) {
+         table(&s.consumable_weight_lb, {0.0, 20.0, 40.0}, {6000.0, 6001.0, 0.0});
+       },
+       Status::kConsumableWeightIncreases},
+      {"C_M_alpha table given", 19, [](DispersionSource&) {}, Status::kTableEmpty},
+      {"C_M_alpha table finalized", 19,
+       [](DispersionSource& s) {
+         table(&s.pitching_moment_per_rad, {0.0, 2.0}, {-1.0, -2.0}, false);
+       },
+       Status::kTableNotMonotonic},
+      {"wind speed given", 36,
+       [](DispersionSource& s) {
+         table(&s.wind.azimuth_rad, {0.0, 1e4}, {0.0, 0.0});
+       },
+       Status::kTableEmpty},
+      {"wind azimuth given", 36,
+       [](DispersionSource& s) {
+         table(&s.wind.speed_ft_s, {0.0, 1e4}, {0.0, 50.0});
+       },
+       Status::kTableEmpty},
+      {"wind tables finalized", 37,
+       [](DispersionSource& s) {
+         table(&s.wind.speed_ft_s, {0.0, 1e4}, {0.0, 50.0});
+         table(&s.wind.azimuth_rad, {0.0, 1e4}, {0.0, 0.0}, false);
+       },
+       Status::kTableNotMonotonic},
+      {"drag change below 100 %", 17, [](DispersionSource& s) { s.drag_variation_fraction = -1.0; },
+       Status::kValueOutOfRange},
+      {"tip-off of stage 4 or 5", 31, [](DispersionSource& s) { s.stage = 3; }, Status::kValueOutOfRange},
+      {"weight code of its own stage", 11, [](DispersionSource& s) { s.stage = 3; },
+       Status::kValueOutOfRange},
+      {"deadband finite", 24, [](DispersionSource& s) { s.deadband_rad = kNaN; }, Status::kValueNotFinite},
+      {"launch change finite", 33, [](DispersionSource& s) { s.launch_change_rad = HUGE_VAL; },
+       Status::kValueNotFinite},
+      {"misalignment station finite", 21, [](DispersionSource& s) { s.thrust_station_ft = -HUGE_VAL; },
+       Status::kValueNotFinite},
+  };
+  for (const DataRejection& row : rows) {
+    SCOPED_TRACE(row.what);
+    auto data = std::make_unique<DispersionData>();
+    DispersionSource& s = add(data.get(), row.code);
+    if (row.code == 3) thrust_source(&s);
+    int fault_code = -1;
+    if (row.code != 19 && row.code < 36) {
+      ASSERT_EQ(validate_dispersion_data(*data, &fault_code), Status::kOk)
+          << "the row's source before its edit";
+      EXPECT_EQ(fault_code, 0);
+    }
+    row.edit(s);
+    EXPECT_EQ(validate_dispersion_data(*data, &fault_code), row.status);
+    EXPECT_EQ(fault_code, row.code);
+  }
+  // The code list itself: a count beyond the capacity, an unknown code (39), a code out of order.
+  auto data = std::make_unique<DispersionData>();
+  int fault_code = -1;
+  data->count = kMaxDispersionSources + 1;
+  EXPECT_EQ(validate_dispersion_data(*data, &fault_code), Status::kDispersionCodeInvalid);
+  data->count = -1;
+  EXPECT_EQ(validate_dispersion_data(*data, &fault_code), Status::kDispersionCodeInvalid);
+  data->count = 0;
+  add(data.get(), 24);
+  data->sources[0].code = 39;
+  EXPECT_EQ(validate_dispersion_data(*data, &fault_code), Status::kDispersionCodeInvalid);
+  EXPECT_EQ(fault_code, 39);
+  // Stage 5 through the stage-4 codes (five stages without the squeeze) is accepted.
+  data->count = 0;
+  add(data.get(), 15).stage = 5;
+  add(data.get(), 32).stage = 5;
+  EXPECT_EQ(validate_dispersion_data(*data, &fault_code), Status::kOk);
+  EXPECT_EQ(fault_code, 0);
+  EXPECT_EQ(dispersion_source_stage(data->sources[0]), 5);
+  EXPECT_EQ(dispersion_source_stage(data->sources[1]), 5);
+  DispersionSource unknown;
+  unknown.code = 39;
+  EXPECT_EQ(dispersion_source_stage(unknown), 0);
+}
+
+// Sec. 15: what build_dispersed_case refuses before it flies (and the nominal's plane 40).
+TEST(Sec15Dispersions, CasesThatCannotBeBuiltAreNamed) {
+  auto f = make_fixture();
+  DispersionData& data = f->data;
+  add(&data, 40);
+  EXPECT_EQ(build_dispersed_case(nominal_of(*f, false), f->prepared, data.sources[0], &f->workspace),
+            Status::kDispersionCodeInvalid)
+      << "plane 40 is the nominal, not a dispersed case";
+  // A stage-1 burn no longer than the lift-off.
+  DispersionSource& short_burn = add(&data, 1);
+  const double liftoff_s = f->mission.launch.liftoff_duration_s;
+  table(&short_burn.vacuum_thrust_lbf, {0.0, liftoff_s}, {1000.0, 0.0});
+  table(&short_burn.consumable_weight_lb, {0.0, liftoff_s}, {100.0, 0.0});
+  EXPECT_EQ(build_dispersed_case(nominal_of(*f, false), f->prepared, short_burn, &f->workspace),
+            Status::kLiftoffLongerThanStage1);
+  // Tip-off of a stage that is not spun: with IP(9) = 2 stage 4 is continuous.
+  DispersionSource& tipoff = add(&data, 30);
+  tipoff.stage = 4;
+  tipoff.tipoff_rad = 0.01;
+  f->mission.options.ip[9] = 2;
+  EXPECT_EQ(build_dispersed_case(nominal_of(*f, false), f->prepared, tipoff, &f->workspace),
+            Status::kDispersionStageNotSpun);
+  // IP(9) = 1: stage 4's tip-off moves stage 4, its coast 9, and stage 5 and coast 10 with it.
+  f->mission.options.ip[9] = 1;
+  ASSERT_EQ(build_dispersed_case(nominal_of(*f, false), f->prepared, tipoff, &f->workspace), Status::kOk);
+  for (int code : {4, 5, 9, 10})
+    EXPECT_EQ(f->workspace.perturbation.theta_offset_rad[stage_index(code)], 0.01);
+  EXPECT_EQ(f->workspace.perturbation.theta_offset_rad[stage_index(3)], 0.0);
+
+  // run_dispersions without a nominal.
+  auto result = std::make_unique<DispersionResult>();
+  EXPECT_EQ(run_dispersions(DispersionNominal{}, data, &f->workspace, result.get()), Status::kNotPrepared);
+  EXPECT_EQ(result->status, Status::kNotPrepared);
+  // A flight that failed, or never flew, records nothing.
+  auto flown = std::make_unique<Trajectory>();
+  auto record = std::make_unique<DispersedTrajectory>();
+  flown->status = Status::kNonFiniteState;
+  EXPECT_EQ(record_dispersed_trajectory(f->mission, f->prepared, *flown, *flown, nullptr, record.get()),
+            Status::kNonFiniteState);
+  flown->status = Status::kOk;
+  flown->point_count = 0;
+  EXPECT_EQ(record_dispersed_trajectory(f->mission, f->prepared, *flown, *flown, nullptr, record.get()),
+            Status::kNotPrepared);
+}
+
+// Which sources a Monte Carlo sample draws: a low code whose high code is listed shares the high
+// code's draw (it is not drawn on its own); misalignment and C_M_alpha only in a 6D case; tip-off
+// only for a spun stage; thrust only for a flown stage and not from stacked stage-4/5 tables.
+TEST(MonteCarlo, SourcesDrawnFollowTheirFamilyAndTheCase) {
+  auto f = make_fixture();
+  DispersionData& d = f->data;
+  add(&d, 1);
+  add(&d, 2);
+  add(&d, 7).stacked_stage4_5_tables = true;
+  add(&d, 10);  // low without its high (9): drawn on its own
+  add(&d, 19);
+  add(&d, 20);
+  add(&d, 21);
+  add(&d, 30).stage = 4;
+  add(&d, 36);
+  add(&d, 37);
+  add(&d, 38);
+  add(&d, 40);
+  const DispersionNominal plain = nominal_of(*f, false);
+  const DispersionNominal six_d = nominal_of(*f, true);
+  const bool drawn_3d[] = {true, false, false, true, false, false, false, true, true, false, true, false};
+  const bool drawn_6d[] = {true, false, false, true, true, false, true, true, true, false, true, false};
+  for (int k = 0; k < d.count; ++k) {
+    SCOPED_TRACE(d.sources[k].code);
+    EXPECT_EQ(monte_carlo_draws_source(plain, d, k), drawn_3d[k]);
+    EXPECT_EQ(monte_carlo_draws_source(six_d, d, k), drawn_6d[k]);
+  }
+  // Tip-off of a stage that is not spun (IP(9) = 2: stage 4 continuous) is not drawn.
+  f->mission.options.ip[9] = 2;
+  EXPECT_FALSE(monte_carlo_draws_source(plain, d, 7));
+  f->mission.options.ip[9] = 1;
+  // The low tables a negative draw flies: 2 for 1, 20 for 19 (6D), 37 for 36; none for the yaw
+  // wind 38, a scalar source, or a source not drawn.
+  EXPECT_EQ(monte_carlo_low_partner(plain, d, 0), 1);
+  EXPECT_EQ(monte_carlo_low_partner(six_d, d, 4), 5);
+  EXPECT_EQ(monte_carlo_low_partner(plain, d, 4), -1);
+  EXPECT_EQ(monte_carlo_low_partner(plain, d, 8), 9);
+  EXPECT_EQ(monte_carlo_low_partner(plain, d, 10), -1);
+  EXPECT_EQ(monte_carlo_low_partner(plain, d, 3), -1);
+  EXPECT_EQ(monte_carlo_low_partner(plain, d, 1), -1);
+  // A stacked low table is not the partner of a plain high one.
+  d.sources[1].stacked_stage4_5_tables = true;
+  EXPECT_EQ(monte_carlo_low_partner(plain, d, 0), -1);
+}
+
+// Monte Carlo: one sample of the scalar sources equals the case changed by hand with the sample's
+// draws z_c = counter_normal(seed, sample, leader(c)) / 3 (a low code shares its high code's draw).
+TEST(MonteCarlo, ScalarSourcesMoveTheCaseByTheirOwnDrawOverThree) {
+  auto f = make_fixture();
+  DispersionData& d = f->data;
+  add(&d, 11).weight_increment_lb = 30.0;
+  add(&d, 17).drag_variation_fraction = 0.1;
+  add(&d, 24).deadband_rad = 0.004;
+  add(&d, 26).deadband_rad = 0.002;
+  add(&d, 30).tipoff_rad = 0.02;
+  add(&d, 33).launch_change_rad = 0.003;
+  add(&d, 35).launch_change_rad = -0.001;  // low code of 34 (not listed): drawn on its own, with 34's draw
+  const std::uint64_t seed = 1966, sample = 7;
+  const auto z = [&](int leader) {
+    return counter_normal(seed, sample, static_cast<std::uint32_t>(leader)) / 3.0;
+  };
+  const DispersionNominal nominal = nominal_of(*f, false);
+  int fault_code = -1;
+  ASSERT_EQ(check_monte_carlo_data(nominal, d, &fault_code), Status::kOk);
+  ASSERT_EQ(build_monte_carlo_case(nominal, f->prepared, d, seed, sample, &f->workspace), Status::kOk);
+  const DispersionWorkspace& ws = f->workspace;
+  EXPECT_DOUBLE_EQ(ws.mission.vehicle.stages[stage_index(2)].jettison_weight_lb,
+                   f->mission.vehicle.stages[stage_index(2)].jettison_weight_lb + z(11) * 30.0);
+  const AeroTable& cd = f->mission.vehicle.stages[stage_index(1)].drag_coefficient;
+  EXPECT_DOUBLE_EQ(ws.mission.vehicle.stages[stage_index(1)].drag_coefficient.y(4),
+                   cd.y(4) * (1.0 + z(17) * 0.1));
+  EXPECT_DOUBLE_EQ(ws.perturbation.theta_offset_rad[stage_index(2)], z(24) * 0.004 + z(34) * -0.001);
+  EXPECT_DOUBLE_EQ(ws.perturbation.chi_offset_rad[stage_index(2)], z(26) * 0.002);
+  // Tip-off (IP(9) = 1): stage 4, its coast 9, stage 5 and coast 10, each with the launch attitude.
+  for (int code : {4, 5, 9, 10})
+    EXPECT_DOUBLE_EQ(ws.perturbation.theta_offset_rad[stage_index(code)], z(30) * 0.02 + z(34) * -0.001);
+  EXPECT_DOUBLE_EQ(ws.mission.launch.azimuth_rad, f->mission.launch.azimuth_rad + z(33) * 0.003);
+  EXPECT_FALSE(ws.program_mapped);
+  EXPECT_EQ(ws.perturbation.wind, nullptr);
+  // Another sample draws otherwise.
+  ASSERT_EQ(build_monte_carlo_case(nominal, f->prepared, d, seed, sample + 1, &f->workspace), Status::kOk);
+  EXPECT_NE(ws.mission.launch.azimuth_rad, f->mission.launch.azimuth_rad + z(33) * 0.003);
+
+  // A drag change the draw takes to -100 % or beyond is refused, not flown.
+  d.sources[1].drag_variation_fraction = 1e6;
+  EXPECT_EQ(build_monte_carlo_case(nominal, f->prepared, d, seed, sample, &f->workspace),
+            Status::kValueOutOfRange);
+  // An unknown code, and no nominal.
+  d.sources[1].code = 39;
+  EXPECT_EQ(build_monte_carlo_case(nominal, f->prepared, d, seed, sample, &f->workspace),
+            Status::kDispersionCodeInvalid);
+  EXPECT_EQ(check_monte_carlo_data(DispersionNominal{}, d, &fault_code), Status::kNotPrepared);
+  EXPECT_EQ(prepare_monte_carlo(DispersionNominal{}, &f->workspace), Status::kNotPrepared);
+}
+
+// Table sources are blended on the union of their grids: more points than the tables hold is
+// named by the code whose table overflows, before anything flies.
+TEST(MonteCarlo, UnionGridsBeyondTheTableCapacityAreNamedByCode) {
+  auto f = make_fixture();
+  DispersionData& d = f->data;
+  // Stage 2 thrust: the nominal's 22 points plus 110 at other normalized times.
+  DispersionSource& thrust = add(&d, 3);
+  for (int i = 0; i < 110; ++i) {
+    const double t = 0.37 * i + 0.011;
+    ASSERT_EQ(thrust.vacuum_thrust_lbf.append(i == 0 ? 0.0 : t, 10000.0), Status::kOk);
+    ASSERT_EQ(thrust.consumable_weight_lb.append(i == 0 ? 0.0 : t, 5000.0 - 40.0 * i), Status::kOk);
+  }
+  ASSERT_EQ(thrust.vacuum_thrust_lbf.finalize(), Status::kOk);
+  ASSERT_EQ(thrust.consumable_weight_lb.finalize(), Status::kOk);
+  int fault_code = 0;
+  EXPECT_EQ(check_monte_carlo_data(nominal_of(*f, false), d, &fault_code), Status::kTooManyTablePoints);
+  EXPECT_EQ(fault_code, 3);
+  EXPECT_EQ(build_monte_carlo_case(nominal_of(*f, false), f->prepared, d, 1, 1, &f->workspace),
+            Status::kTooManyTablePoints);
+
+  // Winds: the yaw profile (38) on the union of its grid and the high profile's (36).
+  d.count = 0;
+  DispersionSource& high = add(&d, 36);
+  DispersionSource& yaw = add(&d, 38);
+  for (int i = 0; i < kMaxWindTablePoints; ++i) {
+    ASSERT_EQ(high.wind.speed_ft_s.append(100.0 * i, 10.0), Status::kOk);
+    ASSERT_EQ(high.wind.azimuth_rad.append(100.0 * i, 0.0), Status::kOk);
+    ASSERT_EQ(yaw.wind.speed_ft_s.append(100.0 * i + 50.0, 10.0), Status::kOk);
+    ASSERT_EQ(yaw.wind.azimuth_rad.append(100.0 * i + 50.0, 1.0), Status::kOk);
+  }
+  for (DispersionSource* s : {&high, &yaw}) {
+    ASSERT_EQ(s->wind.speed_ft_s.finalize(), Status::kOk);
+    ASSERT_EQ(s->wind.azimuth_rad.finalize(), Status::kOk);
+  }
+  EXPECT_EQ(check_monte_carlo_data(nominal_of(*f, false), d, &fault_code), Status::kTooManyTablePoints);
+  EXPECT_EQ(fault_code, 36);
+  EXPECT_EQ(build_monte_carlo_case(nominal_of(*f, false), f->prepared, d, 1, 1, &f->workspace),
+            Status::kTooManyTablePoints);
+
+  // C_M_alpha (6D): the nominal's Mach grid and another, disjoint, beyond the capacity.
+  d.count = 0;
+  DispersionSource& moment = add(&d, 19);
+  for (int i = 0; i < kMaxAeroTablePoints; ++i)
+    ASSERT_EQ(moment.pitching_moment_per_rad.append(0.013 + 0.1 * i, -1.0), Status::kOk);
+  ASSERT_EQ(moment.pitching_moment_per_rad.finalize(), Status::kOk);
+  EXPECT_EQ(check_monte_carlo_data(nominal_of(*f, true), d, &fault_code), Status::kTooManyTablePoints);
+  EXPECT_EQ(fault_code, 19);
+  EXPECT_EQ(check_monte_carlo_data(nominal_of(*f, false), d, &fault_code), Status::kOk) << "not drawn in 3D";
+}
+
+// FlightInputs::air_alpha_rad is "what record_dispersed_trajectory() would recompute from the
+// point": recorded from the wind alone, the max |q-bar alpha| of a windy flight is the one recorded
+// from the flight's own air-relative alpha; without the wind it is the inertial alpha's, another.
+TEST(Sec15Dispersions, MaxQbarAlphaRecomputedFromTheWindIsTheFlightsOwn) {
+  auto f = make_fixture();
+  WindProfile wind;
+  table(&wind.speed_ft_s, {0.0, 2.0e4, 6.0e4, 2.0e5}, {20.0, 120.0, 150.0, 0.0});
+  table(&wind.azimuth_rad, {0.0, 2.0e5}, {0.3, 0.8});
+  FlightPerturbation perturbation;
+  perturbation.wind = &wind;
+  FlightInputs inputs;
+  inputs.perturbation = &perturbation;
+  inputs.air_alpha_rad = f->workspace.air_alpha_rad;
+  auto flown = std::make_unique<Trajectory>();
+  ASSERT_EQ(fly_trajectory(f->mission, f->prepared, inputs, flown.get()), Status::kOk);
+  auto from_alpha = std::make_unique<DispersedTrajectory>();
+  auto from_wind = std::make_unique<DispersedTrajectory>();
+  auto inertial = std::make_unique<DispersedTrajectory>();
+  ASSERT_EQ(record_dispersed_trajectory(f->mission, f->prepared, *flown, *flown, &wind,
+                                        f->workspace.air_alpha_rad, from_alpha.get()),
+            Status::kOk);
+  ASSERT_EQ(record_dispersed_trajectory(f->mission, f->prepared, *flown, *flown, &wind, from_wind.get()),
+            Status::kOk);
+  ASSERT_EQ(record_dispersed_trajectory(f->mission, f->prepared, *flown, *flown, nullptr, inertial.get()),
+            Status::kOk);
+  ASSERT_GT(from_alpha->max_qbar_alpha_lbf_rad_ft2, 0.0);
+  EXPECT_NEAR(from_wind->max_qbar_alpha_lbf_rad_ft2, from_alpha->max_qbar_alpha_lbf_rad_ft2,
+              1e-9 * from_alpha->max_qbar_alpha_lbf_rad_ft2);
+  EXPECT_EQ(from_wind->max_qbar_alpha_time_s, from_alpha->max_qbar_alpha_time_s);
+  EXPECT_GT(std::fabs(inertial->max_qbar_alpha_lbf_rad_ft2 - from_alpha->max_qbar_alpha_lbf_rad_ft2),
+            1e-3 * from_alpha->max_qbar_alpha_lbf_rad_ft2)
+      << "a 100 ft/s wind moves the angle of attack";
+}
+
+}  // namespace
+}  // namespace tolip

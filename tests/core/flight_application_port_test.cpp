@@ -1,0 +1,150 @@
+// The flight application's defined reaction to a failed port (docs/hil.md, "Faults"; issue 14
+// structural coverage): every port call that fails is counted under its own name and the cycle
+// goes on; a table store that fails is a rejection; an incomplete set of ports does not boot.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+
+#include "support/guidance_table_fixture.hpp"
+#include "tolip/hal/flight_application.hpp"
+
+namespace tolip::hal {
+namespace {
+
+// Ports whose every call succeeds unless told to fail.
+struct Fake {
+  test::Image image = test::encode(test::make_test_table());
+  std::uint32_t cycle = 0;
+  StageDiscretes discretes;
+  bool fail_clock = false, fail_platform = false, fail_actuators = false, fail_store = false,
+       fail_discretes = false, fail_telemetry = false;
+  int commands = 0, frames = 0;
+
+  static Fake& of(void* context) { return *static_cast<Fake*>(context); }
+  static Status wait(void* c, std::uint32_t* cycle) {
+    *cycle = of(c).cycle++;
+    return of(c).fail_clock ? Status::kHalClockOverrun : Status::kOk;
+  }
+  static Status platform(void* c, PlatformSample* s) {
+    *s = PlatformSample{};
+    s->theta_rad = 1.5;
+    return of(c).fail_platform ? Status::kHalSensorInvalid : Status::kOk;
+  }
+  static Status actuators(void* c, const ActuatorCommand&) {
+    ++of(c).commands;
+    return of(c).fail_actuators ? Status::kHalActuatorRejected : Status::kOk;
+  }
+  static Status store(void* c, std::uint8_t* buffer, std::size_t capacity, std::size_t* size) {
+    if (of(c).fail_store) return Status::kHalTableStoreFailed;
+    *size = of(c).image.size() < capacity ? of(c).image.size() : capacity;
+    std::memcpy(buffer, of(c).image.data(), *size);
+    return Status::kOk;
+  }
+  static Status read_discretes(void* c, StageDiscretes* d) {
+    *d = of(c).discretes;
+    return of(c).fail_discretes ? Status::kHalDiscretesInvalid : Status::kOk;
+  }
+  static Status emit(void* c, const TelemetryFrame&) {
+    ++of(c).frames;
+    return of(c).fail_telemetry ? Status::kHalTelemetryFailed : Status::kOk;
+  }
+  Ports ports() {
+    Ports p;
+    p.clock = ClockPort{this, wait, 0.02};
+    p.platform = InertialPlatformPort{this, platform};
+    p.actuators = ActuatorPort{this, actuators};
+    p.table_store = TableStorePort{this, store};
+    p.discretes = DiscretesPort{this, read_discretes};
+    p.telemetry = TelemetryPort{this, emit};
+    return p;
+  }
+};
+
+TEST(HalFlightApplication, EachFailedPortIsCountedUnderItsNameAndTheCycleGoesOn) {
+  static Fake fake;
+  static FlightApplication app(fake.ports());
+  ASSERT_EQ(app.boot(), Status::kOk);
+  EXPECT_EQ(app.counters().table_loads, 1u);
+  EXPECT_EQ(app.run_minor_cycle(), Status::kOk);
+  EXPECT_EQ(app.counters().total_faults(), 0u);
+
+  fake.fail_actuators = true;
+  EXPECT_NE(app.run_minor_cycle(), Status::kOk);
+  EXPECT_EQ(app.counters().actuator_rejections, 1u);
+  fake.fail_actuators = false;
+  fake.fail_telemetry = true;
+  EXPECT_NE(app.run_minor_cycle(), Status::kOk);
+  EXPECT_EQ(app.counters().telemetry_drops, 1u);
+  fake.fail_telemetry = false;
+  fake.fail_clock = true;
+  EXPECT_NE(app.run_minor_cycle(), Status::kOk);
+  EXPECT_EQ(app.counters().clock_overruns, 1u);
+  fake.fail_clock = false;
+  fake.fail_discretes = true;
+  EXPECT_NE(app.run_minor_cycle(), Status::kOk);
+  EXPECT_EQ(app.counters().discrete_faults, 1u);
+  fake.fail_discretes = false;
+  fake.fail_platform = true;
+  EXPECT_NE(app.run_minor_cycle(), Status::kOk);
+  EXPECT_EQ(app.counters().platform_dropouts, 1u);
+  fake.fail_platform = false;
+  // Stage events follow the flight order: stage 3 after stage 1 is taken (a later stage); back to
+  // stage 2 after it is refused, counted, and stage 3 stays in force.
+  fake.discretes.stage_code = 3;
+  fake.discretes.sequence = 1;
+  EXPECT_EQ(app.run_minor_cycle(), Status::kOk);
+  EXPECT_EQ(app.executor().stage_in_force(), 3);
+  fake.discretes.stage_code = 2;
+  fake.discretes.sequence = 2;
+  EXPECT_NE(app.run_minor_cycle(), Status::kOk);
+  EXPECT_EQ(app.counters().stage_events_refused, 1u);
+  EXPECT_EQ(app.executor().stage_in_force(), 3);
+  // Every cycle commanded the actuators and emitted its telemetry, failed or not.
+  EXPECT_EQ(app.counters().cycles, 8u);
+  EXPECT_EQ(fake.commands, 8);
+  EXPECT_EQ(fake.frames, 8);
+  EXPECT_EQ(app.counters().total_faults(), 6u);
+  // A table store that fails is a rejection; the table in force stays.
+  const std::uint32_t crc = app.tables().active_crc();
+  fake.fail_store = true;
+  EXPECT_EQ(app.load_table(), Status::kHalTableStoreFailed);
+  EXPECT_EQ(app.counters().table_rejections, 1u);
+  EXPECT_EQ(app.tables().active_crc(), crc);
+}
+
+TEST(HalFlightApplication, AnIncompleteSetOfPortsDoesNotBoot) {
+  static Fake fake;
+  const Ports good = fake.ports();
+  ASSERT_TRUE(ports_complete(good));
+  Ports p = good;
+  p.clock.wait_next_cycle = nullptr;
+  EXPECT_FALSE(ports_complete(p));
+  p = good;
+  p.platform.read = nullptr;
+  EXPECT_FALSE(ports_complete(p));
+  p = good;
+  p.actuators.command = nullptr;
+  EXPECT_FALSE(ports_complete(p));
+  p = good;
+  p.table_store.read = nullptr;
+  EXPECT_FALSE(ports_complete(p));
+  p = good;
+  p.discretes.read = nullptr;
+  EXPECT_FALSE(ports_complete(p));
+  p = good;
+  p.telemetry.emit = nullptr;
+  EXPECT_FALSE(ports_complete(p));
+  p = good;
+  p.clock.period_s = std::nan("");
+  EXPECT_FALSE(ports_complete(p));
+  p = good;
+  p.clock.period_s = 0.0;
+  EXPECT_FALSE(ports_complete(p));
+  static FlightApplication app(p);
+  EXPECT_EQ(app.boot(), Status::kHalPortMissing);
+  EXPECT_EQ(app.counters().table_loads, 0u);
+}
+
+}  // namespace
+}  // namespace tolip::hal
