@@ -100,8 +100,9 @@ void encode_telemetry_frame(std::uint32_t sequence, const TelemetryFrame& f, std
 
 Status decode_telemetry_frame(const std::uint8_t* bytes, std::size_t size, std::uint32_t* sequence,
                               TelemetryFrame* frame) {
-  if (!check_frame(bytes, size, kTelemetryFrameSize, kTelemetryFrameType))
+  if (!check_frame(bytes, size, kTelemetryFrameSize, kTelemetryFrameType)) {
     return Status::kHalLinkFrameCorrupt;
+  }
   if (bytes[18] < 1 || bytes[18] > 10 || bytes[20] > 2 || bytes[21] > 3) return Status::kHalLinkFrameCorrupt;
   TelemetryFrame f;
   f.cycle = get_u32_le(bytes + 6);
@@ -219,8 +220,10 @@ Status decode_upload_frame(const std::uint8_t* bytes, std::size_t size, std::uin
                            const std::uint8_t** image, std::size_t* image_size) {
   if (bytes == nullptr || size < kUploadHeaderSize + 4) return Status::kHalLinkFrameCorrupt;
   const std::size_t length = get_u16_le(bytes + 6);
-  if (length > kMaxUploadBytes || !check_frame(bytes, size, kUploadHeaderSize + length + 4, kUploadFrameType))
+  if (length > kMaxUploadBytes ||
+      !check_frame(bytes, size, kUploadHeaderSize + length + 4, kUploadFrameType)) {
     return Status::kHalLinkFrameCorrupt;
+  }
   *sequence = get_u32_le(bytes + 2);
   *image = bytes + kUploadHeaderSize;
   *image_size = length;
