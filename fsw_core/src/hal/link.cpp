@@ -1,6 +1,7 @@
 // Frame codec of the plant / guidance-computer link (tolip/hal/link.hpp, docs/hil.md).
 #include "tolip/hal/link.hpp"
 
+#include <cstddef>
 #include <cstring>
 
 #include "tolip/table/crc32.hpp"
@@ -92,7 +93,7 @@ void encode_telemetry_frame(std::uint32_t sequence, const TelemetryFrame& f, std
                              f.k_q_s,
                              f.pitch_command,
                              f.yaw_command};
-  for (int i = 0; i < 10; ++i) put_f64_le(out + 22 + 8 * i, values[i]);
+  for (std::ptrdiff_t i = 0; i < 10; ++i) put_f64_le(out + 22 + 8 * i, values[i]);
   put_u32_le(out + 102, f.table_crc);
   put_u32_le(out + 106, f.fault_count);
   put_crc(out, kTelemetryFrameSize);
@@ -122,7 +123,7 @@ Status decode_telemetry_frame(const std::uint8_t* bytes, std::size_t size, std::
                         &f.k_q_s,
                         &f.pitch_command,
                         &f.yaw_command};
-  for (int i = 0; i < 10; ++i) *values[i] = get_f64_le(bytes + 22 + 8 * i);
+  for (std::ptrdiff_t i = 0; i < 10; ++i) *values[i] = get_f64_le(bytes + 22 + 8 * i);
   f.table_crc = get_u32_le(bytes + 102);
   f.fault_count = get_u32_le(bytes + 106);
   *sequence = get_u32_le(bytes + 2);
@@ -173,7 +174,7 @@ void encode_reply_frame(const LinkReport& report, std::uint8_t* out) {
   put_u32_le(out + 10, report.table_crc);
   std::uint32_t words[kReplyWords];
   reply_words(report, words);
-  for (int i = 0; i < kReplyWords; ++i) put_u32_le(out + 14 + 4 * i, words[i]);
+  for (std::ptrdiff_t i = 0; i < kReplyWords; ++i) put_u32_le(out + 14 + 4 * i, words[i]);
   put_crc(out, kReplyFrameSize);
 }
 
@@ -184,7 +185,7 @@ Status decode_reply_frame(const std::uint8_t* bytes, std::size_t size, LinkRepor
   r.status = static_cast<Status>(static_cast<int>(get_u32_le(bytes + 6)));
   r.table_crc = get_u32_le(bytes + 10);
   std::uint32_t w[kReplyWords];
-  for (int i = 0; i < kReplyWords; ++i) w[i] = get_u32_le(bytes + 14 + 4 * i);
+  for (std::ptrdiff_t i = 0; i < kReplyWords; ++i) w[i] = get_u32_le(bytes + 14 + 4 * i);
   FlightCounters& c = r.counters;
   c.cycles = w[0];
   c.clock_overruns = w[1];
