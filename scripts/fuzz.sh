@@ -3,6 +3,7 @@
 #
 #   scripts/fuzz.sh [SECONDS] [TARGET...]     default 60 s each; targets toml_deck card_deck
 #                                             table_image plot_result
+#   TOLIP_FUZZ_RUNS=N scripts/fuzz.sh ...     also stop each target after N executions
 #
 # Builds the fuzz preset (clang 14, ASan + UBSan) when needed, then runs each target for SECONDS
 # on one core, starting from its checked-in corpus (fuzz/corpus/TARGET, read only) and growing a
@@ -31,9 +32,13 @@ for t in "${targets[@]}"; do
   mkdir -p "$work" "$artifacts"
   dict=()
   [[ -f "$root/fuzz/dict/$t.dict" ]] && dict=(-dict="$root/fuzz/dict/$t.dict")
+  # TOLIP_FUZZ_RUNS=N: stop after N executions as well (whichever comes first, N or SECONDS),
+  # e.g. TOLIP_FUZZ_RUNS=1000000 scripts/fuzz.sh 36000 table_image for the 10^6 campaign.
+  limit=()
+  [[ -n "${TOLIP_FUZZ_RUNS:-}" ]] && limit=(-runs="$TOLIP_FUZZ_RUNS")
   log="$build/work/$t.log"
   nice -n 10 "$exe" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=65536 \
-    -artifact_prefix="$artifacts/" -print_final_stats=1 "${dict[@]}" \
+    -artifact_prefix="$artifacts/" -print_final_stats=1 "${dict[@]}" "${limit[@]}" \
     "$work" "$root/fuzz/corpus/$t" > "$log" 2>&1
   rc=$?
   runs=$(grep -oE '^stat::number_of_executed_units: *[0-9]+' "$log" | grep -oE '[0-9]+$' || echo 0)

@@ -130,6 +130,9 @@ TEST(AllocationCounter, CountsTheMallocFamily) {
 }
 
 TEST(AllocationCounter, CountsDynamicEigenStorage) {
+  // Eigen's dynamic storage calls malloc directly; under a sanitizer (the asan preset) the
+  // sanitizer owns malloc and only operator new is counted, so there is nothing to prove.
+  if (!counts_malloc_family()) GTEST_SKIP() << "malloc is not counted (a sanitizer interposes it)";
   std::uint64_t counted = 0;
   double trace = 0.0;
   {

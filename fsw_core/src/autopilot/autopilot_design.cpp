@@ -176,8 +176,9 @@ Status design_autopilot_gains(const ShortPeriodModel& m, const AutopilotRequest&
   const double w = r.natural_frequency_rad_s;
   const double k_theta = (w * w + m.a_per_s2) / m.b_per_s2;
   const double k_q = (2.0 * r.damping_ratio * w + m.c_per_s) / m.b_per_s2;
-  if (k_theta * r.attitude_error_rad > r.max_deflection_rad)
+  if (k_theta * r.attitude_error_rad > r.max_deflection_rad) {
     return Status::kAutopilotFrequencyBeyondDeflection;
+  }
   if (!(k_theta >= 0.0 && k_theta <= kTableMaxGain) || !(k_q >= 0.0 && k_q <= kTableMaxGain)) {
     return Status::kAutopilotGainOutOfRange;
   }

@@ -72,8 +72,10 @@ Status design_gain_schedule(const Mission& mission, const Trajectory& trajectory
       if (best < 0 || best <= previous) continue;  // none moving, or taken already
       // The end point of a stage shares its time with the next stage's start: keep strictly
       // increasing stage times.
-      if (previous >= 0 && !(trajectory.points[best].stage_time_s > trajectory.points[previous].stage_time_s))
+      if (previous >= 0 &&
+          !(trajectory.points[best].stage_time_s > trajectory.points[previous].stage_time_s)) {
         continue;
+      }
       previous = best;
       const TrajectoryPoint& p = trajectory.points[best];
       GainScheduleDesignPoint out;

@@ -179,8 +179,9 @@ Status evaluate_body_dynamics(const BodyDynamicsBlocks& data, const BodyDynamics
   AutopilotGains gains;
   gains.position_gain = data.position_gain[k];
   gains.rate_gain_s = data.rate_gain_s[k];
-  if (k == 0 && data.stage1_schedule_count > 0)
+  if (k == 0 && data.stage1_schedule_count > 0) {
     gains = scheduled_stage1_gains(data, in.conditions.cg_stage_time_s);
+  }
   const bool misaligned = in.misalignment_pitch_rad != 0.0 || in.misalignment_yaw_rad != 0.0;
   AutopilotCommand command = in.command;
   const double thrust_lever_ft = in.thrust_station_ft - out->moments.cg_station_ft;  // X_T - XCGL

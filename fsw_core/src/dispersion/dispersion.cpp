@@ -160,8 +160,9 @@ int dispersion_source_stage(const DispersionSource& source) {
   // Five stages without the squeeze: the stage-4 codes of thrust (7-8) and weight (15-16) name
   // stage 5 when the card's stage code says 5.
   if (info.stage == 4 && source.stage == 5 &&
-      (info.kind == Kind::kVacuumThrust || info.kind == Kind::kWeightIncrement))
+      (info.kind == Kind::kVacuumThrust || info.kind == Kind::kWeightIncrement)) {
     return 5;
+  }
   return info.stage;
 }
 
@@ -177,24 +178,30 @@ Status validate_dispersion_data(const DispersionData& data, int* fault_code) {
     previous = s.code;
     switch (info.kind) {
       case Kind::kVacuumThrust:
-        if (s.stage != 0 && s.stage != info.stage && !(info.stage == 4 && s.stage == 5))
+        if (s.stage != 0 && s.stage != info.stage && !(info.stage == 4 && s.stage == 5)) {
           return Status::kValueOutOfRange;
+        }
         if (s.vacuum_thrust_lbf.empty() || s.consumable_weight_lb.empty()) return Status::kTableEmpty;
-        if (!s.vacuum_thrust_lbf.finalized() || !s.consumable_weight_lb.finalized())
+        if (!s.vacuum_thrust_lbf.finalized() || !s.consumable_weight_lb.finalized()) {
           return Status::kTableNotMonotonic;
+        }
         // As data blocks 30 and 38 (validate_mission): from stage time 0, on the same times, the
         // thrust not negative, the consumable weight not increasing and not negative.
-        if (s.vacuum_thrust_lbf.size() != s.consumable_weight_lb.size())
+        if (s.vacuum_thrust_lbf.size() != s.consumable_weight_lb.size()) {
           return Status::kThrustWeightTimesDiffer;
-        if (s.vacuum_thrust_lbf.first_x() != 0.0 || !(s.vacuum_thrust_lbf.last_x() > 0.0))
+        }
+        if (s.vacuum_thrust_lbf.first_x() != 0.0 || !(s.vacuum_thrust_lbf.last_x() > 0.0)) {
           return Status::kValueOutOfRange;
+        }
         for (int i = 0; i < s.vacuum_thrust_lbf.size(); ++i) {
-          if (s.vacuum_thrust_lbf.x(i) != s.consumable_weight_lb.x(i))
+          if (s.vacuum_thrust_lbf.x(i) != s.consumable_weight_lb.x(i)) {
             return Status::kThrustWeightTimesDiffer;
+          }
           if (s.vacuum_thrust_lbf.y(i) < 0.0) return Status::kValueOutOfRange;
           if (s.consumable_weight_lb.y(i) < 0.0) return Status::kNegativeWeight;
-          if (i > 0 && s.consumable_weight_lb.y(i) > s.consumable_weight_lb.y(i - 1))
+          if (i > 0 && s.consumable_weight_lb.y(i) > s.consumable_weight_lb.y(i - 1)) {
             return Status::kConsumableWeightIncreases;
+          }
         }
         break;
       case Kind::kPitchingMoment:
@@ -203,8 +210,9 @@ Status validate_dispersion_data(const DispersionData& data, int* fault_code) {
         break;
       case Kind::kWind:
         if (s.wind.speed_ft_s.empty() || s.wind.azimuth_rad.empty()) return Status::kTableEmpty;
-        if (!s.wind.speed_ft_s.finalized() || !s.wind.azimuth_rad.finalized())
+        if (!s.wind.speed_ft_s.finalized() || !s.wind.azimuth_rad.finalized()) {
           return Status::kTableNotMonotonic;
+        }
         break;
       case Kind::kDrag:
         if (!(std::fabs(s.drag_variation_fraction) < 1.0)) return Status::kValueOutOfRange;
@@ -214,8 +222,9 @@ Status validate_dispersion_data(const DispersionData& data, int* fault_code) {
         break;
       case Kind::kWeightIncrement:
         // Stage 5 only through the stage-4 codes (15-16); otherwise the code's own stage.
-        if (s.stage != 0 && s.stage != info.stage && !(info.stage == 4 && s.stage == 5))
+        if (s.stage != 0 && s.stage != info.stage && !(info.stage == 4 && s.stage == 5)) {
           return Status::kValueOutOfRange;
+        }
         break;
       default: break;
     }
@@ -234,8 +243,9 @@ Status validate_dispersion_data(const DispersionData& data, int* fault_code) {
 Status build_dispersed_case(const DispersionNominal& nominal, const PreparedCase& nominal_prepared,
                             const DispersionSource& source, DispersionWorkspace* ws) {
   DispersionCodeInfo info;
-  if (!dispersion_code_info(source.code, &info) || info.kind == Kind::kNominal)
+  if (!dispersion_code_info(source.code, &info) || info.kind == Kind::kNominal) {
     return Status::kDispersionCodeInvalid;
+  }
   ws->mission = *nominal.mission;
   ws->perturbation = FlightPerturbation{};
   Mission& m = ws->mission;
@@ -253,8 +263,9 @@ Status build_dispersed_case(const DispersionNominal& nominal, const PreparedCase
       data.consumable_weight_lb = source.consumable_weight_lb;
       data.duration_s = source.vacuum_thrust_lbf.last_x();
       // The tables' own rules (validate_dispersion_data); the rest of the case validated as the nominal.
-      if (stage == 1 && !(data.duration_s > m.launch.liftoff_duration_s))
+      if (stage == 1 && !(data.duration_s > m.launch.liftoff_duration_s)) {
         return Status::kLiftoffLongerThanStage1;
+      }
       break;
     }
     case Kind::kWeightIncrement:
@@ -324,8 +335,9 @@ Status build_dispersed_case(const DispersionNominal& nominal, const PreparedCase
   }
   ws->program_mapped = false;
   if (nominal.program != nullptr && info.kind == Kind::kVacuumThrust) {
-    if (trajectory_point_count(ws->prepared) != nominal.program->point_count)
+    if (trajectory_point_count(ws->prepared) != nominal.program->point_count) {
       return Status::kControlProgramSizeMismatch;
+    }
     map_control_program(nominal_prepared, *nominal.program, ws->prepared, &ws->program);
     ws->program_mapped = true;
   }
@@ -342,8 +354,9 @@ Status record_dispersed_trajectory(const Mission& mission, const PreparedCase& p
                                    const Trajectory& reference, const Trajectory& flown,
                                    const WindProfile* wind, const double* air_alpha_rad,
                                    DispersedTrajectory* out) {
-  if (!ok(flown.status) || flown.point_count <= 0)
+  if (!ok(flown.status) || flown.point_count <= 0) {
     return ok(flown.status) ? Status::kNotPrepared : flown.status;
+  }
   // Columns: the ignition of each powered stage after the first in the reference, then the final point.
   int columns = 0;
   int reference_points[kMaxStagingPoints] = {};
@@ -537,8 +550,9 @@ Status run_dispersions(const DispersionNominal& nominal, const DispersionData& d
     out.status = code_status;
     if (!ok(code_status)) continue;
     for (int j = 0; j < columns; ++j) {
-      for (int i = 0; i < kStagingVariables; ++i)
+      for (int i = 0; i < kStagingVariables; ++i) {
         out.dispersions[j][i] = out.values[j][i] - result->nominal.values[j][i];
+      }
     }
     for (int i = 0; i < kOrbitDispersionElements; ++i) {
       const double d = out.orbit[i] - result->nominal.orbit[i];

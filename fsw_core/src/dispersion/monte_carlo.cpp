@@ -96,8 +96,9 @@ Status blend_thrust(const StageData& nominal, const DispersionSource& source, do
   if (!(bn > 0.0) || !(bs > 0.0) || !(b > 0.0)) return Status::kValueOutOfRange;
   Grid<kMaxThrustPoints> grid;
   if (!merge_grid(&nominal.vacuum_thrust_lbf, bn, &nominal.consumable_weight_lb, bn,
-                  &source.vacuum_thrust_lbf, bs, &source.consumable_weight_lb, bs, &grid))
+                  &source.vacuum_thrust_lbf, bs, &source.consumable_weight_lb, bs, &grid)) {
     return Status::kTooManyTablePoints;
+  }
   out->vacuum_thrust_lbf.clear();
   out->consumable_weight_lb.clear();
   for (int i = 0; i < grid.count; ++i) {
@@ -125,8 +126,9 @@ Status blend_thrust(const StageData& nominal, const DispersionSource& source, do
 Status blend_pitching_moment(const AeroTable& nominal, const AeroTable& source, double c, AeroTable* out) {
   Grid<kMaxAeroTablePoints> grid;
   if (!merge_grid(&nominal, 1.0, &source, 1.0, static_cast<const AeroTable*>(nullptr), 1.0,
-                  static_cast<const AeroTable*>(nullptr), 1.0, &grid))
+                  static_cast<const AeroTable*>(nullptr), 1.0, &grid)) {
     return Status::kTooManyTablePoints;
+  }
   AeroTable blended;
   for (int i = 0; i < grid.count; ++i) {
     const double mach = grid.x[i];
@@ -169,8 +171,10 @@ Status compose_wind(const ScaledWind* winds, int count, WindProfile* out) {
     const WindProfile& a = *winds[0].profile;
     const WindProfile& b = *winds[1].profile;
     Grid<kMaxWindTablePoints> grid;
-    if (!merge_grid(&a.speed_ft_s, 1.0, &a.azimuth_rad, 1.0, &b.speed_ft_s, 1.0, &b.azimuth_rad, 1.0, &grid))
+    if (!merge_grid(&a.speed_ft_s, 1.0, &a.azimuth_rad, 1.0, &b.speed_ft_s, 1.0, &b.azimuth_rad, 1.0,
+                    &grid)) {
       return Status::kTooManyTablePoints;
+    }
     double previous = 0.0;
     bool have_previous = false;
     for (int i = 0; i < grid.count; ++i) {
@@ -234,8 +238,9 @@ int monte_carlo_low_partner(const DispersionNominal& nominal, const DispersionDa
       // The low member flies its own table only where it is a table of the same stage.
       if (info.kind == DispersionKind::kVacuumThrust &&
           (data.sources[j].stacked_stage4_5_tables ||
-           dispersion_source_stage(data.sources[j]) != dispersion_source_stage(data.sources[k])))
+           dispersion_source_stage(data.sources[j]) != dispersion_source_stage(data.sources[k]))) {
         return -1;
+      }
       return j;
     }
   }
@@ -319,8 +324,9 @@ Status build_monte_carlo_case(const DispersionNominal& nominal, const PreparedCa
           const Status status =
               blend_thrust(nominal.mission->vehicle.stages[slot], table, c, &m.vehicle.stages[slot]);
           if (!ok(status)) return status;
-          if (slot == 0 && !(m.vehicle.stages[0].duration_s > m.launch.liftoff_duration_s))
+          if (slot == 0 && !(m.vehicle.stages[0].duration_s > m.launch.liftoff_duration_s)) {
             return Status::kLiftoffLongerThanStage1;
+          }
           prepares = true;
           thrust_changed = true;
         } else if (info.kind == DispersionKind::kPitchingMoment) {
@@ -360,8 +366,9 @@ Status build_monte_carlo_case(const DispersionNominal& nominal, const PreparedCa
   if (!ok(status)) return status;
   if (thrust_changed && nominal.program != nullptr) {
     // A changed burn time: the nominal program flown in stage time (as build_dispersed_case).
-    if (trajectory_point_count(ws->prepared) != nominal.program->point_count)
+    if (trajectory_point_count(ws->prepared) != nominal.program->point_count) {
       return Status::kControlProgramSizeMismatch;
+    }
     map_control_program(nominal_prepared, *nominal.program, ws->prepared, &ws->program);
     ws->program_mapped = true;
   }
@@ -386,14 +393,16 @@ Status check_monte_carlo_data(const DispersionNominal& nominal, const Dispersion
         Grid<kMaxThrustPoints> grid;
         if (!merge_grid(&n.vacuum_thrust_lbf, n.duration_s, &n.consumable_weight_lb, n.duration_s,
                         &t.vacuum_thrust_lbf, t.vacuum_thrust_lbf.last_x(), &t.consumable_weight_lb,
-                        t.vacuum_thrust_lbf.last_x(), &grid))
+                        t.vacuum_thrust_lbf.last_x(), &grid)) {
           return Status::kTooManyTablePoints;
+        }
       } else if (info.kind == DispersionKind::kPitchingMoment) {
         Grid<kMaxAeroTablePoints> grid;
         if (!merge_grid(&nominal.mission->body_dynamics.pitching_moment_per_rad, 1.0,
                         &t.pitching_moment_per_rad, 1.0, static_cast<const AeroTable*>(nullptr), 1.0,
-                        static_cast<const AeroTable*>(nullptr), 1.0, &grid))
+                        static_cast<const AeroTable*>(nullptr), 1.0, &grid)) {
           return Status::kTooManyTablePoints;
+        }
       }
     }
   }
@@ -409,8 +418,9 @@ Status check_monte_carlo_data(const DispersionNominal& nominal, const Dispersion
       const WindProfile& a = data.sources[k].wind;
       Grid<kMaxWindTablePoints> grid;
       if (!merge_grid(&a.speed_ft_s, 1.0, &a.azimuth_rad, 1.0, &b.speed_ft_s, 1.0, &b.azimuth_rad, 1.0,
-                      &grid))
+                      &grid)) {
         return Status::kTooManyTablePoints;
+      }
     }
   }
   *fault_code = 0;
@@ -443,14 +453,16 @@ Status fly_monte_carlo_sample(const DispersionNominal& nominal, const Dispersion
     inputs.air_alpha_rad = ws->air_alpha_rad;
     status = fly_trajectory(ws->mission, ws->prepared, inputs, &ws->dispersed);
   }
-  if (ok(status))
+  if (ok(status)) {
     status = record_dispersed_trajectory(ws->mission, ws->prepared, ws->nominal, ws->dispersed,
                                          ws->perturbation.wind, ws->air_alpha_rad, out);
+  }
   out->status = status;
   if (!ok(status)) return status;
   for (int j = 0; j < kMaxStagingPoints; ++j) {
-    for (int i = 0; i < kStagingVariables; ++i)
+    for (int i = 0; i < kStagingVariables; ++i) {
       out->dispersions[j][i] = out->values[j][i] - nominal_values.values[j][i];
+    }
   }
   for (int i = 0; i < kOrbitDispersionElements; ++i) {
     const double d = out->orbit[i] - nominal_values.orbit[i];

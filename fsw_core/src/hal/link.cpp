@@ -1,6 +1,7 @@
 // Frame codec of the plant / guidance-computer link (tolip/hal/link.hpp, docs/hil.md).
 #include "tolip/hal/link.hpp"
 
+#include <cstddef>
 #include <cstring>
 
 #include "tolip/table/crc32.hpp"
@@ -92,7 +93,7 @@ void encode_telemetry_frame(std::uint32_t sequence, const TelemetryFrame& f, std
                              f.k_q_s,
                              f.pitch_command,
                              f.yaw_command};
-  for (int i = 0; i < 10; ++i) put_f64_le(out + 22 + 8 * i, values[i]);
+  for (std::ptrdiff_t i = 0; i < 10; ++i) put_f64_le(out + 22 + 8 * i, values[i]);
   put_u32_le(out + 102, f.table_crc);
   put_u32_le(out + 106, f.fault_count);
   put_crc(out, kTelemetryFrameSize);
@@ -100,8 +101,9 @@ void encode_telemetry_frame(std::uint32_t sequence, const TelemetryFrame& f, std
 
 Status decode_telemetry_frame(const std::uint8_t* bytes, std::size_t size, std::uint32_t* sequence,
                               TelemetryFrame* frame) {
-  if (!check_frame(bytes, size, kTelemetryFrameSize, kTelemetryFrameType))
+  if (!check_frame(bytes, size, kTelemetryFrameSize, kTelemetryFrameType)) {
     return Status::kHalLinkFrameCorrupt;
+  }
   if (bytes[18] < 1 || bytes[18] > 10 || bytes[20] > 2 || bytes[21] > 3) return Status::kHalLinkFrameCorrupt;
   TelemetryFrame f;
   f.cycle = get_u32_le(bytes + 6);
@@ -121,7 +123,7 @@ Status decode_telemetry_frame(const std::uint8_t* bytes, std::size_t size, std::
                         &f.k_q_s,
                         &f.pitch_command,
                         &f.yaw_command};
-  for (int i = 0; i < 10; ++i) *values[i] = get_f64_le(bytes + 22 + 8 * i);
+  for (std::ptrdiff_t i = 0; i < 10; ++i) *values[i] = get_f64_le(bytes + 22 + 8 * i);
   f.table_crc = get_u32_le(bytes + 102);
   f.fault_count = get_u32_le(bytes + 106);
   *sequence = get_u32_le(bytes + 2);
@@ -172,7 +174,7 @@ void encode_reply_frame(const LinkReport& report, std::uint8_t* out) {
   put_u32_le(out + 10, report.table_crc);
   std::uint32_t words[kReplyWords];
   reply_words(report, words);
-  for (int i = 0; i < kReplyWords; ++i) put_u32_le(out + 14 + 4 * i, words[i]);
+  for (std::ptrdiff_t i = 0; i < kReplyWords; ++i) put_u32_le(out + 14 + 4 * i, words[i]);
   put_crc(out, kReplyFrameSize);
 }
 
@@ -183,7 +185,7 @@ Status decode_reply_frame(const std::uint8_t* bytes, std::size_t size, LinkRepor
   r.status = static_cast<Status>(static_cast<int>(get_u32_le(bytes + 6)));
   r.table_crc = get_u32_le(bytes + 10);
   std::uint32_t w[kReplyWords];
-  for (int i = 0; i < kReplyWords; ++i) w[i] = get_u32_le(bytes + 14 + 4 * i);
+  for (std::ptrdiff_t i = 0; i < kReplyWords; ++i) w[i] = get_u32_le(bytes + 14 + 4 * i);
   FlightCounters& c = r.counters;
   c.cycles = w[0];
   c.clock_overruns = w[1];
@@ -219,8 +221,10 @@ Status decode_upload_frame(const std::uint8_t* bytes, std::size_t size, std::uin
                            const std::uint8_t** image, std::size_t* image_size) {
   if (bytes == nullptr || size < kUploadHeaderSize + 4) return Status::kHalLinkFrameCorrupt;
   const std::size_t length = get_u16_le(bytes + 6);
-  if (length > kMaxUploadBytes || !check_frame(bytes, size, kUploadHeaderSize + length + 4, kUploadFrameType))
+  if (length > kMaxUploadBytes ||
+      !check_frame(bytes, size, kUploadHeaderSize + length + 4, kUploadFrameType)) {
     return Status::kHalLinkFrameCorrupt;
+  }
   *sequence = get_u32_le(bytes + 2);
   *image = bytes + kUploadHeaderSize;
   *image_size = length;

@@ -63,8 +63,9 @@ Status validate_hardover_data(const Mission& mission, const HardoverData& data, 
       !std::isfinite(data.output_interval_s)) {
     return fail(fault, Status::kHardoverValueNotFinite, 45, 0, 0);
   }
-  if (!(data.max_qbar_alpha_lbf_rad_ft2 > 0.0))
+  if (!(data.max_qbar_alpha_lbf_rad_ft2 > 0.0)) {
     return fail(fault, Status::kHardoverQbarAlphaLimitInvalid, 45, 2, 1);
+  }
   if (!(data.output_interval_s * (kMaxHardoverSamples - 2) >= kTurnLimit_s - kTimeTolerance_s)) {
     return fail(fault, Status::kHardoverOutputIntervalTooSmall, 45, 20, 0);
   }
@@ -82,17 +83,20 @@ Status validate_hardover_data(const Mission& mission, const HardoverData& data, 
     if (!(s.max_attitude_step_rad > 0.0)) {
       return fail(fault, Status::kHardoverAttitudeStepInvalid, 45, stage_word(stage, 3, 23), stage);
     }
-    if (s.max_steps_per_turn < 1)
+    if (s.max_steps_per_turn < 1) {
       return fail(fault, Status::kHardoverMaxStepsInvalid, 45, stage_word(stage, 6, 26), stage);
+    }
     if (s.pitch_inertia_slug_ft2.empty() || !s.pitch_inertia_slug_ft2.finalized()) {
       return fail(fault, Status::kHardoverInertiaMissing, 44, 0, stage);
     }
     for (int i = 0; i < s.pitch_inertia_slug_ft2.size(); ++i) {
-      if (!(s.pitch_inertia_slug_ft2.y(i) > 0.0))
+      if (!(s.pitch_inertia_slug_ft2.y(i) > 0.0)) {
         return fail(fault, Status::kHardoverInertiaNotPositive, 44, 0, stage);
+      }
     }
-    if (body.cg_station_ft[stage - 1].empty())
+    if (body.cg_station_ft[stage - 1].empty()) {
       return fail(fault, Status::kHardoverBodyDataMissing, 37, 0, stage);
+    }
   }
   if (in_sequence(mission, 1)) {
     if (data.pitch_damping_per_rad.empty() || !data.pitch_damping_per_rad.finalized()) {
@@ -363,8 +367,9 @@ Status compute_hardover_turns(const Mission& mission, const PreparedCase& prepar
       const HardoverMode last =
           event.code == 1 ? HardoverMode::kFinsAndVanes : HardoverMode::kPitchAndYawJets;
       for (int m = static_cast<int>(first); m <= static_cast<int>(last); ++m) {
-        if (result->turn_count >= kMaxHardoverTurns)
+        if (result->turn_count >= kMaxHardoverTurns) {
           return fail(fault, Status::kTooManyHardoverTurns, 45, 0, event.code);
+        }
         HardoverTurn& turn = result->turns[result->turn_count];
         const Status status =
             compute_hardover_turn(mission, prepared, trajectory, data, point, static_cast<HardoverMode>(m),

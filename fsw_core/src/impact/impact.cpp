@@ -43,25 +43,31 @@ Status fault_at(ImpactFault* fault, Status status, int block, int stage, const c
 
 Status check_body(const ImpactBody& body, int block, int stage, const char* name, bool casing,
                   ImpactFault* fault) {
-  if (!body.present || body.drag_coefficient.empty())
+  if (!body.present || body.drag_coefficient.empty()) {
     return fault_at(fault, Status::kImpactDataMissing, block, stage, name, 0.0, "a drag table (Mach, C_D)");
-  if (!body.drag_coefficient.finalized())
+  }
+  if (!body.drag_coefficient.finalized()) {
     return fault_at(fault, Status::kTableNotMonotonic, block, stage, name, 0.0,
                     "Mach numbers strictly increasing");
-  if (body.drag_coefficient.first_x() != 0.0)
+  }
+  if (body.drag_coefficient.first_x() != 0.0) {
     return fault_at(fault, Status::kValueOutOfRange, block, stage, name, body.drag_coefficient.first_x(),
                     "the table to start at Mach 0");
+  }
   for (int i = 0; i < body.drag_coefficient.size(); ++i) {
     const double cd = body.drag_coefficient.y(i);
-    if (!(std::isfinite(cd) && cd >= 0.0))
+    if (!(std::isfinite(cd) && cd >= 0.0)) {
       return fault_at(fault, Status::kValueOutOfRange, block, stage, name, cd, "C_D finite and >= 0");
+    }
   }
-  if (!(std::isfinite(body.reference_area_ft2) && body.reference_area_ft2 > 0.0))
+  if (!(std::isfinite(body.reference_area_ft2) && body.reference_area_ft2 > 0.0)) {
     return fault_at(fault, Status::kValueOutOfRange, block, stage, "reference area", body.reference_area_ft2,
                     "a reference area > 0 ft^2");
-  if (casing && !(std::isfinite(body.casing_weight_lb) && body.casing_weight_lb > 0.0))
+  }
+  if (casing && !(std::isfinite(body.casing_weight_lb) && body.casing_weight_lb > 0.0)) {
     return fault_at(fault, Status::kValueOutOfRange, block, stage, "casing weight", body.casing_weight_lb,
                     "a casing weight > 0 lb");
+  }
   return Status::kOk;
 }
 
@@ -152,8 +158,9 @@ Status validate_impact_data(const Mission& mission, const ImpactLocusData& data,
                              s.terminal_velocity_tolerance,
                              s.max_flight_s};
   for (double value : positive) {
-    if (!(std::isfinite(value) && value > 0.0))
+    if (!(std::isfinite(value) && value > 0.0)) {
       return fault_at(fault, Status::kValueOutOfRange, 0, 0, "impact step sizes", value, "> 0");
+    }
   }
   return Status::kOk;
 }
@@ -162,8 +169,9 @@ Status fly_to_impact(const Mission& mission, const PreparedCase& prepared, const
                      double weight_lb, double t0_s, const StateVector& state0, const ImpactStepSizes& steps,
                      StageData* scratch, ImpactFlight* out) {
   *out = ImpactFlight{};
-  if (!(weight_lb > 0.0) || !state0.allFinite() || !std::isfinite(t0_s))
+  if (!(weight_lb > 0.0) || !state0.allFinite() || !std::isfinite(t0_s)) {
     return out->status = Status::kValueOutOfRange;
+  }
   load_body_stage(body, scratch);
   StageContext stage;
   stage.code = kImpactStageCode;

@@ -615,8 +615,9 @@ Status check_constraints(const ConstraintList& c, const Options& options, const 
                          const Check& check) {
   if (c.count > kMaxConstraints) return check.fail(Status::kTooManyConstraints, 8, 0, "count");
   TOLIP_CHECK(check.range(c.count, at_least(1), Status::kNoPayoffConstraint, 8, 0, "count", ""));
-  for (int i = 0; i < kMaxConstraints + 1; ++i)
+  for (int i = 0; i < kMaxConstraints + 1; ++i) {
     TOLIP_CHECK(check.finite(c.desired[i], 19, 0, "desired", "", i));
+  }
   for (int j = 0; j < kMaxConstraints; ++j) {
     TOLIP_CHECK(check.finite(c.deadband_optimization[j], 29, 0, "deadband_optimization", "", j + 1));
     TOLIP_CHECK(check.finite(c.deadband_linearization[j], 29, 0, "deadband_linearization", "", j + 1));
@@ -695,8 +696,9 @@ Status check_adjustable(const AdjustableParameters& a, const Options& options, c
     return check.fail(Status::kTooManyAdjustableParameters, 6, 0, "count");
   }
   TOLIP_CHECK(check.range(a.count, at_least(0), Status::kNegativeCount, 6, 0, "count", ""));
-  for (int i = 0; i < kMaxAdjustableParameters; ++i)
+  for (int i = 0; i < kMaxAdjustableParameters; ++i) {
     TOLIP_CHECK(check.finite(a.weights[i], 27, 0, "weights", "", i));
+  }
   for (int i = 0; i < a.count; ++i) {
     const int code = a.codes[i];
     TOLIP_CHECK(
@@ -757,8 +759,9 @@ Status check_linearization(const LinearizationData& l, const Options& options, c
   for (int i = 0; i < kMaxLinearSegments + 1; ++i) {
     TOLIP_CHECK(check.finite(l.coded_start_times[i], 18, 0, "coded_start_times", "", i));
   }
-  for (int i = 0; i < kMaxLinearSegments; ++i)
+  for (int i = 0; i < kMaxLinearSegments; ++i) {
     TOLIP_CHECK(check.finite(l.segment_weights[i], 26, 0, "segment_weights", "", i));
+  }
   int times = 0;
   while (times < kMaxLinearSegments + 1 && l.coded_start_times[times] != 0.0) ++times;
   for (int i = times; i < kMaxLinearSegments + 1; ++i) {

@@ -241,8 +241,9 @@ void BackwardSweep::attribute_theta(const StepRecord& step, const ConstraintVect
   const StepCommand& c = step.command;
   if (c.mode == AttitudeMode::kHeld) {
     const int code = prepared_.timeline[step.stage_slot].code;
-    if (mission_.options.stage_is_spun(code))
+    if (mission_.options.stage_is_spun(code)) {
       out_->spun_theta.head(count_) += start.head(count_) + end.head(count_);
+    }
     return;
   }
   if (c.mode != AttitudeMode::kLinear) return;
@@ -300,8 +301,9 @@ void BackwardSweep::rk4_step(const StepRecord& step) {
       c1.state.leftCols(n) + c2.state.leftCols(n) + c3.state.leftCols(n) + c4.state.leftCols(n);
   if (command.vertical_flight) state_.leftCols(n) = vertical_jacobian(x0).transpose() * state_.leftCols(n);
   mass_.leftCols(n) += c1.mass.leftCols(n) + c2.mass.leftCols(n) + c3.mass.leftCols(n) + c4.mass.leftCols(n);
-  if (command.mode == AttitudeMode::kHeld)
+  if (command.mode == AttitudeMode::kHeld) {
     out_->spun_chi.head(n) += c1.chi.head(n) + c2.chi.head(n) + c3.chi.head(n) + c4.chi.head(n);
+  }
   // theta(t) = theta_start + fraction (theta_end - theta_start), fraction 0, 1/2, 1/2, 1.
   ConstraintVector start = c1.theta + 0.5 * (c2.theta + c3.theta);
   ConstraintVector end = c4.theta + 0.5 * (c2.theta + c3.theta);
@@ -423,8 +425,9 @@ Status run_backward(const Mission& mission, const PreparedCase& prepared, const 
   if (constraint_count < 1 || constraint_count > kMaxConstraints) return Status::kTooManyConstraints;
   if (trajectory.status != Status::kOk || trajectory.point_count < 2) return Status::kNotPrepared;
   for (int j = 0; j < constraint_count; ++j) {
-    if (terminals[j].point < 0 || terminals[j].point >= trajectory.point_count)
+    if (terminals[j].point < 0 || terminals[j].point >= trajectory.point_count) {
       return Status::kValueOutOfRange;
+    }
     if (!terminals[j].partials.allFinite()) return Status::kValueNotFinite;
   }
   BackwardSweep sweep(mission, prepared, trajectory, constraint_count, terminals, out);

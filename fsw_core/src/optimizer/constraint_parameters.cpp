@@ -589,8 +589,9 @@ ConstraintPoint constraint_point_at(const Mission& mission, const Trajectory& tr
   c.time_from_launch_s = p.time_s;
   c.weight_lb = p.weight_lb;
   c.total_heating_btu_ft2 = trajectory.heat_integral_btu_ft2;
-  if (mission.options.qbar_alpha_constraint())
+  if (mission.options.qbar_alpha_constraint()) {
     c.qbar_alpha_excess_s = qbar_alpha_excess_s(mission, trajectory);
+  }
   if (p.altitude_ft <= mission.constants.haero_ft) {
     AtmosphereSample air;
     const double radius = oblate_radius_ft(mission.constants, p.state[kStateLambda]);

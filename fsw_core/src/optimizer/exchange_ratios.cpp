@@ -152,8 +152,9 @@ Status perturb_stage_parameter(const Mission& base, int stage_code, ExchangePara
       const double f = 1.0 + 0.01 * units;
       if (!(f > 0.0)) return Status::kValueOutOfRange;
       Status status = rescale_table(in.vacuum_thrust_lbf, 1.0 / f, f, &stage.vacuum_thrust_lbf);
-      if (ok(status))
+      if (ok(status)) {
         status = rescale_table(in.consumable_weight_lb, 1.0 / f, 1.0, &stage.consumable_weight_lb);
+      }
       if (!ok(status)) return status;
       stage.duration_s = in.duration_s / f;
       // The zero-alpha window lies in stage 1 (data block 22): it follows the stage's time.
@@ -166,8 +167,9 @@ Status perturb_stage_parameter(const Mission& base, int stage_code, ExchangePara
     case ExchangeParameter::kPropellantWeight: {
       // The consumable table scaled so its initial entry grows by `units`; the thrust by the same
       // factor, which keeps the specific impulse (thrust / mass flow) and the burn time.
-      if (in.consumable_weight_lb.empty() || !(in.consumable_weight_lb.y(0) > 0.0))
+      if (in.consumable_weight_lb.empty() || !(in.consumable_weight_lb.y(0) > 0.0)) {
         return Status::kValueOutOfRange;
+      }
       const double k = (in.consumable_weight_lb.y(0) + units) / in.consumable_weight_lb.y(0);
       if (!(k > 0.0)) return Status::kValueOutOfRange;
       const Status status = scale_values(k, &stage.consumable_weight_lb);
@@ -202,8 +204,9 @@ Status compute_exchange_ratios(const OptimizerWorkspace& final_ws, const Optimiz
   *out = ExchangeRatios();
   const Mission& mission = final_ws.mission;
   if (!ok(final_ws.nominal.status) || final_ws.nominal.point_count <= 0) return Status::kNotPrepared;
-  if (final_ws.program.point_count != final_ws.nominal.point_count)
+  if (final_ws.program.point_count != final_ws.nominal.point_count) {
     return Status::kControlProgramSizeMismatch;
+  }
   Context c;
   c.ws = &final_ws;
   c.result = &result;
@@ -246,15 +249,18 @@ Status compute_exchange_ratios(const OptimizerWorkspace& final_ws, const Optimiz
     out->stage_codes[s] = code;
     const StageData& stage = mission.vehicle.stages[stage_index(code)];
     status = stage_ratio(&c, code, ExchangeParameter::kBurnRate, &out->burn_rate[s]);
-    if (ok(status))
+    if (ok(status)) {
       status = stage_ratio(&c, code, ExchangeParameter::kPropellantWeight, &out->propellant_weight[s]);
-    if (ok(status))
+    }
+    if (ok(status)) {
       status = stage_ratio(&c, code, ExchangeParameter::kSpecificImpulse, &out->specific_impulse[s]);
+    }
     if (ok(status) && !stage.drag_coefficient.empty() && stage.reference_area_ft2 > 0.0) {
       status = stage_ratio(&c, code, ExchangeParameter::kDrag, &out->drag[s]);
     }
-    if (ok(status))
+    if (ok(status)) {
       status = stage_ratio(&c, code, ExchangeParameter::kJettisonWeight, &out->jettison_weight[s]);
+    }
     if (!ok(status)) return status;
   }
   return Status::kOk;

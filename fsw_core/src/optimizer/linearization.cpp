@@ -55,8 +55,9 @@ Status select_constraints(const Mission& mission, LinearConstraints* out) {
     ConstraintCode code;
     Status status = decode_constraint_code(list.codes[i], &code);
     if (!ok(status)) return status;
-    if (code.kind == ConstraintQuantity::kInclination || code.kind == ConstraintQuantity::kNodeLongitude)
+    if (code.kind == ConstraintQuantity::kInclination || code.kind == ConstraintQuantity::kNodeLongitude) {
       continue;
+    }
     status =
         append_constraint(code, list.desired[i], list.deadband_linearization[i - 1], mission.options, out);
     if (!ok(status)) return status;
@@ -77,8 +78,9 @@ double stage_start_s(const PreparedCase& prepared, int code) {
 Status break_times(const Mission& mission, const PreparedCase& prepared, const Trajectory& t,
                    LinearProgram* p) {
   const LinearizationData& data = mission.linearization;
-  if (data.segment_count < 1 || data.segment_count > kMaxLinearSegments)
+  if (data.segment_count < 1 || data.segment_count > kMaxLinearSegments) {
     return Status::kTooManyLinearSegments;
+  }
   p->segment_count = data.segment_count;
   for (int b = 0; b <= data.segment_count; ++b) {
     const double coded = data.coded_start_times[b];
@@ -99,16 +101,18 @@ Status break_times(const Mission& mission, const PreparedCase& prepared, const T
     p->break_time_s[b] = best;
     if (b > 0 && !(p->break_time_s[b] > p->break_time_s[b - 1])) return Status::kTableNotMonotonic;
   }
-  for (int s = 0; s < p->segment_count; ++s)
+  for (int s = 0; s < p->segment_count; ++s) {
     p->eta[s] = data.segment_weights[s] > 0.0 ? data.segment_weights[s] : 1.0;
+  }
   return Status::kOk;
 }
 
 // Segment holding time t and the weight of its end break (hat functions); -1 outside the program.
 int segment_of(const LinearProgram& p, double t, double* fraction) {
   if (t < p.break_time_s[0] - kBreakTimeRoundOffS ||
-      t > p.break_time_s[p.segment_count] + kBreakTimeRoundOffS)
+      t > p.break_time_s[p.segment_count] + kBreakTimeRoundOffS) {
     return -1;
+  }
   int s = 0;
   while (s + 1 < p.segment_count && t >= p.break_time_s[s + 1]) ++s;
   *fraction = (t - p.break_time_s[s]) / (p.break_time_s[s + 1] - p.break_time_s[s]);
@@ -377,8 +381,9 @@ bool meets_rate_limits(const Mission& mission, double coast_rate_after_last, con
   for (int s = 0; s < p.segment_count; ++s) {
     const double r = segment_rate(p, s);
     if (limits.max_pitch_rate_rad_s > 0.0 &&
-        std::fabs(r) > limits.max_pitch_rate_rad_s * (1.0 + kAcceptedRateSlack))
+        std::fabs(r) > limits.max_pitch_rate_rad_s * (1.0 + kAcceptedRateSlack)) {
       return false;
+    }
     if (limits.min_pitch_rate_rad_s > 0.0 &&
         std::fabs(r) < limits.min_pitch_rate_rad_s * (1.0 - kAcceptedRateSlack) &&
         !exempt_from_minimum_rates(p, s)) {
@@ -467,8 +472,9 @@ void check_coast7_rates(const Mission& mission, const LinearProgram& p, Lineariz
       if (later < 1 || later >= p.segment_count || !(limits.min_pitch_rate_change_rad_s > 0.0)) continue;
       if (rate_continues_previous(p, later)) continue;
       const double change = std::fabs(segment_rate(p, later) - segment_rate(p, later - 1));
-      if (change < limits.min_pitch_rate_change_rad_s * (1.0 - kAcceptedRateSlack))
+      if (change < limits.min_pitch_rate_change_rad_s * (1.0 - kAcceptedRateSlack)) {
         out->coast7_below_min_rate_change = true;
+      }
     }
   }
 }
@@ -484,8 +490,9 @@ void start_from_optimum(const OptimizerWorkspace& optimized, LinearizationWorksp
   ws->prepared = optimized.prepared;
   const Trajectory& optimum_trajectory = optimized.nominal;
   ws->optimum.point_count = optimum_trajectory.point_count;
-  for (int k = 0; k < optimum_trajectory.point_count; ++k)
+  for (int k = 0; k < optimum_trajectory.point_count; ++k) {
     ws->optimum.theta_rad[k] = optimum_trajectory.points[k].theta_rad;
+  }
 }
 
 // Fixed break values: 90 deg at the end of lift-off; the end of a maximum-rate period after it
@@ -496,8 +503,9 @@ void fix_break_values(const OptimizerWorkspace& optimized, const LinearizationWo
   const Trajectory& optimum_trajectory = optimized.nominal;
   const auto optimum_theta_at = [&](double t) {
     for (int k = 1; k < optimum_trajectory.point_count; ++k) {
-      if (std::fabs(optimum_trajectory.points[k].time_s - t) < kSameInstantS)
+      if (std::fabs(optimum_trajectory.points[k].time_s - t) < kSameInstantS) {
         return optimum_trajectory.points[k].theta_rad;
+      }
     }
     return optimum_trajectory.points[1].theta_rad;
   };

@@ -46,8 +46,9 @@ double qbar_alpha_lbf_rad_ft2(const TrajectoryPoint& point) {
 }
 
 bool qbar_alpha_limited(const Mission& mission, const TrajectoryPoint& point) {
-  if (!(point.dynamic_pressure_lbf_ft2 > 0.0) || mission.vehicle.lift_curve_slope_per_rad.empty())
+  if (!(point.dynamic_pressure_lbf_ft2 > 0.0) || mission.vehicle.lift_curve_slope_per_rad.empty()) {
     return false;
+  }
   if (point.stage_code < 1 || point.stage_code > kMaxStages) return false;
   return mission.vehicle.stages[stage_index(point.stage_code)].uses_lift_table;
 }

@@ -78,8 +78,9 @@ Status make_problem(const Mission& mission, Problem* problem) {
     if (!(problem->heating_deadband_btu_ft2 > 0.0)) return Status::kValueOutOfRange;
   }
   if (mission.options.qbar_alpha_constraint()) {
-    if (list.count + (problem->heating_listed ? 1 : 0) + 1 > kMaxConstraints)
+    if (list.count + (problem->heating_listed ? 1 : 0) + 1 > kMaxConstraints) {
       return Status::kTooManyConstraints;
+    }
     problem->qbar_alpha_listed = true;
   }
 
@@ -679,8 +680,9 @@ Status Iteration::fly_nominal_from_table() {
   Status status = fly_trajectory(ws_->mission, ws_->prepared, &ws_->nominal);
   if (!ok(status)) return status;
   ws_->program.point_count = ws_->nominal.point_count;
-  for (int k = 0; k < ws_->nominal.point_count; ++k)
+  for (int k = 0; k < ws_->nominal.point_count; ++k) {
     ws_->program.theta_rad[k] = ws_->nominal.points[k].theta_rad;
+  }
   classify_points(ws_->mission, ws_->nominal, &roles_);
   activate_heating_if_exceeded(ws_->nominal, ws_->mission.options, &problem_);
   status = evaluate_constraints(problem_, ws_->mission, ws_->nominal, nominal_achieved_);
@@ -695,8 +697,9 @@ Status Iteration::launch_sensitivities() {
   launch_columns_ = LaunchColumns();
   bool azimuth = false;
   for (int p = 0; p < problem_.adjustable_count; ++p) {
-    if (problem_.adjustable[p] == AdjustableParameter::kLaunchAzimuth)
+    if (problem_.adjustable[p] == AdjustableParameter::kLaunchAzimuth) {
       azimuth = problem_.adjustable_active[p];
+    }
   }
   for (int i = 0; i < problem_.count; ++i) {
     launch_columns_.launch_time(i) = constraint_partial_wrt_launch_time(problem_.codes[i]);
@@ -712,8 +715,9 @@ Status Iteration::launch_sensitivities() {
     prepare_launch_geometry(ws_->candidate_mission, &ws_->candidate_prepared);
     Status status =
         fly_trajectory(ws_->candidate_mission, ws_->candidate_prepared, ws_->program, &ws_->candidate);
-    if (ok(status))
+    if (ok(status)) {
       status = evaluate_constraints(problem_, ws_->candidate_mission, ws_->candidate, achieved[side]);
+    }
     if (!ok(status)) return status;
   }
   for (int i = 0; i < problem_.count; ++i) {
@@ -743,8 +747,9 @@ Status Iteration::backward(int first, Steering* steering) {
     *steering = optimization;
   } else {
     bool deferred[kMaxConstraints] = {};
-    for (int i = 1; i < problem_.count; ++i)
+    for (int i = 1; i < problem_.count; ++i) {
       deferred[i] = deferred_in_guidance(problem_, i, nominal_achieved_);
+    }
     const Status guidance = build_steering(problem_, ws_->backward, launch_columns_, roles_.free,
                                            ws_->mission.constants.g0_ft_s2, first, dp2, steering, deferred);
     if (ok(status)) status = guidance;
@@ -1017,8 +1022,9 @@ Status Iteration::run(const Mission& input) {
   }
   if (!guidance_converged) return Status::kGuidanceDidNotConverge;
   if (result_->optimization_runs == 0) return Status::kOptimizationNotStarted;
-  if (result_->optimization_stop == OptimizationStop::kForwardRunBudget)
+  if (result_->optimization_stop == OptimizationStop::kForwardRunBudget) {
     return Status::kOptimizationBudgetExhausted;
+  }
   if (!result_->final_guidance_met) return Status::kFinalGuidanceFailed;
   return Status::kOk;
 }

@@ -130,8 +130,9 @@ Status validate_guidance_table(const GuidanceTable& t) {
     if (!std::isfinite(value)) return Status::kValueNotFinite;
   }
   for (int i = 0; i < kMaxStages; ++i) {
-    if (!std::isfinite(t.gains[i].k_theta) || !std::isfinite(t.gains[i].k_q_s))
+    if (!std::isfinite(t.gains[i].k_theta) || !std::isfinite(t.gains[i].k_q_s)) {
       return Status::kValueNotFinite;
+    }
   }
   for (int i = 0; i < t.segment_count; ++i) {
     const GuidanceSegment& s = t.segments[i];
@@ -140,8 +141,9 @@ Status validate_guidance_table(const GuidanceTable& t) {
       return Status::kValueNotFinite;
     }
   }
-  if (t.schedule_count < 0 || t.schedule_count > kMaxGainSchedulePoints)
+  if (t.schedule_count < 0 || t.schedule_count > kMaxGainSchedulePoints) {
     return Status::kTooManyGainSchedulePoints;
+  }
   for (int i = 0; i < t.schedule_count; ++i) {
     const GainSchedulePoint& p = t.schedule[i];
     if (!std::isfinite(p.stage_time_s) || !std::isfinite(p.k_theta) || !std::isfinite(p.k_q_s)) {
@@ -209,8 +211,9 @@ Status validate_guidance_table(const GuidanceTable& t) {
       const int order_a = flight_order_index(a.stage_code);
       const int order_b = flight_order_index(p.stage_code);
       if (order_b < order_a) return Status::kGainScheduleStageInvalid;
-      if (order_b == order_a && !(p.stage_time_s > a.stage_time_s))
+      if (order_b == order_a && !(p.stage_time_s > a.stage_time_s)) {
         return Status::kGainScheduleTimesNotMonotonic;
+      }
     }
   }
 
@@ -319,8 +322,9 @@ Status decode_table_image(const std::uint8_t* image, std::size_t size, GuidanceT
   const std::uint16_t count = get_u16_le(image + kOffsetSegmentCount);
   if (count > static_cast<std::uint16_t>(kMaxLinearSegments)) return Status::kTooManyLinearSegments;
   const std::uint16_t schedule_count = get_u16_le(image + kOffsetScheduleCount);
-  if (schedule_count > static_cast<std::uint16_t>(kMaxGainSchedulePoints))
+  if (schedule_count > static_cast<std::uint16_t>(kMaxGainSchedulePoints)) {
     return Status::kTooManyGainSchedulePoints;
+  }
   if (!all_zero(image + kOffsetHeaderReserved1, 2) ||
       !all_zero(image + kOffsetHeaderReserved2, kHeaderReserved2Bytes)) {
     return Status::kTableImageReservedBytesSet;

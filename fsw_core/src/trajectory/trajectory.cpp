@@ -223,8 +223,9 @@ Status Flight::record(const StageContext& stage, double t, const StateVector& st
 Status Flight::resume(StateVector* state) {
   const Trajectory& from = *inputs_.resume_from;
   const int slot = inputs_.resume_stage_slot;
-  if (inputs_.feedback != nullptr || inputs_.injection_point >= 0 || inputs_.air_alpha_rad != nullptr)
+  if (inputs_.feedback != nullptr || inputs_.injection_point >= 0 || inputs_.air_alpha_rad != nullptr) {
     return Status::kValueOutOfRange;
+  }
   if (!ok(from.status) || slot <= 0 || slot >= prepared_.stage_count || slot >= from.stage_count ||
       from.stages[slot].code != prepared_.timeline[slot].code) {
     return Status::kValueOutOfRange;
