@@ -101,10 +101,14 @@ void evaluate_flight(const Mission& mission, const PreparedCase& prepared, const
   double air_speed = v;
   Matrix3 local_to_air = Matrix3::Identity();
   if (perturbation != nullptr && perturbation->wind != nullptr && density > 0.0) {
-    const double wind_speed = perturbation->wind->speed_ft_s(out->altitude_ft);
+    const WindProfile& wind = *perturbation->wind;
+    const double h = out->altitude_ft;
+    const double wind_speed =
+        (scratch != nullptr) ? wind.speed_ft_s(h, &scratch->wind_speed_hint) : wind.speed_ft_s(h);
     if (wind_speed != 0.0) {
-      const Vector3 air = air_relative_velocity_local(state, trig, wind_speed,
-                                                      perturbation->wind->azimuth_rad(out->altitude_ft));
+      const double wind_azimuth =
+          (scratch != nullptr) ? wind.azimuth_rad(h, &scratch->wind_azimuth_hint) : wind.azimuth_rad(h);
+      const Vector3 air = air_relative_velocity_local(state, trig, wind_speed, wind_azimuth);
       air_speed = air.norm();
       windy = air_speed > 0.0;
       if (windy) local_to_air = local_to_air_frame(air);
