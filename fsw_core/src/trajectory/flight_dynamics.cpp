@@ -111,7 +111,7 @@ void evaluate_flight(const Mission& mission, const PreparedCase& prepared, const
       const Vector3 air = air_relative_velocity_local(state, trig, wind_speed, wind_azimuth);
       air_speed = air.norm();
       windy = air_speed > 0.0;
-      if (windy) local_to_air = local_to_air_frame(air);
+      if (windy) local_to_air = local_to_air_frame(air, air_speed);
     }
   }
 
@@ -160,6 +160,7 @@ void evaluate_flight(const Mission& mission, const PreparedCase& prepared, const
       body.thrust_station_ft = perturbation->thrust_station_ft;
       body.net_thrust_lbf = out->net_thrust_lbf;
     }
+    if (scratch != nullptr) body.hints = &scratch->body_hints;
     BodyDynamicsResult result;
     out->body_status = evaluate_body_dynamics(mission.body_dynamics, body, &result);
     out->theta_rad = result.attitude.theta_rad;
