@@ -85,6 +85,11 @@ void BM_MonteCarloOneSample(benchmark::State& state) {
   state.counters["samples_per_s"] = benchmark::Counter(1.0, benchmark::Counter::kIsIterationInvariantRate);
 }
 BENCHMARK(BM_MonteCarloOneSample)->Unit(benchmark::kMicrosecond);
+// The same, samples 0-19 exactly once: a fixed piece of work for instruction counts, which do not
+// depend on the machine's load (docs/performance.md):
+//   valgrind --tool=callgrind --toggle-collect='tolip::fly_monte_carlo_sample*' \
+//     build/bench/monte_carlo_bench --benchmark_filter=BM_MonteCarloOneSample/iterations:20
+BENCHMARK(BM_MonteCarloOneSample)->Unit(benchmark::kMicrosecond)->Iterations(20);
 
 // The parts of one sample: building its case (the copy of the mission and prepared case, the draws,
 // prepare_case when a weight or the azimuth changes), then the flight alone.

@@ -48,10 +48,20 @@ AutopilotGains scheduled_stage1_gains(const BodyDynamicsBlocks& data, double sta
 }
 
 UnitMoments unit_moments(const BodyDynamicsBlocks& data, const MomentConditions& c) {
+  return unit_moments(data, c, nullptr);
+}
+
+UnitMoments unit_moments(const BodyDynamicsBlocks& data, const MomentConditions& c,
+                         BodyDynamicsHints* hints) {
+  // A hinted look-up finds the interval the plain one does: the same value either way.
+  const auto look_up = [](const auto& table, double x, int* hint) {
+    return (hint != nullptr) ? table(x, hint) : table(x);
+  };
   const int k = clamp_stage(c.stage) - 1;
   UnitMoments m;
   const CgTable& cg = data.cg_station_ft[k];
-  m.cg_station_ft = cg.empty() ? data.cg_station_ft[0](c.cg_stage_time_s) : cg(c.cg_stage_time_s);
+  m.cg_station_ft = look_up(cg.empty() ? data.cg_station_ft[0] : cg, c.cg_stage_time_s,
+                            (hints != nullptr) ? &hints->cg_hint : nullptr);
   m.control_lever_ft = data.control_station_ft[k] - m.cg_station_ft;
   const double reference_arm_ft = data.moment_reference_station_ft - m.cg_station_ft;  // X_FS - X_CG
   const double q_s = c.dynamic_pressure_lbf_ft2 * data.reference_area_ft2;
@@ -60,12 +70,14 @@ UnitMoments unit_moments(const BodyDynamicsBlocks& data, const MomentConditions&
   double aero_alpha = 0.0;
   double aero_delta = 0.0;
   if (q_s > 0.0) {
-    aero_alpha =
-        (data.pitching_moment_per_rad(c.mach) * l_ref - c.normal_force_slope_per_rad * reference_arm_ft) *
-        q_s;
-    aero_delta = (-data.fin_pitching_moment_per_rad(c.mach) * l_ref +
-                  data.fin_normal_force_per_rad(c.mach) * reference_arm_ft) *
-                 q_s;
+    const double c_m_alpha = look_up(data.pitching_moment_per_rad, c.mach,
+                                     (hints != nullptr) ? &hints->pitching_moment_hint : nullptr);
+    const double c_m_delta = look_up(data.fin_pitching_moment_per_rad, c.mach,
+                                     (hints != nullptr) ? &hints->fin_pitching_moment_hint : nullptr);
+    const double c_n_delta = look_up(data.fin_normal_force_per_rad, c.mach,
+                                     (hints != nullptr) ? &hints->fin_normal_force_hint : nullptr);
+    aero_alpha = (c_m_alpha * l_ref - c.normal_force_slope_per_rad * reference_arm_ft) * q_s;
+    aero_delta = (-c_m_delta * l_ref + c_n_delta * reference_arm_ft) * q_s;
   }
   const double jet_vanes = data.jet_vane_effectiveness_per_rad * c.vacuum_thrust_lbf * m.control_lever_ft;
   m.m_alpha_lbf_ft_per_rad = aero_alpha;
@@ -174,7 +186,7 @@ BodyForces body_forces(const UnitMoments& moments, const BodyAngles& angles, dou
 Status evaluate_body_dynamics(const BodyDynamicsBlocks& data, const BodyDynamicsInputs& in,
                               BodyDynamicsResult* out) {
   const int k = clamp_stage(in.conditions.stage) - 1;
-  out->moments = unit_moments(data, in.conditions);
+  out->moments = unit_moments(data, in.conditions, in.hints);
   out->velocity = platform_velocity_angles(in.platform_to_local);
   AutopilotGains gains;
   gains.position_gain = data.position_gain[k];

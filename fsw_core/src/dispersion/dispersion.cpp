@@ -124,9 +124,11 @@ void map_control_program(const PreparedCase& nominal, const ControlProgram& prog
     if (same_grid(from, to)) {
       for (int i = 0; i < n; ++i) out->theta_rad[first + i] = program.theta_rad[first + i];
     } else {
+      // The nominal interval [j, j + 1] holding tau (the last one past the end); tau increases
+      // with i, so the search goes on from the last point's interval.
+      int j = 0;
       for (int i = 0; i < n; ++i) {
         const double tau = point_stage_time_s(to, i);
-        int j = 0;  // the nominal interval [j, j + 1] holding tau (the last one past the end)
         while (j + 2 < n && point_stage_time_s(from, j + 1) <= tau) ++j;
         const double t0 = point_stage_time_s(from, j);
         const double t1 = point_stage_time_s(from, j + 1);

@@ -71,15 +71,16 @@ bool merge_grid(const Table<A>* a, double sa, const Table<B>* b, double sb, cons
   const auto next = [](auto* table, double scale, int i) {
     return (table != nullptr && i < table->size()) ? table->x(i) / scale : HUGE_VAL;
   };
+  // Each table's next scaled abscissa, computed when its index moves.
+  double xa = next(a, sa, ia), xb = next(b, sb, ib), xc = next(c, sc, ic), xd = next(d, sd, id);
   for (;;) {
-    const double xa = next(a, sa, ia), xb = next(b, sb, ib), xc = next(c, sc, ic), xd = next(d, sd, id);
     const double x = std::fmin(std::fmin(xa, xb), std::fmin(xc, xd));
     if (x == HUGE_VAL) return true;
     const double tolerance = kMergeTolerance * std::fmax(1.0, std::fabs(x));
-    if (xa - x <= tolerance) ++ia;
-    if (xb - x <= tolerance) ++ib;
-    if (xc - x <= tolerance) ++ic;
-    if (xd - x <= tolerance) ++id;
+    if (xa - x <= tolerance) xa = next(a, sa, ++ia);
+    if (xb - x <= tolerance) xb = next(b, sb, ++ib);
+    if (xc - x <= tolerance) xc = next(c, sc, ++ic);
+    if (xd - x <= tolerance) xd = next(d, sd, ++id);
     if (out->count >= G) return false;
     out->x[out->count++] = x;
   }
@@ -101,10 +102,13 @@ Status blend_thrust(const StageData& nominal, const DispersionSource& source, do
   }
   out->vacuum_thrust_lbf.clear();
   out->consumable_weight_lb.clear();
+  int hint_tn = -1, hint_ts = -1, hint_wn = -1, hint_ws = -1;  // tau increases: hinted look-ups
   for (int i = 0; i < grid.count; ++i) {
     const double tau = grid.x[i];
-    const double tn = nominal.vacuum_thrust_lbf(tau * bn), ts = source.vacuum_thrust_lbf(tau * bs);
-    const double wn = nominal.consumable_weight_lb(tau * bn), ws = source.consumable_weight_lb(tau * bs);
+    const double tn = nominal.vacuum_thrust_lbf(tau * bn, &hint_tn);
+    const double ts = source.vacuum_thrust_lbf(tau * bs, &hint_ts);
+    const double wn = nominal.consumable_weight_lb(tau * bn, &hint_wn);
+    const double ws = source.consumable_weight_lb(tau * bs, &hint_ws);
     const double thrust = tn + c * (ts - tn);
     const double weight = wn + c * (ws - wn);
     if (!(thrust >= 0.0)) return Status::kValueOutOfRange;

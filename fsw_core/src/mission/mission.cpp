@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "tolip/mission/adjustable_parameter.hpp"
+#include "tolip/mission/stage_weight.hpp"
 
 namespace tolip {
 namespace {
@@ -974,21 +975,43 @@ Status validate_body_dynamics(const Mission& mission, MissionFault* fault) {
 // or later, plus the initial consumable weight (first weight-table entry) of every later powered
 // stage. A code that is not in the sequence weighs 0.
 double vehicle_weight_lb(const Vehicle& vehicle, int code, double stage_time_s) {
+  return StageWeight(vehicle, code)(stage_time_s);
+}
+
+// The loop of additions vehicle_weight_lb() defines (0 + each stage's jettison weight, the payload at
+// the last powered stage, the consumable weight of every powered stage: its own at t, the later
+// ones' first entries), cut at the one term that depends on t.
+StageWeight::StageWeight(const Vehicle& vehicle, int code) {
   const StageSequence& sequence = vehicle.sequence;
   const int position = position_in_sequence(sequence, code);
-  if (position < 0) return 0.0;
+  if (position < 0) return;
   const int last_powered = last_powered_stage(sequence);
-
-  double weight = 0.0;
+  const auto add = [this](double term_lb) {
+    if (consumable_ == nullptr) {
+      leading_lb_ += term_lb;
+    } else {
+      trailing_lb_[trailing_count_++] = term_lb;
+    }
+  };
   for (int k = position; k < sequence.count; ++k) {
     const int stage_code = sequence.codes[k];
     if (stage_code < 1 || stage_code > kMaxStages) continue;
     const StageData& stage = vehicle.stages[stage_index(stage_code)];
-    weight += stage.jettison_weight_lb;
-    if (stage_code == last_powered) weight += vehicle.payload_lb;
+    add(stage.jettison_weight_lb);
+    if (stage_code == last_powered) add(vehicle.payload_lb);
     if (!is_powered_stage(stage_code) || stage.consumable_weight_lb.empty()) continue;
-    weight += (k == position) ? stage.consumable_weight_lb(stage_time_s) : stage.consumable_weight_lb.y(0);
+    if (k == position) {
+      consumable_ = &stage.consumable_weight_lb;
+    } else {
+      add(stage.consumable_weight_lb.y(0));
+    }
   }
+}
+
+double StageWeight::operator()(double stage_time_s) {
+  if (consumable_ == nullptr) return leading_lb_;
+  double weight = leading_lb_ + (*consumable_)(stage_time_s, &hint_);
+  for (int i = 0; i < trailing_count_; ++i) weight += trailing_lb_[i];
   return weight;
 }
 

@@ -101,13 +101,17 @@ void evaluate_flight(const Mission& mission, const PreparedCase& prepared, const
   double air_speed = v;
   Matrix3 local_to_air = Matrix3::Identity();
   if (perturbation != nullptr && perturbation->wind != nullptr && density > 0.0) {
-    const double wind_speed = perturbation->wind->speed_ft_s(out->altitude_ft);
+    const WindProfile& wind = *perturbation->wind;
+    const double h = out->altitude_ft;
+    const double wind_speed =
+        (scratch != nullptr) ? wind.speed_ft_s(h, &scratch->wind_speed_hint) : wind.speed_ft_s(h);
     if (wind_speed != 0.0) {
-      const Vector3 air = air_relative_velocity_local(state, trig, wind_speed,
-                                                      perturbation->wind->azimuth_rad(out->altitude_ft));
+      const double wind_azimuth =
+          (scratch != nullptr) ? wind.azimuth_rad(h, &scratch->wind_azimuth_hint) : wind.azimuth_rad(h);
+      const Vector3 air = air_relative_velocity_local(state, trig, wind_speed, wind_azimuth);
       air_speed = air.norm();
       windy = air_speed > 0.0;
-      if (windy) local_to_air = local_to_air_frame(air);
+      if (windy) local_to_air = local_to_air_frame(air, air_speed);
     }
   }
 
@@ -156,6 +160,7 @@ void evaluate_flight(const Mission& mission, const PreparedCase& prepared, const
       body.thrust_station_ft = perturbation->thrust_station_ft;
       body.net_thrust_lbf = out->net_thrust_lbf;
     }
+    if (scratch != nullptr) body.hints = &scratch->body_hints;
     BodyDynamicsResult result;
     out->body_status = evaluate_body_dynamics(mission.body_dynamics, body, &result);
     out->theta_rad = result.attitude.theta_rad;

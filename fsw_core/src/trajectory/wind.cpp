@@ -14,7 +14,14 @@ Vector3 air_relative_velocity_local(const StateVector& state, const StateTrig& t
 }
 
 Matrix3 local_to_air_frame(const Vector3& air_velocity_local) {
-  const Vector3 a_y = air_velocity_local.normalized();
+  return local_to_air_frame(air_velocity_local, air_velocity_local.norm());
+}
+
+// Eigen's normalized() is v / sqrt(v.squaredNorm()) when that is > 0, else v: v / v.norm() with
+// the caller's norm, the same vector bit for bit.
+Matrix3 local_to_air_frame(const Vector3& air_velocity_local, double air_speed_ft_s) {
+  const Vector3 a_y =
+      (air_speed_ft_s > 0.0) ? Vector3(air_velocity_local / air_speed_ft_s) : air_velocity_local;
   const Vector3 a_z = (Vector3::UnitZ() - a_y.z() * a_y).normalized();
   const Vector3 a_x = a_y.cross(a_z);
   Matrix3 m;

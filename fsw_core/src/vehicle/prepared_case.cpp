@@ -6,6 +6,7 @@
 #include "tolip/atmosphere/atmosphere.hpp"
 #include "tolip/earth/earth_model.hpp"
 #include "tolip/frames/frames.hpp"
+#include "tolip/mission/stage_weight.hpp"
 
 namespace tolip {
 namespace {
@@ -43,16 +44,19 @@ double exact_interval_integral(double t0_lbf, double t1_lbf, double w0_lb, doubl
 // The ideal velocity integral g0 T / W dt over [t_begin, t_end] of a piecewise-linear thrust table
 // with the total vehicle weight (case payload included), as Sec. 14 integrates "thrust/weight".
 // W is the stage's piecewise-linear consumable table plus constants, so on each interval of the
-// merged thrust and weight breakpoints both are linear and the integral is exact.
+// merged thrust and weight breakpoints both are linear and the integral is exact. The look-ups
+// step forward in time, so they keep hints (the same values as plain look-ups, bit for bit).
 template <typename PiecewiseLinearThrust>
 double ideal_velocity_ft_s(const Vehicle& vehicle, int code, double g0, const PiecewiseLinearThrust& thrust,
                            double t_begin, double t_end) {
   const auto& weight = vehicle.stages[stage_index(code)].consumable_weight_lb;
+  StageWeight vehicle_weight(vehicle, code);
+  int thrust_hint = -1;
   int i_thrust = 0;
   int i_weight = 0;
   double a = t_begin;
-  double thrust_a = thrust(a);
-  double weight_a = vehicle_weight_lb(vehicle, code, a);
+  double thrust_a = thrust(a, &thrust_hint);
+  double weight_a = vehicle_weight(a);
   double ideal = 0.0;
   while (a < t_end) {
     while (i_thrust < thrust.size() && !(thrust.x(i_thrust) > a)) ++i_thrust;
@@ -60,8 +64,8 @@ double ideal_velocity_ft_s(const Vehicle& vehicle, int code, double g0, const Pi
     double b = t_end;
     if (i_thrust < thrust.size() && thrust.x(i_thrust) < b) b = thrust.x(i_thrust);
     if (i_weight < weight.size() && weight.x(i_weight) < b) b = weight.x(i_weight);
-    const double thrust_b = thrust(b);
-    const double weight_b = vehicle_weight_lb(vehicle, code, b);
+    const double thrust_b = thrust(b, &thrust_hint);
+    const double weight_b = vehicle_weight(b);
     ideal += exact_interval_integral(thrust_a, thrust_b, weight_a, weight_b, b - a);
     a = b;
     thrust_a = thrust_b;
@@ -73,10 +77,11 @@ double ideal_velocity_ft_s(const Vehicle& vehicle, int code, double g0, const Pi
 // Exact impulse of the piecewise-linear input table over [0, t1].
 double input_impulse(const ThrustTable& table, double t1) {
   double impulse = 0.0;
+  int hint = -1;
   for (int i = 0; i + 1 < table.size() && table.x(i) < t1; ++i) {
     const double a = table.x(i);
     const double b = (table.x(i + 1) < t1) ? table.x(i + 1) : t1;
-    impulse += 0.5 * (table(a) + table(b)) * (b - a);
+    impulse += 0.5 * (table(a, &hint) + table(b, &hint)) * (b - a);
   }
   return impulse;
 }
@@ -126,9 +131,10 @@ Status modify_thrust_table(const Mission& mission, const StageTimeline& line, Mo
   if (line.first_step_stage_time_s > 0.0 && ok(status)) {
     status = table->append(line.first_step_stage_time_s, input(line.first_step_stage_time_s));
   }
+  int hint = -1;  // the grid times increase: a hinted look-up, the same value
   for (int i = 1; i <= line.steps && ok(status); ++i) {
     const double t = (i == line.steps) ? line.duration_s : line.first_step_stage_time_s + i * line.step_s;
-    status = table->append(t, input(t));
+    status = table->append(t, input(t, &hint));
   }
   if (ok(status)) status = table->finalize();
   if (!ok(status)) return status;

@@ -43,6 +43,19 @@ struct UnitMoments {
 // with n = control_surfaces_per_plane. Stage 1's tables (blocks 34-36) serve every stage.
 UnitMoments unit_moments(const BodyDynamicsBlocks& data, const MomentConditions& conditions);
 
+// The intervals the unit moments' table look-ups found last (Table's hinted look-up: the same
+// values, bit for bit; a flight keeps one set per stage, the look-ups' stage time and Mach moving
+// little from one evaluation to the next). -1: not yet looked up.
+struct BodyDynamicsHints {
+  int cg_hint = -1;
+  int pitching_moment_hint = -1;
+  int fin_pitching_moment_hint = -1;
+  int fin_normal_force_hint = -1;
+};
+// The same with hints (null: every look-up searched).
+UnitMoments unit_moments(const BodyDynamicsBlocks& data, const MomentConditions& conditions,
+                         BodyDynamicsHints* hints);
+
 // The rigid-body damping moments of Sec. 16 (lbf ft), shared by the hardover turns and the
 // autopilot design: term 4, aerodynamic pitch damping C_M_q eta-dot l_ref q S l_ref / (2 V), and
 // term 5, jet damping eta-dot (m-dot (X_CG - X_TA)^2 + I-dot).
@@ -160,6 +173,7 @@ struct BodyDynamicsInputs {
   double misalignment_yaw_rad = 0.0;
   double thrust_station_ft = 0.0;
   double net_thrust_lbf = 0.0;
+  BodyDynamicsHints* hints = nullptr;  // the unit moments' look-up hints (null: none)
 };
 
 struct BodyDynamicsResult {

@@ -4,6 +4,7 @@
 // the same function, so the adjoint linearizes exactly what was flown.
 #pragma once
 
+#include "tolip/body/body_dynamics.hpp"
 #include "tolip/core/state.hpp"
 #include "tolip/core/status.hpp"
 #include "tolip/frames/frames.hpp"
@@ -40,6 +41,9 @@ struct EvaluationScratch {
   int weight_hint = -1;
   int drag_hint = -1;
   int lift_hint = -1;
+  int wind_speed_hint = -1;  // a dispersed flight's wind tables (by altitude)
+  int wind_azimuth_hint = -1;
+  BodyDynamicsHints body_hints;  // the 6D unit moments' tables
   bool has_theta = false;
   double theta_rad = 0.0;
   double sin_theta = 0.0;

@@ -32,6 +32,8 @@ Vector3 air_relative_velocity_local(const StateVector& state, const StateTrig& t
 // point-mass lift), a_x = a_y x a_z. With no wind it is the identity. Precondition: a non-zero
 // air-relative velocity not along i_z.
 Matrix3 local_to_air_frame(const Vector3& air_velocity_local);
+// The same with |air_velocity_local| (its norm(), > 0) already computed: the same matrix, bit for bit.
+Matrix3 local_to_air_frame(const Vector3& air_velocity_local, double air_speed_ft_s);
 
 // In-plane angle of attack against the air mass: the angle from a_y to the thrust axis in the
 // a_y-a_z plane (angle_of_attack_rad() of the thrust axis resolved in the air frame).
