@@ -73,7 +73,8 @@ double stage_start_s(const PreparedCase& prepared, int code) {
   return -1.0;
 }
 
-// Data block 18's coded times (100 n + t) moved to the nearest integration point of stage n.
+// Data block 18's boundaries (stage n, t from its ignition) moved to the nearest integration point
+// of stage n.
 Status break_times(const Mission& mission, const PreparedCase& prepared, const Trajectory& t,
                    LinearProgram* p) {
   const LinearizationData& data = mission.linearization;
@@ -81,11 +82,10 @@ Status break_times(const Mission& mission, const PreparedCase& prepared, const T
     return Status::kTooManyLinearSegments;
   p->segment_count = data.segment_count;
   for (int b = 0; b <= data.segment_count; ++b) {
-    const double coded = data.coded_start_times[b];
-    const int code = static_cast<int>(std::floor(coded / 100.0));
+    const int code = data.boundaries[b].stage;
     const double start = stage_start_s(prepared, code);
     if (start < 0.0) return Status::kValueOutOfRange;
-    const double wanted = start + (coded - 100.0 * code);
+    const double wanted = start + data.boundaries[b].time_from_ignition_s;
     double best = wanted;
     double best_error = 1e300;
     for (int k = 1; k < t.point_count; ++k) {

@@ -465,21 +465,4 @@ int trajectory_point_count(const PreparedCase& prepared) {
   return count;
 }
 
-bool is_output_point(const Mission& mission, const Trajectory& trajectory, int index, TrajectoryKind kind) {
-  for (int k = 0; k < trajectory.stage_count; ++k) {
-    const StageEvent& event = trajectory.stages[k];
-    if (index < event.first_point || index > event.last_point) continue;
-    if (index == event.first_point || index == event.last_point) return true;
-    const int slot = stage_index(event.code);
-    int every = 1;
-    switch (kind) {
-      case TrajectoryKind::kInitial: every = mission.output.initial[slot]; break;
-      case TrajectoryKind::kIntermediate: every = mission.output.intermediate[slot]; break;
-      case TrajectoryKind::kFinal: every = mission.output.final_trajectory[slot]; break;
-    }
-    return every <= 1 || (index - event.first_point) % every == 0;
-  }
-  return index == 0;  // the pad point
-}
-
 }  // namespace tolip
