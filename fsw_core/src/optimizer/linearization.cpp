@@ -189,9 +189,7 @@ constexpr double kEqualityResidualTolerance = 1e-8;
 // linearized constraint rows' sums over the points (eq. 6-2).
 void assemble_fit(const LinearConstraints& c, const BackwardRun& backward, const Trajectory& nominal,
                   const ControlProgram& nominal_program, const ControlProgram& optimum,
-                  const LinearProgram& p, int n, KktMatrix* kkt_out, KktVector* rhs_out) {
-  KktMatrix& kkt = *kkt_out;
-  KktVector& rhs = *rhs_out;
+                  const LinearProgram& p, int n, KktMatrix* kkt, KktVector* rhs) {
   for (int k = 0; k < nominal.point_count; ++k) {
     double f = 0.0;
     const int s = segment_of(p, nominal.points[k].time_s, &f);
@@ -201,38 +199,33 @@ void assemble_fit(const LinearConstraints& c, const BackwardRun& backward, const
     const double h0 = 1.0 - f;
     const double h1 = f;
     const double weight = w * p.eta[s];
-    kkt(s, s) += weight * h0 * h0;
-    kkt(s, s + 1) += weight * h0 * h1;
-    kkt(s + 1, s) += weight * h0 * h1;
-    kkt(s + 1, s + 1) += weight * h1 * h1;
-    rhs(s) += weight * h0 * optimum.theta_rad[k];
-    rhs(s + 1) += weight * h1 * optimum.theta_rad[k];
+    (*kkt)(s, s) += weight * h0 * h0;
+    (*kkt)(s, s + 1) += weight * h0 * h1;
+    (*kkt)(s + 1, s) += weight * h0 * h1;
+    (*kkt)(s + 1, s + 1) += weight * h1 * h1;
+    (*rhs)(s) += weight * h0 * optimum.theta_rad[k];
+    (*rhs)(s + 1) += weight * h1 * optimum.theta_rad[k];
     for (int j = 0; j < c.count; ++j) {
       const double g = backward.theta_gradient[k](j) / c.deadband[j];
-      kkt(n + j, s) += g * h0;
-      kkt(n + j, s + 1) += g * h1;
-      rhs(n + j) += g * nominal_program.theta_rad[k];
+      (*kkt)(n + j, s) += g * h0;
+      (*kkt)(n + j, s + 1) += g * h1;
+      (*rhs)(n + j) += g * nominal_program.theta_rad[k];
     }
   }
 }
 
 // The constraint rows' corrections and payload column, mirrored into the multiplier columns.
 void add_constraint_rows(const LinearConstraints& c, const BackwardRun& backward, const double achieved[],
-                         int breaks, int n, KktMatrix* kkt_out, KktVector* rhs_out) {
-  KktMatrix& kkt = *kkt_out;
-  KktVector& rhs = *rhs_out;
+                         int breaks, int n, KktMatrix* kkt, KktVector* rhs) {
   for (int j = 0; j < c.count; ++j) {
-    rhs(n + j) += constraint_correction(c, j, achieved[j]) / c.deadband[j];
-    if (c.payload_free) kkt(n + j, breaks) = backward.payload(j) / c.deadband[j];
-    for (int b = 0; b < n; ++b) kkt(b, n + j) = kkt(n + j, b);
+    (*rhs)(n + j) += constraint_correction(c, j, achieved[j]) / c.deadband[j];
+    if (c.payload_free) (*kkt)(n + j, breaks) = backward.payload(j) / c.deadband[j];
+    for (int b = 0; b < n; ++b) (*kkt)(b, n + j) = (*kkt)(n + j, b);
   }
 }
 
 // Rate repairs: one more multiplier row each (a merge of two segments, or a segment at its rate).
-void add_rate_repair_rows(const LinearProgram& p, int n, int first_row, KktMatrix* kkt_out,
-                          KktVector* rhs_out) {
-  KktMatrix& kkt = *kkt_out;
-  KktVector& rhs = *rhs_out;
+void add_rate_repair_rows(const LinearProgram& p, int n, int first_row, KktMatrix* kkt, KktVector* rhs) {
   for (int r = 0; r < p.rate_repair_count; ++r) {
     const int row = first_row + r;
     const int seg = p.rate_segment[r];
@@ -240,16 +233,16 @@ void add_rate_repair_rows(const LinearProgram& p, int n, int first_row, KktMatri
       const double d0 = p.break_time_s[seg + 1] - p.break_time_s[seg];
       const double d1 = p.break_time_s[seg + 2] - p.break_time_s[seg + 1];
       const double f = d0 / (d0 + d1);
-      kkt(row, seg) = -(1.0 - f);
-      kkt(row, seg + 1) = 1.0;
-      kkt(row, seg + 2) = -f;
-      rhs(row) = 0.0;
+      (*kkt)(row, seg) = -(1.0 - f);
+      (*kkt)(row, seg + 1) = 1.0;
+      (*kkt)(row, seg + 2) = -f;
+      (*rhs)(row) = 0.0;
     } else {
-      kkt(row, seg) = -1.0;
-      kkt(row, seg + 1) = 1.0;
-      rhs(row) = p.rate_value_rad_s[r] * (p.break_time_s[seg + 1] - p.break_time_s[seg]);
+      (*kkt)(row, seg) = -1.0;
+      (*kkt)(row, seg + 1) = 1.0;
+      (*rhs)(row) = p.rate_value_rad_s[r] * (p.break_time_s[seg + 1] - p.break_time_s[seg]);
     }
-    for (int b = 0; b < n; ++b) kkt(b, row) = kkt(row, b);
+    for (int b = 0; b < n; ++b) (*kkt)(b, row) = (*kkt)(row, b);
   }
 }
 
