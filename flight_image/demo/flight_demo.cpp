@@ -39,8 +39,9 @@
 
 namespace tolip::flight {
 
-Status build_embedded_mission(Mission* mission);            // generated (tolip_embed_mission)
-Status build_embedded_optimization_case(Mission* mission);  // generated (tolip_embed_mission)
+Status build_embedded_mission(Mission* mission);                    // generated (tolip_embed_mission)
+Status build_embedded_optimization_case(Mission* mission);          // generated (tolip_embed_mission)
+extern const char build_embedded_optimization_case_case_heading[];  // data block 2, beside it
 
 namespace {
 
@@ -271,7 +272,7 @@ bool run_optimization() {
   const Status built = build_embedded_optimization_case(&g_optimization_case);
   status_line("OPT ", "embedded optimization case", built);
   if (!ok(built)) return false;
-  line.text("OPT case '").text(g_optimization_case.case_heading).text("' payload ");
+  line.text("OPT case '").text(build_embedded_optimization_case_case_heading).text("' payload ");
   line.fixed(g_optimization_case.vehicle.payload_lb, 3).text(" lb, forward-run budget ");
   line.integer(g_optimization_case.convergence.max_forward_trajectories);
   line.emit();

@@ -38,23 +38,22 @@ void leave_out_of_sequence(Mission* mission, int code) {
 // coded beside stage n+1's ignition once the coast between them is left out), as a deck must.
 void drop_repeated_staging_instants(Mission* mission) {
   LinearizationData& l = mission->linearization;
-  const auto instant = [&](double coded) {
-    const int code = static_cast<int>(std::floor(coded / 100.0));
+  const auto instant = [&](const SegmentBoundary& boundary) {
     double start = 0.0;
     for (int k = 0; k < mission->vehicle.sequence.count; ++k) {
       const int listed = mission->vehicle.sequence.codes[k];
-      if (listed == code) break;
+      if (listed == boundary.stage) break;
       start += mission->vehicle.stages[stage_index(listed)].duration_s;
     }
-    return start + coded - 100.0 * code;
+    return start + boundary.time_from_ignition_s;
   };
   for (int i = 1; i <= l.segment_count;) {
-    if (instant(l.coded_start_times[i]) > instant(l.coded_start_times[i - 1])) {
+    if (instant(l.boundaries[i]) > instant(l.boundaries[i - 1])) {
       ++i;
       continue;
     }
-    for (int j = i; j < kMaxLinearSegments; ++j) l.coded_start_times[j] = l.coded_start_times[j + 1];
-    l.coded_start_times[kMaxLinearSegments] = 0.0;
+    for (int j = i; j < kMaxLinearSegments; ++j) l.boundaries[j] = l.boundaries[j + 1];
+    l.boundaries[kMaxLinearSegments] = SegmentBoundary{};
     for (int j = i - 1; j + 1 < kMaxLinearSegments; ++j) l.segment_weights[j] = l.segment_weights[j + 1];
     --l.segment_count;
   }

@@ -208,14 +208,18 @@ TEST(MissionFaultValue, ZeroAlphaWindowBeyondStage1CarriesTheWindow) {
 
 TEST(MissionFaultValue, EveryValueFaultOfTheseEditsHasARangeOrAnExpectation) {
   auto mission = reference();
-  mission->output.initial[3] = 0;
-  MissionFault fault = fault_of(*mission, Status::kOutputFrequencyNotPositive);
-  EXPECT_TRUE(fault.has_value);
-  EXPECT_TRUE(fault.range.has_low || *fault.expected != '\0');
-  mission = reference();
   mission->launch.velocity_ft_s = std::nan("");
-  fault = fault_of(*mission, Status::kValueNotFinite);
+  MissionFault fault = fault_of(*mission, Status::kValueNotFinite);
   EXPECT_STREQ(fault.expected, "a finite number");
+  mission = reference();  // a data block 18 boundary 10 s into the spun stage 4 (the deck's 410)
+  LinearizationData& l = mission->linearization;
+  l.boundaries[l.segment_count + 1] = SegmentBoundary{4, 10.0};
+  l.segment_weights[l.segment_count] = 1.0;
+  l.segment_count += 1;
+  fault = fault_of(*mission, Status::kCodedTimeInSpunStage);
+  expect_value(fault, 18, "boundaries", l.segment_count, 10.0);
+  EXPECT_EQ(fault.stage_code, 4);
+  EXPECT_TRUE(fault.range.has_low || *fault.expected != '\0');
 }
 
 TEST(StageEventsOfAFailedRun, StagesThatEndedKeepTheirJettisonAndTheStoppedStageIsMarked) {

@@ -200,30 +200,6 @@ TEST(Sec22Trajectory, CrudeInitialNominalFliesEveryStage) {
               1e-9);
 }
 
-// Data block 9: every n-th point of a stage, and always its first and last point.
-TEST(Sec22Output, ThinsPointsPerStageKeepingStageEnds) {
-  static Mission mission;
-  static PreparedCase prepared;
-  static Trajectory trajectory;
-  test::build_reference_mission(test::ReferenceProgram::kOptimum, &mission);
-  for (int k = 0; k < kMaxStages; ++k) mission.output.final_trajectory[k] = 5;
-  ASSERT_EQ(prepare_case(mission, &prepared), Status::kOk);
-  ASSERT_EQ(fly_trajectory(mission, prepared, &trajectory), Status::kOk);
-  int listed = 0;
-  for (int i = 0; i < trajectory.point_count; ++i) {
-    listed += is_output_point(mission, trajectory, i, TrajectoryKind::kFinal) ? 1 : 0;
-  }
-  for (int k = 0; k < trajectory.stage_count; ++k) {
-    EXPECT_TRUE(
-        is_output_point(mission, trajectory, trajectory.stages[k].first_point, TrajectoryKind::kFinal));
-    EXPECT_TRUE(
-        is_output_point(mission, trajectory, trajectory.stages[k].last_point, TrajectoryKind::kFinal));
-  }
-  EXPECT_LT(listed, trajectory.point_count / 3);
-  EXPECT_GT(listed, trajectory.point_count / 6);
-  EXPECT_TRUE(is_output_point(mission, trajectory, 0, TrajectoryKind::kIntermediate));  // pad point
-}
-
 // A NaN in the case reaches the integrator only through a bypassed validation; it must come back as
 // a named status, with no NaN stored.
 TEST(Sec4Trajectory, NonFiniteInputEndsWithNamedStatusAndNoNaNStored) {

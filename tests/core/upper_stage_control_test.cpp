@@ -46,8 +46,8 @@ void make_stage4_continuous(Mission* m) {
   }
   m->adjustable.count = kept;
   LinearizationData& l = m->linearization;
-  l.coded_start_times[l.segment_count + 1] = 400.0;
-  l.coded_start_times[l.segment_count + 2] = 400.0 + m->vehicle.stages[stage_index(4)].duration_s;
+  l.boundaries[l.segment_count + 1] = SegmentBoundary{4, 0.0};  // the deck's 400
+  l.boundaries[l.segment_count + 2] = SegmentBoundary{4, m->vehicle.stages[stage_index(4)].duration_s};
   l.segment_weights[l.segment_count] = 1.0;
   l.segment_weights[l.segment_count + 1] = 1.0;
   l.segment_count += 2;
@@ -227,8 +227,8 @@ TEST(Sec5Adjoint, Sec22_IP9Is3_FiveStageVehicleStage5PitchProgramSensitivitiesMa
   add_stage5(&c.mission);
   c.mission.options.ip[9] = 3;
   LinearizationData& l = c.mission.linearization;
-  l.coded_start_times[l.segment_count + 1] = 500.0;
-  l.coded_start_times[l.segment_count + 2] = 515.0;
+  l.boundaries[l.segment_count + 1] = SegmentBoundary{5, 0.0};   // the deck's 500
+  l.boundaries[l.segment_count + 2] = SegmentBoundary{5, 15.0};  // 515
   l.segment_weights[l.segment_count] = 1.0;
   l.segment_weights[l.segment_count + 1] = 1.0;
   l.segment_count += 2;
@@ -277,8 +277,8 @@ TEST(Sec22Validation, SpinOptionIP9MustFitTheSequenceTheSpunAttitudeCodesAndTheB
   make_stage4_continuous(&m);
   EXPECT_EQ(validate_mission(m, &fault), Status::kOk);
   // Without the stage-4 coded times the linearized trajectory would fly stage 4 at one attitude.
-  m.linearization.coded_start_times[m.linearization.segment_count] = 0.0;
-  m.linearization.coded_start_times[m.linearization.segment_count - 1] = 0.0;
+  m.linearization.boundaries[m.linearization.segment_count] = SegmentBoundary{};
+  m.linearization.boundaries[m.linearization.segment_count - 1] = SegmentBoundary{};
   m.linearization.segment_count -= 2;
   EXPECT_EQ(validate_mission(m, &fault), Status::kSteeredStageWithoutSegments);
   EXPECT_EQ(fault.data_block, 18);
@@ -286,7 +286,7 @@ TEST(Sec22Validation, SpinOptionIP9MustFitTheSequenceTheSpunAttitudeCodesAndTheB
 
   m = base;  // a coded time in the spun stage 4 (IP(9) = 1)
   LinearizationData& l = m.linearization;
-  l.coded_start_times[l.segment_count + 1] = 410.0;
+  l.boundaries[l.segment_count + 1] = SegmentBoundary{4, 10.0};  // the deck's 410
   l.segment_weights[l.segment_count] = 1.0;
   l.segment_count += 1;
   EXPECT_EQ(validate_mission(m, &fault), Status::kCodedTimeInSpunStage);

@@ -131,9 +131,10 @@ TEST(CardDeck, ReadsEveryFormatTypeIntoTheMission) {
   ASSERT_EQ(parsed.deck.cases.size(), 1u);
   EXPECT_EQ(parsed.deck.format, DeckFormat::kCards);
   const Mission& m = *parsed.deck.cases[0].mission;
+  const ground::DeckListingOptions& listing = parsed.deck.cases[0].extras.listing;
   // 12A6 and 2A6 text.
-  EXPECT_STREQ(m.title, "CARD TEST VEHICLE, ONE STAGE");
-  EXPECT_STREQ(m.date, "1966-07-01");
+  EXPECT_EQ(listing.title, "CARD TEST VEHICLE, ONE STAGE");
+  EXPECT_EQ(listing.date, "1966-07-01");
   // 24I1 options.
   EXPECT_EQ(m.options.ip[3], 1);
   EXPECT_EQ(m.options.ip[15], 1);
@@ -146,10 +147,10 @@ TEST(CardDeck, ReadsEveryFormatTypeIntoTheMission) {
   EXPECT_EQ(m.adjustable.weights[0], 2.0);
   EXPECT_EQ(m.constraints.count, 1);
   EXPECT_EQ(m.constraints.codes[0], 0);
-  EXPECT_EQ(m.output.initial[0], 2);
-  EXPECT_EQ(m.output.intermediate[0], 3);
-  EXPECT_EQ(m.output.final_trajectory[0], 1);
-  EXPECT_EQ(m.output.initial[1], 1);  // stages not given keep every point
+  EXPECT_EQ(listing.output.initial[0], 2);
+  EXPECT_EQ(listing.output.intermediate[0], 3);
+  EXPECT_EQ(listing.output.final_trajectory[0], 1);
+  EXPECT_EQ(listing.output.initial[1], 1);  // stages not given keep every point
   // E12.8 words, converted to the core's units.
   const StageData& stage = m.vehicle.stages[0];
   EXPECT_EQ(stage.duration_s, 10.0);
@@ -260,10 +261,12 @@ TEST(CardDeck, SuccessiveCasesGiveOnlyTheChangedWords) {
   // Case 1 as punched.
   EXPECT_EQ(first.launch.azimuth_rad, deg(100.0));
   EXPECT_EQ(first.vehicle.stages[0].vacuum_thrust_lbf.size(), 3);
-  EXPECT_STREQ(first.case_heading, "");
+  const ground::DeckListingOptions& first_listing = parsed.deck.cases[0].extras.listing;
+  const ground::DeckListingOptions& second_listing = parsed.deck.cases[1].extras.listing;
+  EXPECT_EQ(first_listing.case_heading, "");
   // Case 2: the changed words, everything else from case 1; a re-input table replaces the old one.
-  EXPECT_STREQ(second.title, first.title);
-  EXPECT_STREQ(second.case_heading, "SECOND CASE: AZIMUTH 95, ONE THRUST LEVEL");
+  EXPECT_EQ(second_listing.title, first_listing.title);
+  EXPECT_EQ(second_listing.case_heading, "SECOND CASE: AZIMUTH 95, ONE THRUST LEVEL");
   EXPECT_EQ(second.launch.azimuth_rad, deg(95.0));
   EXPECT_EQ(second.launch.altitude_ft, first.launch.altitude_ft);
   ASSERT_EQ(second.vehicle.stages[0].vacuum_thrust_lbf.size(), 2);
@@ -272,7 +275,7 @@ TEST(CardDeck, SuccessiveCasesGiveOnlyTheChangedWords) {
   // Case 3 starts from case 2.
   EXPECT_EQ(third.launch.liftoff_duration_s, 2.5);
   EXPECT_EQ(third.launch.azimuth_rad, deg(95.0));
-  EXPECT_STREQ(third.case_heading, second.case_heading);
+  EXPECT_EQ(parsed.deck.cases[2].extras.listing.case_heading, second_listing.case_heading);
 }
 
 TEST(CardDeck, SeveralCasesSimulateAsAJsonArray) {
@@ -786,8 +789,19 @@ void expect_same_extras(const DeckExtras& a, const DeckExtras& b) {
   }
 }
 
-// Every field of two missions, as the exact hexadecimal literals mission_cpp_source writes.
-std::string fields_of(const Mission& mission) { return ground::mission_cpp_source(mission, "f", "deck"); }
+// Every field of a mission, as the exact hexadecimal literals mission_cpp_source writes, and the
+// listing data beside it (blocks 1-3 in the source, block 9 appended).
+std::string fields_of(const Mission& mission, const ground::DeckListingOptions& listing) {
+  std::string fields = ground::mission_cpp_source(mission, listing, "f", "deck");
+  for (const auto* every :
+       {&listing.output.initial, &listing.output.intermediate, &listing.output.final_trajectory}) {
+    for (const int n : *every) fields += " " + std::to_string(n);
+  }
+  return fields;
+}
+std::string fields_of(const ground::DeckCase& deck_case) {
+  return fields_of(*deck_case.mission, deck_case.extras.listing);
+}
 
 TEST(CardDeck, ScoutExampleLoadsToTheSameCaseAsItsTomlTwin) {
   Deck cards;
@@ -810,7 +824,7 @@ TEST(CardDeck, ScoutExampleLoadsToTheSameCaseAsItsTomlTwin) {
     card.constraints.deadband_optimization[i] = toml->constraints.deadband_optimization[i];
     card.constraints.deadband_linearization[i] = toml->constraints.deadband_linearization[i];
   }
-  EXPECT_EQ(fields_of(card), fields_of(*toml));
+  EXPECT_EQ(fields_of(card, cards.cases[0].extras.listing), fields_of(*toml, toml_extras.listing));
   expect_same_extras(cards.cases[0].extras, toml_extras);
 }
 
@@ -864,8 +878,8 @@ TEST(CardDeck, RoundTripCardTomlCardIsExact) {
   EXPECT_EQ(cards, read_text(example_path("scout/mission.dat")));
   Deck last;
   ASSERT_TRUE(ground::parse_deck(cards, "again.dat", &last, &error)) << error.to_string();
-  EXPECT_EQ(fields_of(*last.cases[0].mission), fields_of(*first.cases[0].mission));
-  EXPECT_EQ(fields_of(*middle.cases[0].mission), fields_of(*first.cases[0].mission));
+  EXPECT_EQ(fields_of(last.cases[0]), fields_of(first.cases[0]));
+  EXPECT_EQ(fields_of(middle.cases[0]), fields_of(first.cases[0]));
   expect_same_extras(last.cases[0].extras, first.cases[0].extras);
 }
 
@@ -906,8 +920,7 @@ TEST(CardDeck, SuccessiveCasesSurviveConversionToCards) {
   ASSERT_TRUE(again.ok) << again.error.to_string() << "\n" << cards;
   ASSERT_EQ(again.deck.cases.size(), 2u);
   for (std::size_t i = 0; i < 2; ++i) {
-    EXPECT_EQ(fields_of(*again.deck.cases[i].mission), fields_of(*first.deck.cases[i].mission))
-        << "case " << i + 1;
+    EXPECT_EQ(fields_of(again.deck.cases[i]), fields_of(first.deck.cases[i])) << "case " << i + 1;
     expect_same_extras(again.deck.cases[i].extras, first.deck.cases[i].extras);
   }
   // The second case is written as its changes only.

@@ -48,8 +48,9 @@ theta_deg = [90.0, 45.0]
 
 TEST(Sec22Deck, AcceptsMinimalDeckWithManualDefaults) {
   auto mission = ground::make_mission();
+  DeckExtras extras;
   DeckError error;
-  ASSERT_TRUE(ground::parse_toml_deck(kMinimalDeck, "minimal.toml", mission.get(), &error))
+  ASSERT_TRUE(ground::parse_toml_deck(kMinimalDeck, "minimal.toml", mission.get(), &extras, &error))
       << error.to_string();
   EXPECT_EQ(mission->vehicle.sequence.count, 1);
   EXPECT_EQ(mission->vehicle.stages[0].duration_s, 30.0);  // defaults to the last thrust time
@@ -57,10 +58,11 @@ TEST(Sec22Deck, AcceptsMinimalDeckWithManualDefaults) {
   EXPECT_EQ(mission->atmosphere.base_molecular_temperature_R[0], 518.69);
   EXPECT_DOUBLE_EQ(mission->launch.flight_path_angle_rad, 0.5 * kPi);
   EXPECT_EQ(mission->misc.payload_weighting_factor, 1.0);
-  EXPECT_EQ(mission->output.initial[9], 1);
+  EXPECT_EQ(extras.listing.output.initial[9], 1);
   EXPECT_EQ(mission->constraints.count, 1);
   EXPECT_EQ(mission->adjustable.count, 0);
-  EXPECT_STREQ(mission->case_heading, "");
+  EXPECT_EQ(extras.listing.title, "MINIMAL ONE-STAGE CASE");
+  EXPECT_EQ(extras.listing.case_heading, "");
 }
 
 TEST(Sec22Deck, RejectsMissingLaunchBlockNamingBlock20) {
@@ -350,6 +352,15 @@ TEST(Sec22Deck, RejectsPayoffNotFirstNamingBlock8) {
   EXPECT_TRUE(contains(error.message, "payoff"));
 }
 
+// Data block 9 is the listing's (the core never sees it): the deck reader is its one check.
+TEST(Sec22Deck, RejectsOutputFrequencyBelowOneNamingBlock9) {
+  const std::string text = replaced(scout_mission_text(), "final = 1\n", "final = 0\n");
+  const DeckError error = rejected(text);
+  EXPECT_EQ(error.data_block, 9);
+  EXPECT_EQ(error.field, "output_frequency.final");
+  EXPECT_TRUE(contains(error.message, "at least 1"));
+}
+
 TEST(Sec22Deck, RejectsLinearizationTimeAfterBurnoutNamingBlock18) {
   const std::string text = replaced(scout_mission_text(), "300.0, 318.0, 336.0]", "300.0, 318.0, 337.0]");
   const DeckError error = rejected(text);
@@ -435,8 +446,6 @@ void expect_same_table(const Table<N>& a, const Table<N>& b, const std::string& 
 
 // Field by field (memcmp would also compare padding bytes).
 void expect_same_mission(const Mission& a, const Mission& b) {
-  EXPECT_STREQ(a.title, b.title);
-  EXPECT_STREQ(a.case_heading, b.case_heading);
   for (int n = 0; n < 25; ++n) EXPECT_EQ(a.options.ip[n], b.options.ip[n]);
   EXPECT_EQ(a.constants.g0_ft_s2, b.constants.g0_ft_s2);
   EXPECT_EQ(a.vehicle.sequence.count, b.vehicle.sequence.count);
@@ -482,6 +491,7 @@ TEST(Sec22Deck, FailedLoadLeavesPreviouslyLoadedMissionUnchanged) {
       << error.to_string();
   const Mission before = *mission;
   const std::size_t stations = extras.radar_stations.size();
+  const std::string title = extras.listing.title;
 
   // A deck that fails late (in validate_mission), after most of it was read.
   std::string bad = replaced(scout_optimum_text(), "duration_s = 38.0", "duration_s = 38.5");
@@ -495,6 +505,7 @@ TEST(Sec22Deck, FailedLoadLeavesPreviouslyLoadedMissionUnchanged) {
   expect_same_mission(before, *mission);
   EXPECT_EQ(mission->vehicle.payload_lb, 250.0);
   EXPECT_EQ(extras.radar_stations.size(), stations);
+  EXPECT_EQ(extras.listing.title, title);
 }
 
 TEST(Sec22Deck, RejectsMissingFileNamingIt) {

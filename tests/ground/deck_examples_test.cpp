@@ -125,8 +125,8 @@ TEST(Sec22Deck, MissionExampleCarriesTheReferenceMissionData) {
   Loaded loaded = load_example("scout/mission.toml");
   const Mission& m = *loaded.mission;
 
-  EXPECT_STREQ(m.title, "SCOUT-CLASS 4-STAGE, WALLOPS ISLAND TO 300 NMI CIRCULAR ORBIT");
-  EXPECT_STREQ(m.date, "1966-07-01");
+  EXPECT_EQ(loaded.extras.listing.title, "SCOUT-CLASS 4-STAGE, WALLOPS ISLAND TO 300 NMI CIRCULAR ORBIT");
+  EXPECT_EQ(loaded.extras.listing.date, "1966-07-01");
 
   // Block 4.
   EXPECT_EQ(m.options.payoff(), 0);
@@ -196,13 +196,17 @@ TEST(Sec22Deck, MissionExampleCarriesTheReferenceMissionData) {
   const nlohmann::json& tlin = mission["pitch_program_definition"]["tlin_block18"];
   EXPECT_EQ(m.linearization.segment_count, tlin[0].get<int>());
   for (int i = 0; i + 1 < static_cast<int>(tlin.size()); ++i) {
-    EXPECT_EQ(m.linearization.coded_start_times[i], tlin[static_cast<std::size_t>(i) + 1].get<double>());
+    // TLIN codes 100 n + t; the core holds n and t.
+    const double coded = tlin[static_cast<std::size_t>(i) + 1].get<double>();
+    const double stage = std::floor(coded / 100.0);
+    EXPECT_EQ(m.linearization.boundaries[i].stage, static_cast<int>(stage));
+    EXPECT_EQ(m.linearization.boundaries[i].time_from_ignition_s, coded - 100.0 * stage);
   }
   EXPECT_EQ(m.linearization.segment_weights[0], 1.0);
   EXPECT_EQ(m.convergence.initial_payoff_improvement, 15.0);
   EXPECT_EQ(m.convergence.stop_improvement, 0.5);
   EXPECT_EQ(m.convergence.max_forward_trajectories, 30);
-  for (int i = 0; i < kMaxStages; ++i) EXPECT_EQ(m.output.final_trajectory[i], 1);
+  for (int i = 0; i < kMaxStages; ++i) EXPECT_EQ(loaded.extras.listing.output.final_trajectory[i], 1);
 
   // Block 40: the crude initial program, in radians.
   const nlohmann::json& tth = ref["oracle_solution"]["tth_block40_initial_nominal"];

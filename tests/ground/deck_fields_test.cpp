@@ -144,7 +144,8 @@ void expect_every_path_keeps(const std::vector<Edit>& edits) {
   ASSERT_EQ(card_deck.format, ground::DeckFormat::kCards);
   std::string converted;
   ASSERT_TRUE(ground::deck_to_toml(card_deck, 0, &converted, &error)) << error.to_string();
-  const std::string source = ground::mission_cpp_source(*toml_deck.cases[0].mission, "build_case", "test");
+  const std::string source = ground::mission_cpp_source(
+      *toml_deck.cases[0].mission, toml_deck.cases[0].extras.listing, "build_case", "test");
   for (const Edit& edit : edits) {
     const FieldDescription& field = *edit.probe.field;
     const int code = edit.probe.code;

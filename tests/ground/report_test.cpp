@@ -18,6 +18,7 @@
 #include "tolip/orbit/orbit_elements.hpp"
 #include "tolip/trajectory/trajectory.hpp"
 #include "tolip/vehicle/prepared_case.hpp"
+#include "tolip_ground/deck_extras.hpp"
 #include "tolip_ground/report.hpp"
 
 namespace tolip::test {
@@ -32,10 +33,10 @@ int count_lines(const std::string& text) {
 }
 
 // Three points of stage 1 then two of coast 6; the drag of point 1 is NaN (never printed).
-void fill_synthetic(Mission* mission, Trajectory* trajectory) {
-  std::strcpy(mission->title, "SYNTHETIC REPORT TEST");
-  std::strcpy(mission->case_heading, "CASE 1");
-  std::strcpy(mission->date, "01 JUL 1966");
+void fill_synthetic(Mission* mission, ground::DeckListingOptions* listing, Trajectory* trajectory) {
+  listing->title = "SYNTHETIC REPORT TEST";
+  listing->case_heading = "CASE 1";
+  listing->date = "01 JUL 1966";
   mission->launch.launch_space_age_date_days = 2373.625;
   trajectory->status = Status::kOk;
   trajectory->point_count = 5;
@@ -61,10 +62,12 @@ void fill_synthetic(Mission* mission, Trajectory* trajectory) {
 struct SyntheticCase {
   std::unique_ptr<Mission> mission = std::make_unique<Mission>();
   std::unique_ptr<Trajectory> trajectory = std::make_unique<Trajectory>();
+  ground::DeckListingOptions listing;
   SimulationReport report;
   SyntheticCase() {
-    fill_synthetic(mission.get(), trajectory.get());
+    fill_synthetic(mission.get(), &listing, trajectory.get());
     report.mission = mission.get();
+    report.listing = &listing;
     report.trajectory = trajectory.get();
     report.status = Status::kOk;
     report.deck_path = "synthetic.toml";
@@ -269,6 +272,29 @@ struct FlownReference {
     report.status = status;
   }
 };
+
+// Data block 9: every n-th point of a stage, and always its first and last point.
+TEST(Sec22Output, ThinsPointsPerStageKeepingStageEnds) {
+  FlownReference flown;
+  ASSERT_TRUE(ok(flown.status)) << status_name(flown.status);
+  const Trajectory& trajectory = *flown.trajectory;
+  ground::OutputFrequency output;
+  output.final_trajectory.fill(5);
+  using ground::TrajectoryKind;
+  int listed = 0;
+  for (int i = 0; i < trajectory.point_count; ++i) {
+    listed += ground::is_output_point(output, trajectory, i, TrajectoryKind::kFinal) ? 1 : 0;
+  }
+  for (int k = 0; k < trajectory.stage_count; ++k) {
+    EXPECT_TRUE(ground::is_output_point(output, trajectory, trajectory.stages[k].first_point,
+                                        TrajectoryKind::kFinal));
+    EXPECT_TRUE(
+        ground::is_output_point(output, trajectory, trajectory.stages[k].last_point, TrajectoryKind::kFinal));
+  }
+  EXPECT_LT(listed, trajectory.point_count / 3);
+  EXPECT_GT(listed, trajectory.point_count / 6);
+  EXPECT_TRUE(ground::is_output_point(output, trajectory, 0, TrajectoryKind::kIntermediate));  // pad point
+}
 
 TEST(ReportReference, JsonBurnoutAndOrbitMatchTheOracle) {
   FlownReference flown;

@@ -1,5 +1,6 @@
 #include "support/reference_mission.hpp"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -8,6 +9,13 @@
 
 namespace tolip::test {
 namespace {
+
+// The reference deck's TLIN word 100 n + t (manual Sec. 22, data block 18) as the core's boundary:
+// n = floor(TLIN / 100), t = TLIN - 100 n.
+SegmentBoundary boundary_of(double coded) {
+  const double stage = std::floor(coded / 100.0);
+  return SegmentBoundary{static_cast<int>(stage), coded - 100.0 * stage};
+}
 
 template <typename TableT>
 void fill(TableT* table, const nlohmann::json& xs, const nlohmann::json& ys, double y_scale = 1.0) {
@@ -122,7 +130,8 @@ void build_reference_mission(ReferenceProgram program, Mission* m) {
   m->misc.minimum_coast_s = b17["minimum_coast_duration_s"];
   const nlohmann::json& tlin = mis["pitch_program_definition"]["tlin_block18"];
   m->linearization.segment_count = tlin[0];
-  for (size_t i = 1; i < tlin.size(); ++i) m->linearization.coded_start_times[i - 1] = tlin[i];
+  for (size_t i = 1; i < tlin.size(); ++i)
+    m->linearization.boundaries[i - 1] = boundary_of(tlin[i].get<double>());
   for (int i = 0; i < m->linearization.segment_count; ++i) m->linearization.segment_weights[i] = 1.0;
   const nlohmann::json& b28 = mis["block28_convergence"];
   m->convergence.initial_payoff_improvement = b28["initial_payoff_improvement_lb"];

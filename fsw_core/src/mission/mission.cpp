@@ -745,12 +745,23 @@ Status check_adjustable(const AdjustableParameters& a, const Options& options, c
 }
 
 // ---- data blocks 18, 26 -------------------------------------------------------------------------
-// TLIN: the coded times 100 n + t (n a powered stage, t seconds from its ignition) in increasing
-// order, unused entries 0. Between consecutive listed powered stages the coast (when the sequence
-// has one; else the staging instant) lies within one segment, so segment_count = number of times - 1
-// (manual example: 103.0, 182.6, 200.0, 239.2 are three segments).
+// TLIN: the segment boundaries (stage n, t seconds from its ignition; the deck's 100 n + t,
+// decoded by the deck readers) in increasing order, unused entries {0, 0}. Between consecutive
+// listed powered stages the coast (when the sequence has one; else the staging instant) lies within
+// one segment, so segment_count = number of boundaries - 1 (manual example: 103.0, 182.6, 200.0,
+// 239.2 are three segments). A fault names field "boundaries", the entry (index) and its stage; the
+// value is t in s (the ground re-codes it as the deck's 100 n + t in its messages).
 // (Whether t lies within the burn is the deck reader's check: an exchange-ratio run that shortens a
-// burn keeps the deck's coded times.)
+// burn keeps the deck's boundaries.)
+bool is_unused(const SegmentBoundary& b) { return b.stage == 0 && b.time_from_ignition_s == 0.0; }
+
+// In the deck's order of boundaries: a later stage, or a later time in the same stage (the order
+// of the coded values 100 n + t).
+bool listed_after(const SegmentBoundary& b, const SegmentBoundary& previous) {
+  return b.stage > previous.stage ||
+         (b.stage == previous.stage && b.time_from_ignition_s > previous.time_from_ignition_s);
+}
+
 Status check_linearization(const LinearizationData& l, const Options& options, const Vehicle& vehicle,
                            const Check& check) {
   if (l.segment_count > kMaxLinearSegments) {
@@ -758,56 +769,54 @@ Status check_linearization(const LinearizationData& l, const Options& options, c
   }
   TOLIP_CHECK(check.range(l.segment_count, at_least(0), Status::kNegativeCount, 18, 0, "segment_count", ""));
   for (int i = 0; i < kMaxLinearSegments + 1; ++i) {
-    TOLIP_CHECK(check.finite(l.coded_start_times[i], 18, 0, "coded_start_times", "", i));
+    TOLIP_CHECK(check.finite(l.boundaries[i].time_from_ignition_s, 18, 0, "boundaries", "s", i));
   }
   for (int i = 0; i < kMaxLinearSegments; ++i) {
     TOLIP_CHECK(check.finite(l.segment_weights[i], 26, 0, "segment_weights", "", i));
   }
   int times = 0;
-  while (times < kMaxLinearSegments + 1 && l.coded_start_times[times] != 0.0) ++times;
+  while (times < kMaxLinearSegments + 1 && !is_unused(l.boundaries[times])) ++times;
   for (int i = times; i < kMaxLinearSegments + 1; ++i) {
-    if (l.coded_start_times[i] != 0.0) {
-      return check.fail(Status::kCodedTimeAfterUnusedEntry, 18, 0, "coded_start_times", i,
-                        l.coded_start_times[i], "", exactly(0.0), "0 after the first unused entry");
+    const SegmentBoundary& b = l.boundaries[i];
+    if (!is_unused(b)) {
+      return check.fail(Status::kCodedTimeAfterUnusedEntry, 18, b.stage, "boundaries", i,
+                        b.time_from_ignition_s, "s", ValueRange{}, "0 after the first unused entry");
     }
   }
   for (int i = 0; i < times; ++i) {
-    const double coded = l.coded_start_times[i];
-    const double stage = std::floor(coded / 100.0);
-    const int code =
-        stage >= 1.0 && stage <= static_cast<double>(kMaxPoweredStages) ? static_cast<int>(stage) : 0;
+    const SegmentBoundary& b = l.boundaries[i];
+    const int code = b.stage >= 1 && b.stage <= kMaxPoweredStages ? b.stage : 0;
     if (code == 0 || !vehicle.stages[stage_index(code)].in_sequence) {
-      return check.fail(Status::kCodedTimeStageInvalid, 18, 0, "coded_start_times", i, coded, "",
+      return check.fail(Status::kCodedTimeStageInvalid, 18, 0, "boundaries", i, b.time_from_ignition_s, "s",
                         ValueRange{}, "100 n + t with n a powered stage of the sequence");
     }
     // Segments belong to the stages that fly the pitch program (IP(9)): a spun stage holds its
     // data block 17 attitudes.
     if (!options.stage_is_steered(code)) {
-      return check.fail(Status::kCodedTimeInSpunStage, 18, code, "coded_start_times", i, coded, "",
+      return check.fail(Status::kCodedTimeInSpunStage, 18, code, "boundaries", i, b.time_from_ignition_s, "s",
                         ValueRange{},
                         "100 n + t with n a stage that flies the pitch program (IP(9) spins this one)");
     }
-    if (i > 0 && !(coded > l.coded_start_times[i - 1])) {
-      return check.fail(Status::kTableNotMonotonic, 18, 0, "coded_start_times", i, coded, "",
-                        above(l.coded_start_times[i - 1]), "strictly increasing");
+    if (i == 0) continue;
+    const SegmentBoundary& previous = l.boundaries[i - 1];
+    if (!listed_after(b, previous)) {
+      return check.fail(Status::kTableNotMonotonic, 18, code, "boundaries", i, b.time_from_ignition_s, "s",
+                        ValueRange{}, "strictly increasing");
     }
     // With stage n+1 directly after stage n (no coast between them), 100 n + (its burn) and
     // 100 (n+1) + 0 are the same instant: a segment of no length.
-    if (i > 0) {
-      const int previous_code = static_cast<int>(std::floor(l.coded_start_times[i - 1] / 100.0));
-      if (previous_code != code && !(stage_ignition_s(vehicle, code) + (coded - 100.0 * code) >
-                                     stage_ignition_s(vehicle, previous_code) +
-                                         (l.coded_start_times[i - 1] - 100.0 * previous_code))) {
-        return check.fail(
-            Status::kTableNotMonotonic, 18, 0, "coded_start_times", i, coded, "", ValueRange{},
-            "later in flight than the coded time before it (a stage that ignites at the burnout "
-            "of the one before, with no coast between, starts at that burnout: list one of the two)");
-      }
+    if (previous.stage != code &&
+        !(stage_ignition_s(vehicle, code) + b.time_from_ignition_s >
+          stage_ignition_s(vehicle, previous.stage) + previous.time_from_ignition_s)) {
+      return check.fail(
+          Status::kTableNotMonotonic, 18, code, "boundaries", i, b.time_from_ignition_s, "s", ValueRange{},
+          "later in flight than the coded time before it (a stage that ignites at the burnout "
+          "of the one before, with no coast between, starts at that burnout: list one of the two)");
     }
   }
   // IP(7) = 1 "requires input of times of beginning of each linear segment in Data Block 18", and
   // Sec. 22 "times ... at ignition and burnout of all non-spun powered stages": every stage that
-  // flies the pitch program (stages 4 and 5 too when IP(9) steers them) has its coded times, or
+  // flies the pitch program (stages 4 and 5 too when IP(9) steers them) has its boundaries, or
   // the linearized trajectory would fly it at the last break's value.
   if (options.linearization()) {
     TOLIP_CHECK(check.range(l.segment_count, at_least(1), Status::kLinearizationWithoutSegments, 18, 0,
@@ -815,11 +824,10 @@ Status check_linearization(const LinearizationData& l, const Options& options, c
     for (int code = 1; code <= kMaxPoweredStages; ++code) {
       if (!vehicle.stages[stage_index(code)].in_sequence || !options.stage_is_steered(code)) continue;
       bool listed = false;
-      for (int i = 0; i < times; ++i) listed = listed || std::floor(l.coded_start_times[i] / 100.0) == code;
+      for (int i = 0; i < times; ++i) listed = listed || l.boundaries[i].stage == code;
       if (!listed) {
         return check.fail(
-            Status::kSteeredStageWithoutSegments, 18, code, "coded_start_times", -1, 100.0 * code, "",
-            ValueRange{},
+            Status::kSteeredStageWithoutSegments, 18, code, "boundaries", -1, 0.0, "s", ValueRange{},
             "coded times 100 n + t in every stage that flies the pitch program (its ignition "
             "100 n and burnout 100 n + duration), IP(9) counting stages 4 and 5 when continuous");
       }
@@ -848,17 +856,6 @@ Status check_convergence(const ConvergenceData& c, const Check& check) {
       check.range(c.max_forward_trajectories, at_least(1), bad, 28, 0, "max_forward_trajectories", ""));
   TOLIP_CHECK(check.range(c.max_linearization_iterations, at_least(0), bad, 28, 0,
                           "max_linearization_iterations", ""));
-  return Status::kOk;
-}
-
-// ---- data block 9 -------------------------------------------------------------------------------
-Status check_output(const OutputFrequency& o, const Check& check) {
-  const Status bad = Status::kOutputFrequencyNotPositive;
-  for (int i = 0; i < kMaxStages; ++i) {
-    TOLIP_CHECK(check.range(o.initial[i], at_least(1), bad, 9, i + 1, "initial", "", i));
-    TOLIP_CHECK(check.range(o.intermediate[i], at_least(1), bad, 9, i + 1, "intermediate", "", i));
-    TOLIP_CHECK(check.range(o.final_trajectory[i], at_least(1), bad, 9, i + 1, "final_trajectory", "", i));
-  }
   return Status::kOk;
 }
 
@@ -946,7 +943,6 @@ Status validate_mission(const Mission& mission, MissionFault* fault) {
   TOLIP_CHECK(check_adjustable(mission.adjustable, mission.options, mission.vehicle, check));
   TOLIP_CHECK(check_linearization(mission.linearization, mission.options, mission.vehicle, check));
   TOLIP_CHECK(check_convergence(mission.convergence, check));
-  TOLIP_CHECK(check_output(mission.output, check));
 
   // Data block 40: the initial-nominal pitch program; theta is an attitude, within one turn.
   const PitchTable& pitch = mission.pitch_program_rad;

@@ -22,15 +22,18 @@ Status append_constraint(const ConstraintCode& code, double desired, double dead
   return Status::kOk;
 }
 
+double counted_correction(bool inequality, double correction) {
+  return (inequality && correction > 0.0) ? 0.0 : correction;
+}
+
 double constraint_correction(const ConstraintSet& set, int i, double achieved) {
-  const double c = -constraint_deviation(set.codes[i], achieved, set.desired[i]);
-  return (set.inequality[i] && c > 0.0) ? 0.0 : c;
+  return counted_correction(set.inequality[i], -constraint_deviation(set.codes[i], achieved, set.desired[i]));
 }
 
 bool constraint_met(const ConstraintCode& code, bool inequality, double achieved, double desired,
                     double deadband) {
-  const double c = -constraint_deviation(code, achieved, desired);
-  return std::fabs((inequality && c > 0.0) ? 0.0 : c) <= deadband;
+  return std::fabs(counted_correction(inequality, -constraint_deviation(code, achieved, desired))) <=
+         deadband;
 }
 
 bool within_deadbands(const ConstraintSet& set, int first, const double achieved[kMaxConstraints]) {

@@ -74,7 +74,8 @@ double stage_start_s(const PreparedCase& prepared, int code) {
   return -1.0;
 }
 
-// Data block 18's coded times (100 n + t) moved to the nearest integration point of stage n.
+// Data block 18's boundaries (stage n, t from its ignition) moved to the nearest integration point
+// of stage n.
 Status break_times(const Mission& mission, const PreparedCase& prepared, const Trajectory& t,
                    LinearProgram* p) {
   const LinearizationData& data = mission.linearization;
@@ -83,11 +84,10 @@ Status break_times(const Mission& mission, const PreparedCase& prepared, const T
   }
   p->segment_count = data.segment_count;
   for (int b = 0; b <= data.segment_count; ++b) {
-    const double coded = data.coded_start_times[b];
-    const int code = static_cast<int>(std::floor(coded / 100.0));
+    const int code = data.boundaries[b].stage;
     const double start = stage_start_s(prepared, code);
     if (start < 0.0) return Status::kValueOutOfRange;
-    const double wanted = start + (coded - 100.0 * code);
+    const double wanted = start + data.boundaries[b].time_from_ignition_s;
     double best = wanted;
     double best_error = 1e300;
     for (int k = 1; k < t.point_count; ++k) {
@@ -183,6 +183,87 @@ bool solve_in_place(KktMatrix* a, KktVector* b, KktVector* x) {
 
 // ---- eq. 6-22: the constrained least-squares fit ------------------------------------------------
 
+// Relative residual an equality row of the solved system (a fixed break value, a rate repair, a
+// linearized constraint) may keep: 1e-8 of (1 + |right-hand side|) lies well above the round-off
+// of the double-precision elimination and well below a repair or constraint that was not met, so
+// it tells a nearly singular system (more equalities than the program can meet) from a solved one.
+constexpr double kEqualityResidualTolerance = 1e-8;
+
+// The least-squares rows of the fit (eqs. 6-6..6-10, hat functions over the segments) and the
+// linearized constraint rows' sums over the points (eq. 6-2).
+void assemble_fit(const LinearConstraints& c, const BackwardRun& backward, const Trajectory& nominal,
+                  const ControlProgram& nominal_program, const ControlProgram& optimum,
+                  const LinearProgram& p, int n, KktMatrix* kkt, KktVector* rhs) {
+  for (int k = 0; k < nominal.point_count; ++k) {
+    double f = 0.0;
+    const int s = segment_of(p, nominal.points[k].time_s, &f);
+    const double w = backward.quadrature_weight_s[k];
+    if (s < 0 || !(w > 0.0)) continue;
+    // Hat-function row: theta_k = (1 - f) theta_s + f theta_(s+1).
+    const double h0 = 1.0 - f;
+    const double h1 = f;
+    const double weight = w * p.eta[s];
+    (*kkt)(s, s) += weight * h0 * h0;
+    (*kkt)(s, s + 1) += weight * h0 * h1;
+    (*kkt)(s + 1, s) += weight * h0 * h1;
+    (*kkt)(s + 1, s + 1) += weight * h1 * h1;
+    (*rhs)(s) += weight * h0 * optimum.theta_rad[k];
+    (*rhs)(s + 1) += weight * h1 * optimum.theta_rad[k];
+    for (int j = 0; j < c.count; ++j) {
+      const double g = backward.theta_gradient[k](j) / c.deadband[j];
+      (*kkt)(n + j, s) += g * h0;
+      (*kkt)(n + j, s + 1) += g * h1;
+      (*rhs)(n + j) += g * nominal_program.theta_rad[k];
+    }
+  }
+}
+
+// The constraint rows' corrections and payload column, mirrored into the multiplier columns.
+void add_constraint_rows(const LinearConstraints& c, const BackwardRun& backward, const double achieved[],
+                         int breaks, int n, KktMatrix* kkt, KktVector* rhs) {
+  for (int j = 0; j < c.count; ++j) {
+    (*rhs)(n + j) += constraint_correction(c, j, achieved[j]) / c.deadband[j];
+    if (c.payload_free) (*kkt)(n + j, breaks) = backward.payload(j) / c.deadband[j];
+    for (int b = 0; b < n; ++b) (*kkt)(b, n + j) = (*kkt)(n + j, b);
+  }
+}
+
+// Rate repairs: one more multiplier row each (a merge of two segments, or a segment at its rate).
+void add_rate_repair_rows(const LinearProgram& p, int n, int first_row, KktMatrix* kkt, KktVector* rhs) {
+  for (int r = 0; r < p.rate_repair_count; ++r) {
+    const int row = first_row + r;
+    const int seg = p.rate_segment[r];
+    if (p.rate_merge[r]) {
+      const double d0 = p.break_time_s[seg + 1] - p.break_time_s[seg];
+      const double d1 = p.break_time_s[seg + 2] - p.break_time_s[seg + 1];
+      const double f = d0 / (d0 + d1);
+      (*kkt)(row, seg) = -(1.0 - f);
+      (*kkt)(row, seg + 1) = 1.0;
+      (*kkt)(row, seg + 2) = -f;
+      (*rhs)(row) = 0.0;
+    } else {
+      (*kkt)(row, seg) = -1.0;
+      (*kkt)(row, seg + 1) = 1.0;
+      (*rhs)(row) = p.rate_value_rad_s[r] * (p.break_time_s[seg + 1] - p.break_time_s[seg]);
+    }
+    for (int b = 0; b < n; ++b) (*kkt)(b, row) = (*kkt)(row, b);
+  }
+}
+
+// Whether the solution meets every equality row (fixed values, rate repairs, constraints): a nearly
+// singular system returns garbage rather than failing.
+bool equalities_met(const KktMatrix& kkt, const KktVector& rhs, const KktVector& x, const LinearProgram& p,
+                    int breaks, int n, int rows) {
+  for (int i = 0; i < rows; ++i) {
+    const bool equality = i >= n || (i < breaks && p.fixed[i]);
+    if (!equality) continue;
+    double residual = rhs(i);
+    for (int col = 0; col < rows; ++col) residual -= kkt(i, col) * x(col);
+    if (std::fabs(residual) > kEqualityResidualTolerance * (1.0 + std::fabs(rhs(i)))) return false;
+  }
+  return true;
+}
+
 Status solve_program(const LinearConstraints& c, const BackwardRun& backward, const Trajectory& nominal,
                      const ControlProgram& nominal_program, const ControlProgram& optimum,
                      const double achieved[], LinearizationSystem* system, LinearProgram* p,
@@ -194,52 +275,9 @@ Status solve_program(const LinearConstraints& c, const BackwardRun& backward, co
   KktVector& rhs = system->rhs;
   kkt.setZero();
   rhs.setZero();
-  for (int k = 0; k < nominal.point_count; ++k) {
-    double f = 0.0;
-    const int s = segment_of(*p, nominal.points[k].time_s, &f);
-    const double w = backward.quadrature_weight_s[k];
-    if (s < 0 || !(w > 0.0)) continue;
-    // Hat-function row: theta_k = (1 - f) theta_s + f theta_(s+1).
-    const double h0 = 1.0 - f;
-    const double h1 = f;
-    const double weight = w * p->eta[s];
-    kkt(s, s) += weight * h0 * h0;
-    kkt(s, s + 1) += weight * h0 * h1;
-    kkt(s + 1, s) += weight * h0 * h1;
-    kkt(s + 1, s + 1) += weight * h1 * h1;
-    rhs(s) += weight * h0 * optimum.theta_rad[k];
-    rhs(s + 1) += weight * h1 * optimum.theta_rad[k];
-    for (int j = 0; j < c.count; ++j) {
-      const double g = backward.theta_gradient[k](j) / c.deadband[j];
-      kkt(n + j, s) += g * h0;
-      kkt(n + j, s + 1) += g * h1;
-      rhs(n + j) += g * nominal_program.theta_rad[k];
-    }
-  }
-  for (int j = 0; j < c.count; ++j) {
-    rhs(n + j) += constraint_correction(c, j, achieved[j]) / c.deadband[j];
-    if (c.payload_free) kkt(n + j, breaks) = backward.payload(j) / c.deadband[j];
-    for (int b = 0; b < n; ++b) kkt(b, n + j) = kkt(n + j, b);
-  }
-  // Rate repairs: one more multiplier row each.
-  for (int r = 0; r < p->rate_repair_count; ++r) {
-    const int row = n + c.count + r;
-    const int seg = p->rate_segment[r];
-    if (p->rate_merge[r]) {
-      const double d0 = p->break_time_s[seg + 1] - p->break_time_s[seg];
-      const double d1 = p->break_time_s[seg + 2] - p->break_time_s[seg + 1];
-      const double f = d0 / (d0 + d1);
-      kkt(row, seg) = -(1.0 - f);
-      kkt(row, seg + 1) = 1.0;
-      kkt(row, seg + 2) = -f;
-      rhs(row) = 0.0;
-    } else {
-      kkt(row, seg) = -1.0;
-      kkt(row, seg + 1) = 1.0;
-      rhs(row) = p->rate_value_rad_s[r] * (p->break_time_s[seg + 1] - p->break_time_s[seg]);
-    }
-    for (int b = 0; b < n; ++b) kkt(b, row) = kkt(row, b);
-  }
+  assemble_fit(c, backward, nominal, nominal_program, optimum, *p, n, &kkt, &rhs);
+  add_constraint_rows(c, backward, achieved, breaks, n, &kkt, &rhs);
+  add_rate_repair_rows(*p, n, n + c.count, &kkt, &rhs);
   // Fixed break values (eq. 6-16): their rows become theta_b = value.
   for (int b = 0; b < breaks; ++b) {
     if (!p->fixed[b]) continue;
@@ -247,22 +285,14 @@ Status solve_program(const LinearConstraints& c, const BackwardRun& backward, co
     kkt(b, b) = 1.0;
     rhs(b) = p->theta_rad[b];
   }
-  for (int i = n + c.count + p->rate_repair_count; i < kKktSize; ++i) kkt(i, i) = 1.0;
-  // The equality rows (fixed values, rate repairs) are checked on the solution: a nearly singular
-  // system (more equalities than the program can meet) returns garbage rather than failing.
+  const int rows = n + c.count + p->rate_repair_count;
+  for (int i = rows; i < kKktSize; ++i) kkt(i, i) = 1.0;
   system->eliminated = kkt;
   KktVector eliminated_rhs = rhs;
   KktVector x = KktVector::Zero();
   if (!solve_in_place(&system->eliminated, &eliminated_rhs, &x)) return Status::kSteeringMatrixSingular;
   if (!x.allFinite()) return Status::kNonFiniteState;
-  const int rows = n + c.count + p->rate_repair_count;
-  for (int i = 0; i < rows; ++i) {
-    const bool equality = i >= n || (i < breaks && p->fixed[i]);
-    if (!equality) continue;
-    double residual = rhs(i);
-    for (int col = 0; col < rows; ++col) residual -= kkt(i, col) * x(col);
-    if (std::fabs(residual) > 1e-8 * (1.0 + std::fabs(rhs(i)))) return Status::kSteeringMatrixSingular;
-  }
+  if (!equalities_met(kkt, rhs, x, *p, breaks, n, rows)) return Status::kSteeringMatrixSingular;
   for (int b = 0; b < breaks; ++b) p->theta_rad[b] = x(b);
   *payload_change_lb = c.payload_free ? x(breaks) : 0.0;
   return Status::kOk;

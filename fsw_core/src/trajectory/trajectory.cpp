@@ -40,6 +40,20 @@ class Flight {
 
  private:
   Status fly_stage(int slot, StateVector* state);
+  // The steps of fly_stage: one integration step from point `i` of the stage, the stage's end point.
+  struct StageFlight {
+    StageContext stage;
+    const StageTimeline* line = nullptr;
+    int slot = 0;
+    bool body_dynamics = false;
+    double last_theta_step_rad = 0.0;  // theta_end - theta_start of the last step flown
+    DerivativeHistory<StateVector> history;
+    Evaluation eval;
+  };
+  Status fly_step(StageFlight* flight, int i, StateVector* state);
+  void integrate_step(const StageFlight& flight, const StepCommand& command, bool adams, double t,
+                      StateVector* state) const;
+  Status record_stage_end(StageFlight* flight, StageEvent* event, StateVector* state);
   void set_weights_after_jettison(int ended);
   void latch_segments(const StageContext& stage, double t, const StateVector& state);
   StepCommand command_at(const StageContext& stage, int point, double t, double step_s,
@@ -278,89 +292,109 @@ Status Flight::record_pad_point() {
 }
 
 Status Flight::fly_stage(int slot, StateVector* state) {
+  StageFlight flight;
   const StageTimeline& line = prepared_.timeline[slot];
-  StageContext stage = make_stage_context(mission_, prepared_, line);
-  stage.perturbation = inputs_.perturbation;
+  flight.line = &line;
+  flight.slot = slot;
+  flight.stage = make_stage_context(mission_, prepared_, line);
+  flight.stage.perturbation = inputs_.perturbation;
   EvaluationScratch scratch;
-  stage.scratch = &scratch;
-  const bool powered = stage.thrust != nullptr;
+  flight.stage.scratch = &scratch;
+  // Body dynamics act in stage 1 and the coast after it only (Sec. 11).
+  flight.body_dynamics = inputs_.body_dynamics && (line.code == 1 || line.code == 6);
 
   StageEvent& event = trajectory_->stages[trajectory_->stage_count];
   event.code = line.code;
   event.first_point = trajectory_->point_count;
   event.completed = false;
-
-  // Body dynamics act in stage 1 and the coast after it only (Sec. 11).
-  const bool body_dynamics = inputs_.body_dynamics && (line.code == 1 || line.code == 6);
-  double last_theta_step_rad = 0.0;  // theta_end - theta_start of the last step flown
-
-  DerivativeHistory<StateVector> history;
-  Evaluation eval;
   for (int i = 0; i < line.steps; ++i) {
-    const double t = line.start_s + line.first_step_stage_time_s + i * line.step_s;
-    const int point = trajectory_->point_count;
-    if (point == inputs_.injection_point) *state += inputs_.injection;
-    if (inputs_.feedback != nullptr) inputs_.feedback->at_point(point, *state, inputs_.live_program);
-    StepCommand command = command_at(stage, point, t, line.step_s, *state);
-    perturb_command(stage, t, &command);
-    command.body_dynamics = body_dynamics;
-    const StateTrig trig(*state);
-    evaluate_flight(mission_, prepared_, stage, command, t, *state, trig, 0.0, &eval);
-    if (!eval.derivative.allFinite()) return Status::kNonFiniteState;  // nothing NaN is stored
-    Status status = record(stage, t, *state, trig, command, eval);
+    const Status status = fly_step(&flight, i, state);
     if (!ok(status)) return status;
-    if (eval.altitude_ft < kImpactAltitudeFt) return Status::kAltitudeBelowSurface;
-    if (!ok(eval.body_status)) return eval.body_status;
-    last_theta_step_rad =
-        (command.mode == AttitudeMode::kLinear) ? command.theta_end_rad - command.theta_start_rad : 0.0;
-
-    StepRecord& step = trajectory_->steps[trajectory_->step_count++];
-    step.point = point;
-    step.stage_slot = slot;
-    step.adams = !powered && i >= kRkadStartSteps;
-    // Near the vertical a deck without the heading hold (the manual's decks) integrates the step in
-    // regular coordinates; with the hold the steps are the reference oracle's, bit for bit.
-    command.vertical_flight =
-        !step.adams && !(mission_.launch.heading_hold_until_s > 0.0) && starts_near_vertical(*state);
-    const double heading_reference_rad = (*state)[kStatePsi];
-    step.command = command;
-
-    const auto derivative = [&](double time, const StateVector& x) {
-      Evaluation e;
-      evaluate_flight(mission_, prepared_, stage, command, time, x, 0.0, &e);
-      return e.derivative;
-    };
-    if (command.vertical_flight) {
-      const auto vertical = [&](double time, const StateVector& y) {
-        const StateVector x = from_vertical_coordinates(y, heading_reference_rad);
-        return vertical_derivative(x, derivative(time, x));
-      };
-      const StateVector y1 = runge_kutta4_step(vertical, t, to_vertical_coordinates(*state),
-                                               vertical_derivative(*state, eval.derivative), line.step_s);
-      *state = from_vertical_coordinates(y1, heading_reference_rad);
-    } else if (!step.adams) {
-      *state = runge_kutta4_step(derivative, t, *state, eval.derivative, line.step_s);
-    } else {
-      *state = adams_bashforth4_step(*state, eval.derivative, history.back(0), history.back(1),
-                                     history.back(2), line.step_s);
-    }
-    history.push(eval.derivative);
-
-    if (!state->allFinite()) return Status::kNonFiniteState;
   }
+  return record_stage_end(&flight, &event, state);
+}
 
-  // The stage's end point, with its burnout values (the next stage records the same state again
-  // with its own weight and thrust). Its attitude is the one a step starting there would fly.
+// Records point `i` of the stage (its command and evaluation) and integrates the step from it.
+Status Flight::fly_step(StageFlight* flight, int i, StateVector* state) {
+  const StageTimeline& line = *flight->line;
+  const StageContext& stage = flight->stage;
+  Evaluation& eval = flight->eval;
+  const double t = line.start_s + line.first_step_stage_time_s + i * line.step_s;
+  const int point = trajectory_->point_count;
+  if (point == inputs_.injection_point) *state += inputs_.injection;
+  if (inputs_.feedback != nullptr) inputs_.feedback->at_point(point, *state, inputs_.live_program);
+  StepCommand command = command_at(stage, point, t, line.step_s, *state);
+  perturb_command(stage, t, &command);
+  command.body_dynamics = flight->body_dynamics;
+  const StateTrig trig(*state);
+  evaluate_flight(mission_, prepared_, stage, command, t, *state, trig, 0.0, &eval);
+  if (!eval.derivative.allFinite()) return Status::kNonFiniteState;  // nothing NaN is stored
+  const Status status = record(stage, t, *state, trig, command, eval);
+  if (!ok(status)) return status;
+  if (eval.altitude_ft < kImpactAltitudeFt) return Status::kAltitudeBelowSurface;
+  if (!ok(eval.body_status)) return eval.body_status;
+  flight->last_theta_step_rad =
+      (command.mode == AttitudeMode::kLinear) ? command.theta_end_rad - command.theta_start_rad : 0.0;
+
+  StepRecord& step = trajectory_->steps[trajectory_->step_count++];
+  step.point = point;
+  step.stage_slot = flight->slot;
+  step.adams = stage.thrust == nullptr && i >= kRkadStartSteps;
+  // Near the vertical a deck without the heading hold (the manual's decks) integrates the step in
+  // regular coordinates; with the hold the steps are the reference oracle's, bit for bit.
+  command.vertical_flight =
+      !step.adams && !(mission_.launch.heading_hold_until_s > 0.0) && starts_near_vertical(*state);
+  step.command = command;
+  integrate_step(*flight, command, step.adams, t, state);
+  flight->history.push(eval.derivative);
+  if (!state->allFinite()) return Status::kNonFiniteState;
+  return Status::kOk;
+}
+
+// RK4 (in vertical-flight coordinates near the vertical) or, in coasts after the start steps,
+// Adams-Bashforth from the derivative history.
+void Flight::integrate_step(const StageFlight& flight, const StepCommand& command, bool adams, double t,
+                            StateVector* state) const {
+  const StageTimeline& line = *flight.line;
+  const StateVector& start_derivative = flight.eval.derivative;
+  const double heading_reference_rad = (*state)[kStatePsi];
+  const auto derivative = [&](double time, const StateVector& x) {
+    Evaluation e;
+    evaluate_flight(mission_, prepared_, flight.stage, command, time, x, 0.0, &e);
+    return e.derivative;
+  };
+  if (command.vertical_flight) {
+    const auto vertical = [&](double time, const StateVector& y) {
+      const StateVector x = from_vertical_coordinates(y, heading_reference_rad);
+      return vertical_derivative(x, derivative(time, x));
+    };
+    const StateVector y1 = runge_kutta4_step(vertical, t, to_vertical_coordinates(*state),
+                                             vertical_derivative(*state, start_derivative), line.step_s);
+    *state = from_vertical_coordinates(y1, heading_reference_rad);
+  } else if (!adams) {
+    *state = runge_kutta4_step(derivative, t, *state, start_derivative, line.step_s);
+  } else {
+    *state = adams_bashforth4_step(*state, start_derivative, flight.history.back(0), flight.history.back(1),
+                                   flight.history.back(2), line.step_s);
+  }
+}
+
+// The stage's end point, with its burnout values (the next stage records the same state again
+// with its own weight and thrust). Its attitude is the one a step starting there would fly.
+Status Flight::record_stage_end(StageFlight* flight, StageEvent* event, StateVector* state) {
+  const StageTimeline& line = *flight->line;
+  const StageContext& stage = flight->stage;
+  Evaluation& eval = flight->eval;
   const double t_end = line.start_s + line.duration_s;
   // With body dynamics the end point keeps the rate of the last step flown, so its steady-state
   // attitude is the one the last step ended with.
   StepCommand command = command_at(stage, trajectory_->point_count, t_end, line.step_s, *state);
   perturb_command(stage, t_end, &command);
   if (command.mode == AttitudeMode::kLinear) {
-    command.theta_end_rad =
-        body_dynamics ? command.theta_start_rad + last_theta_step_rad : command.theta_start_rad;
+    command.theta_end_rad = flight->body_dynamics ? command.theta_start_rad + flight->last_theta_step_rad
+                                                  : command.theta_start_rad;
   }
-  command.body_dynamics = body_dynamics;
+  command.body_dynamics = flight->body_dynamics;
   const StateTrig trig(*state);
   evaluate_flight(mission_, prepared_, stage, command, t_end, *state, trig, 0.0, &eval);
   if (!eval.derivative.allFinite()) return Status::kNonFiniteState;
@@ -368,9 +402,9 @@ Status Flight::fly_stage(int slot, StateVector* state) {
   if (!ok(status)) return status;
   if (eval.altitude_ft < kImpactAltitudeFt) return Status::kAltitudeBelowSurface;
   if (!ok(eval.body_status)) return eval.body_status;
-  event.last_point = trajectory_->point_count - 1;
-  event.burnout_weight_lb = eval.weight_lb;
-  event.completed = true;
+  event->last_point = trajectory_->point_count - 1;
+  event->burnout_weight_lb = eval.weight_lb;
+  event->completed = true;
   ++trajectory_->stage_count;
   return Status::kOk;
 }
@@ -464,23 +498,6 @@ int trajectory_point_count(const PreparedCase& prepared) {
   int count = 1;
   for (int k = 0; k < prepared.stage_count; ++k) count += prepared.timeline[k].steps + 1;
   return count;
-}
-
-bool is_output_point(const Mission& mission, const Trajectory& trajectory, int index, TrajectoryKind kind) {
-  for (int k = 0; k < trajectory.stage_count; ++k) {
-    const StageEvent& event = trajectory.stages[k];
-    if (index < event.first_point || index > event.last_point) continue;
-    if (index == event.first_point || index == event.last_point) return true;
-    const int slot = stage_index(event.code);
-    int every = 1;
-    switch (kind) {
-      case TrajectoryKind::kInitial: every = mission.output.initial[slot]; break;
-      case TrajectoryKind::kIntermediate: every = mission.output.intermediate[slot]; break;
-      case TrajectoryKind::kFinal: every = mission.output.final_trajectory[slot]; break;
-    }
-    return every <= 1 || (index - event.first_point) % every == 0;
-  }
-  return index == 0;  // the pad point
 }
 
 }  // namespace tolip

@@ -120,9 +120,21 @@ struct DispersionCase {
   DeckTable wind_azimuth_rad;            // codes 36-38, block 54: altitude ft -> azimuth of the wind vector
 };
 
-// How the deck lays out the printed listing (data block 10 words 8 and 9): listing concerns, kept
-// beside the core's Mission and never in it.
+// Data block 9: list every n-th computed point, per stage (index stage_index(code)), for the
+// three kinds of trajectory.
+struct OutputFrequency {
+  std::array<int, kMaxStages> initial = {1, 1, 1, 1, 1, 1, 1, 1, 1, 1};
+  std::array<int, kMaxStages> intermediate = {1, 1, 1, 1, 1, 1, 1, 1, 1, 1};
+  std::array<int, kMaxStages> final_trajectory = {1, 1, 1, 1, 1, 1, 1, 1, 1, 1};
+};
+
+// What the printed listing shows and how it is laid out (data blocks 1-3, 9 and data block 10
+// words 8 and 9): listing concerns, kept beside the core's Mission and never in it.
 struct DeckListingOptions {
+  std::string title;                           // block 1 main heading (12A6, at most 72 characters)
+  std::string case_heading;                    // block 2 (12A6)
+  std::string date;                            // block 3 (2A6, at most 12 characters)
+  OutputFrequency output;                      // block 9
   double lines_per_page = 54.0;                // CT1(8); the pager accepts 20-1000 (else 54)
   double deg_to_rad_as_printed = 0.017453292;  // CT1(9), echoed only: the core uses the exact pi/180
   // [stage.N] name (TOML only, not a manual word): printed under the listing's stage events.

@@ -19,7 +19,7 @@ void write_dispersion_pages(Pager& pager, const DispersionStep& step);
 }  // namespace report_detail
 
 // The dispersion pages alone, numbered from page 1 with the case's titles (`tolip dispersions`).
-void write_dispersion_listing(std::ostream& out, const Mission& mission, const DeckListingOptions* listing,
+void write_dispersion_listing(std::ostream& out, const DeckListingOptions* listing,
                               const DispersionStep& step);
 
 nlohmann::ordered_json dispersion_json(const DispersionStep& step);

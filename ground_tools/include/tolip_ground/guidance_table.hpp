@@ -46,7 +46,7 @@ struct TableBuildOptions {
 
 // The default mission identifier: the case title (data block 1) with runs of blanks collapsed,
 // cut to 32 characters, non-printable characters replaced by '?'; "TOLIP CASE" when empty.
-std::string default_mission_id(const Mission& mission);
+std::string default_mission_id(const DeckListingOptions& listing);
 
 // Builds the table from a validated Mission, its DeckExtras and PreparedCase, with the segments of
 // `linearized` (null: data block 40, see above). With a linearized program, `mission` and

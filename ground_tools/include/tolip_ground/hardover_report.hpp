@@ -28,9 +28,8 @@ nlohmann::ordered_json hardover_json(const HardoverStep& step);
 void write_hardover_csv(std::ostream& out, const HardoverStep& step);
 
 // `tolip hardover`: the pages alone, and the JSON document of a case (as radar_document).
-void write_hardover_listing(std::ostream& out, const Mission& mission, const DeckListingOptions* listing,
-                            const HardoverStep& step);
-nlohmann::ordered_json hardover_document(const Mission& mission, const std::string& deck_path,
+void write_hardover_listing(std::ostream& out, const DeckListingOptions* listing, const HardoverStep& step);
+nlohmann::ordered_json hardover_document(const DeckListingOptions& listing, const std::string& deck_path,
                                          Status trajectory_status, const HardoverStep& step);
 
 }  // namespace tolip::ground

@@ -18,8 +18,7 @@ void write_impact_pages(Pager& pager, const ImpactStep& step);
 }  // namespace report_detail
 
 // The impact pages on their own (`tolip impact`), with the page titles of the case.
-void write_impact_listing(std::ostream& out, const Mission& mission, const DeckListingOptions* listing,
-                          const ImpactStep& step);
+void write_impact_listing(std::ostream& out, const DeckListingOptions* listing, const ImpactStep& step);
 
 nlohmann::ordered_json impact_json(const ImpactStep& step);
 // Puts impact_json(step) into a simulate/optimize document as member "impact", before the (long)

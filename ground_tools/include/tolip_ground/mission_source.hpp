@@ -10,13 +10,16 @@
 #include <string>
 
 #include "tolip/mission/mission.hpp"
+#include "tolip_ground/deck_extras.hpp"
 
 namespace tolip::ground {
 
 // Source defining `tolip::Status <function_name>(tolip::Mission* mission)` in namespace
 // tolip::flight; the function fills a default-constructed Mission and returns
-// validate_mission()'s status. `origin` names the deck in a comment.
-std::string mission_cpp_source(const Mission& mission, const std::string& function_name,
-                               const std::string& origin);
+// validate_mission()'s status. Beside it, the listing's texts of data blocks 1-3, which the Mission
+// does not hold: `const char <function_name>_title[]`, `..._case_heading[]` and `..._date[]`.
+// `origin` names the deck in a comment.
+std::string mission_cpp_source(const Mission& mission, const DeckListingOptions& listing,
+                               const std::string& function_name, const std::string& origin);
 
 }  // namespace tolip::ground

@@ -31,9 +31,8 @@ nlohmann::ordered_json radar_json(const RadarStep& step);
 // `tolip radar`: the radar pages alone (page titles from data blocks 1-3, CT1(8) lines per page;
 // `listing` null: the nominal layout), and the JSON document of a case: program, version, deck,
 // title, case_heading, the trajectory's status and status_message, and `radar`.
-void write_radar_listing(std::ostream& out, const Mission& mission, const DeckListingOptions* listing,
-                         const RadarStep& step);
-nlohmann::ordered_json radar_document(const Mission& mission, const std::string& deck_path,
+void write_radar_listing(std::ostream& out, const DeckListingOptions* listing, const RadarStep& step);
+nlohmann::ordered_json radar_document(const DeckListingOptions& listing, const std::string& deck_path,
                                       Status trajectory_status, const RadarStep& step);
 
 // One row per station and tracked point: station, time, stage, slant range (ft, yd), azimuth and

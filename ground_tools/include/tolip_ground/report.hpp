@@ -21,6 +21,7 @@
 namespace tolip::ground {
 
 struct DeckListingOptions;  // tolip_ground/deck_extras.hpp
+struct OutputFrequency;     // tolip_ground/deck_extras.hpp
 struct ImpactStep;          // tolip_ground/impact_run.hpp
 struct RadarStep;           // tolip_ground/radar_run.hpp
 struct HardoverStep;        // tolip_ground/hardover_run.hpp
@@ -48,7 +49,8 @@ struct ConstraintSummary {
 // flown up to the failure. The orbit elements exist only when the trajectory completed.
 struct SimulationReport {
   const Mission* mission = nullptr;  // required
-  // Data block 10 words 8-9 (the deck's DeckExtras::listing); null: the nominal page layout.
+  // Data blocks 1-3, 9 and 10 words 8-9 (the deck's DeckExtras::listing); null: blank titles, every
+  // point, the nominal page layout.
   const DeckListingOptions* listing = nullptr;
   const Trajectory* trajectory = nullptr;  // required (point_count 0 when prepare_case failed)
   Status status = Status::kNotPrepared;    // first failure of prepare/fly/orbit, or kOk
@@ -118,6 +120,14 @@ OrbitSummary summarize_orbit(const Constants& constants, const OrbitElements& or
 
 // The number of stored points that may be read (point_count clamped to the storage).
 int stored_point_count(const Trajectory& trajectory);
+
+// Which of the trajectory kinds of data block 9 a run is, for output thinning.
+enum class TrajectoryKind : int { kInitial, kIntermediate, kFinal };
+
+// True when point `index` is listed at the data block 9 frequency: every n-th point of its stage,
+// and always the first and last point of each stage (and the pad point).
+bool is_output_point(const OutputFrequency& output, const Trajectory& trajectory, int index,
+                     TrajectoryKind kind);
 
 // Manual-style listing: page titles from data blocks 1-3, the points that data block 9 selects for
 // a final trajectory (is_output_point), the stage events, the terminal conditions and orbit.

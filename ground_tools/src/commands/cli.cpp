@@ -159,6 +159,59 @@ CLI::App* add_simulate_command(CLI::App& app, SimulateCommandOptions* options) {
   return simulate;
 }
 
+// tolip optimize's files beside the listing: the final trajectory and the optional computations'
+// results as CSV.
+void add_optimize_csv_options(CLI::App* optimize, OptimizeCommandOptions* options) {
+  optimize
+      ->add_option("--csv", options->csv_path,
+                   "Also write EVERY integration point of the final\n"
+                   "trajectory to FILE as CSV (the columns of simulate\n"
+                   "--csv; FILE.caseN.csv per case of a several-case deck),\n"
+                   "atomically; on a write failure an existing FILE is left\n"
+                   "untouched, nothing is printed and the exit code is 1")
+      ->type_name("FILE");
+  optimize
+      ->add_option("--dispersions-csv", options->dispersions_csv_path,
+                   "With IP(21) = 1: also write the dispersion analysis\n"
+                   "(every dispersed trajectory's staging-point values and\n"
+                   "dispersions, orbit elements, max q-bar alpha) to FILE as\n"
+                   "CSV (FILE.caseN.csv per case of a several-case deck)")
+      ->type_name("FILE");
+  optimize
+      ->add_option("--impact-csv", options->impact_csv_path,
+                   "With IP(23) = 1: also write the impact locus (one row\n"
+                   "per thrust failure and expended casing: failure and\n"
+                   "impact times, latitudes, longitude, downrange,\n"
+                   "crossrange) to FILE as CSV (FILE.caseN.csv per case)")
+      ->type_name("FILE");
+  optimize
+      ->add_option("--radar-csv", options->radar_csv_path,
+                   "With IP(24) = 1: also write the radar look angles (one\n"
+                   "row per station and point; the columns of radar --csv)\n"
+                   "to FILE as CSV, atomically (FILE.caseN.csv per case)")
+      ->type_name("FILE");
+  optimize
+      ->add_option("--hardover-csv", options->hardover_csv_path,
+                   "With IP(22) = 1: also write the hardover turns (the\n"
+                   "columns of hardover --csv) to FILE as CSV, atomically\n"
+                   "(FILE.caseN.csv per case)")
+      ->type_name("FILE");
+}
+
+// tolip optimize's status line on stderr: --progress, --no-progress (excluding each other).
+void add_optimize_progress_flags(CLI::App* optimize, OptimizeCommandOptions* options) {
+  CLI::Option* progress_on = optimize->add_flag_callback(
+      "--progress", [options] { options->progress = ProgressMode::kOn; },
+      "Show the one-line status of the forward runs on\n"
+      "stderr ('forward run 7  payoff 301.2 lb  successful')\n"
+      "even when stderr is not a terminal. Default: shown only\n"
+      "on a terminal; it never reaches stdout");
+  CLI::Option* progress_off = optimize->add_flag_callback(
+      "--no-progress", [options] { options->progress = ProgressMode::kOff; },
+      "Never show the status line, not even on a terminal");
+  progress_on->excludes(progress_off);
+}
+
 // tolip optimize: optimize each case of a deck.
 CLI::App* add_optimize_command(CLI::App& app, OptimizeCommandOptions* options) {
   CLI::App* optimize = app.add_subcommand("optimize",
@@ -196,40 +249,7 @@ CLI::App* add_optimize_command(CLI::App& app, OptimizeCommandOptions* options) {
                    "by content (docs/deck-format.md)")
       ->required()
       ->type_name("FILE");
-  optimize
-      ->add_option("--csv", options->csv_path,
-                   "Also write EVERY integration point of the final\n"
-                   "trajectory to FILE as CSV (the columns of simulate\n"
-                   "--csv; FILE.caseN.csv per case of a several-case deck),\n"
-                   "atomically; on a write failure an existing FILE is left\n"
-                   "untouched, nothing is printed and the exit code is 1")
-      ->type_name("FILE");
-  optimize
-      ->add_option("--dispersions-csv", options->dispersions_csv_path,
-                   "With IP(21) = 1: also write the dispersion analysis\n"
-                   "(every dispersed trajectory's staging-point values and\n"
-                   "dispersions, orbit elements, max q-bar alpha) to FILE as\n"
-                   "CSV (FILE.caseN.csv per case of a several-case deck)")
-      ->type_name("FILE");
-  optimize
-      ->add_option("--impact-csv", options->impact_csv_path,
-                   "With IP(23) = 1: also write the impact locus (one row\n"
-                   "per thrust failure and expended casing: failure and\n"
-                   "impact times, latitudes, longitude, downrange,\n"
-                   "crossrange) to FILE as CSV (FILE.caseN.csv per case)")
-      ->type_name("FILE");
-  optimize
-      ->add_option("--radar-csv", options->radar_csv_path,
-                   "With IP(24) = 1: also write the radar look angles (one\n"
-                   "row per station and point; the columns of radar --csv)\n"
-                   "to FILE as CSV, atomically (FILE.caseN.csv per case)")
-      ->type_name("FILE");
-  optimize
-      ->add_option("--hardover-csv", options->hardover_csv_path,
-                   "With IP(22) = 1: also write the hardover turns (the\n"
-                   "columns of hardover --csv) to FILE as CSV, atomically\n"
-                   "(FILE.caseN.csv per case)")
-      ->type_name("FILE");
+  add_optimize_csv_options(optimize, options);
   optimize->add_flag("--json", options->json,
                      "Print one JSON document instead of the listing: the\n"
                      "simulate --json keys for the final trajectory plus\n"
@@ -237,16 +257,7 @@ CLI::App* add_optimize_command(CLI::App& app, OptimizeCommandOptions* options) {
                      "payload_lb, constraints, payoff_partials, adjustable,\n"
                      "theta_history, iterations (docs/cli.md); a JSON array\n"
                      "of one document per case for a deck of several cases");
-  CLI::Option* progress_on = optimize->add_flag_callback(
-      "--progress", [options] { options->progress = ProgressMode::kOn; },
-      "Show the one-line status of the forward runs on\n"
-      "stderr ('forward run 7  payoff 301.2 lb  successful')\n"
-      "even when stderr is not a terminal. Default: shown only\n"
-      "on a terminal; it never reaches stdout");
-  CLI::Option* progress_off = optimize->add_flag_callback(
-      "--no-progress", [options] { options->progress = ProgressMode::kOff; },
-      "Never show the status line, not even on a terminal");
-  progress_on->excludes(progress_off);
+  add_optimize_progress_flags(optimize, options);
   return optimize;
 }
 

@@ -80,7 +80,7 @@ int run_dispersions_command(const DispersionsCommandOptions& options, std::ostre
       document["dispersions"] = dispersion_json(step);
       documents.push_back(std::move(document));
     } else {
-      write_dispersion_listing(listing, *mission, &deck_case.extras.listing, step);
+      write_dispersion_listing(listing, &deck_case.extras.listing, step);
     }
     if (step.outcome != StepOutcome::kRun) {
       failures.push_back("tolip: " + prefix + "no final nominal to disperse about: " +

@@ -59,9 +59,10 @@ int run_hardover_command(const HardoverCommandOptions& options, std::ostream& ou
       return kExitFailure;
     }
     if (options.json) {
-      documents.push_back(hardover_document(mission, options.deck_path, run.report.status, step));
+      documents.push_back(
+          hardover_document(deck_case.extras.listing, options.deck_path, run.report.status, step));
     } else {
-      write_hardover_listing(listing, mission, &deck_case.extras.listing, step);
+      write_hardover_listing(listing, &deck_case.extras.listing, step);
     }
     if (!ok(step.status)) {
       const std::string prefix = case_message_prefix(deck_case.number, cases);

@@ -74,7 +74,7 @@ int run_impact_command(const ImpactCommandOptions& options, std::ostream& out, s
       add_impact_member(&document, step);
       documents.push_back(std::move(document));
     } else {
-      write_impact_listing(listing, *deck_case.mission, &deck_case.extras.listing, step);
+      write_impact_listing(listing, &deck_case.extras.listing, step);
     }
     if (!ok(run.report.status) || !ok(step.status)) {
       const Status status = ok(run.report.status) ? step.status : run.report.status;

@@ -60,10 +60,11 @@ int run_radar_command(const RadarCommandOptions& options, std::ostream& out, std
       return kExitFailure;
     }
     if (options.json) {
-      nlohmann::ordered_json document = radar_document(mission, options.deck_path, run.report.status, radar);
+      nlohmann::ordered_json document =
+          radar_document(deck_case.extras.listing, options.deck_path, run.report.status, radar);
       documents.push_back(std::move(document));
     } else {
-      write_radar_listing(listing, mission, &deck_case.extras.listing, radar);
+      write_radar_listing(listing, &deck_case.extras.listing, radar);
     }
     const std::string prefix = case_message_prefix(deck_case.number, cases);
     if (!ok(run.report.status) || !ok(radar.status)) {

@@ -1,11 +1,31 @@
 // Deck vocabulary shared by both deck formats (deck_common.hpp).
 #include "deck_common.hpp"
 
+#include <cmath>
+
 #include "field_description.hpp"
 #include "tolip/core/constants.hpp"
 #include "tolip_ground/capped_read.hpp"
 
 namespace tolip::ground::deck_detail {
+
+SegmentBoundary decode_coded_time(double coded) {
+  SegmentBoundary boundary;
+  const double stage = std::floor(coded / 100.0);
+  // Beyond any int (or not a number): no stage; the time keeps the value for the message.
+  if (!(std::fabs(stage) <= 1.0e6)) {
+    boundary.stage = -1;
+    boundary.time_from_ignition_s = coded;
+    return boundary;
+  }
+  boundary.stage = static_cast<int>(stage);
+  boundary.time_from_ignition_s = coded - 100.0 * stage;
+  return boundary;
+}
+
+double coded_time(const SegmentBoundary& boundary) {
+  return 100.0 * boundary.stage + boundary.time_from_ignition_s;
+}
 
 bool constraint_unit(int code, ConstraintUnit* unit) {
   static const ConstraintUnit kTerminal[] = {

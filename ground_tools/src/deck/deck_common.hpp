@@ -1,7 +1,7 @@
 // Deck vocabulary shared by the TOML reader and the card-deck reader/writer (ground_tools/src/deck/):
 // the units of the constraint codes (data blocks 8, 19, 29) and the names of the dispersion codes
-// (data block 46, from dispersion_codes() in field_description.hpp). One table each, so both deck
-// formats agree.
+// (data block 46, from dispersion_codes() in field_description.hpp), and the card encoding of data
+// block 18's times. One table or rule each, so both deck formats agree.
 #pragma once
 
 #include <string>
@@ -20,6 +20,12 @@ struct ConstraintUnit {
 
 // The unit of a constraint code (0-14, X5-X9 for stage points, 100-102); false for an unknown code.
 bool constraint_unit(int code, ConstraintUnit* unit);
+
+// Data block 18's encoding of a segment boundary, TLIN = 100 n + t (n the powered stage, t s from
+// its ignition): n = floor(TLIN / 100), t = TLIN - 100 n. The deck readers decode at this edge;
+// the core holds SegmentBoundary. coded_time() is the inverse, for messages.
+SegmentBoundary decode_coded_time(double coded);
+double coded_time(const SegmentBoundary& boundary);
 
 // The kind of dispersed trajectory of a data block 46 code (1-38, 40); nullptr for an unknown code.
 const char* dispersion_name(int code);

@@ -1,4 +1,5 @@
 // The deck sections that fill the core's Mission (data blocks 1-40; docs/deck-format.md).
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -12,10 +13,9 @@ namespace {
 
 std::string str(int value) { return std::to_string(value); }
 
-void copy_text(const std::string& text, char* destination, std::size_t capacity) {
-  const std::size_t length = text.size() < capacity - 1 ? text.size() : capacity - 1;
-  std::memcpy(destination, text.data(), length);
-  destination[length] = '\0';
+// At most `capacity` characters, ending at the first NUL (the 12A6 / 2A6 fields of blocks 1-3).
+std::string text_within(const std::string& text, std::size_t capacity) {
+  return text.substr(0, std::min(capacity, text.find('\0')));
 }
 
 template <int N>
@@ -40,16 +40,17 @@ void fill_table(Section& section, std::string_view x_key, const ReadTable& read,
 }
 
 // ---- data blocks 1-3 ----------------------------------------------------------------------------
-void read_case(Section& root, Mission* mission) {
+// The listing's texts: ground side (DeckListingOptions), never in the core's Mission.
+void read_case(Section& root, DeckListingOptions* listing) {
   Section section = root.table("case", 1, "data blocks 1-3: title, case heading and date");
   const std::optional<std::string> title =
       section.optional_text("title", 1, "data block 1 main heading, 12A6", 72);
   if (!title) section.missing("title", 1, "the main heading (data block 1, up to 72 characters)");
-  copy_text(*title, mission->title, sizeof(mission->title));
-  copy_text(section.optional_text("heading", 2, "data block 2 case heading, 12A6", 72).value_or(""),
-            mission->case_heading, sizeof(mission->case_heading));
-  copy_text(section.optional_text("date", 3, "data block 3 date, 2A6", 12).value_or(""), mission->date,
-            sizeof(mission->date));
+  listing->title = text_within(*title, 72);
+  listing->case_heading = text_within(
+      section.optional_text("heading", 2, "data block 2 case heading, 12A6", 72).value_or(""), 72);
+  listing->date =
+      text_within(section.optional_text("date", 3, "data block 3 date, 2A6", 12).value_or(""), 12);
   section.finish();
 }
 
@@ -440,9 +441,9 @@ void read_linearization(Section& root, const Mission& mission, LinearizationData
   for (std::size_t i = 0; i < times.size(); ++i) {
     const std::string field = section->key_path("coded_times") + "[" + str(static_cast<int>(i)) + "]";
     const int line = section->element_line("coded_times", i);
-    const double stage = std::floor(times[i] / 100.0);
-    const int code = static_cast<int>(stage);
-    const double t = times[i] - 100.0 * stage;
+    const SegmentBoundary boundary = decode_coded_time(times[i]);
+    const int code = boundary.stage;
+    const double t = boundary.time_from_ignition_s;
     if (code < 1 || code > kMaxPoweredStages || !mission.vehicle.stages[stage_index(code)].in_sequence) {
       reader.fail(line, 18, field,
                   "coded time " + format_number(times[i]) +
@@ -460,7 +461,7 @@ void read_linearization(Section& root, const Mission& mission, LinearizationData
                   "coded times must increase: " + format_number(times[i]) + " follows " +
                       format_number(times[i - 1]));
     }
-    linearization->coded_start_times[i] = times[i];
+    linearization->boundaries[i] = boundary;
   }
   const int segments = static_cast<int>(times.size()) - 1;
   if (const std::optional<int> count =
@@ -495,7 +496,7 @@ void read_linearization(Section& root, const Mission& mission, LinearizationData
 }
 
 // ---- data block 9 -------------------------------------------------------------------------------
-void read_output_frequency(Section& root, OutputFrequency* output) {
+void read_output_frequency(Section& root, OutputFrequency* output) {  // ground side: listing thinning
   std::optional<Section> section = root.optional_table("output_frequency", 9);
   if (!section) return;
   struct Entry {
@@ -504,9 +505,10 @@ void read_output_frequency(Section& root, OutputFrequency* output) {
     const char* what;
   };
   const Entry entries[] = {
-      {"initial", output->initial, "IB4 output every n-th point on the initial trajectory"},
-      {"intermediate", output->intermediate, "IB4 output every n-th point on intermediate trajectories"},
-      {"final", output->final_trajectory, "IB4 output every n-th point on the final trajectory"},
+      {"initial", output->initial.data(), "IB4 output every n-th point on the initial trajectory"},
+      {"intermediate", output->intermediate.data(),
+       "IB4 output every n-th point on intermediate trajectories"},
+      {"final", output->final_trajectory.data(), "IB4 output every n-th point on the final trajectory"},
   };
   for (const Entry& entry : entries) {
     const toml::node* node = section->node(entry.key);
@@ -550,7 +552,7 @@ void read_mission_sections(Section& root, Mission* mission, DeckExtras* extras) 
   FieldTarget target;
   target.mission = mission;
   target.extras = extras;
-  read_case(root, mission);
+  read_case(root, &extras->listing);
   read_options(root, target);
   read_field_section(root, "constants", 10, target);
   read_field_section(root, "atmosphere", 11, target);
@@ -568,7 +570,7 @@ void read_mission_sections(Section& root, Mission* mission, DeckExtras* extras) 
   read_adjustable(root, &mission->adjustable);
   read_linearization(root, *mission, &mission->linearization);
   read_field_section(root, "convergence", 28, target);
-  read_output_frequency(root, &mission->output);
+  read_output_frequency(root, &extras->listing.output);
   read_pitch_program(root, &mission->pitch_program_rad);
 }
 

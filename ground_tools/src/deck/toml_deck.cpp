@@ -178,7 +178,6 @@ std::string fault_path(const MissionFault& fault, const Mission& mission) {
     case 8:
     case 19:
     case 29: return constraint_key(fault, mission);
-    case 9: return "output_frequency." + std::string(field == "final_trajectory" ? "final" : field);
     case 10: return field == "constants" ? "constants" : "constants." + field;
     case 11:
     case 12:
@@ -249,10 +248,27 @@ std::string deck_number(double core_value, double to_deck) {
   return std::strtod(buffer, nullptr) == core_value ? std::string(buffer) : format_number(core_value);
 }
 
+// A data block 18 fault carries the boundary's time from ignition (s); the deck writes the
+// boundary as its coded time 100 n + t (deck_common.hpp), and so does the message.
+MissionFault in_deck_encoding(const MissionFault& fault, const Mission& mission) {
+  if (fault.data_block != 18 || fault.field == nullptr || std::strcmp(fault.field, "boundaries") != 0) {
+    return fault;
+  }
+  MissionFault coded = fault;
+  const SegmentBoundary boundary = fault.index >= 0 && fault.index <= kMaxLinearSegments
+                                       ? mission.linearization.boundaries[fault.index]
+                                       : SegmentBoundary{fault.stage_code, fault.value};
+  coded.value = deck_detail::coded_time(boundary);
+  coded.unit = "";
+  coded.range = ValueRange{};
+  return coded;
+}
+
 // The value and allowed range a core fault carries, in the units of the deck key that holds it:
 // "key = value unit; expected range unit" (or what the core says it expected).
-std::string value_detail(const MissionFault& fault, const Mission& mission, const std::string& path) {
-  if (!fault.has_value) return "";
+std::string value_detail(const MissionFault& core_fault, const Mission& mission, const std::string& path) {
+  if (!core_fault.has_value) return "";
+  const MissionFault fault = in_deck_encoding(core_fault, mission);
   std::string unit = fault.unit != nullptr ? fault.unit : "";
   double to_deck = 1.0;
   const auto ends_with = [&path](const std::string& tail) {

@@ -26,7 +26,7 @@ std::vector<InputWarning> unused_inputs(const Mission& mission, const DeckExtras
   }
   // Data block 9: only the final trajectory is listed.
   for (int i = 0; i < kMaxStages; ++i) {
-    if (mission.output.initial[i] != 1 || mission.output.intermediate[i] != 1) {
+    if (extras.listing.output.initial[i] != 1 || extras.listing.output.intermediate[i] != 1) {
       warn(9, "initial and intermediate print frequencies", "output_frequency.initial/intermediate",
            "only the final trajectory is listed (data block 9's third word per stage); the others have no "
            "effect");

@@ -7,6 +7,7 @@
 
 #include "impact_plot.hpp"
 #include "plot_json.hpp"
+#include "tolip/optimizer/constraint_set.hpp"
 #include "tolip_ground/plot.hpp"
 
 namespace tolip::ground {
@@ -666,8 +667,8 @@ std::optional<Figure> convergence(const json& document) {
     for (std::size_t c = 0; c < constraints.size() && c < corrections->size(); ++c) {
       const double correction =
           number_or_gap((*corrections)[c], field + ".constraint_corrections[" + std::to_string(c) + "]");
-      // d psi = desired - achieved: an inequality (an upper limit) is exceeded when it is negative.
-      const double error = constraints[c].inequality ? std::max(0.0, -correction) : std::fabs(correction);
+      // d psi = desired - achieved, judged by the core's inequality rule (constraint_set.hpp).
+      const double error = std::fabs(counted_correction(constraints[c].inequality, correction));
       errors[c].x.push_back(run);
       errors[c].y.push_back(error > 0.0 && constraints[c].tolerance > 0.0 ? error / constraints[c].tolerance
                                                                           : kGap);

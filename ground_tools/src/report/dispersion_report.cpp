@@ -272,9 +272,9 @@ void write_dispersion_pages(Pager& pager, const DispersionStep& step) {
 
 }  // namespace report_detail
 
-void write_dispersion_listing(std::ostream& out, const Mission& mission, const DeckListingOptions* listing,
+void write_dispersion_listing(std::ostream& out, const DeckListingOptions* listing,
                               const DispersionStep& step) {
-  report_detail::Pager pager(out, mission, listing);
+  report_detail::Pager pager(out, listing);
   report_detail::write_dispersion_pages(pager, step);
 }
 

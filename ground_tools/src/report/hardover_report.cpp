@@ -169,20 +169,19 @@ void write_hardover_csv(std::ostream& out, const HardoverStep& step) {
   }
 }
 
-void write_hardover_listing(std::ostream& out, const Mission& mission, const DeckListingOptions* listing,
-                            const HardoverStep& step) {
-  report_detail::Pager pager(out, mission, listing);
+void write_hardover_listing(std::ostream& out, const DeckListingOptions* listing, const HardoverStep& step) {
+  report_detail::Pager pager(out, listing);
   report_detail::write_hardover_pages(pager, step);
 }
 
-json hardover_document(const Mission& mission, const std::string& deck_path, Status trajectory_status,
-                       const HardoverStep& step) {
+json hardover_document(const DeckListingOptions& listing, const std::string& deck_path,
+                       Status trajectory_status, const HardoverStep& step) {
   json document = json::object();
   document["program"] = "tolip";
   document["version"] = version_string();
   document["deck"] = deck_path;
-  document["title"] = report_detail::card_text(mission.title, sizeof mission.title);
-  document["case_heading"] = report_detail::card_text(mission.case_heading, sizeof mission.case_heading);
+  document["title"] = report_detail::card_text(listing.title);
+  document["case_heading"] = report_detail::card_text(listing.case_heading);
   document["status"] = status_name(trajectory_status);
   document["status_message"] = status_message(trajectory_status);
   document["hardover"] = hardover_json(step);

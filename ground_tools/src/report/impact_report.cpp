@@ -126,9 +126,8 @@ void write_impact_pages(Pager& pager, const ImpactStep& step) {
 
 }  // namespace report_detail
 
-void write_impact_listing(std::ostream& out, const Mission& mission, const DeckListingOptions* listing,
-                          const ImpactStep& step) {
-  report_detail::Pager pager(out, mission, listing);
+void write_impact_listing(std::ostream& out, const DeckListingOptions* listing, const ImpactStep& step) {
+  report_detail::Pager pager(out, listing);
   report_detail::write_impact_pages(pager, step);
 }
 

@@ -158,7 +158,7 @@ class Echo {
 
 void write_input_echo(std::ostream& out, const Deck& deck, const DeckCase& deck_case) {
   if (!deck_case.mission) return;
-  Pager pager(out, *deck_case.mission, &deck_case.extras.listing);
+  Pager pager(out, &deck_case.extras.listing);
   pager.new_page("INPUT DATA", false);
   pager.emit(" INPUT DATA OF CASE " + std::to_string(deck_case.number) + " (OPTION IP(17)), " +
              deck_format_name(deck.format));

@@ -18,8 +18,9 @@ namespace tolip::ground::report_detail {
 // when one is full.
 class Pager {
  public:
-  // `listing`: the deck's page layout (data block 10 word 8); null: the nominal 54 lines.
-  Pager(std::ostream& out, const Mission& mission, const DeckListingOptions* listing);
+  // `listing`: the deck's page titles (data blocks 1-3) and layout (data block 10 word 8); null:
+  // blank titles and the nominal 54 lines.
+  Pager(std::ostream& out, const DeckListingOptions* listing);
 
   // Starts a page of the given kind; `columns` adds the trajectory column headings.
   void new_page(const std::string& section, bool columns);

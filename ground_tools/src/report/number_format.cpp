@@ -35,4 +35,8 @@ std::string card_text(const char* text, int capacity) {
   return std::string(text, length);
 }
 
+std::string card_text(const std::string& text) {
+  return card_text(text.c_str(), static_cast<int>(text.size()));
+}
+
 }  // namespace tolip::ground::report_detail

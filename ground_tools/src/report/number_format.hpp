@@ -15,5 +15,6 @@ std::string fixed_cell(double value, int decimals, int width);
 
 // Copies a fixed, NUL-padded card field (title, heading, date) and strips trailing blanks.
 std::string card_text(const char* text, int capacity);
+std::string card_text(const std::string& text);  // the same for a text the deck reader kept
 
 }  // namespace tolip::ground::report_detail

@@ -814,7 +814,7 @@ std::vector<AdjustableSummary> adjustable_summaries(const OptimizationReport& re
 void write_optimization_listing(std::ostream& out, const OptimizationReport& report) {
   const std::vector<ConstraintSummary> constraints = constraint_summaries(report);
   const std::vector<AdjustableSummary> adjustable = adjustable_summaries(report);
-  Pager pager(out, *report.final_trajectory.mission, report.final_trajectory.listing);
+  Pager pager(out, report.final_trajectory.listing);
   pager.new_page("OPTIMIZATION HISTORY", false);
   write_problem(pager, report, constraints, adjustable);
   write_iteration_table(pager, report);

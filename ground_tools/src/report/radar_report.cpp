@@ -140,20 +140,19 @@ json radar_json(const RadarStep& step) {
   return radar;
 }
 
-void write_radar_listing(std::ostream& out, const Mission& mission, const DeckListingOptions* listing,
-                         const RadarStep& step) {
-  report_detail::Pager pager(out, mission, listing);
+void write_radar_listing(std::ostream& out, const DeckListingOptions* listing, const RadarStep& step) {
+  report_detail::Pager pager(out, listing);
   report_detail::write_radar_pages(pager, step);
 }
 
-json radar_document(const Mission& mission, const std::string& deck_path, Status trajectory_status,
+json radar_document(const DeckListingOptions& listing, const std::string& deck_path, Status trajectory_status,
                     const RadarStep& step) {
   json document = json::object();
   document["program"] = "tolip";
   document["version"] = version_string();
   document["deck"] = deck_path;
-  document["title"] = report_detail::card_text(mission.title, sizeof mission.title);
-  document["case_heading"] = report_detail::card_text(mission.case_heading, sizeof mission.case_heading);
+  document["title"] = report_detail::card_text(listing.title);
+  document["case_heading"] = report_detail::card_text(listing.case_heading);
   document["status"] = status_name(trajectory_status);
   document["status_message"] = status_message(trajectory_status);
   document["radar"] = radar_json(step);

@@ -5,6 +5,7 @@
 #include "number_format.hpp"
 #include "tolip/core/constants.hpp"
 #include "tolip/core/state.hpp"
+#include "tolip_ground/deck_extras.hpp"
 #include "tolip_ground/hardover_report.hpp"
 #include "tolip_ground/radar_report.hpp"
 #include "tolip_ground/report.hpp"
@@ -171,9 +172,11 @@ json trajectory_json(const SimulationReport& report) {
   document["program"] = "tolip";
   document["version"] = version_string();
   document["deck"] = report.deck_path;
-  document["title"] = report_detail::card_text(mission.title, sizeof mission.title);
-  document["case_heading"] = report_detail::card_text(mission.case_heading, sizeof mission.case_heading);
-  document["date"] = report_detail::card_text(mission.date, sizeof mission.date);
+  static const DeckListingOptions kNoListing;  // blank titles
+  const DeckListingOptions& listing = report.listing != nullptr ? *report.listing : kNoListing;
+  document["title"] = report_detail::card_text(listing.title);
+  document["case_heading"] = report_detail::card_text(listing.case_heading);
+  document["date"] = report_detail::card_text(listing.date);
   document["status"] = status_name(report.status);
   document["status_message"] = status_message(report.status);
   document["launch_space_age_date_days"] = number(mission.launch.launch_space_age_date_days);

@@ -110,13 +110,14 @@ std::string format(const char* pattern, double value) {
 
 namespace report_detail {
 
-Pager::Pager(std::ostream& out, const Mission& mission, const DeckListingOptions* listing) : out_(out) {
+Pager::Pager(std::ostream& out, const DeckListingOptions* listing) : out_(out) {
   const double lines = listing != nullptr ? listing->lines_per_page : DeckListingOptions{}.lines_per_page;
   lines_per_page_ = (std::isfinite(lines) && lines >= 20.0 && lines <= 1000.0) ? static_cast<int>(lines)
                                                                                : kDefaultLinesPerPage;
-  title_ = card_text(mission.title, sizeof mission.title);
-  heading_ = card_text(mission.case_heading, sizeof mission.case_heading);
-  date_ = card_text(mission.date, sizeof mission.date);
+  if (listing == nullptr) return;
+  title_ = card_text(listing->title);
+  heading_ = card_text(listing->case_heading);
+  date_ = card_text(listing->date);
 }
 
 void Pager::new_page(const std::string& section, bool columns) {
@@ -164,20 +165,32 @@ namespace {
 
 using report_detail::Pager;
 
+// Data block 9's n for stage `code` on a trajectory of `kind` (1 outside the stage codes).
+int every_nth(const OutputFrequency& output, int code, TrajectoryKind kind) {
+  if (code < 1 || code > kMaxStages) return 1;
+  const std::size_t slot = static_cast<std::size_t>(stage_index(code));
+  switch (kind) {
+    case TrajectoryKind::kInitial: return output.initial[slot];
+    case TrajectoryKind::kIntermediate: return output.intermediate[slot];
+    case TrajectoryKind::kFinal: return output.final_trajectory[slot];
+  }
+  return 1;
+}
+
 // Points past the last recorded stage event (the stage a failed run stopped in): the same rule as
 // is_output_point, every n-th point of the stage plus its first and last point, and always the
 // last point flown.
-bool listed_after_events(const Mission& mission, const Trajectory& trajectory, int index, int run_start) {
+bool listed_after_events(const OutputFrequency& output, const Trajectory& trajectory, int index,
+                         int run_start) {
   const int count = stored_point_count(trajectory);
   const int code = trajectory.points[index].stage_code;
   if (index == run_start || index == count - 1) return true;
   if (trajectory.points[index + 1].stage_code != code) return true;
-  const int every =
-      (code >= 1 && code <= kMaxStages) ? mission.output.final_trajectory[stage_index(code)] : 1;
+  const int every = every_nth(output, code, TrajectoryKind::kFinal);
   return every <= 1 || (index - run_start) % every == 0;
 }
 
-void write_points(Pager& pager, const Mission& mission, const Trajectory& trajectory) {
+void write_points(Pager& pager, const OutputFrequency& output, const Trajectory& trajectory) {
   const int count = stored_point_count(trajectory);
   int covered_until = -1;  // last point index inside a recorded stage event
   for (int s = 0; s < std::clamp(trajectory.stage_count, 0, kMaxStages); ++s) {
@@ -190,8 +203,8 @@ void write_points(Pager& pager, const Mission& mission, const Trajectory& trajec
                               trajectory.points[i].stage_code != trajectory.points[i - 1].stage_code)) {
       run_start = i;
     }
-    const bool listed = i <= covered_until ? is_output_point(mission, trajectory, i, TrajectoryKind::kFinal)
-                                           : listed_after_events(mission, trajectory, i, run_start);
+    const bool listed = i <= covered_until ? is_output_point(output, trajectory, i, TrajectoryKind::kFinal)
+                                           : listed_after_events(output, trajectory, i, run_start);
     if (!listed) continue;
     const TrajectoryPoint& point = trajectory.points[i];
     if (point.stage_code != previous_stage) {
@@ -374,7 +387,7 @@ void report_detail::write_trajectory_pages(Pager& pager, const SimulationReport&
   const Mission& mission = *report.mission;
   const Trajectory& trajectory = *report.trajectory;
   pager.new_page("FINAL TRAJECTORY", true);
-  write_points(pager, mission, trajectory);
+  write_points(pager, report.listing != nullptr ? report.listing->output : OutputFrequency{}, trajectory);
   pager.new_page("TERMINAL CONDITIONS", false);
   write_stage_events(pager, mission, trajectory);
   if (report.listing != nullptr) write_stage_names(pager, *report.listing);
@@ -384,8 +397,20 @@ void report_detail::write_trajectory_pages(Pager& pager, const SimulationReport&
       " CONSTRAINTS OF DATA BLOCK 8 ON THIS TRAJECTORY (DATA BLOCK 19 UNITS, DEADBANDS OF DATA BLOCK 29)");
 }
 
+bool is_output_point(const OutputFrequency& output, const Trajectory& trajectory, int index,
+                     TrajectoryKind kind) {
+  for (int k = 0; k < trajectory.stage_count; ++k) {
+    const StageEvent& event = trajectory.stages[k];
+    if (index < event.first_point || index > event.last_point) continue;
+    if (index == event.first_point || index == event.last_point) return true;
+    const int every = every_nth(output, event.code, kind);
+    return every <= 1 || (index - event.first_point) % every == 0;
+  }
+  return index == 0;  // the pad point
+}
+
 void write_trajectory_listing(std::ostream& out, const SimulationReport& report) {
-  Pager pager(out, *report.mission, report.listing);
+  Pager pager(out, report.listing);
   report_detail::write_trajectory_pages(pager, report);
   if (report.impact != nullptr) report_detail::write_impact_pages(pager, *report.impact);
   if (report.hardover != nullptr) report_detail::write_hardover_pages(pager, *report.hardover);

@@ -61,11 +61,11 @@ void copy_text(const std::string& text, char* out, std::size_t capacity) {
 
 }  // namespace
 
-std::string default_mission_id(const Mission& mission) {
+std::string default_mission_id(const DeckListingOptions& listing) {
   std::string id;
   bool blank = false;
-  for (std::size_t i = 0; i < sizeof mission.title && mission.title[i] != '\0'; ++i) {
-    char c = mission.title[i];
+  for (std::size_t i = 0; i < listing.title.size() && listing.title[i] != '\0'; ++i) {
+    char c = listing.title[i];
     if (c == ' ' || c == '\t') {
       blank = !id.empty();
       continue;
@@ -91,7 +91,7 @@ bool build_guidance_table(const Mission& mission, const DeckExtras& extras, cons
 
   GuidanceTable t;
   // Header.
-  const std::string id = options.mission_id.empty() ? default_mission_id(mission) : options.mission_id;
+  const std::string id = options.mission_id.empty() ? default_mission_id(extras.listing) : options.mission_id;
   if (id.empty() || id.size() > kTableMissionIdBytes) {
     return fail("the mission identifier must have 1 to 32 characters, got " + std::to_string(id.size()));
   }

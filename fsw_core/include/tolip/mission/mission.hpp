@@ -144,11 +144,19 @@ struct AdjustableParameters {
   double weights[kMaxAdjustableParameters] = {};
 };
 
+// One boundary of the linear pitch segments (data block 18): a time in a powered stage. The deck
+// codes it as 100 n + t; the deck readers decode it (tolip_ground), the core never sees the code.
+struct SegmentBoundary {
+  int stage = 0;                      // n, the powered stage code 1-5; 0 (with t = 0): unused entry
+  double time_from_ignition_s = 0.0;  // t, from stage n's ignition
+};
+
 // Data block 18 (TLIN) and 26 (ETALIN).
 struct LinearizationData {
   int segment_count = 0;
-  // 100 n + t: the segments' boundaries, one more than the segments (data block 18 words 2-17).
-  double coded_start_times[kMaxLinearSegments + 1] = {};
+  // The segments' boundaries in flight order, one more than the segments (data block 18 words
+  // 2-17); unused entries {0, 0}.
+  SegmentBoundary boundaries[kMaxLinearSegments + 1] = {};
   double segment_weights[kMaxLinearSegments] = {};  // eta, default 1
 };
 
@@ -158,13 +166,6 @@ struct ConvergenceData {
   double stop_improvement = 0.0;
   int max_forward_trajectories = 30;
   int max_linearization_iterations = 4;
-};
-
-// Data block 9: output every n-th computed point, per stage, for the three kinds of trajectory.
-struct OutputFrequency {
-  int initial[kMaxStages] = {1, 1, 1, 1, 1, 1, 1, 1, 1, 1};
-  int intermediate[kMaxStages] = {1, 1, 1, 1, 1, 1, 1, 1, 1, 1};
-  int final_trajectory[kMaxStages] = {1, 1, 1, 1, 1, 1, 1, 1, 1, 1};
 };
 
 // Data blocks 33-37: the body-dynamics (6D) data of manual Sec. 7 and 11 (DA6D, CNDELTA, CMALPHA,
@@ -202,10 +203,9 @@ struct BodyDynamicsBlocks {
   double stage1_schedule_k_q_s[kMaxGainSchedulePointsPerStage] = {};
 };
 
+// The listing's data (blocks 1-3 title, heading and date; block 9 print frequencies; CT1(8),
+// CT1(9)) is not the core's: the ground's DeckListingOptions carries it beside the Mission.
 struct Mission {
-  char title[73] = {};         // block 1 (12A6)
-  char case_heading[73] = {};  // block 2
-  char date[13] = {};          // block 3
   Options options;
   Constants constants;
   AtmosphereTable atmosphere;
@@ -217,7 +217,6 @@ struct Mission {
   AdjustableParameters adjustable;
   LinearizationData linearization;
   ConvergenceData convergence;
-  OutputFrequency output;
   PitchTable pitch_program_rad;      // block 40: theta (rad) vs time from launch (s)
   BodyDynamicsBlocks body_dynamics;  // blocks 33-37 (checked by validate_mission when IP(6) >= 1)
 };

@@ -36,8 +36,12 @@ bool is_inequality_constraint(const ConstraintCode& code, const Options& options
 Status append_constraint(const ConstraintCode& code, double desired, double deadband, const Options& options,
                          ConstraintSet* set);
 
-// desired - achieved of entry i (longitudes wrapped into [-pi, pi)); for an inequality a deficit
-// (achieved below desired) is no error: 0.
+// The inequality rule on a correction d psi = desired - achieved: for an inequality (an upper
+// limit) a deficit (achieved below desired, d psi > 0) is no error, 0; an excess and every
+// equality's correction count as they are. The one place this rule is written.
+double counted_correction(bool inequality, double correction);
+
+// desired - achieved of entry i (longitudes wrapped into [-pi, pi)), by the inequality rule.
 double constraint_correction(const ConstraintSet& set, int i, double achieved);
 
 // The same judgement for one constraint outside a set (the report's deck constraints).

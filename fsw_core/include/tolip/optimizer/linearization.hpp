@@ -1,7 +1,7 @@
 // Linearization of the optimum pitch program (manual Sec. 6 and 10).
 //
 // The optimum theta history is replaced by at most 15 straight segments between the break times of
-// data block 18 (coded 100 n + t, moved to integration times), minimizing the eta-weighted integral
+// data block 18 (segment boundaries, moved to integration times), minimizing the eta-weighted integral
 // of (theta_linear - theta_optimum)^2 (eqs. 6-6..6-10) subject to the linearized constraint changes
 // (eq. 6-2) with some break values fixed (eqs. 6-16..6-22): theta = 90 deg at the end of lift-off,
 // the end of a maximum-pitch-rate period, and alpha = 0 at stage-2 ignition under IP(12). Payoff,

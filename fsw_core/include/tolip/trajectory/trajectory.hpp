@@ -157,11 +157,4 @@ Status fly_trajectory(const Mission& mission, const PreparedCase& prepared, cons
 // end point): the size a ControlProgram must have.
 int trajectory_point_count(const PreparedCase& prepared);
 
-// Which of the trajectory kinds of data block 9 a run is, for output thinning.
-enum class TrajectoryKind : int { kInitial, kIntermediate, kFinal };
-
-// True when point `index` is listed at the data block 9 frequency: every n-th point of its stage,
-// and always the first and last point of each stage.
-bool is_output_point(const Mission& mission, const Trajectory& trajectory, int index, TrajectoryKind kind);
-
 }  // namespace tolip
