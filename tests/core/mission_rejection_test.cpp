@@ -257,10 +257,6 @@ TEST(Sec22DataBlocks, LaunchControlMiscConvergenceAndOutputRejectionsNameTheirWo
        Status::kConvergenceDataOutOfRange, 28, 0, "initial_payoff_improvement", -1},
       {"stop improvement >= 0", [](Mission& m) { m.convergence.stop_improvement = -1.0; },
        Status::kConvergenceDataOutOfRange, 28, 0, "stop_improvement", -1},
-      {"intermediate output >= 1", [](Mission& m) { m.output.intermediate[2] = 0; },
-       Status::kOutputFrequencyNotPositive, 9, 3, "intermediate", 2},
-      {"final output >= 1", [](Mission& m) { m.output.final_trajectory[4] = 0; },
-       Status::kOutputFrequencyNotPositive, 9, 5, "final_trajectory", 4},
       {"pitch program given", [](Mission& m) { m.pitch_program_rad.clear(); }, Status::kTableEmpty, 40, 0,
        "pitch_program_rad", -1},
       {"pitch program finite", [](Mission& m) { m.pitch_program_rad.set_y(1, kNaN); },
@@ -333,23 +329,34 @@ TEST(Sec22DataBlocks, ConstraintAdjustableAndSegmentRejectionsNameTheEntry) {
        Status::kAdjustableAttitudeNotSpun, 6, 5, "codes", 0},
       {"segment count >= 0", [](Mission& m) { m.linearization.segment_count = -1; }, Status::kNegativeCount,
        18, 0, "segment_count", -1},
-      {"coded times finite", [](Mission& m) { m.linearization.coded_start_times[12] = kNaN; },
-       Status::kValueNotFinite, 18, 0, "coded_start_times", 12},
+      {"coded times finite", [](Mission& m) { m.linearization.boundaries[12].time_from_ignition_s = kNaN; },
+       Status::kValueNotFinite, 18, 0, "boundaries", 12},
       {"segment weights finite", [](Mission& m) { m.linearization.segment_weights[12] = kNaN; },
        Status::kValueNotFinite, 26, 0, "segment_weights", 12},
       {"no coded time after an unused entry",
-       [](Mission& m) { m.linearization.coded_start_times[11] = 400.0; }, Status::kCodedTimeAfterUnusedEntry,
-       18, 0, "coded_start_times", 11},
-      {"coded time of stage 6 is no stage", [](Mission& m) { m.linearization.coded_start_times[10] = 650.0; },
-       Status::kCodedTimeStageInvalid, 18, 0, "coded_start_times", 10},
-      {"coded time of a stage not flown", [](Mission& m) { m.linearization.coded_start_times[10] = 510.0; },
-       Status::kCodedTimeStageInvalid, 18, 0, "coded_start_times", 10},
-      {"coded times increasing", [](Mission& m) { m.linearization.coded_start_times[2] = 103.0; },
-       Status::kTableNotMonotonic, 18, 0, "coded_start_times", 2},
+       [](Mission& m) {
+         m.linearization.boundaries[11] = {4, 0.0};
+       },
+       Status::kCodedTimeAfterUnusedEntry, 18, 4, "boundaries", 11},
+      {"coded time of stage 6 is no stage",
+       [](Mission& m) {
+         m.linearization.boundaries[10] = {6, 50.0};
+       },
+       Status::kCodedTimeStageInvalid, 18, 0, "boundaries", 10},
+      {"coded time of a stage not flown",
+       [](Mission& m) {
+         m.linearization.boundaries[10] = {5, 10.0};
+       },
+       Status::kCodedTimeStageInvalid, 18, 0, "boundaries", 10},
+      {"coded times increasing",
+       [](Mission& m) {
+         m.linearization.boundaries[2] = {1, 3.0};
+       },
+       Status::kTableNotMonotonic, 18, 1, "boundaries", 2},
       {"linearization needs segments",
        [](Mission& m) {
          m.linearization.segment_count = 0;
-         for (double& t : m.linearization.coded_start_times) t = 0.0;
+         for (SegmentBoundary& b : m.linearization.boundaries) b = SegmentBoundary{};
        },
        Status::kLinearizationWithoutSegments, 18, 0, "segment_count", -1},
       {"segment count = coded times - 1", [](Mission& m) { m.linearization.segment_count = 8; },
