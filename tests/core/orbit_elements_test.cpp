@@ -493,9 +493,15 @@ TEST(Sec13Heating, CheckedVariantRejectsBadInputs) {
   double q = -1.0;
   EXPECT_EQ(stagnation_heating_rate_checked(0.5, 1e-5, 0.0023769, 15000.0, &q), Status::kOk);
   EXPECT_NEAR(q, 7126.388087770833, 1e-8);
-  EXPECT_EQ(stagnation_heating_rate_checked(0.0, 1e-5, 0.0023769, 15000.0, &q), Status::kValueOutOfRange);
-  EXPECT_EQ(stagnation_heating_rate_checked(0.5, -1e-5, 0.0023769, 15000.0, &q), Status::kValueOutOfRange);
-  EXPECT_EQ(stagnation_heating_rate_checked(0.5, 1e-5, 0.0023769, -1.0, &q), Status::kValueOutOfRange);
+  EXPECT_EQ(stagnation_heating_rate_checked(0.0, 1e-5, 0.0023769, 15000.0, &q),
+            Status::kNoseRadiusNotPositive);
+  EXPECT_EQ(stagnation_heating_rate_checked(0.5, -1e-5, 0.0023769, 15000.0, &q),
+            Status::kHeatingStateNegative);
+  EXPECT_EQ(stagnation_heating_rate_checked(0.5, 1e-5, 0.0023769, -1.0, &q), Status::kHeatingStateNegative);
+  EXPECT_EQ(stagnation_heating_rate_checked(0.5, 1e-5, 0.0, 15000.0, &q),
+            Status::kSeaLevelDensityNotPositive);
+  EXPECT_EQ(stagnation_heating_rate_checked(0.5, 1e-5, 0.0023769, 15000.0, nullptr),
+            Status::kOutputPointerNull);
   EXPECT_EQ(stagnation_heating_rate_checked(0.5, std::nan(""), 0.0023769, 1.0, &q), Status::kValueNotFinite);
 }
 
