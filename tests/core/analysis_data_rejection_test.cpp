@@ -170,28 +170,28 @@ TEST(Sec17Impact, EveryDataRejectionNamesTheBlockStageAndWord) {
          ASSERT_EQ(t.append(2.0, 0.4), Status::kOk);
          ASSERT_EQ(t.finalize(), Status::kOk);
        },
-       Status::kValueOutOfRange, 42, 3, "CD3F"},
+       Status::kImpactDragTableNotFromMach0, 42, 3, "CD3F"},
       {"C_D >= 0",
        [](ImpactLocusData& d) {
          AeroTable& t = d.failure_mode[1].drag_coefficient;
          t.set_y(1, -0.1);
          ASSERT_EQ(t.finalize(), Status::kOk);
        },
-       Status::kValueOutOfRange, 42, 2, "CD2F"},
+       Status::kImpactDragCoefficientInvalid, 42, 2, "CD2F"},
       {"reference area > 0", [](ImpactLocusData& d) { d.failure_mode[0].reference_area_ft2 = 0.0; },
-       Status::kValueOutOfRange, 42, 1, "reference area"},
+       Status::kImpactReferenceAreaNotPositive, 42, 1, "reference area"},
       {"reference area finite", [](ImpactLocusData& d) { d.expended_casing[2].reference_area_ft2 = kNaN; },
-       Status::kValueOutOfRange, 43, 3, "reference area"},
+       Status::kImpactReferenceAreaNotPositive, 43, 3, "reference area"},
       {"casing weight finite", [](ImpactLocusData& d) { d.expended_casing[1].casing_weight_lb = kNaN; },
-       Status::kValueOutOfRange, 43, 2, "casing weight"},
+       Status::kImpactCasingWeightNotPositive, 43, 2, "casing weight"},
       {"every n-th point >= 1", [](ImpactLocusData& d) { d.every_nth_point[0] = 0; },
-       Status::kValueOutOfRange, 33, 1, "DA6D(17)"},
+       Status::kImpactEveryNthPointOutOfRange, 33, 1, "DA6D(17)"},
       {"step in the atmosphere > 0", [](ImpactLocusData& d) { d.steps.in_atmosphere_s = 0.0; },
-       Status::kValueOutOfRange, 0, 0, "impact step sizes"},
-      {"minimum step finite", [](ImpactLocusData& d) { d.steps.min_step_s = kNaN; }, Status::kValueOutOfRange,
-       0, 0, "impact step sizes"},
-      {"flight limit > 0", [](ImpactLocusData& d) { d.steps.max_flight_s = -1.0; }, Status::kValueOutOfRange,
-       0, 0, "impact step sizes"},
+       Status::kImpactStepSizeNotPositive, 0, 0, "in_atmosphere_s"},
+      {"minimum step finite", [](ImpactLocusData& d) { d.steps.min_step_s = kNaN; },
+       Status::kImpactStepSizeNotPositive, 0, 0, "min_step_s"},
+      {"flight limit > 0", [](ImpactLocusData& d) { d.steps.max_flight_s = -1.0; },
+       Status::kImpactStepSizeNotPositive, 0, 0, "max_flight_s"},
   };
   auto mission = reference();
   auto good = std::make_unique<ImpactLocusData>();
@@ -252,9 +252,9 @@ TEST(Sec19Atmosphere, TableValidationRejectsWhatHasNoAtmosphere) {
   // evaluate_atmosphere: a radius that puts the point at or below the Earth's centre, none at all.
   const Constants constants{};
   AtmosphereSample s;
-  EXPECT_EQ(evaluate_atmosphere(good, constants, -3.0e7, 2.09e7, &s), Status::kValueOutOfRange);
-  EXPECT_EQ(evaluate_atmosphere(good, constants, 1000.0, -1.0, &s), Status::kValueOutOfRange);
-  EXPECT_EQ(evaluate_atmosphere(good, constants, 1000.0, 2.09e7, nullptr), Status::kValueOutOfRange);
+  EXPECT_EQ(evaluate_atmosphere(good, constants, -3.0e7, 2.09e7, &s), Status::kAtmosphereRadiusNotPositive);
+  EXPECT_EQ(evaluate_atmosphere(good, constants, 1000.0, -1.0, &s), Status::kAtmosphereRadiusNotPositive);
+  EXPECT_EQ(evaluate_atmosphere(good, constants, 1000.0, 2.09e7, nullptr), Status::kOutputPointerNull);
   // Density beyond the double range (a user table's base density near DBL_MAX, far below its base):
   // refused as not finite rather than returned.
   t = good;
@@ -320,7 +320,7 @@ TEST(Sec8ExchangeRatios, ParameterChangesThatCannotBeMadeAreRefused) {
   auto base = reference();
   auto out = std::make_unique<Mission>();
   EXPECT_EQ(perturb_stage_parameter(*base, 2, ExchangeParameter::kJettisonWeight, 1.0, base.get()),
-            Status::kValueOutOfRange)
+            Status::kOutputAliasesInput)
       << "the output may not be the input";
   EXPECT_EQ(perturb_stage_parameter(*base, 6, ExchangeParameter::kJettisonWeight, 1.0, out.get()),
             Status::kUnknownStageCode)
@@ -329,19 +329,19 @@ TEST(Sec8ExchangeRatios, ParameterChangesThatCannotBeMadeAreRefused) {
             Status::kUnknownStageCode)
       << "a stage not flown";
   EXPECT_EQ(perturb_stage_parameter(*base, 2, ExchangeParameter::kBurnRate, -100.0, out.get()),
-            Status::kValueOutOfRange);
+            Status::kExchangePercentChangeTooNegative);
   EXPECT_EQ(perturb_stage_parameter(*base, 2, ExchangeParameter::kSpecificImpulse, -150.0, out.get()),
-            Status::kValueOutOfRange);
+            Status::kExchangePercentChangeTooNegative);
   const double w0 = test::stage(*base, 3).consumable_weight_lb.y(0);
   EXPECT_EQ(perturb_stage_parameter(*base, 3, ExchangeParameter::kPropellantWeight, -w0, out.get()),
-            Status::kValueOutOfRange);
+            Status::kExchangePropellantChangeTooNegative);
   ASSERT_EQ(perturb_stage_parameter(*base, 3, ExchangeParameter::kDrag, 2.0, out.get()), Status::kOk);
   EXPECT_TRUE(test::stage(*out, 3).drag_coefficient.empty()) << "stage 3 has no drag table";
   test::stage(*base, 2).reference_area_ft2 = 0.0;
   EXPECT_EQ(perturb_stage_parameter(*base, 2, ExchangeParameter::kDrag, 2.0, out.get()),
-            Status::kValueOutOfRange);
+            Status::kReferenceAreaMissing);
   EXPECT_EQ(perturb_stage_parameter(*base, 2, static_cast<ExchangeParameter>(9), 2.0, out.get()),
-            Status::kValueOutOfRange);
+            Status::kUnknownExchangeParameter);
   base = reference();
   ASSERT_TRUE(base->options.zero_alpha_window());
   ASSERT_EQ(perturb_stage_parameter(*base, 1, ExchangeParameter::kBurnRate, 25.0, out.get()), Status::kOk);
@@ -356,7 +356,7 @@ TEST(Sec5ConstraintPartials, GuardsRefuseWhatHasNoPartials) {
   StateVector x = StateVector::Zero();
   x[kStateR] = constants.earth_equatorial_radius_ft;
   InertialJacobian j;
-  EXPECT_EQ(inertial_variable_partials(constants, x, nullptr), Status::kValueOutOfRange);
+  EXPECT_EQ(inertial_variable_partials(constants, x, nullptr), Status::kOutputPointerNull);
   StateVector bad = x;
   bad[kStateV] = kNaN;
   EXPECT_EQ(inertial_variable_partials(constants, bad, &j), Status::kNonFiniteState);
@@ -368,7 +368,7 @@ TEST(Sec5ConstraintPartials, GuardsRefuseWhatHasNoPartials) {
   point.state = x;
   Eigen::Matrix<double, 6, 1> partials;
   EXPECT_EQ(stagnation_heating_rate_partials(constants, 0.5, 0.0023769, point, nullptr),
-            Status::kValueOutOfRange);
+            Status::kOutputPointerNull);
   point.ddensity_dh = kNaN;
   EXPECT_EQ(stagnation_heating_rate_partials(constants, 0.5, 0.0023769, point, &partials),
             Status::kValueNotFinite);

@@ -222,11 +222,15 @@ TEST(Sec19Atmosphere, RejectsNonFiniteInputsAndATemperatureThroughZero) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   EXPECT_EQ(evaluate_atmosphere(table, constants, nan, 2e7, &s), Status::kValueNotFinite);
   EXPECT_EQ(evaluate_atmosphere(table, constants, 1000.0, nan, &s), Status::kValueNotFinite);
-  EXPECT_EQ(evaluate_atmosphere(table, constants, 1000.0, 2e7, nullptr), Status::kValueOutOfRange);
+  EXPECT_EQ(evaluate_atmosphere(table, constants, 1000.0, 2e7, nullptr), Status::kOutputPointerNull);
   // The sea-level layer extended downward with a positive lapse rate reaches T_M = 0.
   AtmosphereTable inverted = table;
   inverted.lapse_rate_R_per_ft[0] = 0.01;
-  EXPECT_EQ(evaluate_atmosphere(inverted, constants, -60000.0, 1e30, &s), Status::kValueOutOfRange);
+  EXPECT_EQ(evaluate_atmosphere(inverted, constants, -60000.0, 1e30, &s),
+            Status::kAtmosphereTemperatureNotPositive);
+  // The Earth's centre (R + h = 0) and a non-positive Earth radius have no atmosphere either.
+  EXPECT_EQ(evaluate_atmosphere(table, constants, -2e7, 2e7, &s), Status::kAtmosphereRadiusNotPositive);
+  EXPECT_EQ(evaluate_atmosphere(table, constants, 1000.0, 0.0, &s), Status::kAtmosphereRadiusNotPositive);
 }
 
 TEST(Sec19Atmosphere, ValidatesTheTable) {

@@ -268,7 +268,7 @@ TEST(Sec5Ics, DecodesEveryBlock8CodeAndRejectsUnknownOnesByName) {
     EXPECT_EQ(decode_constraint_code(bad, &d), Status::kUnknownConstraintCode) << bad;
   }
   EXPECT_STREQ(status_name(Status::kUnknownConstraintCode), "kUnknownConstraintCode");
-  EXPECT_EQ(decode_constraint_code(1, nullptr), Status::kValueOutOfRange);
+  EXPECT_EQ(decode_constraint_code(1, nullptr), Status::kOutputPointerNull);
 
   // A hand-made code that decode_constraint_code would not produce is rejected too.
   const Constants c;
@@ -918,9 +918,9 @@ TEST(Sec5Ics, SingularStatesFailWithNamedStatus) {
   ConstraintCode code;
   ASSERT_EQ(decode_constraint_code(1, &code), Status::kOk);
   EXPECT_EQ(constraint_value(c, launch, code, make_point(c, with_mass(oracle_state(1))), nullptr),
-            Status::kValueOutOfRange);
+            Status::kOutputPointerNull);
   EXPECT_EQ(constraint_partials(c, launch, code, make_point(c, with_mass(oracle_state(1))), nullptr),
-            Status::kValueOutOfRange);
+            Status::kOutputPointerNull);
 }
 
 // ---- Oblate radius derivative and heating forcing ------------------------------------------------
@@ -969,7 +969,7 @@ TEST(Sec5Ics, HeatingRatePartialsMatchCentralDifferences) {
   ASSERT_EQ(stagnation_heating_rate_partials(c, nose_ft, kSeaLevelDensity, vacuum, &an), Status::kOk);
   EXPECT_EQ(an.norm(), 0.0);
   EXPECT_EQ(stagnation_heating_rate_partials(c, -1.0, kSeaLevelDensity, vacuum, &an),
-            Status::kValueOutOfRange);
+            Status::kNoseRadiusNotPositive);
 }
 
 // ---- Stopping-condition correction (eqs. 5-12 .. 5-18) -------------------------------------------

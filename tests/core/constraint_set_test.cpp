@@ -37,7 +37,7 @@ TEST(Sec22ConstraintSet, AnExcessCountsADeficitDoesNotAndMetIsTheSameRule) {
   ConstraintSet set;
   ASSERT_EQ(append_constraint(decoded(7), 1000.0, 10.0, options, &set), Status::kOk);  // altitude
   ASSERT_EQ(append_constraint(decoded(29), 500.0, 5.0, options, &set), Status::kOk);   // q-bar <= 500
-  EXPECT_EQ(append_constraint(decoded(7), 1000.0, 0.0, options, &set), Status::kValueOutOfRange);
+  EXPECT_EQ(append_constraint(decoded(7), 1000.0, 0.0, options, &set), Status::kDeadbandNotPositive);
   ASSERT_EQ(set.count, 2);
   EXPECT_FALSE(set.inequality[0]);
   EXPECT_TRUE(set.inequality[1]);
@@ -94,7 +94,8 @@ TEST(Sec22ConstraintSet, ValuesAndTerminalsOnTheReferenceFlightAreThePerCodeFunc
   // A stage that is not flown is no point of the trajectory: a named status, nothing evaluated.
   ConstraintSet missing;
   ASSERT_EQ(append_constraint(decoded(57), 0.0, 1.0, mission.options, &missing), Status::kOk);
-  EXPECT_EQ(evaluate_constraints(missing, mission, trajectory, values), Status::kValueOutOfRange);
+  EXPECT_EQ(evaluate_constraints(missing, mission, trajectory, values),
+            Status::kConstraintPointNotInTrajectory);
 }
 
 }  // namespace

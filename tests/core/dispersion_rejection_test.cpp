@@ -77,7 +77,8 @@ struct DataRejection {
 
 TEST(Sec22DispersionBlocks, EveryRejectionNamesItsStatusAndCode) {
   static const DataRejection rows[] = {
-      {"thrust code of another stage", 3, [](DispersionSource& s) { s.stage = 3; }, Status::kValueOutOfRange},
+      {"thrust code of another stage", 3, [](DispersionSource& s) { s.stage = 3; },
+       Status::kDispersionStageCodeMismatch},
       {"thrust table given", 3, [](DispersionSource& s) { s.vacuum_thrust_lbf.clear(); },
        Status::kTableEmpty},
       {"weight table given", 3, [](DispersionSource& s) { s.consumable_weight_lb.clear(); },
@@ -96,13 +97,13 @@ TEST(Sec22DispersionBlocks, EveryRejectionNamesItsStatusAndCode) {
          table(&s.vacuum_thrust_lbf, {1.0, 20.0, 40.0}, {1.0, 1.0, 0.0});
          table(&s.consumable_weight_lb, {1.0, 20.0, 40.0}, {2.0, 1.0, 0.0});
        },
-       Status::kValueOutOfRange},
+       Status::kDispersionThrustTableTimesInvalid},
       {"a burn longer than 0 s", 3,
        [](DispersionSource& s) {
          table(&s.vacuum_thrust_lbf, {0.0}, {1.0});
          table(&s.consumable_weight_lb, {0.0}, {1.0});
        },
-       Status::kValueOutOfRange},
+       Status::kDispersionThrustTableTimesInvalid},
       {"the same times", 3,
        [](DispersionSource& s) {
          table(&s.consumable_weight_lb, {0.0, 21.0, 40.0}, {6000.0, 3000.0, 0.0});
@@ -112,7 +113,7 @@ TEST(Sec22DispersionBlocks, EveryRejectionNamesItsStatusAndCode) {
        [](DispersionSource& s) {
          table(&s.vacuum_thrust_lbf, {0.0, 20.0, 40.0}, {1.0, -1.0, 0.0});
        },
-       Status::kValueOutOfRange},
+       Status::kDispersionThrustNegative},
       {"weight >= 0", 3,
        [](DispersionSource& s) {
          table(&s.consumable_weight_lb, {0.0, 20.0, 40.0}, {6000.0, -1.0, -2.0});
@@ -146,10 +147,11 @@ TEST(Sec22DispersionBlocks, EveryRejectionNamesItsStatusAndCode) {
        },
        Status::kTableNotMonotonic},
       {"drag change below 100 %", 17, [](DispersionSource& s) { s.drag_variation_fraction = -1.0; },
-       Status::kValueOutOfRange},
-      {"tip-off of stage 4 or 5", 31, [](DispersionSource& s) { s.stage = 3; }, Status::kValueOutOfRange},
+       Status::kDispersionDragVariationOutOfRange},
+      {"tip-off of stage 4 or 5", 31, [](DispersionSource& s) { s.stage = 3; },
+       Status::kDispersionStageNotSpun},
       {"weight code of its own stage", 11, [](DispersionSource& s) { s.stage = 3; },
-       Status::kValueOutOfRange},
+       Status::kDispersionStageCodeMismatch},
       {"deadband finite", 24, [](DispersionSource& s) { s.deadband_rad = kNaN; }, Status::kValueNotFinite},
       {"launch change finite", 33, [](DispersionSource& s) { s.launch_change_rad = HUGE_VAL; },
        Status::kValueNotFinite},
@@ -227,8 +229,9 @@ TEST(Sec15Dispersions, CasesThatCannotBeBuiltAreNamed) {
 
   // run_dispersions without a nominal.
   auto result = std::make_unique<DispersionResult>();
-  EXPECT_EQ(run_dispersions(DispersionNominal{}, data, &f->workspace, result.get()), Status::kNotPrepared);
-  EXPECT_EQ(result->status, Status::kNotPrepared);
+  EXPECT_EQ(run_dispersions(DispersionNominal{}, data, &f->workspace, result.get()),
+            Status::kDispersionNominalNotPrepared);
+  EXPECT_EQ(result->status, Status::kDispersionNominalNotPrepared);
   // A flight that failed, or never flew, records nothing.
   auto flown = std::make_unique<Trajectory>();
   auto record = std::make_unique<DispersedTrajectory>();
@@ -238,7 +241,7 @@ TEST(Sec15Dispersions, CasesThatCannotBeBuiltAreNamed) {
   flown->status = Status::kOk;
   flown->point_count = 0;
   EXPECT_EQ(record_dispersed_trajectory(f->mission, f->prepared, *flown, *flown, nullptr, record.get()),
-            Status::kNotPrepared);
+            Status::kTrajectoryEmpty);
 }
 
 // Which sources a Monte Carlo sample draws: a low code whose high code is listed shares the high
@@ -327,13 +330,14 @@ TEST(MonteCarlo, ScalarSourcesMoveTheCaseByTheirOwnDrawOverThree) {
   // A drag change the draw takes to -100 % or beyond is refused, not flown.
   d.sources[1].drag_variation_fraction = 1e6;
   EXPECT_EQ(build_monte_carlo_case(nominal, f->prepared, d, seed, sample, &f->workspace),
-            Status::kValueOutOfRange);
+            Status::kDispersionDragVariationOutOfRange);
   // An unknown code, and no nominal.
   d.sources[1].code = 39;
   EXPECT_EQ(build_monte_carlo_case(nominal, f->prepared, d, seed, sample, &f->workspace),
             Status::kDispersionCodeInvalid);
-  EXPECT_EQ(check_monte_carlo_data(DispersionNominal{}, d, &fault_code), Status::kNotPrepared);
-  EXPECT_EQ(prepare_monte_carlo(DispersionNominal{}, &f->workspace), Status::kNotPrepared);
+  EXPECT_EQ(check_monte_carlo_data(DispersionNominal{}, d, &fault_code),
+            Status::kDispersionNominalNotPrepared);
+  EXPECT_EQ(prepare_monte_carlo(DispersionNominal{}, &f->workspace), Status::kDispersionNominalNotPrepared);
 }
 
 // Table sources are blended on the union of their grids: more points than the tables hold is

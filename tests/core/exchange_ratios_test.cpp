@@ -111,12 +111,12 @@ TEST(Sec8ExchangeRatios, RunsResumedAtTheStageIgnitionEqualFullFlightsBitForBit)
   bad.program = &ws.program;
   bad.resume_from = &base;
   bad.resume_stage_slot = 0;
-  EXPECT_EQ(fly_trajectory(ws.mission, base_prepared, bad, &resumed), Status::kValueOutOfRange);
+  EXPECT_EQ(fly_trajectory(ws.mission, base_prepared, bad, &resumed), Status::kResumeStageSlotInvalid);
   bad.resume_stage_slot = base.stage_count;
-  EXPECT_EQ(fly_trajectory(ws.mission, base_prepared, bad, &resumed), Status::kValueOutOfRange);
+  EXPECT_EQ(fly_trajectory(ws.mission, base_prepared, bad, &resumed), Status::kResumeStageSlotInvalid);
   bad.resume_stage_slot = 2;
   bad.injection_point = 3;
-  EXPECT_EQ(fly_trajectory(ws.mission, base_prepared, bad, &resumed), Status::kValueOutOfRange);
+  EXPECT_EQ(fly_trajectory(ws.mission, base_prepared, bad, &resumed), Status::kResumeInputsIncompatible);
 }
 
 int slot_of(const ExchangeRatios& r, int code) {
@@ -354,9 +354,9 @@ TEST(Sec8ExchangeRatios, ParameterChangesKeepWhatTheirDefinitionsKeep) {
   EXPECT_EQ(perturb_stage_parameter(base, 5, ExchangeParameter::kJettisonWeight, 1.0, &out),
             Status::kUnknownStageCode);
   EXPECT_EQ(perturb_stage_parameter(base, 2, ExchangeParameter::kBurnRate, -100.0, &out),
-            Status::kValueOutOfRange);
+            Status::kExchangePercentChangeTooNegative);
   EXPECT_EQ(perturb_stage_parameter(base, 2, ExchangeParameter::kJettisonWeight, 1.0, &base),
-            Status::kValueOutOfRange);
+            Status::kOutputAliasesInput);
 }
 
 TEST(Sec8ExchangeRatios, RefusesAnUnfinishedOptimization) {
@@ -365,7 +365,8 @@ TEST(Sec8ExchangeRatios, RefusesAnUnfinishedOptimization) {
   static OptimizerResult unfinished;  // constraint_count 0: optimize_trajectory never reached its summary
   static ExchangeRatioScratch scratch;
   static ExchangeRatios ratios;
-  EXPECT_EQ(compute_exchange_ratios(b.final_ws, unfinished, &scratch, &ratios), Status::kNotPrepared);
+  EXPECT_EQ(compute_exchange_ratios(b.final_ws, unfinished, &scratch, &ratios),
+            Status::kOptimizerResultIncomplete);
   EXPECT_EQ(ratios.stage_count, 0);
 }
 

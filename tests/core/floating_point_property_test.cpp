@@ -226,8 +226,10 @@ TEST(FloatingPoint, Sec13_HeatingRateIsFiniteOnRandomInputAndBadInputIsAStatus) 
   double q = 0.0;
   for (const double bad : {kNaN, kInf})
     EXPECT_EQ(stagnation_heating_rate_checked(1.0, bad, 0.0023769, 1000.0, &q), Status::kValueNotFinite);
-  EXPECT_EQ(stagnation_heating_rate_checked(0.0, 1e-3, 0.0023769, 1000.0, &q), Status::kValueOutOfRange);
-  EXPECT_EQ(stagnation_heating_rate_checked(1.0, -1e-3, 0.0023769, 1000.0, &q), Status::kValueOutOfRange);
+  EXPECT_EQ(stagnation_heating_rate_checked(0.0, 1e-3, 0.0023769, 1000.0, &q),
+            Status::kNoseRadiusNotPositive);
+  EXPECT_EQ(stagnation_heating_rate_checked(1.0, -1e-3, 0.0023769, 1000.0, &q),
+            Status::kHeatingStateNegative);
 }
 
 }  // namespace

@@ -383,18 +383,18 @@ TEST(Sec17Impact, ValidationNamesTheDataBlockStageAndWord) {
 
   ImpactLocusData past = f->data;
   past.every_nth_point[2] = f->mission.vehicle.stages[2].integration_steps + 1;
-  EXPECT_EQ(validate_impact_data(f->mission, past, &fault), Status::kValueOutOfRange);
+  EXPECT_EQ(validate_impact_data(f->mission, past, &fault), Status::kImpactEveryNthPointOutOfRange);
   EXPECT_EQ(fault.data_block, 33);
   EXPECT_STREQ(fault.field, "DA6D(19)");
 
   ImpactLocusData weightless = f->data;
   weightless.expended_casing[0].casing_weight_lb = 0.0;
-  EXPECT_EQ(validate_impact_data(f->mission, weightless, &fault), Status::kValueOutOfRange);
+  EXPECT_EQ(validate_impact_data(f->mission, weightless, &fault), Status::kImpactCasingWeightNotPositive);
   EXPECT_EQ(fault.data_block, 43);
   EXPECT_STREQ(fault.field, "casing weight");
   // The locus refuses the same data before it flies anything.
   EXPECT_EQ(compute_impact_locus(f->mission, f->prepared, f->nominal, past, &f->workspace, &f->locus),
-            Status::kValueOutOfRange);
+            Status::kImpactEveryNthPointOutOfRange);
   EXPECT_EQ(f->locus.count, 0);
 }
 

@@ -493,17 +493,24 @@ TEST(Sec13Heating, CheckedVariantRejectsBadInputs) {
   double q = -1.0;
   EXPECT_EQ(stagnation_heating_rate_checked(0.5, 1e-5, 0.0023769, 15000.0, &q), Status::kOk);
   EXPECT_NEAR(q, 7126.388087770833, 1e-8);
-  EXPECT_EQ(stagnation_heating_rate_checked(0.0, 1e-5, 0.0023769, 15000.0, &q), Status::kValueOutOfRange);
-  EXPECT_EQ(stagnation_heating_rate_checked(0.5, -1e-5, 0.0023769, 15000.0, &q), Status::kValueOutOfRange);
-  EXPECT_EQ(stagnation_heating_rate_checked(0.5, 1e-5, 0.0023769, -1.0, &q), Status::kValueOutOfRange);
+  EXPECT_EQ(stagnation_heating_rate_checked(0.0, 1e-5, 0.0023769, 15000.0, &q),
+            Status::kNoseRadiusNotPositive);
+  EXPECT_EQ(stagnation_heating_rate_checked(0.5, -1e-5, 0.0023769, 15000.0, &q),
+            Status::kHeatingStateNegative);
+  EXPECT_EQ(stagnation_heating_rate_checked(0.5, 1e-5, 0.0023769, -1.0, &q), Status::kHeatingStateNegative);
+  EXPECT_EQ(stagnation_heating_rate_checked(0.5, 1e-5, 0.0, 15000.0, &q),
+            Status::kSeaLevelDensityNotPositive);
+  EXPECT_EQ(stagnation_heating_rate_checked(0.5, 1e-5, 0.0023769, 15000.0, nullptr),
+            Status::kOutputPointerNull);
   EXPECT_EQ(stagnation_heating_rate_checked(0.5, std::nan(""), 0.0023769, 1.0, &q), Status::kValueNotFinite);
   // Each input on its own (Sec. 13 eq. for q-dot needs R_N > 0 and rho_0 > 0), and no output.
   EXPECT_EQ(stagnation_heating_rate_checked(HUGE_VAL, 1e-5, 0.0023769, 1.0, &q), Status::kValueNotFinite);
   EXPECT_EQ(stagnation_heating_rate_checked(0.5, 1e-5, std::nan(""), 1.0, &q), Status::kValueNotFinite);
   EXPECT_EQ(stagnation_heating_rate_checked(0.5, 1e-5, 0.0023769, -HUGE_VAL, &q), Status::kValueNotFinite);
-  EXPECT_EQ(stagnation_heating_rate_checked(0.5, 1e-5, 0.0, 15000.0, &q), Status::kValueOutOfRange);
+  EXPECT_EQ(stagnation_heating_rate_checked(0.5, 1e-5, 0.0, 15000.0, &q),
+            Status::kSeaLevelDensityNotPositive);
   EXPECT_EQ(stagnation_heating_rate_checked(0.5, 1e-5, 0.0023769, 15000.0, nullptr),
-            Status::kValueOutOfRange);
+            Status::kOutputPointerNull);
   EXPECT_NEAR(q, 7126.388087770833, 1e-8) << "a refused input leaves the output as it was";
 }
 

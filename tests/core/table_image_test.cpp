@@ -159,26 +159,32 @@ TEST(TableImage, ValidationChecksEveryDocumentedRange) {
     Status expected;
   };
   const Case cases[] = {
-      {"lift-off 0", [](GuidanceTable* t) { t->liftoff_duration_s = 0.0; }, Status::kValueOutOfRange},
-      {"lift-off 61 s", [](GuidanceTable* t) { t->liftoff_duration_s = 61.0; }, Status::kValueOutOfRange},
-      {"max rate 0", [](GuidanceTable* t) { t->max_pitch_rate_rad_s = 0.0; }, Status::kValueOutOfRange},
+      {"lift-off 0", [](GuidanceTable* t) { t->liftoff_duration_s = 0.0; },
+       Status::kTableLiftoffDurationOutOfRange},
+      {"lift-off 61 s", [](GuidanceTable* t) { t->liftoff_duration_s = 61.0; },
+       Status::kTableLiftoffDurationOutOfRange},
+      {"max rate 0", [](GuidanceTable* t) { t->max_pitch_rate_rad_s = 0.0; },
+       Status::kTablePitchRateLimitOutOfRange},
       {"max rate 31 deg/s", [](GuidanceTable* t) { t->max_pitch_rate_rad_s = 31.0 * kDegToRad; },
-       Status::kValueOutOfRange},
+       Status::kTablePitchRateLimitOutOfRange},
       {"min rate above max", [](GuidanceTable* t) { t->min_pitch_rate_rad_s = 6.0 * kDegToRad; },
-       Status::kValueOutOfRange},
+       Status::kTableMinPitchRateOutOfRange},
       {"negative min rate change", [](GuidanceTable* t) { t->min_pitch_rate_change_rad_s = -1e-3; },
-       Status::kValueOutOfRange},
-      {"deflection 0", [](GuidanceTable* t) { t->max_deflection_rad = 0.0; }, Status::kValueOutOfRange},
+       Status::kTablePitchRateChangeOutOfRange},
+      {"deflection 0", [](GuidanceTable* t) { t->max_deflection_rad = 0.0; },
+       Status::kTableDeflectionLimitOutOfRange},
       {"deflection 31 deg", [](GuidanceTable* t) { t->max_deflection_rad = 31.0 * kDegToRad; },
-       Status::kValueOutOfRange},
-      {"stage 4 theta 4 rad", [](GuidanceTable* t) { t->stage4_theta_rad = 4.0; }, Status::kValueOutOfRange},
-      {"negative gain", [](GuidanceTable* t) { t->gains[2].k_q_s = -0.1; }, Status::kValueOutOfRange},
-      {"gain 101", [](GuidanceTable* t) { t->gains[0].k_theta = 101.0; }, Status::kValueOutOfRange},
+       Status::kTableDeflectionLimitOutOfRange},
+      {"stage 4 theta 4 rad", [](GuidanceTable* t) { t->stage4_theta_rad = 4.0; },
+       Status::kTableUpperStageAttitudeOutOfRange},
+      {"negative gain", [](GuidanceTable* t) { t->gains[2].k_q_s = -0.1; }, Status::kTableGainOutOfRange},
+      {"gain 101", [](GuidanceTable* t) { t->gains[0].k_theta = 101.0; }, Status::kTableGainOutOfRange},
       {"negative start", [](GuidanceTable* t) { t->segments[0].start_stage_time_s = -1.0; },
-       Status::kValueOutOfRange},
+       Status::kSegmentStartTimeOutOfRange},
       {"theta 3.2 rad", [](GuidanceTable* t) { t->segments[1].theta_start_rad = 3.2; },
-       Status::kValueOutOfRange},
-      {"stamp negative", [](GuidanceTable* t) { t->created_unix_s = -1; }, Status::kValueOutOfRange},
+       Status::kSegmentAttitudeOutOfRange},
+      {"stamp negative", [](GuidanceTable* t) { t->created_unix_s = -1; },
+       Status::kTableCreationTimeOutOfRange},
       {"stage 4 segment", [](GuidanceTable* t) { t->segments[7].stage_code = 4; },
        Status::kSegmentStageInvalid},
       {"stage 0 segment", [](GuidanceTable* t) { t->segments[0].stage_code = 0; },
@@ -246,7 +252,7 @@ TEST(TableImage, EveryWordAndLayoutFieldIsCheckedOnItsOwn) {
        [](GuidanceTable* t) { t->schedule[0].k_q_s = std::numeric_limits<double>::quiet_NaN(); },
        Status::kValueNotFinite},
       {"schedule K_theta beyond 100", [](GuidanceTable* t) { t->schedule[0].k_theta = 101.0; },
-       Status::kValueOutOfRange},
+       Status::kTableGainOutOfRange},
   };
   for (const Case& c : cases) {
     GuidanceTable table = good;
@@ -337,7 +343,7 @@ TEST(TableImage, Sec22_SegmentStagesFollowTheSpinOptionIP9) {
   EXPECT_EQ(decoded.spin_option, 2);
   EXPECT_EQ(decoded.segments[decoded.segment_count - 1].stage_code, 4);
   table.spin_option = 4;
-  EXPECT_EQ(validate_guidance_table(table), Status::kValueOutOfRange);
+  EXPECT_EQ(validate_guidance_table(table), Status::kTableSpinOptionOutOfRange);
 }
 
 TEST(Status, EveryTableStatusHasANameAndAMessage) {

@@ -266,17 +266,17 @@ TEST_F(TableLoader, RejectsReservedBytesAndBadTextAndKeepsActiveTable) {
 TEST_F(TableLoader, RejectsOutOfRangeValuesAndBadStageCodesAndKeepsActiveTable) {
   expect_rejected_keeping_active(
       patched([](std::uint8_t* b) { put_f64_le(b + kOffsetLiftoffDuration, -3.0); }),
-      Status::kValueOutOfRange, "negative lift-off");
+      Status::kTableLiftoffDurationOutOfRange, "negative lift-off");
   expect_rejected_keeping_active(
       patched([](std::uint8_t* b) { put_f64_le(b + kOffsetSegments + kSegmentOffsetTheta, 7.0); }),
-      Status::kValueOutOfRange, "theta 7 rad");
+      Status::kSegmentAttitudeOutOfRange, "theta 7 rad");
   expect_rejected_keeping_active(patched([](std::uint8_t* b) { put_u64_le(b + kOffsetCreatedUnixS, ~0ull); }),
-                                 Status::kValueOutOfRange, "stamp beyond year 9999");
+                                 Status::kTableCreationTimeOutOfRange, "stamp beyond year 9999");
   expect_rejected_keeping_active(
       patched([](std::uint8_t* b) { put_u16_le(b + kOffsetSegments + 7 * kTableSegmentRecordSize, 9); }),
       Status::kSegmentStageInvalid, "segment in coast 9 (spun under IP(9) = 1)");
   expect_rejected_keeping_active(patched([](std::uint8_t* b) { put_u16_le(b + kOffsetSpinOption, 4); }),
-                                 Status::kValueOutOfRange, "IP(9) = 4");
+                                 Status::kTableSpinOptionOutOfRange, "IP(9) = 4");
 }
 
 TEST_F(TableLoader, AValidImageAfterRejectionsIsStillAccepted) {

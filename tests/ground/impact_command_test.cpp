@@ -129,7 +129,21 @@ TEST(Sec17ImpactCommand, FailurePointPastTheEndOfAStageIsBadInputNamingTheWord) 
   // Stage 3 has 40 integration steps: n = 41 puts the first failure after the lift-off past its end.
   const std::string deck = edited_example_deck(
       scratch, "nth.toml", {{"impact_every_nth_step = [2, 2, 2]", "impact_every_nth_step = [2, 2, 41]"}});
-  expect_bad_input(deck, {"data block 33", "DA6D(19)", "body_dynamics.impact_every_nth_step[2]", "n = 41"});
+  expect_bad_input(deck, {"data block 33", "DA6D(19)", "body_dynamics.impact_every_nth_step[2]", "n = 41",
+                          "kImpactEveryNthPointOutOfRange"});
+}
+
+// Issue 18: the cause is named (not a generic out-of-range) together with the block, word and key.
+TEST(Sec17ImpactCommand, ZeroCasingWeightIsBadInputNamingTheCauseAndTheField) {
+  ScratchDirectory scratch("impact_casing");
+  const std::string deck = edited_example_deck(
+      scratch, "casing.toml",
+      {{"[impact.casing_drag.2]  # data block 43, CD2E\n# tumbling Castor casing with transition B\n"
+        "reference_area_ft2 = 5.2414\ncasing_weight_lb = 1650.0\n",
+        "[impact.casing_drag.2]  # data block 43, CD2E\n# tumbling Castor casing with transition B\n"
+        "reference_area_ft2 = 5.2414\ncasing_weight_lb = 0.0\n"}});
+  expect_bad_input(
+      deck, {"data block 43", "impact.casing_drag.2", "casing weight", "kImpactCasingWeightNotPositive"});
 }
 
 TEST(Sec17ImpactCommand, PlotDrawsTheLocus) {

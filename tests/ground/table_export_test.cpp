@@ -519,6 +519,15 @@ TEST(InspectCli, NamesTheFaultOfABadImageAndExitsNonZero) {
   put_u16_le(count.data() + kOffsetSegmentCount, 16);
   reseal_table_image(count.data());
   cases.push_back({"count", count, "kTooManyLinearSegments"});
+  // A value out of its range is named by its field (issue 18), not by a generic out-of-range.
+  Image theta = good;
+  put_f64_le(theta.data() + kOffsetSegments + kSegmentOffsetTheta, 7.0);
+  reseal_table_image(theta.data());
+  cases.push_back({"theta", theta, "kSegmentAttitudeOutOfRange"});
+  Image liftoff = good;
+  put_f64_le(liftoff.data() + kOffsetLiftoffDuration, -3.0);
+  reseal_table_image(liftoff.data());
+  cases.push_back({"liftoff", liftoff, "kTableLiftoffDurationOutOfRange"});
   for (const Case& c : cases) {
     const std::filesystem::path path = scratch / (std::string(c.name) + ".bin");
     write_image(path, c.image);

@@ -28,10 +28,10 @@ bool all_finite(const AtmosphereSample& s) {
 
 Status evaluate_atmosphere(const AtmosphereTable& table, const Constants& constants, double altitude_ft,
                            double earth_radius_ft, AtmosphereSample* out) {
-  if (out == nullptr) return Status::kValueOutOfRange;
+  if (out == nullptr) return Status::kOutputPointerNull;
   if (!std::isfinite(altitude_ft) || !std::isfinite(earth_radius_ft)) return Status::kValueNotFinite;
   const double radius_sum_ft = earth_radius_ft + altitude_ft;
-  if (!(radius_sum_ft > 0.0) || !(earth_radius_ft > 0.0)) return Status::kValueOutOfRange;
+  if (!(radius_sum_ft > 0.0) || !(earth_radius_ft > 0.0)) return Status::kAtmosphereRadiusNotPositive;
 
   const double r_gas = constants.gas_constant_ft2_s2_R;
   const double g0 = constants.g0_ft_s2;
@@ -61,7 +61,7 @@ Status evaluate_atmosphere(const AtmosphereTable& table, const Constants& consta
     // equation with p = rho R* T_M gives rho = rho_b X^-(1 + g0 / (R* L)), X = T_M / T_b.
     const double temperature_ratio = 1.0 + lapse_R_per_ft * above_base_ft / base_temperature_R;
     // An extended layer (or a user table) can drive T_M through zero: no atmosphere exists there.
-    if (!(temperature_ratio > 0.0)) return Status::kValueOutOfRange;
+    if (!(temperature_ratio > 0.0)) return Status::kAtmosphereTemperatureNotPositive;
     const double exponent = 1.0 + g0 / (r_gas * lapse_R_per_ft);
     s.temperature_R = base_temperature_R + lapse_R_per_ft * above_base_ft;
     s.density_slug_ft3 = base_density * std::pow(temperature_ratio, -exponent);

@@ -152,6 +152,58 @@ const char* status_name(Status status) {
     case Status::kGainScheduleStageInvalid: return "kGainScheduleStageInvalid";
     case Status::kGainScheduleTimesNotMonotonic: return "kGainScheduleTimesNotMonotonic";
     case Status::kTableImageVersion2: return "kTableImageVersion2";
+    case Status::kOutputPointerNull: return "kOutputPointerNull";
+    case Status::kOutputAliasesInput: return "kOutputAliasesInput";
+    case Status::kNoseRadiusNotPositive: return "kNoseRadiusNotPositive";
+    case Status::kSeaLevelDensityNotPositive: return "kSeaLevelDensityNotPositive";
+    case Status::kHeatingStateNegative: return "kHeatingStateNegative";
+    case Status::kAtmosphereRadiusNotPositive: return "kAtmosphereRadiusNotPositive";
+    case Status::kAtmosphereTemperatureNotPositive: return "kAtmosphereTemperatureNotPositive";
+    case Status::kFeedbackWithoutLiveProgram: return "kFeedbackWithoutLiveProgram";
+    case Status::kResumeInputsIncompatible: return "kResumeInputsIncompatible";
+    case Status::kResumeStageSlotInvalid: return "kResumeStageSlotInvalid";
+    case Status::kResumeStageNotRecorded: return "kResumeStageNotRecorded";
+    case Status::kModifiedThrustIdealVelocityInvalid: return "kModifiedThrustIdealVelocityInvalid";
+    case Status::kConstraintPointNotInTrajectory: return "kConstraintPointNotInTrajectory";
+    case Status::kLinearizedPayloadNegative: return "kLinearizedPayloadNegative";
+    case Status::kBackwardRunWithoutTrajectory: return "kBackwardRunWithoutTrajectory";
+    case Status::kOptimizerResultIncomplete: return "kOptimizerResultIncomplete";
+    case Status::kFinalTrajectoryMissing: return "kFinalTrajectoryMissing";
+    case Status::kExchangePercentChangeTooNegative: return "kExchangePercentChangeTooNegative";
+    case Status::kExchangeStageWithoutPropellant: return "kExchangeStageWithoutPropellant";
+    case Status::kExchangePropellantChangeTooNegative: return "kExchangePropellantChangeTooNegative";
+    case Status::kUnknownExchangeParameter: return "kUnknownExchangeParameter";
+    case Status::kImpactDragTableNotFromMach0: return "kImpactDragTableNotFromMach0";
+    case Status::kImpactDragCoefficientInvalid: return "kImpactDragCoefficientInvalid";
+    case Status::kImpactReferenceAreaNotPositive: return "kImpactReferenceAreaNotPositive";
+    case Status::kImpactCasingWeightNotPositive: return "kImpactCasingWeightNotPositive";
+    case Status::kImpactEveryNthPointOutOfRange: return "kImpactEveryNthPointOutOfRange";
+    case Status::kImpactStepSizeNotPositive: return "kImpactStepSizeNotPositive";
+    case Status::kImpactStartInvalid: return "kImpactStartInvalid";
+    case Status::kImpactStartBelowSurface: return "kImpactStartBelowSurface";
+    case Status::kImpactNominalFailed: return "kImpactNominalFailed";
+    case Status::kImpactNominalStageIncomplete: return "kImpactNominalStageIncomplete";
+    case Status::kDispersionNominalNotPrepared: return "kDispersionNominalNotPrepared";
+    case Status::kDispersionStageCodeMismatch: return "kDispersionStageCodeMismatch";
+    case Status::kDispersionThrustTableTimesInvalid: return "kDispersionThrustTableTimesInvalid";
+    case Status::kDispersionThrustNegative: return "kDispersionThrustNegative";
+    case Status::kDispersionDragVariationOutOfRange: return "kDispersionDragVariationOutOfRange";
+    case Status::kTrajectoryEmpty: return "kTrajectoryEmpty";
+    case Status::kMonteCarloBurnTimeNotPositive: return "kMonteCarloBurnTimeNotPositive";
+    case Status::kMonteCarloThrustNegative: return "kMonteCarloThrustNegative";
+    case Status::kTableSpinOptionOutOfRange: return "kTableSpinOptionOutOfRange";
+    case Status::kTableCreationTimeOutOfRange: return "kTableCreationTimeOutOfRange";
+    case Status::kTableLiftoffDurationOutOfRange: return "kTableLiftoffDurationOutOfRange";
+    case Status::kTablePitchRateLimitOutOfRange: return "kTablePitchRateLimitOutOfRange";
+    case Status::kTableMinPitchRateOutOfRange: return "kTableMinPitchRateOutOfRange";
+    case Status::kTablePitchRateChangeOutOfRange: return "kTablePitchRateChangeOutOfRange";
+    case Status::kTableDeflectionLimitOutOfRange: return "kTableDeflectionLimitOutOfRange";
+    case Status::kTableUpperStageAttitudeOutOfRange: return "kTableUpperStageAttitudeOutOfRange";
+    case Status::kTableGainOutOfRange: return "kTableGainOutOfRange";
+    case Status::kSegmentStartTimeOutOfRange: return "kSegmentStartTimeOutOfRange";
+    case Status::kSegmentAttitudeOutOfRange: return "kSegmentAttitudeOutOfRange";
+    case Status::kGainScheduleTimeOutOfRange: return "kGainScheduleTimeOutOfRange";
+    case Status::kLinearizationNotFinished: return "kLinearizationNotFinished";
   }
   return "kUnknownStatus";
 }
@@ -437,6 +489,124 @@ const char* status_message(Status status) {
       return "table image format version 2 (812 bytes, no autopilot gain schedule): this loader reads "
              "version 3 "
              "only; export the case again";
+    case Status::kOutputPointerNull:
+      return "an output argument is a null pointer (a caller's programming error)";
+    case Status::kOutputAliasesInput:
+      return "the output argument is the input argument itself; they must be distinct objects";
+    case Status::kNoseRadiusNotPositive:
+      return "the heating rate (Sec. 13) needs a positive nose radius DA2(7) of data block 17";
+    case Status::kSeaLevelDensityNotPositive:
+      return "the heating rate (Sec. 13) needs a positive sea-level density (the first layer of the "
+             "atmosphere table, Sec. 19)";
+    case Status::kHeatingStateNegative:
+      return "the heating rate (Sec. 13) was asked at a negative air density or velocity";
+    case Status::kAtmosphereRadiusNotPositive:
+      return "the atmosphere was asked at a point at or below the Earth's centre, or with an Earth radius "
+             "that is not positive";
+    case Status::kAtmosphereTemperatureNotPositive:
+      return "the molecular temperature of the atmosphere layer falls to zero or below at this altitude: no "
+             "atmosphere exists there";
+    case Status::kFeedbackWithoutLiveProgram:
+      return "a trajectory flown with guidance feedback needs the live pitch program it corrects "
+             "(FlightInputs::live_program)";
+    case Status::kResumeInputsIncompatible:
+      return "a trajectory resumed from another (FlightInputs::resume_from) cannot have guidance feedback, "
+             "an injection point or an air-relative angle-of-attack output";
+    case Status::kResumeStageSlotInvalid:
+      return "the trajectory to resume from failed, or the stage to resume at is not a later stage of both "
+             "timelines with the same stage code";
+    case Status::kResumeStageNotRecorded:
+      return "the stage to resume at has no recorded start point after the pad point in the trajectory "
+             "resumed from";
+    case Status::kModifiedThrustIdealVelocityInvalid:
+      return "thrust modification (Sec. 6): the ideal velocity of a powered stage over its integration grid "
+             "is not positive, or that of its input thrust table is not finite";
+    case Status::kConstraintPointNotInTrajectory:
+      return "a constraint's point is not in the trajectory: the stage X of a stage-end code 10X+5 to 10X+9 "
+             "(data block 8) was not flown, or the trajectory is empty";
+    case Status::kLinearizedPayloadNegative:
+      return "the linearization's payload change made the payload negative";
+    case Status::kBackwardRunWithoutTrajectory:
+      return "the backward (adjoint) run needs a flown trajectory of at least two points";
+    case Status::kOptimizerResultIncomplete:
+      return "the optimizer did not reach its summary: its result lists no constraints (or more than the "
+             "core holds)";
+    case Status::kFinalTrajectoryMissing:
+      return "the exchange ratios need the optimizer's final trajectory, which failed or is empty";
+    case Status::kExchangePercentChangeTooNegative:
+      return "a burn-rate or specific-impulse change of -100 % or less leaves the stage no thrust";
+    case Status::kExchangeStageWithoutPropellant:
+      return "a propellant-weight exchange ratio needs a stage whose consumable weight table (data block 38) "
+             "starts above 0 lb";
+    case Status::kExchangePropellantChangeTooNegative:
+      return "the propellant-weight change removes all of the stage's propellant";
+    case Status::kUnknownExchangeParameter:
+      return "the exchange-ratio parameter is not one of burn rate, propellant weight, specific impulse, "
+             "drag, jettison weight";
+    case Status::kImpactDragTableNotFromMach0:
+      return "an impact drag table (data block 42 or 43) does not start at Mach 0";
+    case Status::kImpactDragCoefficientInvalid:
+      return "a C_D of an impact drag table (data block 42 or 43) is negative or not finite";
+    case Status::kImpactReferenceAreaNotPositive:
+      return "the reference area of an impact drag table (data block 42 or 43) is not positive";
+    case Status::kImpactCasingWeightNotPositive:
+      return "the casing weight of an expended-casing table (data block 43) is not positive";
+    case Status::kImpactEveryNthPointOutOfRange:
+      return "the impact failure-point selector n DA6D(17-19) of data block 33 is not between 1 and the "
+             "stage's integration steps (data block 16)";
+    case Status::kImpactStepSizeNotPositive:
+      return "an impact trajectory step size or limit (ImpactStepSizes) is not positive";
+    case Status::kImpactStartInvalid:
+      return "an impact trajectory starts with a non-positive weight or a state or time that is not finite";
+    case Status::kImpactStartBelowSurface: return "an impact trajectory starts below the Earth's surface";
+    case Status::kImpactNominalFailed:
+      return "the impact locus needs a nominal trajectory that flew without failure";
+    case Status::kImpactNominalStageIncomplete:
+      return "the impact locus needs a nominal trajectory that completed every stage 1-3 of the sequence";
+    case Status::kDispersionNominalNotPrepared:
+      return "dispersion analysis needs the nominal case (mission, pitch program) prepared first";
+    case Status::kDispersionStageCodeMismatch:
+      return "the stage code of a thrust (1-8) or weight-increment (11-16) dispersion is not its code's "
+             "stage (or 5 for the stage-4 codes 7-8, 15-16)";
+    case Status::kDispersionThrustTableTimesInvalid:
+      return "a dispersion's thrust table (data block 30 of the dispersion group) does not start at stage "
+             "time 0 or has no positive burn time";
+    case Status::kDispersionThrustNegative:
+      return "a dispersion's vacuum thrust (data block 30 of the dispersion group) is negative";
+    case Status::kDispersionDragVariationOutOfRange:
+      return "a drag variation (data block 48, or a Monte Carlo sample's sum of them) is not strictly "
+             "between -100 % and +100 %";
+    case Status::kTrajectoryEmpty: return "the trajectory has no recorded points";
+    case Status::kMonteCarloBurnTimeNotPositive:
+      return "a Monte Carlo sample's blended burn time of a thrust dispersion (codes 1-8) is not positive";
+    case Status::kMonteCarloThrustNegative:
+      return "a Monte Carlo sample's blended vacuum thrust of a thrust dispersion (codes 1-8) is negative";
+    case Status::kTableSpinOptionOutOfRange: return "the table's spin option IP(9) is not 0-3";
+    case Status::kTableCreationTimeOutOfRange:
+      return "the table's creation time stamp is negative or beyond the year 9999";
+    case Status::kTableLiftoffDurationOutOfRange:
+      return "the table's lift-off duration is not positive or exceeds the format's limit";
+    case Status::kTablePitchRateLimitOutOfRange:
+      return "the table's maximum pitch rate is not positive or exceeds the format's limit";
+    case Status::kTableMinPitchRateOutOfRange:
+      return "the table's minimum pitch rate is negative or above its maximum pitch rate";
+    case Status::kTablePitchRateChangeOutOfRange:
+      return "the table's minimum pitch-rate change is negative or above twice its maximum pitch rate";
+    case Status::kTableDeflectionLimitOutOfRange:
+      return "the table's maximum control deflection is not positive or exceeds the format's limit";
+    case Status::kTableUpperStageAttitudeOutOfRange:
+      return "a stage 4 or 5 attitude (theta, chi) of the table is beyond the format's attitude limit";
+    case Status::kTableGainOutOfRange:
+      return "an autopilot gain of the table (constant or scheduled K_theta, K_q) is outside [0, 100]";
+    case Status::kSegmentStartTimeOutOfRange:
+      return "a pitch segment's start time is negative or beyond the format's limit";
+    case Status::kSegmentAttitudeOutOfRange:
+      return "a pitch segment's start attitude is beyond the format's attitude limit";
+    case Status::kGainScheduleTimeOutOfRange:
+      return "a gain schedule point's stage time is negative or beyond the format's limit";
+    case Status::kLinearizationNotFinished:
+      return "the linearization (IP(7) = 1) was skipped or stopped before it finished, so there is no "
+             "linearized program to fly about";
   }
   return "unknown status";
 }

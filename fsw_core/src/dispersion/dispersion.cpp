@@ -181,7 +181,7 @@ Status validate_dispersion_data(const DispersionData& data, int* fault_code) {
     switch (info.kind) {
       case Kind::kVacuumThrust:
         if (s.stage != 0 && s.stage != info.stage && !(info.stage == 4 && s.stage == 5)) {
-          return Status::kValueOutOfRange;
+          return Status::kDispersionStageCodeMismatch;
         }
         if (s.vacuum_thrust_lbf.empty() || s.consumable_weight_lb.empty()) return Status::kTableEmpty;
         if (!s.vacuum_thrust_lbf.finalized() || !s.consumable_weight_lb.finalized()) {
@@ -193,13 +193,13 @@ Status validate_dispersion_data(const DispersionData& data, int* fault_code) {
           return Status::kThrustWeightTimesDiffer;
         }
         if (s.vacuum_thrust_lbf.first_x() != 0.0 || !(s.vacuum_thrust_lbf.last_x() > 0.0)) {
-          return Status::kValueOutOfRange;
+          return Status::kDispersionThrustTableTimesInvalid;
         }
         for (int i = 0; i < s.vacuum_thrust_lbf.size(); ++i) {
           if (s.vacuum_thrust_lbf.x(i) != s.consumable_weight_lb.x(i)) {
             return Status::kThrustWeightTimesDiffer;
           }
-          if (s.vacuum_thrust_lbf.y(i) < 0.0) return Status::kValueOutOfRange;
+          if (s.vacuum_thrust_lbf.y(i) < 0.0) return Status::kDispersionThrustNegative;
           if (s.consumable_weight_lb.y(i) < 0.0) return Status::kNegativeWeight;
           if (i > 0 && s.consumable_weight_lb.y(i) > s.consumable_weight_lb.y(i - 1)) {
             return Status::kConsumableWeightIncreases;
@@ -217,15 +217,15 @@ Status validate_dispersion_data(const DispersionData& data, int* fault_code) {
         }
         break;
       case Kind::kDrag:
-        if (!(std::fabs(s.drag_variation_fraction) < 1.0)) return Status::kValueOutOfRange;
+        if (!(std::fabs(s.drag_variation_fraction) < 1.0)) return Status::kDispersionDragVariationOutOfRange;
         break;
       case Kind::kTipoff:
-        if (s.stage != 4 && s.stage != 5) return Status::kValueOutOfRange;
+        if (s.stage != 4 && s.stage != 5) return Status::kDispersionStageNotSpun;
         break;
       case Kind::kWeightIncrement:
         // Stage 5 only through the stage-4 codes (15-16); otherwise the code's own stage.
         if (s.stage != 0 && s.stage != info.stage && !(info.stage == 4 && s.stage == 5)) {
-          return Status::kValueOutOfRange;
+          return Status::kDispersionStageCodeMismatch;
         }
         break;
       default: break;
@@ -357,7 +357,7 @@ Status record_dispersed_trajectory(const Mission& mission, const PreparedCase& p
                                    const WindProfile* wind, const double* air_alpha_rad,
                                    DispersedTrajectory* out) {
   if (!ok(flown.status) || flown.point_count <= 0) {
-    return ok(flown.status) ? Status::kNotPrepared : flown.status;
+    return ok(flown.status) ? Status::kTrajectoryEmpty : flown.status;
   }
   // Columns: the ignition of each powered stage after the first in the reference, then the final point.
   int columns = 0;
@@ -492,13 +492,15 @@ void compute_three_sigma(DispersionResult* result) {
 Status run_dispersions(const DispersionNominal& nominal, const DispersionData& data, DispersionWorkspace* ws,
                        DispersionResult* result) {
   result->count = 0;
+  result->fault_code = 0;
   result->staging_count = 0;
   result->three_sigma = ThreeSigmaSummary{};
   result->nominal = DispersedTrajectory{};
   result->nominal.code = kNominalDispersionCode;
-  if (nominal.mission == nullptr) return result->status = Status::kNotPrepared;
+  if (nominal.mission == nullptr) return result->status = Status::kDispersionNominalNotPrepared;
   int fault_code = 0;
   Status status = validate_dispersion_data(data, &fault_code);
+  result->fault_code = fault_code;
   if (!ok(status)) return result->status = status;
 
   // GIANT plane 40: the nominal, prepared and flown by the same rules as every dispersed case.

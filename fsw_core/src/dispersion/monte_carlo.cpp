@@ -94,7 +94,7 @@ Status blend_thrust(const StageData& nominal, const DispersionSource& source, do
   const double bn = nominal.duration_s;
   const double bs = source.vacuum_thrust_lbf.last_x();
   const double b = bn + c * (bs - bn);
-  if (!(bn > 0.0) || !(bs > 0.0) || !(b > 0.0)) return Status::kValueOutOfRange;
+  if (!(bn > 0.0) || !(bs > 0.0) || !(b > 0.0)) return Status::kMonteCarloBurnTimeNotPositive;
   Grid<kMaxThrustPoints> grid;
   if (!merge_grid(&nominal.vacuum_thrust_lbf, bn, &nominal.consumable_weight_lb, bn,
                   &source.vacuum_thrust_lbf, bs, &source.consumable_weight_lb, bs, &grid)) {
@@ -111,7 +111,7 @@ Status blend_thrust(const StageData& nominal, const DispersionSource& source, do
     const double ws = source.consumable_weight_lb(tau * bs, &hint_ws);
     const double thrust = tn + c * (ts - tn);
     const double weight = wn + c * (ws - wn);
-    if (!(thrust >= 0.0)) return Status::kValueOutOfRange;
+    if (!(thrust >= 0.0)) return Status::kMonteCarloThrustNegative;
     if (!(weight >= 0.0)) return Status::kNegativeWeight;
     if (i > 0 && weight > out->consumable_weight_lb.y(i - 1)) return Status::kConsumableWeightIncreases;
     const double t = (tau == 1.0) ? b : tau * b;
@@ -352,7 +352,7 @@ Status build_monte_carlo_case(const DispersionNominal& nominal, const PreparedCa
     p.wind = &ws->wind;
   }
   if (drag_fraction != 0.0) {
-    if (!(std::fabs(drag_fraction) < 1.0)) return Status::kValueOutOfRange;
+    if (!(std::fabs(drag_fraction) < 1.0)) return Status::kDispersionDragVariationOutOfRange;
     for (StageData& stage_data : m.vehicle.stages) {
       AeroTable& cd = stage_data.drag_coefficient;
       for (int i = 0; i < cd.size(); ++i) cd.set_y(i, cd.y(i) * (1.0 + drag_fraction));
@@ -381,7 +381,7 @@ Status build_monte_carlo_case(const DispersionNominal& nominal, const PreparedCa
 
 Status check_monte_carlo_data(const DispersionNominal& nominal, const DispersionData& data, int* fault_code) {
   *fault_code = 0;
-  if (nominal.mission == nullptr) return Status::kNotPrepared;
+  if (nominal.mission == nullptr) return Status::kDispersionNominalNotPrepared;
   for (int k = 0; k < data.count; ++k) {
     if (!monte_carlo_draws_source(nominal, data, k)) continue;
     const DispersionSource& s = data.sources[k];
@@ -432,7 +432,7 @@ Status check_monte_carlo_data(const DispersionNominal& nominal, const Dispersion
 }
 
 Status prepare_monte_carlo(const DispersionNominal& nominal, DispersionWorkspace* ws) {
-  if (nominal.mission == nullptr) return Status::kNotPrepared;
+  if (nominal.mission == nullptr) return Status::kDispersionNominalNotPrepared;
   Status status = prepare_case(*nominal.mission, &ws->nominal_prepared);
   if (!ok(status)) return status;
   FlightInputs inputs;

@@ -51,22 +51,23 @@ Status check_body(const ImpactBody& body, int block, int stage, const char* name
                     "Mach numbers strictly increasing");
   }
   if (body.drag_coefficient.first_x() != 0.0) {
-    return fault_at(fault, Status::kValueOutOfRange, block, stage, name, body.drag_coefficient.first_x(),
-                    "the table to start at Mach 0");
+    return fault_at(fault, Status::kImpactDragTableNotFromMach0, block, stage, name,
+                    body.drag_coefficient.first_x(), "the table to start at Mach 0");
   }
   for (int i = 0; i < body.drag_coefficient.size(); ++i) {
     const double cd = body.drag_coefficient.y(i);
     if (!(std::isfinite(cd) && cd >= 0.0)) {
-      return fault_at(fault, Status::kValueOutOfRange, block, stage, name, cd, "C_D finite and >= 0");
+      return fault_at(fault, Status::kImpactDragCoefficientInvalid, block, stage, name, cd,
+                      "C_D finite and >= 0");
     }
   }
   if (!(std::isfinite(body.reference_area_ft2) && body.reference_area_ft2 > 0.0)) {
-    return fault_at(fault, Status::kValueOutOfRange, block, stage, "reference area", body.reference_area_ft2,
-                    "a reference area > 0 ft^2");
+    return fault_at(fault, Status::kImpactReferenceAreaNotPositive, block, stage, "reference area",
+                    body.reference_area_ft2, "a reference area > 0 ft^2");
   }
   if (casing && !(std::isfinite(body.casing_weight_lb) && body.casing_weight_lb > 0.0)) {
-    return fault_at(fault, Status::kValueOutOfRange, block, stage, "casing weight", body.casing_weight_lb,
-                    "a casing weight > 0 lb");
+    return fault_at(fault, Status::kImpactCasingWeightNotPositive, block, stage, "casing weight",
+                    body.casing_weight_lb, "a casing weight > 0 lb");
   }
   return Status::kOk;
 }
@@ -143,7 +144,7 @@ Status validate_impact_data(const Mission& mission, const ImpactLocusData& data,
     if (!ok(status)) return status;
     const int n = data.every_nth_point[k];
     if (n < 1 || n > flown.integration_steps) {
-      return fault_at(fault, Status::kValueOutOfRange, 33, stage, kStepRateWords[k], n,
+      return fault_at(fault, Status::kImpactEveryNthPointOutOfRange, 33, stage, kStepRateWords[k], n,
                       "n between 1 and the stage's integration steps (data block 16): a larger n puts "
                       "the first failure point after the lift-off past the end of the stage");
     }
@@ -157,9 +158,17 @@ Status validate_impact_data(const Mission& mission, const ImpactLocusData& data,
                              s.min_step_s,
                              s.terminal_velocity_tolerance,
                              s.max_flight_s};
-  for (double value : positive) {
-    if (!(std::isfinite(value) && value > 0.0)) {
-      return fault_at(fault, Status::kValueOutOfRange, 0, 0, "impact step sizes", value, "> 0");
+  const char* const names[] = {"in_atmosphere_s",
+                               "out_of_atmosphere_s",
+                               "reentered_s",
+                               "terminal_velocity_s",
+                               "max_drag_velocity_fraction",
+                               "min_step_s",
+                               "terminal_velocity_tolerance",
+                               "max_flight_s"};
+  for (int i = 0; i < static_cast<int>(sizeof(positive) / sizeof(positive[0])); ++i) {
+    if (!(std::isfinite(positive[i]) && positive[i] > 0.0)) {
+      return fault_at(fault, Status::kImpactStepSizeNotPositive, 0, 0, names[i], positive[i], "> 0");
     }
   }
   return Status::kOk;
@@ -170,7 +179,7 @@ Status fly_to_impact(const Mission& mission, const PreparedCase& prepared, const
                      StageData* scratch, ImpactFlight* out) {
   *out = ImpactFlight{};
   if (!(weight_lb > 0.0) || !state0.allFinite() || !std::isfinite(t0_s)) {
-    return out->status = Status::kValueOutOfRange;
+    return out->status = Status::kImpactStartInvalid;
   }
   load_body_stage(body, scratch);
   StageContext stage;
@@ -191,7 +200,7 @@ Status fly_to_impact(const Mission& mission, const PreparedCase& prepared, const
   Evaluation eval;
   flight.evaluate(t, x, &eval);
   if (!eval.derivative.allFinite()) return out->status = Status::kNonFiniteState;
-  if (eval.altitude_ft < 0.0) return out->status = Status::kValueOutOfRange;
+  if (eval.altitude_ft < 0.0) return out->status = Status::kImpactStartBelowSurface;
   out->max_altitude_ft = eval.altitude_ft;
   bool left_atmosphere = false;
   bool terminal = false;
@@ -318,7 +327,7 @@ Status compute_impact_locus(const Mission& mission, const PreparedCase& prepared
   locus->count = 0;
   Status status = validate_impact_data(mission, data, nullptr);
   if (!ok(status)) return locus->status = status;
-  if (!ok(nominal.status)) return locus->status = Status::kNotPrepared;
+  if (!ok(nominal.status)) return locus->status = Status::kImpactNominalFailed;
 
   const Constants& constants = mission.constants;
   const LaunchConditions& launch = mission.launch;
@@ -366,7 +375,7 @@ Status compute_impact_locus(const Mission& mission, const PreparedCase& prepared
   for (int stage = 1; stage <= kImpactStages; ++stage) {
     if (!mission.vehicle.stages[stage_index(stage)].in_sequence) continue;
     const StageEvent* e = events[stage - 1];
-    if (e == nullptr || !e->completed) return locus->status = Status::kNotPrepared;
+    if (e == nullptr || !e->completed) return locus->status = Status::kImpactNominalStageIncomplete;
   }
 
   // Thrust failures: every n-th integration point of the stage, from its first point (stage 1: from

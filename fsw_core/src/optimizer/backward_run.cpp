@@ -423,10 +423,12 @@ Status BackwardSweep::run() {
 Status run_backward(const Mission& mission, const PreparedCase& prepared, const Trajectory& trajectory,
                     int constraint_count, const ConstraintTerminal* terminals, BackwardRun* out) {
   if (constraint_count < 1 || constraint_count > kMaxConstraints) return Status::kTooManyConstraints;
-  if (trajectory.status != Status::kOk || trajectory.point_count < 2) return Status::kNotPrepared;
+  if (trajectory.status != Status::kOk || trajectory.point_count < 2) {
+    return Status::kBackwardRunWithoutTrajectory;
+  }
   for (int j = 0; j < constraint_count; ++j) {
     if (terminals[j].point < 0 || terminals[j].point >= trajectory.point_count) {
-      return Status::kValueOutOfRange;
+      return Status::kConstraintPointNotInTrajectory;
     }
     if (!terminals[j].partials.allFinite()) return Status::kValueNotFinite;
   }

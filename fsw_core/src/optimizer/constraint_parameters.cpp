@@ -311,7 +311,7 @@ Status orbit_constraint_row(const Constants& constants, const StateVector& x, Co
 }  // namespace
 
 Status decode_constraint_code(int code, ConstraintCode* out) {
-  if (out == nullptr) return Status::kValueOutOfRange;
+  if (out == nullptr) return Status::kOutputPointerNull;
   ConstraintCode c;
   c.code = code;
   if (code >= 0 && code <= 14) {
@@ -385,7 +385,7 @@ double constraint_partial_wrt_launch_time(const ConstraintCode& code) {
 
 Status inertial_variable_partials(const Constants& constants, const StateVector& state,
                                   InertialJacobian* jacobian) {
-  if (jacobian == nullptr) return Status::kValueOutOfRange;
+  if (jacobian == nullptr) return Status::kOutputPointerNull;
   if (!state.allFinite()) return Status::kNonFiniteState;
   const InertialComponents c = inertial_components(constants, state);
   const double horizontal = std::hypot(c.north_ft_s, c.east_ft_s);
@@ -407,7 +407,7 @@ Status inertial_variable_partials(const Constants& constants, const StateVector&
 
 Status constraint_value(const Constants& constants, const LaunchConditions& launch,
                         const ConstraintCode& code, const ConstraintPoint& point, double* value) {
-  if (value == nullptr) return Status::kValueOutOfRange;
+  if (value == nullptr) return Status::kOutputPointerNull;
   if (!code_consistent(code)) return Status::kUnknownConstraintCode;
   if (!point_finite(point)) return Status::kNonFiniteState;
   const StateVector& x = point.state;
@@ -468,7 +468,7 @@ Status constraint_value(const Constants& constants, const LaunchConditions& laun
 Status constraint_partials(const Constants& constants, const LaunchConditions& launch,
                            const ConstraintCode& code, const ConstraintPoint& point,
                            AdjointVector* partials) {
-  if (partials == nullptr) return Status::kValueOutOfRange;
+  if (partials == nullptr) return Status::kOutputPointerNull;
   if (!code_consistent(code)) return Status::kUnknownConstraintCode;
   if (!point_finite(point)) return Status::kNonFiniteState;
   const StateVector& x = point.state;
@@ -556,7 +556,7 @@ Status constraint_partials(const Constants& constants, const LaunchConditions& l
 Status stagnation_heating_rate_partials(const Constants& constants, double nose_radius_ft,
                                         double sea_level_density_slug_ft3, const ConstraintPoint& point,
                                         Eigen::Matrix<double, 6, 1>* partials) {
-  if (partials == nullptr) return Status::kValueOutOfRange;
+  if (partials == nullptr) return Status::kOutputPointerNull;
   const StateVector& x = point.state;
   if (!x.allFinite() || !std::isfinite(point.ddensity_dh)) return Status::kValueNotFinite;
   double q_dot = 0.0;

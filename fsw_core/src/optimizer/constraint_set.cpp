@@ -13,7 +13,7 @@ bool is_inequality_constraint(const ConstraintCode& code, const Options& options
 Status append_constraint(const ConstraintCode& code, double desired, double deadband, const Options& options,
                          ConstraintSet* set) {
   if (set->count >= kMaxConstraints) return Status::kTooManyConstraints;
-  if (!(deadband > 0.0)) return Status::kValueOutOfRange;
+  if (!(deadband > 0.0)) return Status::kDeadbandNotPositive;
   const int i = set->count++;
   set->codes[i] = code;
   set->desired[i] = desired;
@@ -47,7 +47,7 @@ Status evaluate_constraints(const ConstraintSet& set, const Mission& mission, co
                             double achieved[kMaxConstraints]) {
   for (int i = 0; i < set.count; ++i) {
     const int index = constraint_point_index(set.codes[i], trajectory);
-    if (index < 0) return Status::kValueOutOfRange;
+    if (index < 0) return Status::kConstraintPointNotInTrajectory;
     const ConstraintPoint point = constraint_point_at(mission, trajectory, index);
     const Status status =
         constraint_value(mission.constants, mission.launch, set.codes[i], point, &achieved[i]);
@@ -61,7 +61,7 @@ Status constraint_terminals(const ConstraintSet& set, const Mission& mission, co
                             ConstraintTerminal terminals[kMaxConstraints]) {
   for (int i = 0; i < set.count; ++i) {
     terminals[i].point = constraint_point_index(set.codes[i], trajectory);
-    if (terminals[i].point < 0) return Status::kValueOutOfRange;
+    if (terminals[i].point < 0) return Status::kConstraintPointNotInTrajectory;
     terminals[i].heat_integral = set.codes[i].kind == ConstraintQuantity::kTotalHeating;
     terminals[i].qbar_alpha_integral = set.codes[i].kind == ConstraintQuantity::kQbarAlphaExcess;
     const ConstraintPoint point = constraint_point_at(mission, trajectory, terminals[i].point);

@@ -43,7 +43,9 @@ bool in_sequence(const Mission& mission, int code) {
 // them held (an inequality that the optimum does not need has a partial near 0).
 // The optimizer's final constraint list (tolip/optimizer/constraint_set.hpp), rebuilt from its result.
 Status make_constraint_set(const Mission& mission, const OptimizerResult& result, ConstraintSet* set) {
-  if (result.constraint_count <= 0 || result.constraint_count > kMaxConstraints) return Status::kNotPrepared;
+  if (result.constraint_count <= 0 || result.constraint_count > kMaxConstraints) {
+    return Status::kOptimizerResultIncomplete;
+  }
   set->count = result.constraint_count;
   for (int i = 0; i < set->count; ++i) {
     const Status status = decode_constraint_code(result.codes[i], &set->codes[i]);
@@ -141,7 +143,7 @@ Status stage_ratio(Context* c, int code, ExchangeParameter parameter, double* ra
 
 Status perturb_stage_parameter(const Mission& base, int stage_code, ExchangeParameter parameter, double units,
                                Mission* out) {
-  if (out == &base) return Status::kValueOutOfRange;
+  if (out == &base) return Status::kOutputAliasesInput;
   if (!is_powered_stage(stage_code) || !in_sequence(base, stage_code)) return Status::kUnknownStageCode;
   *out = base;
   const StageData& in = base.vehicle.stages[stage_index(stage_code)];
@@ -150,7 +152,7 @@ Status perturb_stage_parameter(const Mission& base, int stage_code, ExchangePara
     case ExchangeParameter::kBurnRate: {
       // Thrust x f at stage time t / f: the same total impulse and consumed weight in 1/f the time.
       const double f = 1.0 + 0.01 * units;
-      if (!(f > 0.0)) return Status::kValueOutOfRange;
+      if (!(f > 0.0)) return Status::kExchangePercentChangeTooNegative;
       Status status = rescale_table(in.vacuum_thrust_lbf, 1.0 / f, f, &stage.vacuum_thrust_lbf);
       if (ok(status)) {
         status = rescale_table(in.consumable_weight_lb, 1.0 / f, 1.0, &stage.consumable_weight_lb);
@@ -168,10 +170,10 @@ Status perturb_stage_parameter(const Mission& base, int stage_code, ExchangePara
       // The consumable table scaled so its initial entry grows by `units`; the thrust by the same
       // factor, which keeps the specific impulse (thrust / mass flow) and the burn time.
       if (in.consumable_weight_lb.empty() || !(in.consumable_weight_lb.y(0) > 0.0)) {
-        return Status::kValueOutOfRange;
+        return Status::kExchangeStageWithoutPropellant;
       }
       const double k = (in.consumable_weight_lb.y(0) + units) / in.consumable_weight_lb.y(0);
-      if (!(k > 0.0)) return Status::kValueOutOfRange;
+      if (!(k > 0.0)) return Status::kExchangePropellantChangeTooNegative;
       const Status status = scale_values(k, &stage.consumable_weight_lb);
       return ok(status) ? scale_values(k, &stage.vacuum_thrust_lbf) : status;
     }
@@ -179,13 +181,13 @@ Status perturb_stage_parameter(const Mission& base, int stage_code, ExchangePara
       // More thrust for the same mass flow (Sec. 8: "an increase in thrust while maintaining the
       // nominal mass flow rate").
       const double f = 1.0 + 0.01 * units;
-      if (!(f > 0.0)) return Status::kValueOutOfRange;
+      if (!(f > 0.0)) return Status::kExchangePercentChangeTooNegative;
       return scale_values(f, &stage.vacuum_thrust_lbf);
     }
     case ExchangeParameter::kDrag: {
       // C_D S grows by `units` ft^2 at every Mach number: units / S added to every C_D entry.
       if (in.drag_coefficient.empty()) return Status::kOk;  // no drag in this stage
-      if (!(in.reference_area_ft2 > 0.0)) return Status::kValueOutOfRange;
+      if (!(in.reference_area_ft2 > 0.0)) return Status::kReferenceAreaMissing;
       const double added = units / in.reference_area_ft2;
       for (int i = 0; i < stage.drag_coefficient.size(); ++i) {
         stage.drag_coefficient.set_y(i, stage.drag_coefficient.y(i) + added);
@@ -196,14 +198,16 @@ Status perturb_stage_parameter(const Mission& base, int stage_code, ExchangePara
       stage.jettison_weight_lb = in.jettison_weight_lb + units;
       return Status::kOk;
   }
-  return Status::kValueOutOfRange;
+  return Status::kUnknownExchangeParameter;
 }
 
 Status compute_exchange_ratios(const OptimizerWorkspace& final_ws, const OptimizerResult& result,
                                ExchangeRatioScratch* scratch, ExchangeRatios* out) {
   *out = ExchangeRatios();
   const Mission& mission = final_ws.mission;
-  if (!ok(final_ws.nominal.status) || final_ws.nominal.point_count <= 0) return Status::kNotPrepared;
+  if (!ok(final_ws.nominal.status) || final_ws.nominal.point_count <= 0) {
+    return Status::kFinalTrajectoryMissing;
+  }
   if (final_ws.program.point_count != final_ws.nominal.point_count) {
     return Status::kControlProgramSizeMismatch;
   }

@@ -86,7 +86,7 @@ Status break_times(const Mission& mission, const PreparedCase& prepared, const T
   for (int b = 0; b <= data.segment_count; ++b) {
     const int code = data.boundaries[b].stage;
     const double start = stage_start_s(prepared, code);
-    if (start < 0.0) return Status::kValueOutOfRange;
+    if (start < 0.0) return Status::kCodedTimeStageInvalid;  // stage n is not in the timeline
     const double wanted = start + data.boundaries[b].time_from_ignition_s;
     double best = wanted;
     double best_error = 1e300;
@@ -461,7 +461,7 @@ Status linearized_payoff(const Mission& mission, const Trajectory& trajectory, d
     return Status::kOk;
   }
   const int index = constraint_point_index(code, trajectory);
-  if (index < 0) return Status::kValueOutOfRange;
+  if (index < 0) return Status::kConstraintPointNotInTrajectory;
   return constraint_value(mission.constants, mission.launch, code,
                           constraint_point_at(mission, trajectory, index), payoff);
 }
@@ -709,7 +709,7 @@ Status linearize_pitch_program(const OptimizerWorkspace& optimized, Linearizatio
     // Forward linearization run.
     sample(program, ws->nominal, ws->optimum, &ws->program);
     ws->mission.vehicle.payload_lb += payload_change_lb;
-    if (!(ws->mission.vehicle.payload_lb >= 0.0)) return out->status = Status::kValueOutOfRange;
+    if (!(ws->mission.vehicle.payload_lb >= 0.0)) return out->status = Status::kLinearizedPayloadNegative;
     status = fly_linearized(*ws, out->body_dynamics, &ws->candidate);
     ++out->forward_runs;
     if (!ok(status)) return out->status = status;

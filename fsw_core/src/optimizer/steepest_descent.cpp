@@ -75,7 +75,7 @@ Status make_problem(const Mission& mission, Problem* problem) {
     problem->heating_listed = true;
     problem->heating_limit_btu_ft2 = list.desired[list.count];
     problem->heating_deadband_btu_ft2 = list.deadband_optimization[list.count - 1];
-    if (!(problem->heating_deadband_btu_ft2 > 0.0)) return Status::kValueOutOfRange;
+    if (!(problem->heating_deadband_btu_ft2 > 0.0)) return Status::kDeadbandNotPositive;
   }
   if (mission.options.qbar_alpha_constraint()) {
     if (list.count + (problem->heating_listed ? 1 : 0) + 1 > kMaxConstraints) {

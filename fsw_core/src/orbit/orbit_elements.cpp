@@ -86,7 +86,7 @@ double launch_greenwich_right_ascension_rad(double launch_space_age_date_days) {
 
 Status compute_orbit_elements(const Constants& constants, const StateVector& state,
                               double launch_space_age_date_days, OrbitElements* out) {
-  if (out == nullptr) return Status::kValueOutOfRange;
+  if (out == nullptr) return Status::kOutputPointerNull;
   if (!state.allFinite()) return Status::kNonFiniteState;
   if (!std::isfinite(launch_space_age_date_days)) return Status::kValueNotFinite;
   const double mu = constants.gravitational_parameter_ft3_s2;
@@ -210,15 +210,14 @@ double stagnation_heating_rate(double nose_radius_ft, double density_slug_ft3,
 Status stagnation_heating_rate_checked(double nose_radius_ft, double density_slug_ft3,
                                        double sea_level_density_slug_ft3, double velocity_ft_s,
                                        double* heating_rate_btu_ft2_s) {
-  if (heating_rate_btu_ft2_s == nullptr) return Status::kValueOutOfRange;
+  if (heating_rate_btu_ft2_s == nullptr) return Status::kOutputPointerNull;
   if (!std::isfinite(nose_radius_ft) || !std::isfinite(density_slug_ft3) ||
       !std::isfinite(sea_level_density_slug_ft3) || !std::isfinite(velocity_ft_s)) {
     return Status::kValueNotFinite;
   }
-  if (!(nose_radius_ft > 0.0) || !(sea_level_density_slug_ft3 > 0.0) || density_slug_ft3 < 0.0 ||
-      velocity_ft_s < 0.0) {
-    return Status::kValueOutOfRange;
-  }
+  if (!(nose_radius_ft > 0.0)) return Status::kNoseRadiusNotPositive;
+  if (!(sea_level_density_slug_ft3 > 0.0)) return Status::kSeaLevelDensityNotPositive;
+  if (density_slug_ft3 < 0.0 || velocity_ft_s < 0.0) return Status::kHeatingStateNegative;
   *heating_rate_btu_ft2_s =
       stagnation_heating_rate(nose_radius_ft, density_slug_ft3, sea_level_density_slug_ft3, velocity_ft_s);
   return Status::kOk;

@@ -152,37 +152,45 @@ Status validate_guidance_table(const GuidanceTable& t) {
   }
 
   // Documented ranges.
-  if (t.spin_option < 0 || t.spin_option > 3) return Status::kValueOutOfRange;
-  if (t.created_unix_s < 0 || t.created_unix_s > kTableMaxCreatedUnixS) return Status::kValueOutOfRange;
+  if (t.spin_option < 0 || t.spin_option > 3) return Status::kTableSpinOptionOutOfRange;
+  if (t.created_unix_s < 0 || t.created_unix_s > kTableMaxCreatedUnixS) {
+    return Status::kTableCreationTimeOutOfRange;
+  }
   if (!(t.liftoff_duration_s > 0.0 && t.liftoff_duration_s <= kTableMaxLiftoffDurationS)) {
-    return Status::kValueOutOfRange;
+    return Status::kTableLiftoffDurationOutOfRange;
   }
   if (!(t.max_pitch_rate_rad_s > 0.0 && t.max_pitch_rate_rad_s <= kTableMaxPitchRateLimitRadS)) {
-    return Status::kValueOutOfRange;
+    return Status::kTablePitchRateLimitOutOfRange;
   }
-  if (!in_range(t.min_pitch_rate_rad_s, 0.0, t.max_pitch_rate_rad_s)) return Status::kValueOutOfRange;
+  if (!in_range(t.min_pitch_rate_rad_s, 0.0, t.max_pitch_rate_rad_s)) {
+    return Status::kTableMinPitchRateOutOfRange;
+  }
   if (!in_range(t.min_pitch_rate_change_rad_s, 0.0, 2.0 * t.max_pitch_rate_rad_s)) {
-    return Status::kValueOutOfRange;
+    return Status::kTablePitchRateChangeOutOfRange;
   }
   if (!(t.max_deflection_rad > 0.0 && t.max_deflection_rad <= kTableMaxDeflectionLimitRad)) {
-    return Status::kValueOutOfRange;
+    return Status::kTableDeflectionLimitOutOfRange;
   }
   const double attitudes[] = {t.stage4_theta_rad, t.stage4_chi_rad, t.stage5_theta_rad, t.stage5_chi_rad};
   for (double value : attitudes) {
-    if (!in_range(value, -kTableMaxAttitudeRad, kTableMaxAttitudeRad)) return Status::kValueOutOfRange;
+    if (!in_range(value, -kTableMaxAttitudeRad, kTableMaxAttitudeRad)) {
+      return Status::kTableUpperStageAttitudeOutOfRange;
+    }
   }
   for (int i = 0; i < kMaxStages; ++i) {
     if (!in_range(t.gains[i].k_theta, 0.0, kTableMaxGain) ||
         !in_range(t.gains[i].k_q_s, 0.0, kTableMaxGain)) {
-      return Status::kValueOutOfRange;
+      return Status::kTableGainOutOfRange;
     }
   }
   for (int i = 0; i < t.segment_count; ++i) {
     const GuidanceSegment& s = t.segments[i];
     if (!is_segment_stage(t.spin_option, s.stage_code)) return Status::kSegmentStageInvalid;
-    if (!in_range(s.start_stage_time_s, 0.0, kTableMaxSegmentStartS) ||
-        !in_range(s.theta_start_rad, -kTableMaxAttitudeRad, kTableMaxAttitudeRad)) {
-      return Status::kValueOutOfRange;
+    if (!in_range(s.start_stage_time_s, 0.0, kTableMaxSegmentStartS)) {
+      return Status::kSegmentStartTimeOutOfRange;
+    }
+    if (!in_range(s.theta_start_rad, -kTableMaxAttitudeRad, kTableMaxAttitudeRad)) {
+      return Status::kSegmentAttitudeOutOfRange;
     }
   }
 
@@ -202,9 +210,9 @@ Status validate_guidance_table(const GuidanceTable& t) {
   for (int i = 0; i < t.schedule_count; ++i) {
     const GainSchedulePoint& p = t.schedule[i];
     if (!is_segment_stage(t.spin_option, p.stage_code)) return Status::kGainScheduleStageInvalid;
-    if (!in_range(p.stage_time_s, 0.0, kTableMaxSegmentStartS) || !in_range(p.k_theta, 0.0, kTableMaxGain) ||
-        !in_range(p.k_q_s, 0.0, kTableMaxGain)) {
-      return Status::kValueOutOfRange;
+    if (!in_range(p.stage_time_s, 0.0, kTableMaxSegmentStartS)) return Status::kGainScheduleTimeOutOfRange;
+    if (!in_range(p.k_theta, 0.0, kTableMaxGain) || !in_range(p.k_q_s, 0.0, kTableMaxGain)) {
+      return Status::kTableGainOutOfRange;
     }
     if (i > 0) {
       const GainSchedulePoint& a = t.schedule[i - 1];
@@ -348,7 +356,9 @@ Status decode_table_image(const std::uint8_t* image, std::size_t size, GuidanceT
     return Status::kTableImageTextInvalid;
   }
   const std::uint64_t created = get_u64_le(image + kOffsetCreatedUnixS);
-  if (created > static_cast<std::uint64_t>(kTableMaxCreatedUnixS)) return Status::kValueOutOfRange;
+  if (created > static_cast<std::uint64_t>(kTableMaxCreatedUnixS)) {
+    return Status::kTableCreationTimeOutOfRange;
+  }
 
   // Decode into a local table first: *table changes only when everything is valid. The decoded
   // table is small (about 0.8 KiB) and lives on the caller's stack frame for this call only.

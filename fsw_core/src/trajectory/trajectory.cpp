@@ -238,14 +238,14 @@ Status Flight::resume(StateVector* state) {
   const Trajectory& from = *inputs_.resume_from;
   const int slot = inputs_.resume_stage_slot;
   if (inputs_.feedback != nullptr || inputs_.injection_point >= 0 || inputs_.air_alpha_rad != nullptr) {
-    return Status::kValueOutOfRange;
+    return Status::kResumeInputsIncompatible;
   }
   if (!ok(from.status) || slot <= 0 || slot >= prepared_.stage_count || slot >= from.stage_count ||
       from.stages[slot].code != prepared_.timeline[slot].code) {
-    return Status::kValueOutOfRange;
+    return Status::kResumeStageSlotInvalid;
   }
   const int first_point = from.stages[slot].first_point;
-  if (first_point <= 0 || first_point >= from.point_count) return Status::kValueOutOfRange;
+  if (first_point <= 0 || first_point >= from.point_count) return Status::kResumeStageNotRecorded;
   for (int k = 0; k < first_point; ++k) {
     trajectory_->points[k] = from.points[k];
     // The heating integral accumulated exactly as record() does, point after point.
@@ -415,7 +415,9 @@ Status Flight::run() {
   trajectory_->stage_count = 0;
   trajectory_->heat_integral_btu_ft2 = 0.0;
   if (!prepared_.prepared) return Status::kNotPrepared;
-  if (inputs_.feedback != nullptr && inputs_.live_program == nullptr) return Status::kNotPrepared;
+  if (inputs_.feedback != nullptr && inputs_.live_program == nullptr) {
+    return Status::kFeedbackWithoutLiveProgram;
+  }
   if (program_ != nullptr && program_->point_count != trajectory_point_count(prepared_)) {
     return Status::kControlProgramSizeMismatch;
   }

@@ -141,7 +141,7 @@ Status modify_thrust_table(const Mission& mission, const StageTimeline& line, Mo
 
   // B: over the grid table, then scale to make B = A.
   const double ideal_grid = ideal_velocity_ft_s(vehicle, code, g0, *table, table->first_x(), table->last_x());
-  if (!(ideal_grid > 0.0) || !std::isfinite(ideal_input)) return Status::kValueOutOfRange;
+  if (!(ideal_grid > 0.0) || !std::isfinite(ideal_input)) return Status::kModifiedThrustIdealVelocityInvalid;
   const double scale = ideal_input / ideal_grid;
   for (int i = 0; i < table->size(); ++i) table->set_y(i, table->y(i) * scale);
   status = table->finalize();

@@ -83,7 +83,8 @@ bool final_dispersion_nominal(const Mission& mission, const OptimizationRun& run
     // stage 1 when the 6D re-linearization ran).
     const LinearizationStep& lin = run.linearization;
     if (lin.outcome != StepOutcome::kRun || lin.result == nullptr || !lin.result->finished) {
-      *why = (lin.outcome == StepOutcome::kRun && !ok(lin.status)) ? lin.status : Status::kNotPrepared;
+      *why = (lin.outcome == StepOutcome::kRun && !ok(lin.status)) ? lin.status
+                                                                   : Status::kLinearizationNotFinished;
       return false;
     }
     nominal->mission = &lin.workspace->mission;

@@ -57,7 +57,8 @@ bool fill_impact_data(const Mission& mission, const DeckExtras& extras, ImpactLo
     fault->field = "body_dynamics.impact_every_nth_step[" + str(core.stage - 1) + "]";
     fault->message = "n = " + str(static_cast<int>(core.value)) + " for stage " + stage + ": expected " +
                      core.expected + " (stage " + stage + " has " +
-                     str(mission.vehicle.stages[stage_index(core.stage)].integration_steps) + ")";
+                     str(mission.vehicle.stages[stage_index(core.stage)].integration_steps) + "; " +
+                     status_name(status) + ")";
   } else {
     fault->field =
         std::string("impact.") + (core.data_block == 42 ? "failure_drag." : "casing_drag.") + stage;
@@ -65,7 +66,8 @@ bool fill_impact_data(const Mission& mission, const DeckExtras& extras, ImpactLo
       fault->message = std::string("missing: options.impact (IP(23)) needs the data block ") +
                        str(core.data_block) + " drag table of stage " + stage;
     } else {
-      fault->message = std::string(core.field) + ": expected " + core.expected;
+      fault->message = std::string(core.field) + ": expected " + core.expected + " (" + status_name(status) +
+                       ": " + status_message(status) + ")";
     }
   }
   return false;

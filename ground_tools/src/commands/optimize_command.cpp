@@ -164,7 +164,7 @@ int optimize_case(const Deck& deck, const DeckCase& deck_case, OptimizerObserver
   } else {
     trajectory_status = trajectory.status;
     if (ok(trajectory_status) && stored_point_count(trajectory) == 0)
-      trajectory_status = Status::kNotPrepared;
+      trajectory_status = Status::kTrajectoryEmpty;
   }
   if (ok(trajectory_status)) {
     trajectory_status = compute_orbit_elements(workspace->mission.constants, trajectory.final_point().state,

@@ -52,7 +52,7 @@ void simulate_case(const Mission& mission, const DeckListingOptions& listing, co
     inputs.body_dynamics = mission.options.body_dynamics_6d() == 2;
     status = fly_trajectory(mission, *run->prepared, inputs, trajectory);
     if (ok(status) && !ok(trajectory->status)) status = trajectory->status;
-    if (ok(status) && stored_point_count(*trajectory) == 0) status = Status::kNotPrepared;
+    if (ok(status) && stored_point_count(*trajectory) == 0) status = Status::kTrajectoryEmpty;
   } else {
     trajectory->status = status;
     trajectory->point_count = 0;

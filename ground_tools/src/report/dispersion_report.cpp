@@ -216,8 +216,11 @@ void write_dispersion_pages(Pager& pager, const DispersionStep& step) {
   pager.new_page("DISPERSION ANALYSIS", false);
   pager.emit(" DISPERSION ANALYSIS (SEC. 15, IP(21) = 1): DISPERSION = DISPERSED - NOMINAL");
   if (step.outcome != StepOutcome::kRun || step.result == nullptr || !ok(step.status)) {
+    std::string where;
+    if (step.result != nullptr && step.result->fault_code != 0)
+      where = " (data block 46 code " + std::to_string(step.result->fault_code) + ")";
     pager.emit(std::string("   NOT COMPUTED: ") + status_name(step.status) + ": " +
-               status_message(step.status));
+               status_message(step.status) + where);
     pager.emit("");
     return;
   }
@@ -282,6 +285,7 @@ json dispersion_json(const DispersionStep& step) {
   json out = json::object();
   out["status"] = status_name(step.status);
   out["status_message"] = status_message(step.status);
+  if (step.result != nullptr && step.result->fault_code != 0) out["fault_code"] = step.result->fault_code;
   out["outcome"] = step.outcome == StepOutcome::kRun       ? "run"
                    : step.outcome == StepOutcome::kSkipped ? "skipped"
                                                            : "not requested";

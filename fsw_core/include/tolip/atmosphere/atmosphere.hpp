@@ -24,7 +24,9 @@ struct AtmosphereSample {
 };
 
 // Below the first base altitude the first layer is extended; above the last, the last layer.
-// Fails with kValueNotFinite for a non-finite altitude or radius.
+// Fails with kValueNotFinite for a non-finite altitude or radius, kAtmosphereRadiusNotPositive for a
+// point at or below the Earth's centre (or a non-positive radius), kAtmosphereTemperatureNotPositive
+// where a layer's temperature falls to zero, kOutputPointerNull for a null `out`.
 Status evaluate_atmosphere(const AtmosphereTable& table, const Constants& constants, double altitude_ft,
                            double earth_radius_ft, AtmosphereSample* out);
 

@@ -25,6 +25,8 @@ enum class Status : int {
   kTableEmpty,
   kTableNotMonotonic,
   kValueNotFinite,
+  // Generic: the core returns a named cause instead (the enumerators after kTableImageVersion2); kept
+  // so that the numbers after it stay, for a caller outside the core with no better name.
   kValueOutOfRange,
   kNegativeWeight,
   kNonPositiveDuration,
@@ -103,6 +105,8 @@ enum class Status : int {
   kAdjustableParameterNotSupported,
   kPayoffNotSupported,
   kBodyDynamicsNotTrimmable,
+  // The case was not prepared: prepare_case() did not run (PreparedCase::prepared is false), and the
+  // initial status of a result nothing has filled yet.
   kNotPrepared,
   // Guidance table image, loader and executor (table/; docs/table-format.md)
   kTableImageTruncated,
@@ -168,6 +172,71 @@ enum class Status : int {
   kGainScheduleStageInvalid,
   kGainScheduleTimesNotMonotonic,
   kTableImageVersion2,
+  // Causes that once shared kValueOutOfRange or kNotPrepared (issue 18), by module; appended so that the
+  // numbers of the enumerators above (the HIL link and the MPI transport carry them) stay the same.
+  // Arguments (every module): a programming error at a function boundary.
+  kOutputPointerNull,
+  kOutputAliasesInput,
+  // Heating rate (orbit/orbit_elements.hpp, optimizer/constraint_parameters.hpp; manual Sec. 13)
+  kNoseRadiusNotPositive,
+  kSeaLevelDensityNotPositive,
+  kHeatingStateNegative,
+  // Atmosphere (atmosphere/atmosphere.hpp; manual Sec. 19)
+  kAtmosphereRadiusNotPositive,
+  kAtmosphereTemperatureNotPositive,
+  // Trajectory (trajectory/trajectory.hpp): FlightInputs that do not fit together
+  kFeedbackWithoutLiveProgram,
+  kResumeInputsIncompatible,
+  kResumeStageSlotInvalid,
+  kResumeStageNotRecorded,
+  // Thrust modification (vehicle/prepared_case.hpp; manual Sec. 6)
+  kModifiedThrustIdealVelocityInvalid,
+  // Constraints and the optimizer (optimizer/; manual Sec. 9-13, 21)
+  kConstraintPointNotInTrajectory,
+  kLinearizedPayloadNegative,
+  kBackwardRunWithoutTrajectory,
+  kOptimizerResultIncomplete,
+  kFinalTrajectoryMissing,
+  // Exchange ratios (optimizer/exchange_ratios.hpp; manual Sec. 8)
+  kExchangePercentChangeTooNegative,
+  kExchangeStageWithoutPropellant,
+  kExchangePropellantChangeTooNegative,
+  kUnknownExchangeParameter,
+  // Impact locus (impact/impact.hpp; manual Sec. 17); ImpactFault names block, stage, word
+  kImpactDragTableNotFromMach0,
+  kImpactDragCoefficientInvalid,
+  kImpactReferenceAreaNotPositive,
+  kImpactCasingWeightNotPositive,
+  kImpactEveryNthPointOutOfRange,
+  kImpactStepSizeNotPositive,
+  kImpactStartInvalid,
+  kImpactStartBelowSurface,
+  kImpactNominalFailed,
+  kImpactNominalStageIncomplete,
+  // Dispersions and Monte Carlo (dispersion/; manual Sec. 15): the data block 46 code at fault is reported
+  kDispersionNominalNotPrepared,
+  kDispersionStageCodeMismatch,
+  kDispersionThrustTableTimesInvalid,
+  kDispersionThrustNegative,
+  kDispersionDragVariationOutOfRange,
+  kTrajectoryEmpty,
+  kMonteCarloBurnTimeNotPositive,
+  kMonteCarloThrustNegative,
+  // Guidance table image (table/table_image.hpp; docs/table-format.md): the field out of its range
+  kTableSpinOptionOutOfRange,
+  kTableCreationTimeOutOfRange,
+  kTableLiftoffDurationOutOfRange,
+  kTablePitchRateLimitOutOfRange,
+  kTableMinPitchRateOutOfRange,
+  kTablePitchRateChangeOutOfRange,
+  kTableDeflectionLimitOutOfRange,
+  kTableUpperStageAttitudeOutOfRange,
+  kTableGainOutOfRange,
+  kSegmentStartTimeOutOfRange,
+  kSegmentAttitudeOutOfRange,
+  kGainScheduleTimeOutOfRange,
+  // Ground runs (ground_tools/): a step that needs an earlier one that did not finish
+  kLinearizationNotFinished,
 };
 
 const char* status_name(Status status);

@@ -139,8 +139,9 @@ struct ThreeSigmaSummary {
 };
 
 struct DispersionResult {
-  Status status = Status::kNotPrepared;            // kOk when the nominal flew; per-code statuses below
-  int staging_count = 0;                           // columns: ignitions of stages 2.., then the final point
+  Status status = Status::kNotPrepared;  // kOk when the nominal flew; per-code statuses below
+  int fault_code = 0;     // the data block 46 code at fault when validate_dispersion_data() failed, else 0
+  int staging_count = 0;  // columns: ignitions of stages 2.., then the final point
   int staging_stage_code[kMaxStagingPoints] = {};  // powered stage code at ignition; 0: final point
   DispersedTrajectory nominal;                     // GIANT plane 40
   int count = 0;                                   // dispersed trajectories, in the data's code order
@@ -170,7 +171,8 @@ int dispersion_source_stage(const DispersionSource& source);
 
 // Checks the data against the nominal before anything flies: known codes in increasing order,
 // the tables finalized, tables of codes 1-8 within the capacities. kOk or the first fault
-// (kValueOutOfRange, kTableEmpty, ...), with *fault_code the code at fault.
+// (kDispersionCodeInvalid, kDispersionStageCodeMismatch, kTableEmpty, ...), with *fault_code the
+// code at fault.
 Status validate_dispersion_data(const DispersionData& data, int* fault_code);
 
 // Builds the dispersed case of one source about the nominal: *mission, *prepared and *perturbation

@@ -72,7 +72,9 @@ struct ImpactFault {
 // failure-mode and casing tables present, finalized, from Mach 0, C_D finite and >= 0, areas > 0,
 // casing weights > 0; n of DA6D(17-19) between 1 and the stage's integration steps (a larger n
 // puts the first failure point after the first one past the end of the stage). kOk or
-// kImpactDataMissing / kValueOutOfRange / kTableNotMonotonic, with *fault.
+// kImpactDataMissing / kTableNotMonotonic / kImpactDragTableNotFromMach0 /
+// kImpactDragCoefficientInvalid / kImpactReferenceAreaNotPositive / kImpactCasingWeightNotPositive /
+// kImpactEveryNthPointOutOfRange / kImpactStepSizeNotPositive, with *fault.
 Status validate_impact_data(const Mission& mission, const ImpactLocusData& data, ImpactFault* fault);
 
 enum class ImpactKind : int { kThrustFailure, kExpendedCasing };
@@ -94,7 +96,8 @@ struct ImpactFlight {
 // Flies one body (weight_lb, its drag table and area) from (t0_s, state0) with zero thrust to the
 // oblate surface (altitude r - R_OBL(lambda) = 0). `scratch` becomes the body's coast stage (the
 // manual's stage-6 arrays loaded with the body's drag curve). kOk, kNonFiniteState,
-// kImpactNotReached, or kValueOutOfRange for a start below the surface or a non-positive weight.
+// kImpactNotReached, kImpactStartBelowSurface, or kImpactStartInvalid (a non-positive weight, a state
+// or time not finite).
 Status fly_to_impact(const Mission& mission, const PreparedCase& prepared, const ImpactBody& body,
                      double weight_lb, double t0_s, const StateVector& state0, const ImpactStepSizes& steps,
                      StageData* scratch, ImpactFlight* out);
@@ -136,8 +139,8 @@ struct ImpactWorkspace {
 // every n-th integration point of stages 1-3 (stage 1 from the end of the vertical lift-off; a
 // stage's end point is its burnout, not a failure), then the casings of stages 1-3 from their
 // burnout points. Stages not in the sequence are left out. Returns validate_impact_data()'s fault,
-// kNotPrepared for an incomplete nominal, else kOk or the first case's failure (every case is
-// still attempted and carries its own status).
+// kImpactNominalFailed or kImpactNominalStageIncomplete for an incomplete nominal, else kOk or the
+// first case's failure (every case is still attempted and carries its own status).
 Status compute_impact_locus(const Mission& mission, const PreparedCase& prepared, const Trajectory& nominal,
                             const ImpactLocusData& data, ImpactWorkspace* workspace, ImpactLocus* locus);
 

@@ -143,8 +143,8 @@ double oblate_radius_latitude_derivative_ft_per_rad(const Constants& constants,
 // Sec. 13 forcing of the heating constraint's adjoint equations: partials of the stagnation
 // heating rate Qdot (Btu/ft^2/s) with respect to [V, gamma, r, psi, lambda, tau] at a point:
 // dQ/dV = 3.25 Q / V, dQ/dr = Q / (2 rho) drho/dh, dQ/dlambda = -dQ/dr dR_OBL/dlambda.
-// Fails with kValueNotFinite or kValueOutOfRange (nose radius or sea-level density not
-// positive, negative density or velocity). Zero density (above the atmosphere) gives zero.
+// Fails with kValueNotFinite, kNoseRadiusNotPositive, kSeaLevelDensityNotPositive or
+// kHeatingStateNegative (negative density or velocity). Zero density (above the atmosphere) gives zero.
 Status stagnation_heating_rate_partials(const Constants& constants, double nose_radius_ft,
                                         double sea_level_density_slug_ft3, const ConstraintPoint& point,
                                         Eigen::Matrix<double, 6, 1>* partials);

@@ -32,7 +32,7 @@ struct ConstraintSet {
 bool is_inequality_constraint(const ConstraintCode& code, const Options& options);
 
 // Appends one constraint (its inequality by the rule above); kTooManyConstraints when full,
-// kValueOutOfRange when the deadband is not positive.
+// kDeadbandNotPositive when the deadband is not positive.
 Status append_constraint(const ConstraintCode& code, double desired, double deadband, const Options& options,
                          ConstraintSet* set);
 
@@ -52,7 +52,8 @@ bool constraint_met(const ConstraintCode& code, bool inequality, double achieved
 bool within_deadbands(const ConstraintSet& set, int first, const double achieved[kMaxConstraints]);
 
 // Values of every entry on a flown trajectory (stage-point codes at their stage's end); the
-// payload payoff is the payload. kValueOutOfRange when a stage point is not in the trajectory.
+// payload payoff is the payload. kConstraintPointNotInTrajectory when a stage point is not in the
+// trajectory.
 Status evaluate_constraints(const ConstraintSet& set, const Mission& mission, const Trajectory& trajectory,
                             double achieved[kMaxConstraints]);
 

@@ -70,16 +70,19 @@ struct ExchangeRatioScratch {
 // burn rate and the specific impulse, lb for propellant and jettison weight, ft^2 of C_D S for the
 // drag). A burn-rate change of stage 1 also scales the zero-alpha window (IP(11), data block 22,
 // which must lie in stage 1) with the stage's time. `out` must not be `base`.
-// Fails with kUnknownStageCode (not a powered stage of the sequence), kValueOutOfRange (a factor not
-// positive, drag on a stage with a reference area of 0, out == &base), or a table status.
+// Fails with kUnknownStageCode (not a powered stage of the sequence), kExchangePercentChangeTooNegative
+// or kExchangePropellantChangeTooNegative (a factor not positive), kExchangeStageWithoutPropellant,
+// kReferenceAreaMissing (drag on a stage with a reference area of 0), kOutputAliasesInput
+// (out == &base), kUnknownExchangeParameter, or a table status.
 Status perturb_stage_parameter(const Mission& base, int stage_code, ExchangeParameter parameter, double units,
                                Mission* out);
 
 // The exchange ratios of the optimized case in `final_ws` (after optimize_trajectory: mission,
 // prepared, program, nominal) with its `result` (constraint list, achieved values, eq. 9-22
-// partials; every listed constraint counts, as in eq. 9-22). Fails with kNotPrepared when the optimizer did
-// not reach its summary (result.constraint_count == 0) or the final trajectory failed,
-// kControlProgramSizeMismatch when the program does not match it, or the status of a perturbed run.
+// partials; every listed constraint counts, as in eq. 9-22). Fails with kFinalTrajectoryMissing when
+// the final trajectory failed, kControlProgramSizeMismatch when the program does not match it,
+// kOptimizerResultIncomplete when the optimizer did not reach its summary (result.constraint_count
+// == 0), or the status of a perturbed run.
 Status compute_exchange_ratios(const OptimizerWorkspace& final_ws, const OptimizerResult& result,
                                ExchangeRatioScratch* scratch, ExchangeRatios* out);
 

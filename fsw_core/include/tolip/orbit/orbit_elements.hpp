@@ -85,8 +85,8 @@ inline constexpr double kNauticalMilesPerRadian = 60.0 * 180.0 / kPi;
 // (stagnation_heating_rate_checked enforces it).
 double stagnation_heating_rate(double nose_radius_ft, double density_slug_ft3,
                                double sea_level_density_slug_ft3, double velocity_ft_s);
-// The same with its inputs checked: kValueNotFinite, or kValueOutOfRange for a non-positive nose
-// radius or sea-level density, or a negative density or velocity.
+// The same with its inputs checked: kValueNotFinite, kNoseRadiusNotPositive,
+// kSeaLevelDensityNotPositive, or kHeatingStateNegative (a negative density or velocity).
 Status stagnation_heating_rate_checked(double nose_radius_ft, double density_slug_ft3,
                                        double sea_level_density_slug_ft3, double velocity_ft_s,
                                        double* heating_rate_btu_ft2_s);

@@ -110,7 +110,7 @@ struct FlightInputs {
   const ControlProgram* program = nullptr;  // null: data block 40 table (ignored with feedback)
   int injection_point = -1;                 // point whose state receives `injection` (-1: none)
   StateVector injection = StateVector::Zero();
-  // With feedback, `live_program` is flown and rewritten in flight.
+  // With feedback, `live_program` is flown and rewritten in flight (without it: kFeedbackWithoutLiveProgram).
   PitchFeedback* feedback = nullptr;
   ControlProgram* live_program = nullptr;
   // Body dynamics (6D, manual Sec. 7, 11; docs/theory/body-dynamics.md): in stage 1 and the coast
@@ -124,7 +124,9 @@ struct FlightInputs {
   // like this one up to there (same mission and prepared case before that stage: a change of that
   // stage's thrust, burn rate or drag, say), and the integration restarts from its state there.
   // Every stage restarts its integrator, so the result is the full flight's, bit for bit; it skips
-  // the work before the stage (the exchange ratios' runs). Not with feedback or an injection.
+  // the work before the stage (the exchange ratios' runs). Not with feedback or an injection
+  // (kResumeInputsIncompatible); a slot that is not a later stage of both flights is
+  // kResumeStageSlotInvalid, one without a recorded start point kResumeStageNotRecorded.
   const Trajectory* resume_from = nullptr;
   int resume_stage_slot = 0;
   // A dispersed trajectory's changes to the flight (Sec. 15; flight_dynamics.hpp). Null: none.
@@ -137,7 +139,7 @@ struct FlightInputs {
   // Optional output, kMaxTrajectoryPoints values of the caller's: at every point the angle of
   // attack against the air mass where the evaluation there was windy (Evaluation::windy), else
   // the point's alpha_rad; what record_dispersed_trajectory() would recompute from the point. Not
-  // with resume_from (kValueOutOfRange).
+  // with resume_from (kResumeInputsIncompatible).
   double* air_alpha_rad = nullptr;
 };
 
