@@ -69,7 +69,7 @@ Status Plant::init(const BenchInputs& inputs, const BenchConfig& config) {
   }
   // A late ignition lengthens the coast before the stage.
   for (int i = 0; i + 1 < slot_count_; ++i) slots_[i].duration_s = slots_[i + 1].start_s - slots_[i].start_s;
-  if (last_powered_slot_ < 0) return Status::kNotPrepared;
+  if (last_powered_slot_ < 0) return Status::kStageSequenceInvalid;  // no powered stage to fly
   final_burnout_s_ = slots_[last_powered_slot_].start_s + slots_[last_powered_slot_].duration_s;
 
   LiftoffResult liftoff;

@@ -81,6 +81,8 @@ enum class Status : int {
   kCodedTimeInSpunStage,
   kSegmentCountMismatch,
   kConvergenceDataOutOfRange,
+  // Returned by nothing since data block 9 left the core (the deck readers check it, issue 18); kept
+  // so that the numbers after it stay (the HIL link and the MPI transport carry a status by number).
   kOutputFrequencyNotPositive,
   kBodyDynamicsValueOutOfRange,
   kPitchAttitudeOutOfRange,
