@@ -71,14 +71,21 @@ const Prepared& prepared() {
   return *p;
 }
 
-void BM_HilNominalAscent50Hz(benchmark::State& state) {
-  const Prepared& p = prepared();
+// The bench's inputs for the prepared job: its linearized mission, the hardover data and the
+// exported table image (the in-process flight computer unless the caller sets another).
+tolip::sim::BenchInputs bench_inputs(const Prepared& p) {
   tolip::sim::BenchInputs inputs;
   inputs.mission = &p.run.linearization.workspace->mission;
   inputs.prepared = &p.run.linearization.workspace->prepared;
   inputs.hardover = p.hardover.get();
   inputs.table = p.image;
   inputs.table_size = sizeof p.image;
+  return inputs;
+}
+
+void BM_HilNominalAscent50Hz(benchmark::State& state) {
+  const Prepared& p = prepared();
+  const tolip::sim::BenchInputs inputs = bench_inputs(p);
   tolip::sim::BenchConfig config;
   auto result = std::make_unique<tolip::sim::BenchResult>();
   double flown_s = 0.0;
@@ -147,12 +154,7 @@ void BM_HilQemuLockStep50Hz(benchmark::State& state) {
       state.SkipWithError(("QEMU did not start: " + error).c_str());
       break;
     }
-    tolip::sim::BenchInputs inputs;
-    inputs.mission = &p.run.linearization.workspace->mission;
-    inputs.prepared = &p.run.linearization.workspace->prepared;
-    inputs.hardover = p.hardover.get();
-    inputs.table = p.image;
-    inputs.table_size = sizeof p.image;
+    tolip::sim::BenchInputs inputs = bench_inputs(p);
     inputs.flight = &qemu;
     const auto start = std::chrono::steady_clock::now();
     const tolip::Status status = tolip::sim::run_bench(inputs, config, result.get());

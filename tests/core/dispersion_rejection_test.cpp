@@ -11,6 +11,7 @@
 #include <limits>
 #include <memory>
 
+#include "support/dispersion_sources.hpp"
 #include "support/reference_mission.hpp"
 #include "tolip/dispersion/dispersion.hpp"
 #include "tolip/dispersion/monte_carlo.hpp"
@@ -35,21 +36,10 @@ std::unique_ptr<Fixture> make_fixture() {
 }
 
 DispersionNominal nominal_of(const Fixture& f, bool body_dynamics) {
-  DispersionNominal n;
-  n.mission = &f.mission;
-  n.body_dynamics = body_dynamics;
-  return n;
+  return test::dispersion_nominal(f.mission, nullptr, body_dynamics);
 }
 
-DispersionSource& add(DispersionData* data, int code) {
-  DispersionSource& s = data->sources[data->count++];
-  s = DispersionSource{};
-  s.code = code;
-  DispersionCodeInfo info;
-  EXPECT_TRUE(dispersion_code_info(code, &info));
-  s.stage = info.stage;
-  return s;
-}
+constexpr auto add = test::add_dispersion_source;
 
 template <int N>
 void table(Table<N>* t, std::initializer_list<double> x, std::initializer_list<double> y,

@@ -8,6 +8,7 @@
 #include <cstring>
 #include <memory>
 
+#include "support/dispersion_sources.hpp"
 #include "support/reference_data.hpp"
 #include "support/reference_mission.hpp"
 #include "tolip/core/constants.hpp"
@@ -47,22 +48,10 @@ std::unique_ptr<Fixture> make_fixture() {
 }
 
 DispersionNominal nominal_of(const Fixture& f, bool body_dynamics = false) {
-  DispersionNominal n;
-  n.mission = &f.mission;
-  n.program = &f.program;
-  n.body_dynamics = body_dynamics;
-  return n;
+  return test::dispersion_nominal(f.mission, &f.program, body_dynamics);
 }
 
-DispersionSource& add(DispersionData* data, int code) {
-  DispersionSource& s = data->sources[data->count++];
-  s = DispersionSource{};
-  s.code = code;
-  DispersionCodeInfo info;
-  EXPECT_TRUE(dispersion_code_info(code, &info));
-  s.stage = info.stage;
-  return s;
-}
+constexpr auto add = test::add_dispersion_source;
 
 template <int N>
 void fill(Table<N>* table, const nlohmann::json& x, const nlohmann::json& y, double scale = 1.0) {

@@ -69,26 +69,28 @@ TEST(HalFlightApplication, EachFailedPortIsCountedUnderItsNameAndTheCycleGoesOn)
   EXPECT_EQ(app.run_minor_cycle(), Status::kOk);
   EXPECT_EQ(app.counters().total_faults(), 0u);
 
-  fake.fail_actuators = true;
-  EXPECT_NE(app.run_minor_cycle(), Status::kOk);
-  EXPECT_EQ(app.counters().actuator_rejections, 1u);
-  fake.fail_actuators = false;
-  fake.fail_telemetry = true;
-  EXPECT_NE(app.run_minor_cycle(), Status::kOk);
-  EXPECT_EQ(app.counters().telemetry_drops, 1u);
-  fake.fail_telemetry = false;
-  fake.fail_clock = true;
-  EXPECT_NE(app.run_minor_cycle(), Status::kOk);
-  EXPECT_EQ(app.counters().clock_overruns, 1u);
-  fake.fail_clock = false;
-  fake.fail_discretes = true;
-  EXPECT_NE(app.run_minor_cycle(), Status::kOk);
-  EXPECT_EQ(app.counters().discrete_faults, 1u);
-  fake.fail_discretes = false;
-  fake.fail_platform = true;
-  EXPECT_NE(app.run_minor_cycle(), Status::kOk);
-  EXPECT_EQ(app.counters().platform_dropouts, 1u);
-  fake.fail_platform = false;
+  // One failed port at a time, each counted under its own name only; the cycle reports the fault.
+  struct PortCase {
+    const char* port;
+    bool Fake::*fail;
+    std::uint32_t FlightCounters::*counter;
+  };
+  const PortCase cases[] = {
+      {"actuators", &Fake::fail_actuators, &FlightCounters::actuator_rejections},
+      {"telemetry", &Fake::fail_telemetry, &FlightCounters::telemetry_drops},
+      {"clock", &Fake::fail_clock, &FlightCounters::clock_overruns},
+      {"discretes", &Fake::fail_discretes, &FlightCounters::discrete_faults},
+      {"platform", &Fake::fail_platform, &FlightCounters::platform_dropouts},
+  };
+  std::uint32_t faults_before = 0;
+  for (const PortCase& c : cases) {
+    SCOPED_TRACE(c.port);
+    fake.*c.fail = true;
+    EXPECT_NE(app.run_minor_cycle(), Status::kOk);
+    EXPECT_EQ(app.counters().*c.counter, 1u);
+    EXPECT_EQ(app.counters().total_faults(), ++faults_before);
+    fake.*c.fail = false;
+  }
   // Stage events follow the flight order: stage 3 after stage 1 is taken (a later stage); back to
   // stage 2 after it is refused, counted, and stage 3 stays in force.
   fake.discretes.stage_code = 3;

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <memory>
 
+#include "support/dispersion_sources.hpp"
 #include "support/reference_data.hpp"
 #include "support/reference_mission.hpp"
 #include "tolip/core/constants.hpp"
@@ -62,15 +63,7 @@ struct Case {
 std::unique_ptr<Case> make_case(double scale) {
   auto c = std::make_unique<Case>();
   build_reference_mission(ReferenceProgram::kOptimum, &c->mission);
-  const auto add = [&](int code) -> DispersionSource& {
-    DispersionSource& s = c->data.sources[c->data.count++];
-    s = DispersionSource{};
-    s.code = code;
-    DispersionCodeInfo info;
-    EXPECT_TRUE(dispersion_code_info(code, &info));
-    s.stage = info.stage;
-    return s;
-  };
+  const auto add = [&](int code) -> DispersionSource& { return add_dispersion_source(&c->data, code); };
   add(9).weight_increment_lb = 150.0 * scale;
   add(11).weight_increment_lb = 50.0 * scale;
   add(13).weight_increment_lb = 15.0 * scale;
@@ -157,15 +150,7 @@ TEST(MonteCarlo, SigmaAgreesWithTheRssSigmaInTheLinearRegime) {
 std::unique_ptr<Case> make_table_case() {
   auto c = std::make_unique<Case>();
   build_reference_mission(ReferenceProgram::kOptimum, &c->mission);
-  const auto add = [&](int code) -> DispersionSource& {
-    DispersionSource& s = c->data.sources[c->data.count++];
-    s = DispersionSource{};
-    s.code = code;
-    DispersionCodeInfo info;
-    EXPECT_TRUE(dispersion_code_info(code, &info));
-    s.stage = info.stage;
-    return s;
-  };
+  const auto add = [&](int code) -> DispersionSource& { return add_dispersion_source(&c->data, code); };
   for (int stage = 2; stage <= 4; ++stage) {
     DispersionSource& s = add(2 * stage - 1);
     const StageData& n = c->mission.vehicle.stages[stage_index(stage)];

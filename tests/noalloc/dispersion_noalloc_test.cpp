@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "support/allocation_counter.hpp"
+#include "support/dispersion_sources.hpp"
 #include "support/reference_mission.hpp"
 #include "tolip/dispersion/dispersion.hpp"
 #include "tolip/dispersion/monte_carlo.hpp"
@@ -19,11 +20,8 @@ TEST(CoreNoHeap, DispersionAnalysisAllocatesNothing) {
   test::build_reference_mission(test::ReferenceProgram::kOptimum, &mission);
   const int codes[] = {3, 11, 17, 26, 30, 33, 34, 36, 40};
   for (int code : codes) {
-    DispersionSource& s = data.sources[data.count++];
-    s.code = code;
-    DispersionCodeInfo info;
-    ASSERT_TRUE(dispersion_code_info(code, &info));
-    s.stage = code == 30 ? 4 : info.stage;
+    DispersionSource& s = test::add_dispersion_source(&data, code);
+    if (code == 30) s.stage = 4;  // tipoff of stage 4
     s.weight_increment_lb = 50.0;
     s.drag_variation_fraction = 0.1;
     s.deadband_rad = 0.01;
@@ -64,11 +62,8 @@ TEST(CoreNoHeap, MonteCarloSampleAllocatesNothing) {
   test::build_reference_mission(test::ReferenceProgram::kOptimum, &mission);
   const int codes[] = {9, 17, 24, 26, 30, 33, 34};
   for (int code : codes) {
-    DispersionSource& s = data.sources[data.count++];
-    s.code = code;
-    DispersionCodeInfo info;
-    ASSERT_TRUE(dispersion_code_info(code, &info));
-    s.stage = code == 30 ? 4 : info.stage;
+    DispersionSource& s = test::add_dispersion_source(&data, code);
+    if (code == 30) s.stage = 4;  // tipoff of stage 4
     s.weight_increment_lb = 150.0;
     s.drag_variation_fraction = 0.1;
     s.deadband_rad = 0.01;
