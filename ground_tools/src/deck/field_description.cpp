@@ -2,6 +2,7 @@
 // (field_description.hpp).
 #include "field_description.hpp"
 
+#include <cstring>
 #include <string>
 
 #include "tolip/core/constants.hpp"
@@ -645,6 +646,9 @@ std::string replaced(std::string text, const std::string& name, const std::strin
 }
 
 std::string expanded(const FieldDescription& field, const char* text, int code, int index) {
+  // Most texts hold no placeholder: return them as they are (the readers expand the section and
+  // the description of every described field for every table they read, so this is hot).
+  if (std::strchr(text, '{') == nullptr) return text;
   std::string out = text;
   out = replaced(out, "w", std::to_string(card_word(field, code, index)));
   out = replaced(out, "n", std::to_string(code));

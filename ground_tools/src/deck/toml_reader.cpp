@@ -491,8 +491,9 @@ void read_field(Section& section, const FieldDescription& field, const FieldTarg
 void read_fields(Section& section, const std::string& section_path, const FieldTarget& target,
                  const Mission& options_of, int code) {
   for (const FieldDescription& field : field_descriptions()) {
-    if (applies_to_stage(field, code) && section_of(field, code) == section_path &&
-        (field.stage_coding == StageCoding::kNone) == (code == 0)) {
+    // The cheap tests first: section_of builds a string.
+    if ((field.stage_coding == StageCoding::kNone) == (code == 0) && applies_to_stage(field, code) &&
+        section_of(field, code) == section_path) {
       read_field(section, field, target, options_of, code);
     }
   }
