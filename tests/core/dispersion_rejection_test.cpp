@@ -330,6 +330,52 @@ TEST(MonteCarlo, ScalarSourcesMoveTheCaseByTheirOwnDrawOverThree) {
   EXPECT_EQ(prepare_monte_carlo(DispersionNominal{}, &f->workspace), Status::kDispersionNominalNotPrepared);
 }
 
+// The workspace keeps its copy of the nominal's mission between samples (MonteCarloEdits): a
+// sample built after others is the one built in a fresh workspace, and a sample that no longer
+// draws a table flies the nominal's table again.
+TEST(MonteCarlo, SampleBuiltAfterOtherSamplesEqualsTheSampleBuiltAfresh) {
+  auto f = make_fixture();
+  DispersionData& d = f->data;
+  thrust_source(&add(&d, 3));
+  add(&d, 11).weight_increment_lb = 30.0;
+  add(&d, 17).drag_variation_fraction = 0.1;
+  add(&d, 33).launch_change_rad = 0.003;
+  const DispersionNominal nominal = nominal_of(*f, false);
+  auto fresh = std::make_unique<DispersionWorkspace>();
+  ASSERT_EQ(build_monte_carlo_case(nominal, f->prepared, d, 5, 7, fresh.get()), Status::kOk);
+  ASSERT_EQ(build_monte_carlo_case(nominal, f->prepared, d, 5, 8, &f->workspace), Status::kOk);
+  ASSERT_EQ(build_monte_carlo_case(nominal, f->prepared, d, 5, 7, &f->workspace), Status::kOk);
+  const DispersionWorkspace& ws = f->workspace;
+  const int s2 = stage_index(2);
+  ASSERT_EQ(ws.prepared.modified_thrust_lbf[s2].size(), fresh->prepared.modified_thrust_lbf[s2].size());
+  for (int i = 0; i < ws.prepared.modified_thrust_lbf[s2].size(); ++i) {
+    EXPECT_EQ(ws.prepared.modified_thrust_lbf[s2].y(i), fresh->prepared.modified_thrust_lbf[s2].y(i)) << i;
+  }
+  EXPECT_EQ(ws.mission.vehicle.stages[s2].jettison_weight_lb,
+            fresh->mission.vehicle.stages[s2].jettison_weight_lb);
+  EXPECT_EQ(ws.mission.launch.azimuth_rad, fresh->mission.launch.azimuth_rad);
+  const AeroTable& cd = ws.mission.vehicle.stages[stage_index(1)].drag_coefficient;
+  for (int i = 0; i < cd.size(); ++i) {
+    EXPECT_EQ(cd.y(i), fresh->mission.vehicle.stages[stage_index(1)].drag_coefficient.y(i)) << i;
+  }
+
+  // Without the thrust and drag sources the nominal's tables and weights are flown again.
+  DispersionData deadband_only;
+  add(&deadband_only, 24).deadband_rad = 0.004;
+  ASSERT_EQ(build_monte_carlo_case(nominal, f->prepared, deadband_only, 5, 7, &f->workspace), Status::kOk);
+  const StageData& flown = ws.mission.vehicle.stages[s2];
+  const StageData& given = f->mission.vehicle.stages[s2];
+  EXPECT_EQ(flown.duration_s, given.duration_s);
+  ASSERT_EQ(flown.vacuum_thrust_lbf.size(), given.vacuum_thrust_lbf.size());
+  for (int i = 0; i < given.vacuum_thrust_lbf.size(); ++i) {
+    EXPECT_EQ(flown.vacuum_thrust_lbf.y(i), given.vacuum_thrust_lbf.y(i)) << i;
+  }
+  EXPECT_EQ(flown.jettison_weight_lb, given.jettison_weight_lb);
+  EXPECT_EQ(ws.mission.launch.azimuth_rad, f->mission.launch.azimuth_rad);
+  const AeroTable& nominal_cd = f->mission.vehicle.stages[stage_index(1)].drag_coefficient;
+  for (int i = 0; i < nominal_cd.size(); ++i) EXPECT_EQ(cd.y(i), nominal_cd.y(i)) << i;
+}
+
 // Table sources are blended on the union of their grids: more points than the tables hold is
 // named by the code whose table overflows, before anything flies.
 TEST(MonteCarlo, UnionGridsBeyondTheTableCapacityAreNamedByCode) {

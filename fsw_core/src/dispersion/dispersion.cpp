@@ -249,6 +249,7 @@ Status build_dispersed_case(const DispersionNominal& nominal, const PreparedCase
     return Status::kDispersionCodeInvalid;
   }
   ws->mission = *nominal.mission;
+  ws->monte_carlo_edits = DispersionWorkspace::MonteCarloEdits{};  // any member may change below
   ws->perturbation = FlightPerturbation{};
   Mission& m = ws->mission;
   FlightPerturbation& p = ws->perturbation;

@@ -262,10 +262,59 @@ double counter_normal(std::uint64_t seed, std::uint64_t sample, std::uint32_t st
   return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * kPi * u2);
 }
 
+namespace {
+
+// The sample's mission starts as the nominal: copied whole when the workspace holds no copy of this
+// nominal (DispersionWorkspace::MonteCarloEdits), else only the stage weights and the azimuth are
+// reset here; the tables the last sample changed are rebuilt by this one's draws or restored by
+// restore_unchanged_tables() after them.
+void begin_sample_mission(const Mission& nominal, DispersionWorkspace* ws) {
+  DispersionWorkspace::MonteCarloEdits& edits = ws->monte_carlo_edits;
+  Mission& m = ws->mission;
+  if (edits.base != &nominal) {
+    m = nominal;
+    edits = DispersionWorkspace::MonteCarloEdits{};
+    edits.base = &nominal;
+    return;
+  }
+  for (int k = 0; k < kMaxStages; ++k) {
+    m.vehicle.stages[k].jettison_weight_lb = nominal.vehicle.stages[k].jettison_weight_lb;
+  }
+  m.launch.azimuth_rad = nominal.launch.azimuth_rad;
+}
+
+// The tables an earlier sample changed and this one did not draw, back to the nominal's.
+void restore_unchanged_tables(const Mission& nominal, const bool* thrust_drawn, bool drag_drawn,
+                              bool pitching_moment_drawn, DispersionWorkspace* ws) {
+  DispersionWorkspace::MonteCarloEdits& edits = ws->monte_carlo_edits;
+  Mission& m = ws->mission;
+  for (int k = 0; k < kMaxStages; ++k) {
+    StageData& stage = m.vehicle.stages[k];
+    const StageData& from = nominal.vehicle.stages[k];
+    if (edits.thrust_blended[k] && !thrust_drawn[k]) {
+      stage.vacuum_thrust_lbf = from.vacuum_thrust_lbf;
+      stage.consumable_weight_lb = from.consumable_weight_lb;
+      stage.duration_s = from.duration_s;
+      edits.thrust_blended[k] = false;
+    }
+    if (edits.drag_scaled && !drag_drawn) stage.drag_coefficient = from.drag_coefficient;
+  }
+  if (!drag_drawn) edits.drag_scaled = false;
+  if (edits.pitching_moment_blended && !pitching_moment_drawn) {
+    m.body_dynamics.pitching_moment_per_rad = nominal.body_dynamics.pitching_moment_per_rad;
+    edits.pitching_moment_blended = false;
+  }
+}
+
+}  // namespace
+
 Status build_monte_carlo_case(const DispersionNominal& nominal, const PreparedCase& nominal_prepared,
                               const DispersionData& data, std::uint64_t seed, std::uint64_t sample,
                               DispersionWorkspace* ws) {
-  ws->mission = *nominal.mission;
+  begin_sample_mission(*nominal.mission, ws);
+  DispersionWorkspace::MonteCarloEdits& edits = ws->monte_carlo_edits;
+  bool thrust_drawn[kMaxStages] = {};
+  bool pitching_moment_drawn = false;
   ws->perturbation = FlightPerturbation{};
   ws->program_mapped = false;
   Mission& m = ws->mission;
@@ -325,6 +374,8 @@ Status build_monte_carlo_case(const DispersionNominal& nominal, const PreparedCa
         const double c = (partner >= 0 && z < 0.0) ? -z : z;
         if (info.kind == DispersionKind::kVacuumThrust) {
           const int slot = stage_index(dispersion_source_stage(table));
+          edits.thrust_blended[slot] = true;  // before the blend: a failed one leaves it changed
+          thrust_drawn[slot] = true;
           const Status status =
               blend_thrust(nominal.mission->vehicle.stages[slot], table, c, &m.vehicle.stages[slot]);
           if (!ok(status)) return status;
@@ -334,6 +385,8 @@ Status build_monte_carlo_case(const DispersionNominal& nominal, const PreparedCa
           prepares = true;
           thrust_changed = true;
         } else if (info.kind == DispersionKind::kPitchingMoment) {
+          edits.pitching_moment_blended = true;
+          pitching_moment_drawn = true;
           const Status status = blend_pitching_moment(nominal.mission->body_dynamics.pitching_moment_per_rad,
                                                       table.pitching_moment_per_rad, c,
                                                       &m.body_dynamics.pitching_moment_per_rad);
@@ -351,11 +404,16 @@ Status build_monte_carlo_case(const DispersionNominal& nominal, const PreparedCa
     if (!ok(status)) return status;
     p.wind = &ws->wind;
   }
+  restore_unchanged_tables(*nominal.mission, thrust_drawn, drag_fraction != 0.0, pitching_moment_drawn, ws);
   if (drag_fraction != 0.0) {
     if (!(std::fabs(drag_fraction) < 1.0)) return Status::kDispersionDragVariationOutOfRange;
-    for (StageData& stage_data : m.vehicle.stages) {
-      AeroTable& cd = stage_data.drag_coefficient;
-      for (int i = 0; i < cd.size(); ++i) cd.set_y(i, cd.y(i) * (1.0 + drag_fraction));
+    edits.drag_scaled = true;
+    for (int k = 0; k < kMaxStages; ++k) {
+      // The nominal's coefficients scaled (only set_y changes these tables: the abscissae and the
+      // count are the nominal's).
+      AeroTable& cd = m.vehicle.stages[k].drag_coefficient;
+      const AeroTable& from = nominal.mission->vehicle.stages[k].drag_coefficient;
+      for (int i = 0; i < cd.size(); ++i) cd.set_y(i, from.y(i) * (1.0 + drag_fraction));
       if (!cd.empty()) {
         const Status status = cd.finalize();
         if (!ok(status)) return status;
@@ -433,6 +491,7 @@ Status check_monte_carlo_data(const DispersionNominal& nominal, const Dispersion
 
 Status prepare_monte_carlo(const DispersionNominal& nominal, DispersionWorkspace* ws) {
   if (nominal.mission == nullptr) return Status::kDispersionNominalNotPrepared;
+  ws->monte_carlo_edits.base = nullptr;  // the first sample copies the nominal's mission whole
   Status status = prepare_case(*nominal.mission, &ws->nominal_prepared);
   if (!ok(status)) return status;
   FlightInputs inputs;

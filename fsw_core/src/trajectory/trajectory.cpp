@@ -190,7 +190,9 @@ Status Flight::record(const StageContext& stage, double t, const StateVector& st
   p.net_thrust_lbf = eval.net_thrust_lbf;
   p.dynamic_pressure_lbf_ft2 = eval.dynamic_pressure_lbf_ft2;
   p.mach = eval.mach;
-  p.alpha_rad = angle_of_attack_rad(eval.thrust_axis_local);
+  // A lean point whose air-relative alpha is kept needs no still-air alpha (FlightInputs::lean_points).
+  const bool air_alpha_only = inputs_.lean_points && inputs_.air_alpha_rad != nullptr && eval.windy;
+  p.alpha_rad = air_alpha_only ? 0.0 : angle_of_attack_rad(eval.thrust_axis_local);
   p.theta_rad = eval.theta_rad;
   p.chi_rad = eval.chi_rad;
   p.drag_lbf = eval.drag_lbf;

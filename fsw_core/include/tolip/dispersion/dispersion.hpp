@@ -162,6 +162,16 @@ struct DispersionWorkspace {
   WindProfile wind;  // a Monte Carlo sample's wind (the drawn profiles, scaled and summed)
   // The dispersed flight's air-relative angle of attack at every point (FlightInputs::air_alpha_rad).
   double air_alpha_rad[kMaxTrajectoryPoints] = {};
+  // `mission` as the Monte Carlo left it: a copy of *base but for the stage weights, the launch
+  // azimuth and the tables marked here (build_monte_carlo_case). The next sample of the same nominal
+  // restores only those from it instead of copying the whole Mission (about 68 kB) again; null base:
+  // no such copy (build_dispersed_case, which changes other members, and a new workspace).
+  struct MonteCarloEdits {
+    const Mission* base = nullptr;
+    bool thrust_blended[kMaxStages] = {};  // thrust, consumable weight and burn time (codes 1-8)
+    bool drag_scaled = false;              // every stage's drag table (17-18)
+    bool pitching_moment_blended = false;  // C_M_alpha (19-20)
+  } monte_carlo_edits;
 };
 
 // The stage a source disperses: the code table's, the card's stage for a tip-off (30-32), and

@@ -42,6 +42,9 @@ Status check_monte_carlo_data(const DispersionNominal& nominal, const Dispersion
 // C_M_alpha 19-20 (with body dynamics) alike, winds 36-38 (the profile scaled by c; the high/low and
 // the yaw profile of a sample summed as vectors). A negative draw of a pair flies its low table
 // (monte_carlo_low_partner) or the mirror. `nominal_prepared` is the nominal's prepare_case().
+// The workspace keeps its copy of the nominal's mission from one sample to the next and resets only
+// what a sample changes (DispersionWorkspace::MonteCarloEdits): a nominal mission changed in place
+// needs prepare_monte_carlo() again before its samples.
 Status build_monte_carlo_case(const DispersionNominal& nominal, const PreparedCase& nominal_prepared,
                               const DispersionData& data, std::uint64_t seed, std::uint64_t sample,
                               DispersionWorkspace* workspace);

@@ -132,9 +132,10 @@ struct FlightInputs {
   // A dispersed trajectory's changes to the flight (Sec. 15; flight_dynamics.hpp). Null: none.
   const FlightPerturbation* perturbation = nullptr;
   // Lean points (a Monte Carlo sample's flight): every point leaves geodetic_latitude_rad,
-  // heating_rate_btu_ft2_s, downrange_rad and inertial at 0 (and heat_integral_btu_ft2 at 0), what
-  // record_dispersed_trajectory() does not read. The flight and every other member are the full
-  // run's, bit for bit.
+  // heating_rate_btu_ft2_s, downrange_rad and inertial at 0 (and heat_integral_btu_ft2 at 0), and
+  // with air_alpha_rad below a windy point its alpha_rad too (the air-relative alpha is kept
+  // there): what record_dispersed_trajectory() does not read. The flight and every other member are
+  // the full run's, bit for bit.
   bool lean_points = false;
   // Optional output, kMaxTrajectoryPoints values of the caller's: at every point the angle of
   // attack against the air mass where the evaluation there was windy (Evaluation::windy), else
