@@ -84,12 +84,15 @@ std::vector<InputWarning> unused_inputs(const Mission& mission, const DeckExtras
          "the gyro uncage time has no effect: the platform frame is aligned at lift-off in this version "
          "(uncaging DA2(8) s earlier would turn it by the Earth's rotation in that time)");
   }
-  // Data block 33: 6D steps are the point-mass steps.
-  const BodyDynamicsData& bd = extras.body_dynamics;
-  for (double multiplier : bd.integration_frequency_multiplier) {
-    if (multiplier != 1.0) {
+  // Data block 33, DA6D(12-15): substeps of 6D forward trajectories, which only IP(6) = 2 (the
+  // initial nominal) and IP(6) = 1 with the linearization (IP(7)) fly.
+  const bool six_d_flown = o.body_dynamics_6d() == 2 || (o.body_dynamics_6d() == 1 && o.linearization());
+  for (double multiplier : mission.body_dynamics.integration_frequency_multiplier) {
+    if (multiplier != 1.0 && !six_d_flown) {
       warn(33, "DA6D(12-15)", "body_dynamics.integration_frequency_multiplier",
-           "6D steps are the stage's point-mass steps: the integration frequency multipliers have no effect");
+           "the 6D integration frequency multipliers have no effect: no 6D forward trajectory is flown "
+           "(IP(6) = " +
+               std::to_string(o.body_dynamics_6d()) + ", IP(7) = " + std::to_string(o.linearization()) + ")");
       break;
     }
   }
