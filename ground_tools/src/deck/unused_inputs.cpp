@@ -24,15 +24,8 @@ std::vector<InputWarning> unused_inputs(const Mission& mission, const DeckExtras
     warn(4, "IP(15)", "options.memory_dump",
          "the core-memory dump of the 1966 program has no counterpart: ignored");
   }
-  // Data block 9: only the final trajectory is listed.
-  for (int i = 0; i < kMaxStages; ++i) {
-    if (extras.listing.output.initial[i] != 1 || extras.listing.output.intermediate[i] != 1) {
-      warn(9, "initial and intermediate print frequencies", "output_frequency.initial/intermediate",
-           "only the final trajectory is listed (data block 9's third word per stage); the others have no "
-           "effect");
-      break;
-    }
-  }
+  // Data block 9's initial and intermediate frequencies act: a deck giving one other than 1 asks
+  // `optimize` for the listings of the initial nominal and of every forward run (run_listing.hpp).
   // Data block 19: DA4(1), the payoff entry's desired value, is a placeholder (Sec. 22): the payoff
   // is maximized, not driven to a value.
   if (mission.constraints.count > 0 && mission.constraints.desired[0] != 0.0) {
