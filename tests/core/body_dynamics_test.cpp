@@ -700,6 +700,158 @@ TEST(BodyDynamics, Sec11_ValidationNamesTheFaultyBlock) {
   EXPECT_EQ(validate_body_dynamics(m, &fault), Status::kValueNotFinite);
 }
 
+// ---- DA6D(12-15): the 6D integration frequency multipliers (Sec. 22, data block 33) ------------
+
+// The reference optimum flown 6D with every multiplier of stages 1-4 set to m.
+const Trajectory& six_d_with_substeps(int m) {
+  static Trajectory* flown[9] = {};
+  if (flown[m] == nullptr) {
+    const Case& c = reference_case(test::ReferenceProgram::kOptimum);
+    static Mission mission;
+    mission = c.mission;
+    for (double& multiplier : mission.body_dynamics.integration_frequency_multiplier) multiplier = m;
+    EXPECT_EQ(validate_mission(mission, nullptr), Status::kOk);
+    flown[m] = new Trajectory;
+    FlightInputs inputs;
+    inputs.body_dynamics = true;
+    EXPECT_EQ(fly_trajectory(mission, c.prepared, inputs, flown[m]), Status::kOk) << m;
+  }
+  return *flown[m];
+}
+
+int first_point_of_stage(const Trajectory& t, int code) {
+  for (int k = 0; k < t.stage_count; ++k) {
+    if (t.stages[k].code == code) return t.stages[k].first_point;
+  }
+  return -1;
+}
+
+// Distance of two states: their inertial positions (ft, frame free) and their speeds (ft/s).
+struct StateDistance {
+  double position_ft;
+  double speed_ft_s;
+};
+StateDistance distance(const StateVector& a, const StateVector& b) {
+  const auto position = [](const StateVector& x) {
+    const double r = x[kStateR];
+    return Vector3(r * std::cos(x[kStateLambda]) * std::cos(x[kStateTau]),
+                   r * std::cos(x[kStateLambda]) * std::sin(x[kStateTau]), r * std::sin(x[kStateLambda]));
+  };
+  return {(position(a) - position(b)).norm(), std::fabs(a[kStateV] - b[kStateV])};
+}
+
+// Richardson: halving the substep of a fourth-order method divides the error, hence the difference
+// of successive halvings, by 2^4 = 16, while the integrand is smooth within a step. The tables the
+// equations interpolate linearly in Mach (C_D, C_L_alpha, the moment coefficients) have knots that
+// fall inside steps; their kinks cost RK4 its order, so once their error dominates a halving gains
+// about 2^2 = 4. At stage-2 ignition (stage 1 and coast 6: RK4 steps for
+// every m) the first halving shows the fourth order, the next one the kinks; at the final point
+// m = 1 flies the coasts with Adams-Bashforth (RKAD) and the long coast before stage 4 carries the
+// powered stages' velocity differences, so there every halving must only shrink the difference. The
+// trajectory keeps its points: one per step, whatever m.
+TEST(BodyDynamics, Sec22_IntegrationMultipliersConvergeAtFourthOrder) {
+  const Trajectory& t1 = six_d_with_substeps(1);
+  const Trajectory& t2 = six_d_with_substeps(2);
+  const Trajectory& t4 = six_d_with_substeps(4);
+  const Trajectory& t8 = six_d_with_substeps(8);
+  ASSERT_EQ(t2.point_count, t1.point_count);
+  ASSERT_EQ(t4.point_count, t1.point_count);
+  ASSERT_EQ(t8.point_count, t1.point_count);
+  const int ignition = first_point_of_stage(t1, 2);
+  ASSERT_GT(ignition, 0);
+  const StateDistance i12 = distance(t1.points[ignition].state, t2.points[ignition].state);
+  const StateDistance i24 = distance(t2.points[ignition].state, t4.points[ignition].state);
+  const StateDistance i48 = distance(t4.points[ignition].state, t8.points[ignition].state);
+  const int last = t1.point_count - 1;
+  const StateDistance f12 = distance(t1.points[last].state, t2.points[last].state);
+  const StateDistance f24 = distance(t2.points[last].state, t4.points[last].state);
+  const StateDistance f48 = distance(t4.points[last].state, t8.points[last].state);
+  std::printf(
+      "[ figures ] DA6D(12-15) stage-2 ignition: position 1->2 %.4g ft, 2->4 %.4g ft, 4->8 %.4g ft; "
+      "speed 1->2 %.4g, 2->4 %.4g, 4->8 %.4g ft/s\n",
+      i12.position_ft, i24.position_ft, i48.position_ft, i12.speed_ft_s, i24.speed_ft_s, i48.speed_ft_s);
+  std::printf(
+      "[ figures ] DA6D(12-15) final point: position 1->2 %.4g ft, 2->4 %.4g ft, 4->8 %.4g ft; "
+      "speed 1->2 %.4g, 2->4 %.4g, 4->8 %.4g ft/s\n",
+      f12.position_ft, f24.position_ft, f48.position_ft, f12.speed_ft_s, f24.speed_ft_s, f48.speed_ft_s);
+  // The substeps act: m = 2 differs from m = 1.
+  EXPECT_GT(i12.position_ft, 0.0);
+  EXPECT_GT(f12.position_ft, 0.0);
+  // Fourth order at the first halving (measured 12.1; a second-order method gives 4, a first-order
+  // one 2), at least the kinks' second order at the next (measured 3.7).
+  EXPECT_GT(i12.position_ft / i24.position_ft, 8.0);
+  EXPECT_GT(i24.position_ft / i48.position_ft, 3.0);
+  EXPECT_LT(f24.position_ft, f12.position_ft);
+  EXPECT_LT(f48.position_ft, f24.position_ft);
+}
+
+// Each word acts on its own stage and the coast after it: DA6D(13) = 2 (stage 2) leaves stage 1
+// and coast 6 bit for bit and changes the points after the first step of stage 2.
+TEST(BodyDynamics, Sec22_IntegrationMultiplierActsOnItsOwnStage) {
+  const Case& c = reference_case(test::ReferenceProgram::kOptimum);
+  static Mission mission;
+  mission = c.mission;
+  mission.body_dynamics.integration_frequency_multiplier[1] = 2.0;
+  static Trajectory stage2;
+  FlightInputs inputs;
+  inputs.body_dynamics = true;
+  ASSERT_EQ(fly_trajectory(mission, c.prepared, inputs, &stage2), Status::kOk);
+  const Trajectory& base = six_d_with_substeps(1);
+  const int ignition = first_point_of_stage(base, 2);
+  ASSERT_EQ(stage2.point_count, base.point_count);
+  for (int i = 0; i <= ignition; ++i) EXPECT_EQ(stage2.points[i].state, base.points[i].state) << i;
+  EXPECT_NE(stage2.points[ignition + 1].state, base.points[ignition + 1].state);
+  // Point-mass runs ignore the words (Sec. 22: "during 6D forward trajectories").
+  static Trajectory point_mass;
+  ASSERT_EQ(fly_trajectory(mission, c.prepared, &point_mass), Status::kOk);
+  const Pair& pair = flown_pair(test::ReferenceProgram::kOptimum);
+  for (int i = 0; i < point_mass.point_count; ++i) {
+    EXPECT_EQ(point_mass.points[i].state, pair.point_mass.points[i].state) << i;
+  }
+  // Stage k's word serves stage k and the coast after it; stage 5 has none.
+  BodyDynamicsBlocks b;
+  for (int k = 0; k < 4; ++k) b.integration_frequency_multiplier[k] = k + 2;
+  EXPECT_EQ(integration_substeps(b, 1, true), 2);
+  EXPECT_EQ(integration_substeps(b, 6, true), 2);
+  EXPECT_EQ(integration_substeps(b, 4, true), 5);
+  EXPECT_EQ(integration_substeps(b, 9, true), 5);
+  EXPECT_EQ(integration_substeps(b, 5, true), 1);
+  EXPECT_EQ(integration_substeps(b, 10, true), 1);
+  EXPECT_EQ(integration_substeps(b, 1, false), 1);
+}
+
+// A whole number of substeps, at least 1, at most the capacity: one status per cause, naming the
+// word (data block 33, field and element).
+TEST(BodyDynamics, Sec22_IntegrationMultiplierValidationNamesEachCause) {
+  static Mission m;
+  const struct {
+    double value;
+    Status status;
+  } cases[] = {
+      {1.5, Status::kIntegrationMultiplierNotInteger},
+      {0.0, Status::kIntegrationMultiplierBelowOne},
+      {-2.0, Status::kIntegrationMultiplierBelowOne},
+      {kMaxIntegrationFrequencyMultiplier + 1.0, Status::kIntegrationMultiplierAboveCapacity},
+      {std::nan(""), Status::kValueNotFinite},
+  };
+  for (const auto& c : cases) {
+    m = reference_case(test::ReferenceProgram::kOptimum).mission;
+    m.body_dynamics.integration_frequency_multiplier[2] = c.value;
+    MissionFault fault;
+    EXPECT_EQ(validate_mission(m, &fault), c.status) << c.value;
+    EXPECT_EQ(fault.data_block, 33);
+    EXPECT_STREQ(fault.field, "integration_frequency_multiplier");
+    EXPECT_EQ(fault.index, 2);
+    EXPECT_EQ(validate_body_dynamics(m, &fault), c.status) << c.value;
+    // Checked without body dynamics too: the words are data of the case.
+    m.options.ip[6] = 0;
+    EXPECT_EQ(validate_mission(m, &fault), c.status) << c.value;
+  }
+  m = reference_case(test::ReferenceProgram::kOptimum).mission;
+  m.body_dynamics.integration_frequency_multiplier[3] = kMaxIntegrationFrequencyMultiplier;
+  EXPECT_EQ(validate_mission(m, nullptr), Status::kOk);
+}
+
 TEST(BodyDynamics, Sec11_TrajectoryPointDidNotGrow) {
   // The commanded theta and the deflection live in padding: a point is still 240 bytes.
   EXPECT_EQ(sizeof(TrajectoryPoint), 240u);

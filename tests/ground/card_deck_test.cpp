@@ -710,11 +710,11 @@ void expect_same_table(const ground::DeckTable& a, const ground::DeckTable& b, c
 }
 
 void expect_same_extras(const DeckExtras& a, const DeckExtras& b) {
-  // Blocks 33-37 are the Mission's (compared with fields_of); DA6D(12-19) are kept here.
+  // Blocks 33-37 are the Mission's (compared with fields_of), DA6D(12-15) included; DA6D(17-19)
+  // are kept here.
   const ground::BodyDynamicsData& p = a.body_dynamics;
   const ground::BodyDynamicsData& q = b.body_dynamics;
   EXPECT_EQ(p.present, q.present);
-  EXPECT_EQ(p.integration_frequency_multiplier, q.integration_frequency_multiplier);
   EXPECT_EQ(p.impact_every_nth_step, q.impact_every_nth_step);
   EXPECT_EQ(a.listing.lines_per_page, b.listing.lines_per_page);
   EXPECT_EQ(a.listing.deg_to_rad_as_printed, b.listing.deg_to_rad_as_printed);

@@ -43,7 +43,7 @@ double distinctive(const FieldDescription& field, double current) {
   if (field.range == Range::kChoice) return current + 1.0 <= field.high ? current + 1.0 : current - 1.0;
   if (field.integer) return current + 1.0;
   if (current == 0.0) return 0.5;
-  if (field.range == Range::kAtLeastOne) return current + 0.5;
+  if (field.range == Range::kAtLeastOne) return current + 1.0;  // whole: DA6D(12-15) are substep counts
   char text[32];
   std::snprintf(text, sizeof text, "%.5e", current * 1.0001);
   return std::strtod(text, nullptr);

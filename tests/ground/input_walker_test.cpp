@@ -86,11 +86,14 @@ struct Verdict {
   std::string evidence;  // which observable, or the message
 };
 
-// The three observables of one deck: what the commands that fly a case print.
+// The four observables of one deck: what the commands that fly a case print.
 struct Observation {
   CommandRun simulate_json;
   std::optional<CommandRun> optimize_json;  // run only when simulate says nothing
   std::optional<CommandRun> simulate_listing;
+  // The optimize listing: data block 9's initial and intermediate frequencies act there only
+  // (the listings of the initial nominal and of every forward run).
+  std::optional<CommandRun> optimize_listing;
 };
 
 // Whether the warning line `line` ("tolip: warning: DECK: data block B, WORD (FIELD): MESSAGE")
@@ -150,11 +153,12 @@ bool rejection_names(const std::string& err, const std::string& key) {
 }
 
 // The outcome of one perturbed deck against the base deck's observation. `observe` runs an
-// observable of a deck on demand (0 simulate --json, 1 optimize --json, 2 the simulate listing).
+// observable of a deck on demand (0 simulate --json, 1 optimize --json, 2 the simulate listing,
+// 3 the optimize listing).
 Verdict classify(const Observation& base, const std::string& key, int data_block,
                  const std::function<CommandRun(int)>& observe) {
   std::string warning;
-  for (int observable = 0; observable < 3; ++observable) {
+  for (int observable = 0; observable < 4; ++observable) {
     const CommandRun run = observe(observable);
     if (run.exit_code == ground::kExitBadInput) {
       // A value of the wrong kind (only tried for keys the example does not give) proves nothing.
@@ -167,8 +171,10 @@ Verdict classify(const Observation& base, const std::string& key, int data_block
     }
     const CommandRun& reference = observable == 0   ? base.simulate_json
                                   : observable == 1 ? *base.optimize_json
-                                                    : *base.simulate_listing;
-    static const char* const kObservables[] = {"simulate --json", "optimize --json", "simulate listing"};
+                                  : observable == 2 ? *base.simulate_listing
+                                                    : *base.optimize_listing;
+    static const char* const kObservables[] = {"simulate --json", "optimize --json", "simulate listing",
+                                               "optimize listing"};
     if (run.out != reference.out || run.exit_code != reference.exit_code)
       return {Outcome::kActs, kObservables[observable]};
     // The warning may be about the value the deck gives (IP(22) = 1 while the hardover turns are
@@ -378,6 +384,7 @@ class TomlWalker {
     base_.simulate_json = run_in_process({"simulate", path_, "--json"});
     base_.optimize_json = run_in_process({"optimize", path_, "--json", "--no-progress"});
     base_.simulate_listing = run_in_process({"simulate", path_});
+    base_.optimize_listing = run_in_process({"optimize", path_, "--no-progress"});
   }
 
   const Observation& base() const { return base_; }
@@ -414,7 +421,8 @@ class TomlWalker {
       Verdict verdict = classify(base_, key.path, key.data_block, [&](int observable) {
         CommandRun run = observable == 0   ? run_in_process({"simulate", path_, "--json"})
                          : observable == 1 ? run_in_process({"optimize", path_, "--json", "--no-progress"})
-                                           : run_in_process({"simulate", path_});
+                         : observable == 2 ? run_in_process({"simulate", path_})
+                                           : run_in_process({"optimize", path_, "--no-progress"});
         if (filter) filter(&run);
         return run;
       });

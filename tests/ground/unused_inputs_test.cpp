@@ -62,20 +62,21 @@ TEST(UnusedInputs, EachInputWarnsAloneAndADeckWithoutThemIsSilent) {
   EXPECT_EQ(none.err, "");
 
   const struct {
-    std::pair<std::string, std::string> edit;
+    std::vector<std::pair<std::string, std::string>> edits;
     const char* named;
   } alone[] = {
-      {{"stage5_chi = 0 ", "stage5_chi = 1 "}, "data block 4, IP(10) (options.stage5_chi)"},
-      {{"initial = 1", "initial = 2"}, "data block 9, initial and intermediate print frequencies"},
-      {{"ct1_13 = 1.0", "ct1_13 = 2.0"}, "data block 10, CT1(13) (constants.ct1_13)"},
-      {{"integration_frequency_multiplier = [1.0, 1.0, 1.0, 1.0]",
-        "integration_frequency_multiplier = [2.0, 1.0, 1.0, 1.0]"},
+      {{{"stage5_chi = 0 ", "stage5_chi = 1 "}}, "data block 4, IP(10) (options.stage5_chi)"},
+      {{{"ct1_13 = 1.0", "ct1_13 = 2.0"}}, "data block 10, CT1(13) (constants.ct1_13)"},
+      // DA6D(12-15) act in 6D forward trajectories; with IP(6) = 0 none is flown.
+      {{{"integration_frequency_multiplier = [1.0, 1.0, 1.0, 1.0]",
+         "integration_frequency_multiplier = [2.0, 1.0, 1.0, 1.0]"},
+        {"body_dynamics_6d = 1 ", "body_dynamics_6d = 0 "}},
        "data block 33, DA6D(12-15) (body_dynamics.integration_frequency_multiplier)"},
   };
   int n = 0;
   for (const auto& a : alone) {
     std::vector<std::pair<std::string, std::string>> edits = quiet;
-    edits.push_back(a.edit);
+    edits.insert(edits.end(), a.edits.begin(), a.edits.end());
     const std::string deck = edited_example_deck(scratch, "alone" + std::to_string(++n) + ".toml", edits);
     const CommandResult run = run_tolip_executable({"simulate", deck, "--json"});
     EXPECT_EQ(run.exit_code, 0) << run.err;

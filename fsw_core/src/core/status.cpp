@@ -204,6 +204,9 @@ const char* status_name(Status status) {
     case Status::kSegmentAttitudeOutOfRange: return "kSegmentAttitudeOutOfRange";
     case Status::kGainScheduleTimeOutOfRange: return "kGainScheduleTimeOutOfRange";
     case Status::kLinearizationNotFinished: return "kLinearizationNotFinished";
+    case Status::kIntegrationMultiplierNotInteger: return "kIntegrationMultiplierNotInteger";
+    case Status::kIntegrationMultiplierBelowOne: return "kIntegrationMultiplierBelowOne";
+    case Status::kIntegrationMultiplierAboveCapacity: return "kIntegrationMultiplierAboveCapacity";
   }
   return "kUnknownStatus";
 }
@@ -607,6 +610,14 @@ const char* status_message(Status status) {
     case Status::kLinearizationNotFinished:
       return "the linearization (IP(7) = 1) was skipped or stopped before it finished, so there is no "
              "linearized program to fly about";
+    case Status::kIntegrationMultiplierNotInteger:
+      return "a 6D integration frequency multiplier (DA6D(12-15)) is not a whole number of substeps";
+    case Status::kIntegrationMultiplierBelowOne:
+      return "a 6D integration frequency multiplier (DA6D(12-15)) is below 1 (a step takes at least one "
+             "substep)";
+    case Status::kIntegrationMultiplierAboveCapacity:
+      return "a 6D integration frequency multiplier (DA6D(12-15)) is above "
+             "kMaxIntegrationFrequencyMultiplier";
   }
   return "unknown status";
 }

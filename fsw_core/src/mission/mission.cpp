@@ -868,9 +868,27 @@ Status required_table(const Table<N>& table, const Check& check, int data_block,
   return optional_table(table, check, data_block, stage_code, x_field, x_unit, y_field, y_unit);
 }
 
+// DA6D(12-15): substep counts, so whole numbers from 1 to the capacity (one status per cause).
+Status check_integration_multipliers(const BodyDynamicsBlocks& b, const Check& check) {
+  for (int k = 0; k < kIntegrationMultiplierStages; ++k) {
+    const double m = b.integration_frequency_multiplier[k];
+    const char* field = "integration_frequency_multiplier";
+    TOLIP_CHECK(check.finite(m, 33, 0, field, "", k));
+    TOLIP_CHECK(check.range(m, at_least(1.0), Status::kIntegrationMultiplierBelowOne, 33, 0, field, "", k));
+    TOLIP_CHECK(check.range(m, at_most(static_cast<double>(kMaxIntegrationFrequencyMultiplier)),
+                            Status::kIntegrationMultiplierAboveCapacity, 33, 0, field, "", k));
+    if (m != std::floor(m)) {
+      return check.fail(Status::kIntegrationMultiplierNotInteger, 33, 0, field, k, m, "", ValueRange{},
+                        "a whole number of substeps");
+    }
+  }
+  return Status::kOk;
+}
+
 Status check_body_dynamics(const Mission& mission, const Check& check) {
   const BodyDynamicsBlocks& b = mission.body_dynamics;
   if (!b.present) return check.fail(Status::kBodyDynamicsDataMissing, 33, 0, "body_dynamics");
+  TOLIP_CHECK(check_integration_multipliers(b, check));
   // Every word given must be finite (stages 2-3 are kept for the dispersion and hardover work).
   for (int k = 0; k < kBodyDynamicsStages; ++k) {
     TOLIP_CHECK(check.finite(b.position_gain[k], 33, 0, "position_gain", "", k));
@@ -953,7 +971,9 @@ Status validate_mission(const Mission& mission, MissionFault* fault) {
                             Status::kPitchAttitudeOutOfRange, 40, 0, "pitch_program_rad", "rad", i));
   }
 
-  // Data blocks 33-37 when a 6D trajectory is asked for (IP(6) = 1 or 2).
+  // DA6D(12-15) always (a deck without body dynamics keeps the default 1s), blocks 33-37 in full
+  // when a 6D trajectory is asked for (IP(6) = 1 or 2).
+  TOLIP_CHECK(check_integration_multipliers(mission.body_dynamics, check));
   if (mission.options.body_dynamics_6d() >= 1) return check_body_dynamics(mission, check);
   return Status::kOk;
 }
@@ -965,6 +985,13 @@ Status validate_body_dynamics(const Mission& mission, MissionFault* fault) {
 }
 
 #undef TOLIP_CHECK
+
+int integration_substeps(const BodyDynamicsBlocks& blocks, int stage_code, bool body_dynamics) {
+  if (!body_dynamics) return 1;
+  const int stage = is_coast_stage(stage_code) ? stage_code - 5 : stage_code;
+  if (stage < 1 || stage > kIntegrationMultiplierStages) return 1;
+  return static_cast<int>(blocks.integration_frequency_multiplier[stage - 1]);
+}
 
 // Consumable weight of the current powered stage (0 in a coast), plus the jettison weights of this
 // and every later stage of the sequence, plus the payload while the last powered stage is current

@@ -668,7 +668,8 @@ Status record_result(const LinearConstraints& c, const LinearProgram& program, c
 }  // namespace
 
 Status linearize_pitch_program(const OptimizerWorkspace& optimized, LinearizationWorkspace* ws,
-                               LinearizationResult* out, SixDGainDesign* gains) {
+                               LinearizationResult* out, SixDGainDesign* gains,
+                               LinearizationObserver* observer) {
   out->forward_runs = 0;
   out->backward_runs = 0;
   out->programs_computed = 0;
@@ -710,6 +711,8 @@ Status linearize_pitch_program(const OptimizerWorkspace& optimized, Linearizatio
     sample(program, ws->nominal, ws->optimum, &ws->program);
     ws->mission.vehicle.payload_lb += payload_change_lb;
     if (!(ws->mission.vehicle.payload_lb >= 0.0)) return out->status = Status::kLinearizedPayloadNegative;
+    if (observer != nullptr)
+      observer->on_linearization_run(out->forward_runs + 1, program, out->body_dynamics);
     status = fly_linearized(*ws, out->body_dynamics, &ws->candidate);
     ++out->forward_runs;
     if (!ok(status)) return out->status = status;

@@ -672,7 +672,14 @@ void Iteration::record(RunKind kind, Status run_status, bool successful, double 
       ++result_->held_runs[i];
     }
   }
-  if (ws_->observer != nullptr) ws_->observer->on_forward_run(r, *result_);
+  if (ws_->observer != nullptr) {
+    ws_->observer->on_forward_run(r, *result_);
+    if (kind == RunKind::kInitialNominal) {
+      ws_->observer->on_forward_trajectory(r, ws_->mission, ws_->nominal, nullptr);
+    } else {
+      ws_->observer->on_forward_trajectory(r, ws_->candidate_mission, ws_->candidate, &ws_->nominal);
+    }
+  }
 }
 
 Status Iteration::fly_nominal_from_table() {

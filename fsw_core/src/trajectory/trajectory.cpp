@@ -46,6 +46,7 @@ class Flight {
     const StageTimeline* line = nullptr;
     int slot = 0;
     bool body_dynamics = false;
+    int substeps = 1;                  // DA6D(12-15) in a 6D forward trajectory, else 1
     double last_theta_step_rad = 0.0;  // theta_end - theta_start of the last step flown
     DerivativeHistory<StateVector> history;
     Evaluation eval;
@@ -304,6 +305,7 @@ Status Flight::fly_stage(int slot, StateVector* state) {
   flight.stage.scratch = &scratch;
   // Body dynamics act in stage 1 and the coast after it only (Sec. 11).
   flight.body_dynamics = inputs_.body_dynamics && (line.code == 1 || line.code == 6);
+  flight.substeps = integration_substeps(mission_.body_dynamics, line.code, inputs_.body_dynamics);
 
   StageEvent& event = trajectory_->stages[trajectory_->stage_count];
   event.code = line.code;
@@ -341,7 +343,8 @@ Status Flight::fly_step(StageFlight* flight, int i, StateVector* state) {
   StepRecord& step = trajectory_->steps[trajectory_->step_count++];
   step.point = point;
   step.stage_slot = flight->slot;
-  step.adams = stage.thrust == nullptr && i >= kRkadStartSteps;
+  // Substeps (DA6D(12-15)) are RK4 throughout: Adams-Bashforth would need a history at the substep.
+  step.adams = stage.thrust == nullptr && i >= kRkadStartSteps && flight->substeps == 1;
   // Near the vertical a deck without the heading hold (the manual's decks) integrates the step in
   // regular coordinates; with the hold the steps are the reference oracle's, bit for bit.
   command.vertical_flight =
@@ -354,7 +357,9 @@ Status Flight::fly_step(StageFlight* flight, int i, StateVector* state) {
 }
 
 // RK4 (in vertical-flight coordinates near the vertical) or, in coasts after the start steps,
-// Adams-Bashforth from the derivative history.
+// Adams-Bashforth from the derivative history. A 6D forward trajectory with DA6D(12-15) = m > 1
+// takes m RK4 substeps of step / m (the step's command, its linear theta_c over the whole step,
+// serves every substep; the vertical-flight choice and heading reference are the step's).
 void Flight::integrate_step(const StageFlight& flight, const StepCommand& command, bool adams, double t,
                             StateVector* state) const {
   const StageTimeline& line = *flight.line;
@@ -365,11 +370,25 @@ void Flight::integrate_step(const StageFlight& flight, const StepCommand& comman
     evaluate_flight(mission_, prepared_, flight.stage, command, time, x, 0.0, &e);
     return e.derivative;
   };
-  if (command.vertical_flight) {
-    const auto vertical = [&](double time, const StateVector& y) {
-      const StateVector x = from_vertical_coordinates(y, heading_reference_rad);
-      return vertical_derivative(x, derivative(time, x));
-    };
+  const auto vertical = [&](double time, const StateVector& y) {
+    const StateVector x = from_vertical_coordinates(y, heading_reference_rad);
+    return vertical_derivative(x, derivative(time, x));
+  };
+  if (flight.substeps > 1) {
+    const double h = line.step_s / flight.substeps;
+    StateVector f0 = start_derivative;
+    for (int j = 0; j < flight.substeps; ++j) {
+      const double tj = t + j * h;
+      if (j > 0) f0 = derivative(tj, *state);
+      if (command.vertical_flight) {
+        const StateVector y1 = runge_kutta4_step(vertical, tj, to_vertical_coordinates(*state),
+                                                 vertical_derivative(*state, f0), h);
+        *state = from_vertical_coordinates(y1, heading_reference_rad);
+      } else {
+        *state = runge_kutta4_step(derivative, tj, *state, f0, h);
+      }
+    }
+  } else if (command.vertical_flight) {
     const StateVector y1 = runge_kutta4_step(vertical, t, to_vertical_coordinates(*state),
                                              vertical_derivative(*state, start_derivative), line.step_s);
     *state = from_vertical_coordinates(y1, heading_reference_rad);

@@ -55,6 +55,9 @@ struct OptimizeCommandOptions {
   std::string radar_csv_path;
   std::string hardover_csv_path;
   ProgressMode progress = ProgressMode::kAuto;  // the forward-run status line on stderr
+  // `--listing-level final|full|runs` (tolip_ground/run_listing.hpp); empty: the deck's data
+  // block 9 decides (runs when it gives an initial or intermediate frequency other than 1).
+  std::string listing_level;
 };
 int run_optimize_command(const OptimizeCommandOptions& options, std::ostream& out, std::ostream& err);
 

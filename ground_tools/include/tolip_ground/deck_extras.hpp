@@ -27,12 +27,11 @@ struct DeckTable {
 };
 
 // Data block 33's words the core's Mission does not hold. Everything else of blocks 33-37 (gains,
-// stations, the moment data and the c.g. histories) lives once, in core units, in
+// stations, DA6D(12-15), the moment data and the c.g. histories) lives once, in core units, in
 // Mission::body_dynamics; the deck reader converts the deck's inches and per-degree values there.
 struct BodyDynamicsData {
-  bool present = false;                                                           // [body_dynamics] given
-  std::array<double, 4> integration_frequency_multiplier = {1.0, 1.0, 1.0, 1.0};  // DA6D(12-15), stages 1-4
-  std::array<int, 3> impact_every_nth_step = {1, 1, 1};                           // DA6D(17-19), stages 1-3
+  bool present = false;                                  // [body_dynamics] given
+  std::array<int, 3> impact_every_nth_step = {1, 1, 1};  // DA6D(17-19), stages 1-3
 };
 
 // Autopilot gain design (issue 16, docs/theory/autopilot-design.md): data block 33 words 21-30, a

@@ -17,6 +17,7 @@
 #include "tolip/optimizer/linearization.hpp"
 #include "tolip/optimizer/steepest_descent.hpp"
 #include "tolip_ground/report.hpp"
+#include "tolip_ground/run_listing.hpp"
 
 namespace tolip::ground {
 struct DispersionStep;
@@ -80,6 +81,14 @@ struct OptimizationReport {
   const HardoverStep* hardover = nullptr;
   // The designed autopilot gain schedule (issue 16; autopilot_run.hpp): null unless asked for.
   const AutopilotStep* autopilot = nullptr;
+  // `--listing-level` (run_listing.hpp): the pages the listing adds to the default ones, and the
+  // forward runs kept for them (null: none kept). The JSON document does not depend on either.
+  ListingLevel listing_level = ListingLevel::kFinal;
+  const RunCapture* runs = nullptr;
+  // kFull and kRuns: the linearized program at the start of each linearization run (Sec. 22
+  // "program printout"), in order, with the runs' kind (true: 6D). Empty: none kept.
+  std::vector<LinearProgram> linearization_programs;
+  std::vector<bool> linearization_programs_6d;
 };
 
 // One adjustable parameter of data block 6: degrees for attitudes and the launch azimuth,

@@ -54,6 +54,8 @@ struct OptimizationRun {
   // Designed autopilot gains with IP(6) = 1 (issue 16, autopilot_run.hpp): set by the caller before
   // run_optimization; the linearization calls it before its 6D runs. Null: the deck's constants.
   SixDGainDesign* six_d_gains = nullptr;
+  // Told of each linearization run's program (`optimize --listing-level full|runs`); null: none.
+  LinearizationObserver* linearization_observer = nullptr;
 };
 
 // Runs the job for a validated mission. `observer` (may be null) sees every optimizer forward run.

@@ -45,6 +45,9 @@ struct ConstraintSummary {
   bool met = false;  // |error| <= tolerance (inequality: error <= tolerance)
 };
 
+// Which of the trajectory kinds of data block 9 a run is, for output thinning.
+enum class TrajectoryKind : int { kInitial, kIntermediate, kFinal };
+
 // What `simulate` computed. `trajectory` may be partial (status not kOk): its points are those
 // flown up to the failure. The orbit elements exist only when the trajectory completed.
 struct SimulationReport {
@@ -69,6 +72,16 @@ struct SimulationReport {
   const RadarStep* radar = nullptr;
   // `simulate` with IP(22) = 1: the hardover turns from this trajectory (hardover_run.hpp).
   const HardoverStep* hardover = nullptr;
+  // The other trajectory listings of `optimize --listing-level full|runs` (docs/cli.md): the
+  // section title of the points' pages, the data block 9 frequency they are thinned with, and
+  // `all_columns`, the third line group of Sec. 22's columns (CHI, BETA6D, THETAC, THETADOT,
+  // DTHETA, DELTA). The defaults list the final trajectory as simulate always has.
+  std::string section = "FINAL TRAJECTORY";
+  TrajectoryKind kind = TrajectoryKind::kFinal;
+  bool all_columns = false;
+  // DTHETA's "current nominal" (Sec. 22): the trajectory this one was flown about, point for point
+  // (a different grid: "-"); null: no DTHETA.
+  const Trajectory* reference = nullptr;
 };
 
 // The deck's constraints (data blocks 8, 19, 29: code, desired value, optimization deadband) as
@@ -120,9 +133,6 @@ OrbitSummary summarize_orbit(const Constants& constants, const OrbitElements& or
 
 // The number of stored points that may be read (point_count clamped to the storage).
 int stored_point_count(const Trajectory& trajectory);
-
-// Which of the trajectory kinds of data block 9 a run is, for output thinning.
-enum class TrajectoryKind : int { kInitial, kIntermediate, kFinal };
 
 // True when point `index` is listed at the data block 9 frequency: every n-th point of its stage,
 // and always the first and last point of each stage (and the pad point).

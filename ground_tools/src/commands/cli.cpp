@@ -257,6 +257,18 @@ CLI::App* add_optimize_command(CLI::App& app, OptimizeCommandOptions* options) {
                      "payload_lb, constraints, payoff_partials, adjustable,\n"
                      "theta_history, iterations (docs/cli.md); a JSON array\n"
                      "of one document per case for a deck of several cases");
+  optimize
+      ->add_option("--listing-level", options->listing_level,
+                   "How much the listing prints (docs/cli.md): final (the\n"
+                   "history, final trajectory and summary), full (adds the\n"
+                   "third line group CHI BETA6D THETAC THETADOT DTHETA DELTA,\n"
+                   "the Sec. 14 thrust page, the linearization runs' programs\n"
+                   "and the linearized and 6D trajectories), runs (adds the\n"
+                   "initial nominal and every forward run, thinned by data\n"
+                   "block 9). Default: runs when data block 9 gives an initial\n"
+                   "or intermediate frequency other than 1, else final")
+      ->check(CLI::IsMember({"final", "full", "runs"}))
+      ->type_name("LEVEL");
   add_optimize_progress_flags(optimize, options);
   return optimize;
 }

@@ -63,8 +63,8 @@ void run_optimization(const Mission& mission, OptimizerObserver* observer, Optim
       step.outcome = StepOutcome::kRun;
       step.workspace = std::make_unique<LinearizationWorkspace>();
       step.result = std::make_unique<LinearizationResult>();
-      step.status =
-          linearize_pitch_program(*run->workspace, step.workspace.get(), step.result.get(), run->six_d_gains);
+      step.status = linearize_pitch_program(*run->workspace, step.workspace.get(), step.result.get(),
+                                            run->six_d_gains, run->linearization_observer);
     }
   }
 }

@@ -32,6 +32,7 @@
 #include "tolip_ground/radar_report.hpp"
 #include "tolip_ground/radar_run.hpp"
 #include "tolip_ground/report.hpp"
+#include "tolip_ground/run_listing.hpp"
 #include "tolip_ground/unused_inputs.hpp"
 
 namespace tolip::ground {
@@ -63,6 +64,9 @@ struct CaseOutput {
   Status failure = Status::kOk;  // the status to report once stdout is written (kOk: none)
   const char* failed_step = "";  // which computation of the job it belongs to
   bool stop = false;             // the command stops here, with nothing on stdout
+  // `--listing-level` (run_listing.hpp); not given: the deck's data block 9 decides.
+  bool listing_level_given = false;
+  ListingLevel listing_level = ListingLevel::kFinal;
 };
 
 // One case: the optimization and its report. Returns the case's exit code.
@@ -123,7 +127,15 @@ int optimize_case(const Deck& deck, const DeckCase& deck_case, OptimizerObserver
     six_d_gains = std::make_unique<SixDAutopilotGains>(autopilot_plan);
     run.six_d_gains = six_d_gains.get();
   }
-  run_optimization(*mission, observer, &run);
+  // What the listing keeps of the runs (the JSON document needs none of it).
+  const ListingLevel level = output->json ? ListingLevel::kFinal
+                             : output->listing_level_given
+                                 ? output->listing_level
+                                 : deck_listing_level(deck_case.extras.listing.output);
+  RunCapture capture(observer, level);
+  LinearizationPrograms linearization_programs;
+  if (level != ListingLevel::kFinal) run.linearization_observer = &linearization_programs;
+  run_optimization(*mission, level != ListingLevel::kFinal ? &capture : observer, &run);
   progress.clear();  // before anything else goes to stderr
   if (six_d_gains != nullptr && six_d_gains->called() && !ok(six_d_gains->status())) {
     AutopilotStep failed;
@@ -154,6 +166,12 @@ int optimize_case(const Deck& deck, const DeckCase& deck_case, OptimizerObserver
   report.final_trajectory.listing = &deck_case.extras.listing;
   report.final_trajectory.trajectory = &trajectory;
   report.final_trajectory.deck_path = deck.path;
+  report.listing_level = level;
+  if (level != ListingLevel::kFinal) {
+    report.runs = &capture;
+    report.linearization_programs = linearization_programs.programs;
+    report.linearization_programs_6d = linearization_programs.body_dynamics_runs;
+  }
 
   Status trajectory_status = Status::kOk;
   if (result->forward_runs == 0) {
@@ -368,6 +386,9 @@ int run_optimize_command(const OptimizeCommandOptions& options, std::ostream& ou
                                    ? ""
                                    : case_file_path(options.hardover_csv_path, deck_case.number, cases);
     output.json = options.json;
+    if (!options.listing_level.empty()) {
+      output.listing_level_given = parse_listing_level(options.listing_level, &output.listing_level);
+    }
     output.prefix = case_message_prefix(deck_case.number, cases);
     output.listing = &listing;
     const int case_exit =

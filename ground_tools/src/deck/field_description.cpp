@@ -473,14 +473,14 @@ std::vector<FieldDescription> make_fields() {
     x.conversion = C::kInchToFt;
     f.push_back(x);
   }
-  f.push_back(
-      ranged(array(with_default(real(33, 12, "body_dynamics", "integration_frequency_multiplier",
-                                     "6D INTEGRATION MULTIPLIER, STAGE {i}",
-                                     "DA6D(12-15) 6D integration frequency multipliers of stages 1-4", "",
-                                     &in_extras_array<kBX, &BX::integration_frequency_multiplier>),
-                                1.0),
-                   4),
-             R::kAtLeastOne));
+  f.push_back(ranged(array(with_default(real(33, 12, "body_dynamics", "integration_frequency_multiplier",
+                                             "6D INTEGRATION MULTIPLIER, STAGE {i}",
+                                             "DA6D(12-15) 6D integration frequency multipliers of stages 1-4",
+                                             "body_dynamics.integration_frequency_multiplier[{x}]",
+                                             &in_mission_array<kB, &B::integration_frequency_multiplier>),
+                                        1.0),
+                           4),
+                     R::kAtLeastOne));
   f.push_back(with_default(
       required_when(real(33, 16, "body_dynamics", "reference_length_ft", "REFERENCE LENGTH, FT",
                          "DA6D(16) reference length of the aerodynamic moment data, ft",

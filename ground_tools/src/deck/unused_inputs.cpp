@@ -24,15 +24,8 @@ std::vector<InputWarning> unused_inputs(const Mission& mission, const DeckExtras
     warn(4, "IP(15)", "options.memory_dump",
          "the core-memory dump of the 1966 program has no counterpart: ignored");
   }
-  // Data block 9: only the final trajectory is listed.
-  for (int i = 0; i < kMaxStages; ++i) {
-    if (extras.listing.output.initial[i] != 1 || extras.listing.output.intermediate[i] != 1) {
-      warn(9, "initial and intermediate print frequencies", "output_frequency.initial/intermediate",
-           "only the final trajectory is listed (data block 9's third word per stage); the others have no "
-           "effect");
-      break;
-    }
-  }
+  // Data block 9's initial and intermediate frequencies act: a deck giving one other than 1 asks
+  // `optimize` for the listings of the initial nominal and of every forward run (run_listing.hpp).
   // Data block 19: DA4(1), the payoff entry's desired value, is a placeholder (Sec. 22): the payoff
   // is maximized, not driven to a value.
   if (mission.constraints.count > 0 && mission.constraints.desired[0] != 0.0) {
@@ -84,12 +77,15 @@ std::vector<InputWarning> unused_inputs(const Mission& mission, const DeckExtras
          "the gyro uncage time has no effect: the platform frame is aligned at lift-off in this version "
          "(uncaging DA2(8) s earlier would turn it by the Earth's rotation in that time)");
   }
-  // Data block 33: 6D steps are the point-mass steps.
-  const BodyDynamicsData& bd = extras.body_dynamics;
-  for (double multiplier : bd.integration_frequency_multiplier) {
-    if (multiplier != 1.0) {
+  // Data block 33, DA6D(12-15): substeps of 6D forward trajectories, which only IP(6) = 2 (the
+  // initial nominal) and IP(6) = 1 with the linearization (IP(7)) fly.
+  const bool six_d_flown = o.body_dynamics_6d() == 2 || (o.body_dynamics_6d() == 1 && o.linearization());
+  for (double multiplier : mission.body_dynamics.integration_frequency_multiplier) {
+    if (multiplier != 1.0 && !six_d_flown) {
       warn(33, "DA6D(12-15)", "body_dynamics.integration_frequency_multiplier",
-           "6D steps are the stage's point-mass steps: the integration frequency multipliers have no effect");
+           "the 6D integration frequency multipliers have no effect: no 6D forward trajectory is flown "
+           "(IP(6) = " +
+               std::to_string(o.body_dynamics_6d()) + ", IP(7) = " + std::to_string(o.linearization()) + ")");
       break;
     }
   }

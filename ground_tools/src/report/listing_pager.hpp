@@ -22,8 +22,10 @@ class Pager {
   // blank titles and the nominal 54 lines.
   Pager(std::ostream& out, const DeckListingOptions* listing);
 
-  // Starts a page of the given kind; `columns` adds the trajectory column headings.
+  // Starts a page of the given kind; `columns` adds the trajectory column headings (with
+  // all_columns set, the third line group too).
   void new_page(const std::string& section, bool columns);
+  void set_all_columns(bool all) { all_columns_ = all; }
 
   // Makes sure `count` lines fit on this page (starting a new page of the same kind if not).
   void reserve(int count);
@@ -40,6 +42,7 @@ class Pager {
   int page_ = 0;
   int line_ = 0;
   bool columns_ = false;
+  bool all_columns_ = false;
   std::string section_;
   std::string title_, heading_, date_;
 };

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <memory>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -18,6 +19,8 @@
 #include "tolip/optimizer/constraint_parameters.hpp"
 #include "tolip/optimizer/constraint_set.hpp"
 #include "tolip/optimizer/qbar_alpha.hpp"
+#include "tolip/orbit/orbit_elements.hpp"
+#include "tolip/vehicle/prepared_case.hpp"
 #include "tolip_ground/autopilot_run.hpp"
 #include "tolip_ground/dispersion_report.hpp"
 #include "tolip_ground/hardover_report.hpp"
@@ -811,19 +814,168 @@ std::vector<AdjustableSummary> adjustable_summaries(const OptimizationReport& re
   return out;
 }
 
+namespace {
+
+// A trajectory listed beside the final one (`--listing-level full|runs`): its points with all
+// columns, its terminal conditions and, when it flew to the end, its orbit elements.
+void write_other_trajectory(Pager& pager, const OptimizationReport& report, const Mission& mission,
+                            const Trajectory& trajectory, const std::string& section, TrajectoryKind kind,
+                            const Trajectory* reference) {
+  SimulationReport listed;
+  listed.mission = &mission;
+  listed.listing = report.final_trajectory.listing;
+  listed.trajectory = &trajectory;
+  listed.status = trajectory.status;
+  if (ok(listed.status) && stored_point_count(trajectory) == 0) listed.status = Status::kTrajectoryEmpty;
+  if (ok(listed.status)) {
+    listed.has_orbit = ok(compute_orbit_elements(mission.constants, trajectory.final_point().state,
+                                                 mission.launch.launch_space_age_date_days, &listed.orbit));
+  }
+  listed.section = section;
+  listed.kind = kind;
+  listed.all_columns = true;
+  listed.reference = reference;
+  report_detail::write_trajectory_pages(pager, listed);
+}
+
+// Sec. 14 (REIN): "The ideal velocities and the final modified thrust tables are output whenever
+// this calculation is performed": once per case, for the deck's stages, before the first run.
+void write_thrust_modification(Pager& pager, const Mission& mission) {
+  auto prepared = std::make_unique<PreparedCase>();
+  pager.new_page("THRUST MODIFICATION", false);
+  pager.emit(" IDEAL VELOCITY AND MODIFIED THRUST TABLES (SEC. 14): THE INPUT THRUST RE-TABULATED AT THE");
+  pager.emit(" INTEGRATION TIMES, T(0) SET FOR THE INPUT IMPULSE OF THE FIRST STEP, SCALED BY A/B");
+  pager.emit("");
+  const Status status = prepare_case(mission, prepared.get());
+  if (!ok(status)) {
+    pager.emit(std::string("   NOT COMPUTED: ") + status_name(status) + ": " + status_message(status));
+    pager.emit("");
+    return;
+  }
+  for (int k = 0; k < prepared->stage_count; ++k) {
+    const int code = prepared->timeline[k].code;
+    if (!is_powered_stage(code)) continue;
+    const ThrustModification& m = prepared->thrust_modification[stage_index(code)];
+    const ModifiedThrustTable& table = prepared->modified_thrust_lbf[stage_index(code)];
+    pager.reserve(7);
+    pager.emit(" STAGE " + std::to_string(code));
+    pager.emit("   IDEAL VELOCITY OF THE INPUT TABLE       A =" +
+               number_cell(m.ideal_velocity_input_ft_s, 4, 16) + " FT/SEC");
+    pager.emit("   IDEAL VELOCITY OF THE INTERPOLATED TABLE B =" +
+               number_cell(m.ideal_velocity_grid_ft_s, 4, 16) + " FT/SEC");
+    pager.emit("   SCALE A/B                                  =" + number_cell(m.scale, 9, 16));
+    pager.emit("   NEW THRUST AT STAGE TIME 0 (BEFORE A/B)    =" +
+               number_cell(m.new_initial_thrust_lbf, 2, 16) + " LB");
+    pager.emit("   MODIFIED VACUUM THRUST TABLE:" + std::string(4, ' ') +
+               "STAGE TIME SEC / VACUUM THRUST LB, " + std::to_string(table.size()) + " POINTS");
+    for (int i = 0; i < table.size(); i += 4) {
+      pager.reserve(1);
+      std::string line = "  ";
+      for (int j = i; j < std::min(i + 4, table.size()); ++j) {
+        line += number_cell(table.x(j), 3, 11) + number_cell(table.y(j), 2, 14) + "   ";
+      }
+      pager.emit(line);
+    }
+    pager.emit("");
+  }
+}
+
+// Sec. 22's program printout at the start of each linearization run: the program flown, segment
+// by segment (theta at the segment start and the rate to the next break).
+void write_linearization_programs(Pager& pager, const OptimizationReport& report) {
+  if (report.linearization_programs.empty()) return;
+  pager.new_page("LINEARIZATION RUNS", false);
+  for (std::size_t n = 0; n < report.linearization_programs.size(); ++n) {
+    const LinearProgram& p = report.linearization_programs[n];
+    const int count = std::clamp(p.segment_count, 0, kMaxLinearSegments);
+    pager.reserve(4 + count);
+    const bool six_d = n < report.linearization_programs_6d.size() && report.linearization_programs_6d[n];
+    pager.emit(" LINEARIZATION RUN " + std::to_string(n + 1) + (six_d ? " (6D)" : " (POINT MASS)") +
+               ": PROGRAM FLOWN");
+    pager.emit("    SEGMENT  BREAK TIME         THETA    PITCH RATE  FIXED");
+    pager.emit("                    SEC           DEG       DEG/SEC");
+    for (int s = 0; s <= count; ++s) {
+      const double rate = s < count ? (p.theta_rad[s + 1] - p.theta_rad[s]) /
+                                          (p.break_time_s[s + 1] - p.break_time_s[s]) * kRadToDeg
+                                    : std::numeric_limits<double>::quiet_NaN();
+      pager.emit((s < count ? right(std::to_string(s + 1), 11) : std::string(11, ' ')) +
+                 number_cell(p.break_time_s[s], 3, 12) + number_cell(p.theta_rad[s] * kRadToDeg, 5, 14) +
+                 (s < count ? number_cell(rate, 5, 14) : std::string(14, ' ')) +
+                 (p.fixed[s] ? "  YES" : "   NO"));
+    }
+    pager.emit("");
+  }
+}
+
+// The other trajectories of `--listing-level full|runs`: before the final one, the initial
+// nominal and every forward run (kRuns); after the summary, the linearized trajectory (a final
+// trajectory for data block 9: "Linearizations are treated as final trajectories") and the 6D
+// initial nominal of IP(6) = 2.
+void write_run_listings(Pager& pager, const OptimizationReport& report) {
+  if (report.runs == nullptr) return;
+  for (const ListedRun& run : report.runs->runs()) {
+    const bool initial = run.record.kind == RunKind::kInitialNominal;
+    const std::string section = initial ? std::string("INITIAL NOMINAL TRAJECTORY")
+                                        : "FORWARD RUN " + std::to_string(run.record.forward_run) + " (" +
+                                              run_kind_heading(run.record.kind) + ")";
+    write_other_trajectory(pager, report, *run.mission, *run.flown, section,
+                           initial ? TrajectoryKind::kInitial : TrajectoryKind::kIntermediate,
+                           run.nominal.get());
+  }
+}
+
+void write_after_summary(Pager& pager, const OptimizationReport& report) {
+  write_linearization_programs(pager, report);
+  if (report.linearized_trajectory != nullptr && report.linearized_mission != nullptr) {
+    const bool six_d = report.linearization != nullptr && report.linearization->body_dynamics;
+    write_other_trajectory(pager, report, *report.linearized_mission, *report.linearized_trajectory,
+                           six_d ? "LINEARIZED TRAJECTORY (6D)" : "LINEARIZED TRAJECTORY",
+                           TrajectoryKind::kFinal, report.final_trajectory.trajectory);
+  }
+  if (report.initial_nominal_6d != nullptr && report.initial_mission != nullptr) {
+    write_other_trajectory(pager, report, *report.initial_mission, *report.initial_nominal_6d,
+                           "INITIAL NOMINAL WITH BODY DYNAMICS (6D)", TrajectoryKind::kInitial,
+                           report.initial_nominal_point_mass);
+  }
+}
+
+// The final trajectory's DTHETA reference: the nominal the final guidance run was flown about,
+// when that run is the reported trajectory.
+const Trajectory* final_reference(const OptimizationReport& report) {
+  if (report.runs == nullptr || report.runs->final_run() == nullptr) return nullptr;
+  const Trajectory& run = *report.runs->final_run();
+  const Trajectory& final_trajectory = *report.final_trajectory.trajectory;
+  if (run.point_count != final_trajectory.point_count || stored_point_count(run) == 0) return nullptr;
+  if (run.final_point().state != final_trajectory.final_point().state) return nullptr;
+  return report.runs->final_run_nominal();
+}
+
+}  // namespace
+
 void write_optimization_listing(std::ostream& out, const OptimizationReport& report) {
   const std::vector<ConstraintSummary> constraints = constraint_summaries(report);
   const std::vector<AdjustableSummary> adjustable = adjustable_summaries(report);
+  const bool full = report.listing_level != ListingLevel::kFinal;
   Pager pager(out, report.final_trajectory.listing);
+  if (full && report.initial_mission != nullptr) write_thrust_modification(pager, *report.initial_mission);
   pager.new_page("OPTIMIZATION HISTORY", false);
   write_problem(pager, report, constraints, adjustable);
   write_iteration_table(pager, report);
   write_iteration_details(pager, report, constraints);
-  report_detail::write_trajectory_pages(pager, report.final_trajectory);
+  if (report.listing_level == ListingLevel::kRuns) write_run_listings(pager, report);
+  if (full) {
+    SimulationReport final_trajectory = report.final_trajectory;
+    final_trajectory.all_columns = true;
+    final_trajectory.reference = final_reference(report);
+    report_detail::write_trajectory_pages(pager, final_trajectory);
+  } else {
+    report_detail::write_trajectory_pages(pager, report.final_trajectory);
+  }
   pager.new_page("OPTIMIZATION SUMMARY", false);
   write_summary(pager, report, constraints, adjustable);
   write_exchange_ratios(pager, report);
   write_linearized_program(pager, report);
+  if (full) write_after_summary(pager, report);
   if (report.dispersions != nullptr) report_detail::write_dispersion_pages(pager, *report.dispersions);
   if (report.impact != nullptr) report_detail::write_impact_pages(pager, *report.impact);
   if (report.hardover != nullptr) report_detail::write_hardover_pages(pager, *report.hardover);

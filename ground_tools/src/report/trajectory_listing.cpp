@@ -4,14 +4,20 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
+#include <limits>
+#include <memory>
 #include <ostream>
 #include <string>
 #include <vector>
 
 #include "listing_pager.hpp"
 #include "number_format.hpp"
+#include "tolip/body/body_dynamics.hpp"
 #include "tolip/core/constants.hpp"
 #include "tolip/core/state.hpp"
+#include "tolip/frames/frames.hpp"
+#include "tolip/vehicle/prepared_case.hpp"
 #include "tolip_ground/hardover_report.hpp"
 #include "tolip_ground/impact_report.hpp"
 #include "tolip_ground/radar_report.hpp"
@@ -68,6 +74,14 @@ constexpr ListingColumn kLine2[] = {
     {"QALPHA", "LB-DEG/FT2", 1,
      [](const TrajectoryPoint& p) { return p.dynamic_pressure_lbf_ft2 * deg(p.alpha_rad); }},
     {"RANGE", "N.MI.", 3, [](const TrajectoryPoint& p) { return p.downrange_rad * kNauticalMilesPerRadian; }},
+};
+
+// Third line group (`optimize --listing-level full|runs`): the Sec. 22 columns the two groups above
+// leave out. Their values need more than the point (the step's command, the reference trajectory,
+// the launch frame), so point_extras() computes them.
+constexpr ListingColumn kLine3[] = {
+    {"CHI", "DEG", 4, nullptr},          {"BETA6D", "DEG", 4, nullptr}, {"THETAC", "DEG", 4, nullptr},
+    {"THETADOT", "DEG/SEC", 4, nullptr}, {"DTHETA", "DEG", 4, nullptr}, {"DELTA", "DEG", 4, nullptr},
 };
 
 std::string right(const std::string& text, int width) {
@@ -144,6 +158,10 @@ void Pager::new_page(const std::string& section, bool columns) {
     emit(heading_line(kLine1, true));
     emit(heading_line(kLine2, false));
     emit(heading_line(kLine2, true));
+    if (all_columns_) {
+      emit(heading_line(kLine3, false));
+      emit(heading_line(kLine3, true));
+    }
     emit("");
   }
 }
@@ -181,16 +199,86 @@ int every_nth(const OutputFrequency& output, int code, TrajectoryKind kind) {
 // is_output_point, every n-th point of the stage plus its first and last point, and always the
 // last point flown.
 bool listed_after_events(const OutputFrequency& output, const Trajectory& trajectory, int index,
-                         int run_start) {
+                         int run_start, TrajectoryKind kind) {
   const int count = stored_point_count(trajectory);
   const int code = trajectory.points[index].stage_code;
   if (index == run_start || index == count - 1) return true;
   if (trajectory.points[index + 1].stage_code != code) return true;
-  const int every = every_nth(output, code, TrajectoryKind::kFinal);
+  const int every = every_nth(output, code, kind);
   return every <= 1 || (index - run_start) % every == 0;
 }
 
-void write_points(Pager& pager, const OutputFrequency& output, const Trajectory& trajectory) {
+// The third line group's values of every point (NaN, printed "-", where a column has none):
+//   CHI      the flown yaw attitude (platform frame);
+//   BETA6D   the out-of-plane angle of attack of the flown attitude, CONTRL's beta (Sec. 11),
+//            from the point's velocity in the launch platform frame;
+//   THETAC   the commanded pitch attitude (the program's theta_c; THETA but for 6D points);
+//   THETADOT the commanded pitch rate of the step starting at the point: (theta_end -
+//            theta_start) / step for a linear step, 0 when held; none in the zero-alpha window
+//            (re-solved at every evaluation, no program rate) or where no step starts (a stage's
+//            end point);
+//   DTHETA   THETA - THETA of the reference ("change in theta from current nominal trajectory",
+//            Sec. 22) at the same point; none without a reference or off its grid;
+//   DELTA    the 6D steady-state deflection of eq. 7-3, on 6D points only.
+class PointExtras {
+ public:
+  PointExtras(const Mission& mission, const Trajectory& trajectory, const Trajectory* reference)
+      : trajectory_(trajectory), reference_(reference),
+        rate_deg_s_(static_cast<std::size_t>(stored_point_count(trajectory)),
+                    std::numeric_limits<double>::quiet_NaN()) {
+    auto prepared = std::make_unique<PreparedCase>();
+    if (ok(prepare_case(mission, prepared.get()))) {
+      platform_to_inertial_ = prepared->platform_to_inertial;
+      has_platform_ = true;
+    }
+    for (int s = 0; s < std::clamp(trajectory.step_count, 0, kMaxTrajectoryPoints); ++s) {
+      const StepRecord& step = trajectory.steps[s];
+      if (step.point < 0 || step.point >= static_cast<int>(rate_deg_s_.size())) continue;
+      const StepCommand& c = step.command;
+      double rate = std::numeric_limits<double>::quiet_NaN();
+      if (c.mode == AttitudeMode::kLinear) rate = deg(c.theta_end_rad - c.theta_start_rad) / c.step_s;
+      if (c.mode == AttitudeMode::kHeld) rate = 0.0;
+      rate_deg_s_[static_cast<std::size_t>(step.point)] = rate;
+    }
+  }
+
+  std::string line(int index) const {
+    const TrajectoryPoint& p = trajectory_.points[index];
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    double beta = nan;
+    if (has_platform_) {
+      beta = deg(
+          body_angles_of_attack(p.theta_rad, p.chi_rad, inertial_to_local(p.state) * platform_to_inertial_)
+              .beta_rad);
+    }
+    double dtheta = nan;
+    if (reference_ != nullptr && index < stored_point_count(*reference_) &&
+        reference_->points[index].stage_code == p.stage_code &&
+        reference_->points[index].time_s == p.time_s) {
+      dtheta = deg(p.theta_rad - reference_->points[index].theta_rad);
+    }
+    const double values[] = {deg(p.chi_rad),
+                             beta,
+                             deg(static_cast<double>(p.theta_command_rad)),
+                             rate_deg_s_[static_cast<std::size_t>(index)],
+                             dtheta,
+                             p.body_dynamics ? deg(static_cast<double>(p.control_deflection_rad)) : nan};
+    std::string text;
+    for (std::size_t k = 0; k < std::size(kLine3); ++k)
+      text += fixed_cell(values[k], kLine3[k].decimals, kCellWidth);
+    return text;
+  }
+
+ private:
+  const Trajectory& trajectory_;
+  const Trajectory* reference_;
+  std::vector<double> rate_deg_s_;
+  Matrix3 platform_to_inertial_ = Matrix3::Identity();
+  bool has_platform_ = false;
+};
+
+void write_points(Pager& pager, const OutputFrequency& output, const Trajectory& trajectory,
+                  TrajectoryKind kind, const PointExtras* extras) {
   const int count = stored_point_count(trajectory);
   int covered_until = -1;  // last point index inside a recorded stage event
   for (int s = 0; s < std::clamp(trajectory.stage_count, 0, kMaxStages); ++s) {
@@ -203,22 +291,24 @@ void write_points(Pager& pager, const OutputFrequency& output, const Trajectory&
                               trajectory.points[i].stage_code != trajectory.points[i - 1].stage_code)) {
       run_start = i;
     }
-    const bool listed = i <= covered_until ? is_output_point(output, trajectory, i, TrajectoryKind::kFinal)
-                                           : listed_after_events(output, trajectory, i, run_start);
+    const bool listed = i <= covered_until ? is_output_point(output, trajectory, i, kind)
+                                           : listed_after_events(output, trajectory, i, run_start, kind);
     if (!listed) continue;
     const TrajectoryPoint& point = trajectory.points[i];
+    const int lines = extras != nullptr ? 4 : 3;
     if (point.stage_code != previous_stage) {
-      pager.reserve(4);
+      pager.reserve(lines + 1);
       std::string label(" ");
       label.append(stage_name(point.stage_code));
       if (is_powered_stage(point.stage_code)) label.append(" (POWERED)");
       pager.emit(label);
       previous_stage = point.stage_code;
     } else {
-      pager.reserve(3);
+      pager.reserve(lines);
     }
     pager.emit(value_line(kLine1, point));
     pager.emit(value_line(kLine2, point));
+    if (extras != nullptr) pager.emit(extras->line(i));
     pager.emit("");
   }
 }
@@ -386,8 +476,13 @@ void write_terminal_conditions(Pager& pager, const SimulationReport& report) {
 void report_detail::write_trajectory_pages(Pager& pager, const SimulationReport& report) {
   const Mission& mission = *report.mission;
   const Trajectory& trajectory = *report.trajectory;
-  pager.new_page("FINAL TRAJECTORY", true);
-  write_points(pager, report.listing != nullptr ? report.listing->output : OutputFrequency{}, trajectory);
+  std::unique_ptr<PointExtras> extras;
+  if (report.all_columns) extras = std::make_unique<PointExtras>(mission, trajectory, report.reference);
+  pager.set_all_columns(report.all_columns);
+  pager.new_page(report.section, true);
+  write_points(pager, report.listing != nullptr ? report.listing->output : OutputFrequency{}, trajectory,
+               report.kind, extras.get());
+  pager.set_all_columns(false);
   pager.new_page("TERMINAL CONDITIONS", false);
   write_stage_events(pager, mission, trajectory);
   if (report.listing != nullptr) write_stage_names(pager, *report.listing);

@@ -21,16 +21,20 @@ inline constexpr int kMaxStages = 10;                           // codes 1-5 pow
 inline constexpr int kMaxPoweredStages = 5;
 
 // Tables whose size the manual fixes by its card formats.
-inline constexpr int kMaxAeroTablePoints = 20;      // blocks 31/32: 42E12.8 = blank + 20 pairs + 1.0E10
-inline constexpr int kMaxPitchTablePoints = 15;     // block 40: 32E12.8 = blank + 15 pairs + 1.0E10
-inline constexpr int kMaxCgTablePoints = 10;        // block 37: 22E12.8 = blank + 10 pairs + 1.0E10
-inline constexpr int kBodyDynamicsStages = 3;       // block 33: gains and control stations of stages 1-3
-inline constexpr int kCgTableStages = 4;            // block 37: c.g. histories of stages 1-4
-inline constexpr int kMaxHardoverTablePoints = 10;  // block 44: 22E12.8 = blank + 10 pairs + 1.0E10
+inline constexpr int kMaxAeroTablePoints = 20;          // blocks 31/32: 42E12.8 = blank + 20 pairs + 1.0E10
+inline constexpr int kMaxPitchTablePoints = 15;         // block 40: 32E12.8 = blank + 15 pairs + 1.0E10
+inline constexpr int kMaxCgTablePoints = 10;            // block 37: 22E12.8 = blank + 10 pairs + 1.0E10
+inline constexpr int kBodyDynamicsStages = 3;           // block 33: gains and control stations of stages 1-3
+inline constexpr int kCgTableStages = 4;                // block 37: c.g. histories of stages 1-4
+inline constexpr int kMaxHardoverTablePoints = 10;      // block 44: 22E12.8 = blank + 10 pairs + 1.0E10
+inline constexpr int kIntegrationMultiplierStages = 4;  // block 33 DA6D(12-15): stages 1-4
 
 // Our choices where the manual sets no limit (docs/architecture.md, "Capacities").
 inline constexpr int kMinStage1Steps = 25;  // data block 16: "at least 25 steps in stage 1"
 inline constexpr int kMaxCoastSteps = 100;  // per coast; the manual asks for 10-15 s steps
+// DA6D(12-15): RK4 substeps per step of a 6D forward trajectory. The manual suggests 2 or 3; 16
+// already makes a 6D run 16 times the point-mass cost and its truncation error 65,536 times smaller.
+inline constexpr int kMaxIntegrationFrequencyMultiplier = 16;
 // Blocks 53-54 (32E12.8) hold 15 pairs; the reference wind profile has 18 points, so a little more.
 inline constexpr int kMaxWindTablePoints = 32;
 // Every integration point of one trajectory: the start of every step of every stage, the end point

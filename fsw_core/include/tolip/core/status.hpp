@@ -239,6 +239,10 @@ enum class Status : int {
   kGainScheduleTimeOutOfRange,
   // Ground runs (ground_tools/): a step that needs an earlier one that did not finish
   kLinearizationNotFinished,
+  // Data block 33, DA6D(12-15): the 6D integration frequency multipliers (Sec. 22)
+  kIntegrationMultiplierNotInteger,
+  kIntegrationMultiplierBelowOne,
+  kIntegrationMultiplierAboveCapacity,
 };
 
 const char* status_name(Status status);

@@ -182,6 +182,11 @@ struct BodyDynamicsBlocks {
                                                         // per rad, per vane
   double moment_reference_station_ft = 0.0;             // DA6D(11) X_FS of the moment coefficients
   double reference_length_ft = 0.0;                     // DA6D(16) l_ref of the moment coefficients
+  // DA6D(12-15): each step of stage k (and of the coast after it) of a 6D forward trajectory is
+  // integrated as this many RK4 substeps (Sec. 22, "if a more frequent integration is desired
+  // during 6D forward trajectories"), k = 1-4; a whole number in 1..kMaxIntegrationFrequencyMultiplier.
+  // The trajectory keeps its points (one per step); 1 leaves every run as before, bit for bit.
+  double integration_frequency_multiplier[kIntegrationMultiplierStages] = {1.0, 1.0, 1.0, 1.0};
   // S of Sec. 11: the area blocks 34-36 are referred to. DA6D has no word for it; the deck mapping
   // takes stage 1's block 39 area SG1(2).
   double reference_area_ft2 = 0.0;
@@ -252,10 +257,15 @@ Status validate_mission(const Mission& mission, MissionFault* fault);
 
 // Checks the body-dynamics data a 6D trajectory needs (Sec. 7, 11: stage 1 and the following
 // coast): present, finite, K_theta > 0, K_q >= 0, l_ref > 0, S > 0, tables of blocks 34-36 and the
-// stage-1 c.g. history given and finalized, and the stage-1 control station outside the range of
-// the stage-1 c.g. stations (so X_delta - X_CG never vanishes). validate_mission() calls it when
+// stage-1 c.g. history given and finalized, the stage-1 control station outside the range of
+// the stage-1 c.g. stations (so X_delta - X_CG never vanishes), and DA6D(12-15) whole numbers in
+// 1..kMaxIntegrationFrequencyMultiplier. validate_mission() calls it when
 // IP(6) >= 1; fly_trajectory() when a 6D run is asked for.
 Status validate_body_dynamics(const Mission& mission, MissionFault* fault);
+
+// The RK4 substeps of a step of stage `stage_code` in a 6D forward trajectory: DA6D(12-15) of
+// stages 1-4 and of the coasts after them (6-9); 1 for stage 5, its coast, or a point-mass run.
+int integration_substeps(const BodyDynamicsBlocks& blocks, int stage_code, bool body_dynamics);
 
 // Vehicle weight (lb) in stage `code` at stage time t: consumable weight remaining of the current
 // powered stage + jettison weights of this and all later stages (+ payload) + the initial

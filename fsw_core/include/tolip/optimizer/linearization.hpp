@@ -127,7 +127,19 @@ class SixDGainDesign {
   ~SixDGainDesign() = default;
 };
 
+// Told of the program each forward linearization run is about to fly (Sec. 22's program printout
+// at the start of each linearization run): the run's number from 1, the program, and whether the
+// run flies body dynamics. Between runs, on the linearization's thread.
+class LinearizationObserver {
+ public:
+  virtual void on_linearization_run(int run, const LinearProgram& program, bool body_dynamics) = 0;
+
+ protected:
+  ~LinearizationObserver() = default;
+};
+
 Status linearize_pitch_program(const OptimizerWorkspace& optimized, LinearizationWorkspace* workspace,
-                               LinearizationResult* result, SixDGainDesign* gains = nullptr);
+                               LinearizationResult* result, SixDGainDesign* gains = nullptr,
+                               LinearizationObserver* observer = nullptr);
 
 }  // namespace tolip

@@ -117,6 +117,17 @@ struct OptimizerResult {
 class OptimizerObserver {
  public:
   virtual void on_forward_run(const IterationRecord& record, const OptimizerResult& result) = 0;
+  // The same run's trajectory (as far as it flew: its status says), the case it flew, and the
+  // nominal it was flown about (null for the initial nominal), for a listing of every forward run
+  // (data block 9's initial and intermediate trajectories). Right after on_forward_run, before the
+  // run is accepted or dropped; the references do not outlive the call. Default: nothing.
+  virtual void on_forward_trajectory(const IterationRecord& record, const Mission& flown_mission,
+                                     const Trajectory& flown, const Trajectory* nominal) {
+    static_cast<void>(record);
+    static_cast<void>(flown_mission);
+    static_cast<void>(flown);
+    static_cast<void>(nominal);
+  }
 
  protected:
   ~OptimizerObserver() = default;
