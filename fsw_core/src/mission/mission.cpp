@@ -989,6 +989,14 @@ StageWeight::StageWeight(const Vehicle& vehicle, int code) {
       trailing_lb_[trailing_count_++] = term_lb;
     }
   };
+  // A coast after the last powered stage (addendum H's "integrated coast following the final
+  // stage") flies what that stage burned out with: its jettison weight and the payload booked in
+  // it (Sec. 14). Nothing is staged after the last powered stage; dropping both would leave it
+  // massless.
+  if (is_coast_stage(code) && last_powered != 0 && position > position_in_sequence(sequence, last_powered)) {
+    add(vehicle.stages[stage_index(last_powered)].jettison_weight_lb);
+    add(vehicle.payload_lb);
+  }
   for (int k = position; k < sequence.count; ++k) {
     const int stage_code = sequence.codes[k];
     if (stage_code < 1 || stage_code > kMaxStages) continue;
