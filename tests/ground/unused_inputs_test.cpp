@@ -65,7 +65,6 @@ TEST(UnusedInputs, EachInputWarnsAloneAndADeckWithoutThemIsSilent) {
     std::pair<std::string, std::string> edit;
     const char* named;
   } alone[] = {
-      {{"stage5_chi = 0 ", "stage5_chi = 1 "}, "data block 4, IP(10) (options.stage5_chi)"},
       {{"initial = 1", "initial = 2"}, "data block 9, initial and intermediate print frequencies"},
       {{"ct1_13 = 1.0", "ct1_13 = 2.0"}, "data block 10, CT1(13) (constants.ct1_13)"},
       {{"integration_frequency_multiplier = [1.0, 1.0, 1.0, 1.0]",
