@@ -748,9 +748,10 @@ Status check_adjustable(const AdjustableParameters& a, const Options& options, c
     if (stage4_attitude || stage5_attitude) {
       const int stage = stage4_attitude ? 4 : 5;
       // Under IP(10) = 1 the spun stage 5 yaws at chi4: DA2(10), code 9, is not flown.
-      const bool own = stage4_attitude ? options.stage_is_spun(4)
-                                       : options.stage_is_spun(5) && !options.stage_is_spun(4) &&
-                                             !(parameter == AdjustableParameter::kStage5Chi && options.stage5_chi() == 1);
+      const bool own = stage4_attitude
+                           ? options.stage_is_spun(4)
+                           : options.stage_is_spun(5) && !options.stage_is_spun(4) &&
+                                 !(parameter == AdjustableParameter::kStage5Chi && options.stage5_chi() == 1);
       if (!vehicle.stages[stage_index(stage)].in_sequence || !own) {
         return check.fail(Status::kAdjustableAttitudeNotSpun, 6, stage, "codes", i, code, "", ValueRange{},
                           stage4_attitude

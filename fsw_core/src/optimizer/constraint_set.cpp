@@ -48,7 +48,8 @@ namespace {
 
 bool is_asymptote(ConstraintQuantity kind) {
   return kind == ConstraintQuantity::kHyperbolicExcessVelocity ||
-         kind == ConstraintQuantity::kAsymptoteRightAscension || kind == ConstraintQuantity::kAsymptoteDeclination;
+         kind == ConstraintQuantity::kAsymptoteRightAscension ||
+         kind == ConstraintQuantity::kAsymptoteDeclination;
 }
 
 ConstraintCode twice_energy_code() {
@@ -64,7 +65,8 @@ double hyperbolic_excess_stand_in_ft_s(double twice_energy_ft2_s2, double desire
   return (twice_energy_ft2_s2 + desired_ft_s * desired_ft_s) / (2.0 * desired_ft_s);
 }
 
-bool needs_hyperbolic_stand_in(const ConstraintSet& set, const Mission& mission, const Trajectory& trajectory) {
+bool needs_hyperbolic_stand_in(const ConstraintSet& set, const Mission& mission,
+                               const Trajectory& trajectory) {
   bool listed = false;
   double desired_ft_s = 0.0;
   for (int i = 0; i < set.count; ++i) {
@@ -116,8 +118,8 @@ Status constraint_terminals(const ConstraintSet& set, const Mission& mission, co
     const ConstraintPoint point = constraint_point_at(mission, trajectory, terminals[i].point);
     if (set.hyperbolic_stand_in && is_asymptote(set.codes[i].kind)) {
       terminals[i].partials.setZero();
-      const bool stand_in = set.codes[i].kind == ConstraintQuantity::kHyperbolicExcessVelocity &&
-                            set.desired[i] > 0.0;
+      const bool stand_in =
+          set.codes[i].kind == ConstraintQuantity::kHyperbolicExcessVelocity && set.desired[i] > 0.0;
       if (!stand_in) continue;  // deferred: no adjoint
       AdjointVector energy;
       const Status status =

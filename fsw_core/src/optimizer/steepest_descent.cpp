@@ -137,7 +137,8 @@ double correction(const Problem& problem, int i, const double achieved[kMaxConst
 }
 
 bool is_asymptote_direction(ConstraintQuantity kind) {
-  return kind == ConstraintQuantity::kAsymptoteRightAscension || kind == ConstraintQuantity::kAsymptoteDeclination;
+  return kind == ConstraintQuantity::kAsymptoteRightAscension ||
+         kind == ConstraintQuantity::kAsymptoteDeclination;
 }
 
 bool within_deadbands(const Problem& problem, const double achieved[kMaxConstraints]) {

@@ -58,9 +58,10 @@ std::vector<InputWarning> unused_inputs(const Mission& mission, const DeckExtras
   const bool stage4_flown = mission.vehicle.stages[stage_index(4)].in_sequence;
   const bool stage5_flown = mission.vehicle.stages[stage_index(5)].in_sequence;
   // Under IP(9) = 2, IP(10) = 1 the spun stage 5 yaws at DA2(6): that word acts, DA2(5) alone not.
-  const bool chi4_flown_by_stage5 = stage5_flown && o.stage_is_spun(5) && !o.stage_is_spun(4) && o.stage5_chi() == 1;
-  const std::string stage4_why = stage4_flown ? "with " + ip9 + " stage 4 flies the pitch program"
-                                              : std::string("stage 4 is not flown");
+  const bool chi4_flown_by_stage5 =
+      stage5_flown && o.stage_is_spun(5) && !o.stage_is_spun(4) && o.stage5_chi() == 1;
+  const std::string stage4_why =
+      stage4_flown ? "with " + ip9 + " stage 4 flies the pitch program" : std::string("stage 4 is not flown");
   if (!(stage4_flown && o.stage_is_spun(4))) {
     if (chi4_flown_by_stage5 && misc.stage4_theta_rad != 0.0) {
       warn(17, "DA2(5)", "misc.stage4_theta_deg",

@@ -137,7 +137,8 @@ struct SpunAttitude {
   double theta_rad = 0.0;
   double chi_rad = 0.0;
 };
-inline SpunAttitude spun_stage_attitude(const Options& options, const MiscellaneousData& misc, int stage_code) {
+inline SpunAttitude spun_stage_attitude(const Options& options, const MiscellaneousData& misc,
+                                        int stage_code) {
   const bool fifth = stage_code == 5 || stage_code == 10;
   if (!fifth || options.stage_is_spun(4)) return {misc.stage4_theta_rad, misc.stage4_chi_rad};
   return {misc.stage5_theta_rad, options.stage5_chi() == 1 ? misc.stage4_chi_rad : misc.stage5_chi_rad};

@@ -43,7 +43,8 @@ double hyperbolic_excess_stand_in_ft_s(double twice_energy_ft2_s2, double desire
 // point's 2E is below (v_d / 2)^2 (a quarter of the asked energy; 0 without code 100): not yet
 // hyperbolic, or too close to parabolic for the asymptote's first-order theory (d v_H / d 2E =
 // 1 / (2 v_H) grows without bound).
-bool needs_hyperbolic_stand_in(const ConstraintSet& set, const Mission& mission, const Trajectory& trajectory);
+bool needs_hyperbolic_stand_in(const ConstraintSet& set, const Mission& mission,
+                               const Trajectory& trajectory);
 
 // The inequality rule: total heating (IP(2), Sec. 13) and the q-bar x alpha excess (issue 15)
 // always, dynamic pressure under IP(13) = 1.
