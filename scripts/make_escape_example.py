@@ -32,6 +32,7 @@ import os
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.dont_write_bytecode = True  # importing the Scout generator leaves no __pycache__ in scripts/
 sys.path.insert(0, HERE)
 import make_scout_examples as scout  # noqa: E402  (the Scout-class stages and the deck writer)
 
