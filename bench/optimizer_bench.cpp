@@ -14,13 +14,14 @@
 namespace {
 
 // `name` is a deck path under examples/: "scout/mission.toml", "scout/reference_optimum.toml",
-// "strapon/mission.toml", "scout/mission_qalpha.toml".
+// "strapon/mission.toml", "scout/mission_qalpha.toml", "escape/mission.toml".
 tolip::Mission& load(const char* name) {
-  static std::unique_ptr<tolip::Mission> missions[4];
+  static std::unique_ptr<tolip::Mission> missions[5];
   const std::string deck(name);
   const int slot = deck == "scout/mission.toml"             ? 0
                    : deck == "scout/reference_optimum.toml" ? 1
                    : deck == "strapon/mission.toml"         ? 2
+                   : deck == "escape/mission.toml"          ? 4
                                                             : 3;
   if (!missions[slot]) {
     missions[slot] = tolip::ground::make_mission();
@@ -71,6 +72,15 @@ void BM_FullStrapOnOptimization(benchmark::State& state) {
   optimize_repeatedly(state, load("strapon/mission.toml"));
 }
 BENCHMARK(BM_FullStrapOnOptimization)->Unit(benchmark::kMillisecond);
+
+// The Earth-escape example (examples/escape, Addendum H, issue 15): five stages, maximum payload
+// to a hyperbolic excess velocity and asymptote direction from a crude elliptic start (the energy
+// stand-in, then the true constraints), the launch time, two coasts and the spun stage-5 attitudes
+// adjusted.
+void BM_FullEscapeOptimization(benchmark::State& state) {
+  optimize_repeatedly(state, load("escape/mission.toml"));
+}
+BENCHMARK(BM_FullEscapeOptimization)->Unit(benchmark::kMillisecond);
 
 // The same case as a heritage deck flies it: no heading hold, so the first steps after the lift-off
 // are near-vertical steps in regular coordinates (forward and backward; issue 10).

@@ -12,6 +12,8 @@
 #include "support/reference_data.hpp"
 #include "support/reference_mission.hpp"
 #include "tolip/mission/mission.hpp"
+#include "tolip/trajectory/trajectory.hpp"
+#include "tolip/vehicle/prepared_case.hpp"
 
 namespace tolip::test {
 namespace {
@@ -255,9 +257,36 @@ TEST(MissionValidation, PayloadRidesWithTheLastPoweredStageOfTheSequence) {
   EXPECT_NEAR(stage2_end, 1900.0 + vehicle.payload_lb, 1e-9);
   EXPECT_NEAR(vehicle_weight_lb(vehicle, 1, 0.0), 20200.0 + 4800.0 + 8000.0 + 1900.0 + vehicle.payload_lb,
               1e-9);
-  // With a coast after the last powered stage the payload has been dropped with that stage.
+  // A coast after the last powered stage flies what that stage burned out with (Addendum H's
+  // integrated coast following the final stage): nothing is staged after it.
   vehicle.sequence.count = 4;  // 1 6 2 7
-  EXPECT_NEAR(vehicle_weight_lb(vehicle, 7, 0.0), vehicle.stages[stage_index(7)].jettison_weight_lb, 1e-12);
+  EXPECT_EQ(vehicle_weight_lb(vehicle, 7, 0.0), vehicle_weight_lb(vehicle, 7, 6.0));
+  EXPECT_NEAR(vehicle_weight_lb(vehicle, 7, 0.0), stage2_end, 1e-9);
+}
+
+// Addendum H: "an integrated coast following the final stage". The reference optimum with a coast 9
+// after its last stage (4) flies it with the burnout weight, payload included, to a finite end
+// (before the fix the coast weighed 0 lb and the run stopped with kNonFiniteState).
+TEST(MissionValidation, AddendumH_ACoastAfterTheLastPoweredStageKeepsThePayload) {
+  auto mission = optimum();
+  Vehicle& vehicle = mission->vehicle;
+  const double burnout_lb = vehicle_weight_lb(vehicle, 4, vehicle.stages[stage_index(4)].duration_s);
+  vehicle.sequence.codes[vehicle.sequence.count++] = 9;
+  StageData& coast = vehicle.stages[stage_index(9)];
+  coast.in_sequence = true;
+  coast.duration_s = 600.0;
+  coast.integration_steps = 10;
+  ASSERT_EQ(validate(*mission).status, Status::kOk);
+  EXPECT_NEAR(vehicle_weight_lb(vehicle, 9, 0.0), burnout_lb, 1e-9);
+  EXPECT_NEAR(burnout_lb, vehicle.stages[stage_index(4)].jettison_weight_lb + vehicle.payload_lb, 1e-9);
+  auto prepared = std::make_unique<PreparedCase>();
+  auto trajectory = std::make_unique<Trajectory>();
+  ASSERT_EQ(prepare_case(*mission, prepared.get()), Status::kOk);
+  ASSERT_EQ(fly_trajectory(*mission, *prepared, trajectory.get()), Status::kOk);
+  const TrajectoryPoint& last = trajectory->points[trajectory->point_count - 1];
+  EXPECT_EQ(last.stage_code, 9);
+  EXPECT_NEAR(last.weight_lb, burnout_lb, 1e-9);
+  EXPECT_TRUE(last.state.allFinite());
 }
 
 }  // namespace

@@ -301,6 +301,84 @@ TEST(Sec22Validation, SpinOptionIP9MustFitTheSequenceTheSpunAttitudeCodesAndTheB
   EXPECT_EQ(fault.stage_code, 5);
 }
 
+// Sec. 22 IP(10), "Stage 5 chi: 0 fewer than 5 stages, 1 chi5 = chi4, 2 chi5 independent of chi4":
+// on a five-stage vehicle whose stage 5 is spun apart from a continuous stage 4 (IP(9) = 2) the spun
+// stage 5 and its coast yaw at DA2(10) under 2 and at DA2(6) under 1 (the continuous stage 4 itself
+// flies the pitch program at chi 0), and the trajectory follows; IP(10) is rejected, naming IP(10),
+// where it has no such meaning, and adjustable code 9 where IP(10) = 1 leaves DA2(10) unflown.
+TEST(Sec22Validation, StageFiveYawIP10ActsWhereStageFiveIsSpunApartAndIsRejectedElsewhere) {
+  static Mission m;
+  test::build_reference_mission(test::ReferenceProgram::kOptimum, &m);
+  make_stage4_continuous(&m);
+  add_stage5(&m);
+  m.misc.stage5_theta_rad = 10.0 * kDegToRad;
+  m.misc.stage4_chi_rad = -2.0 * kDegToRad;
+  m.misc.stage5_chi_rad = 3.0 * kDegToRad;
+  MissionFault fault;
+  m.options.ip[10] = 0;  // "fewer than 5 stages", with a spun stage 5 flown
+  EXPECT_EQ(validate_mission(m, &fault), Status::kSpinOptionInconsistent);
+  EXPECT_EQ(fault.data_block, 4);
+  EXPECT_EQ(fault.index, 10);
+
+  static PreparedCase prepared;
+  static Trajectory independent;
+  static Trajectory coupled;
+  const auto fly = [&](int ip10, Trajectory* t) {
+    m.options.ip[10] = ip10;
+    ASSERT_EQ(validate_mission(m, &fault), Status::kOk) << fault.field << " " << fault.index;
+    ASSERT_EQ(prepare_case(m, &prepared), Status::kOk);
+    ASSERT_EQ(fly_trajectory(m, prepared, t), Status::kOk);
+  };
+  fly(2, &independent);
+  fly(1, &coupled);
+  int stage5_points = 0;
+  for (const Trajectory* t : {&independent, &coupled}) {
+    const double chi5 = (t == &independent) ? 3.0 * kDegToRad : -2.0 * kDegToRad;
+    for (int i = 0; i < t->point_count; ++i) {
+      const TrajectoryPoint& p = t->points[i];
+      if (p.stage_code == 5 || p.stage_code == 10) {
+        EXPECT_EQ(p.chi_rad, chi5) << "stage " << p.stage_code << " point " << i;
+        EXPECT_EQ(p.theta_rad, m.misc.stage5_theta_rad);
+        ++stage5_points;
+      } else if (p.stage_code == 4) {
+        EXPECT_EQ(p.chi_rad, 0.0);
+      }
+    }
+  }
+  EXPECT_GT(stage5_points, 20);
+  // 5 deg of yaw over the 15 s burn turns the final inertial heading.
+  EXPECT_GT(std::fabs(independent.points[independent.point_count - 1].state(kStatePsi) -
+                      coupled.points[coupled.point_count - 1].state(kStatePsi)),
+            1e-4);
+
+  // Adjustable code 9 (stage-5 yaw) needs DA2(10) flown: IP(10) = 2, not 1.
+  m.adjustable.codes[m.adjustable.count] = adjustable_parameter_code(AdjustableParameter::kStage5Chi);
+  m.adjustable.weights[m.adjustable.count] = 10.0;
+  ++m.adjustable.count;
+  m.options.ip[10] = 2;
+  EXPECT_EQ(validate_mission(m, &fault), Status::kOk) << fault.field;
+  m.options.ip[10] = 1;
+  EXPECT_EQ(validate_mission(m, &fault), Status::kAdjustableAttitudeNotSpun);
+  EXPECT_EQ(fault.data_block, 6);
+  EXPECT_EQ(fault.stage_code, 5);
+  --m.adjustable.count;
+
+  // IP(9) = 1 spins stage 5 on stage 4's attitudes (chi5 = chi4): IP(10) = 2 contradicts it.
+  static Mission spun;
+  test::build_reference_mission(test::ReferenceProgram::kOptimum, &spun);
+  add_stage5(&spun);
+  spun.options.ip[10] = 2;
+  EXPECT_EQ(validate_mission(spun, &fault), Status::kSpinOptionInconsistent);
+  EXPECT_EQ(fault.index, 10);
+  spun.options.ip[10] = 1;
+  EXPECT_EQ(validate_mission(spun, &fault), Status::kOk) << fault.field;
+  // IP(9) = 3: stage 5 flies the pitch program, IP(10) stays 0.
+  m.options.ip[9] = 3;
+  m.options.ip[10] = 1;
+  EXPECT_EQ(validate_mission(m, &fault), Status::kSpinOptionInconsistent);
+  EXPECT_EQ(fault.index, 10);
+}
+
 // The optimizer steers the stage-4 pitch program under IP(9) = 2: from the oracle's optimum, with
 // stage 4 starting at its constant spun attitude, the converged stage 4 flies a program.
 TEST(Sec22Optimizer, Sec5_IP9Is2SteersTheStage4PitchProgram) {

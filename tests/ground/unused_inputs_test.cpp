@@ -65,7 +65,6 @@ TEST(UnusedInputs, EachInputWarnsAloneAndADeckWithoutThemIsSilent) {
     std::vector<std::pair<std::string, std::string>> edits;
     const char* named;
   } alone[] = {
-      {{{"stage5_chi = 0 ", "stage5_chi = 1 "}}, "data block 4, IP(10) (options.stage5_chi)"},
       {{{"ct1_13 = 1.0", "ct1_13 = 2.0"}}, "data block 10, CT1(13) (constants.ct1_13)"},
       // DA6D(12-15) act in 6D forward trajectories; with IP(6) = 0 none is flown.
       {{{"integration_frequency_multiplier = [1.0, 1.0, 1.0, 1.0]",

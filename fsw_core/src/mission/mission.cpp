@@ -259,6 +259,26 @@ Status check_spin_option(const Options& options, const Vehicle& vehicle, const C
                       "3 only with five stages (Sec. 22); a four-stage vehicle with a continuous stage 4 "
                       "sets 2");
   }
+  // IP(10), the stage-5 yaw (Sec. 22: 0 fewer than 5 stages, 1 chi5 = chi4, 2 chi5 independent),
+  // admitted only where spun_stage_attitude() gives it that meaning: 1 or 2 when stage 5 is spun
+  // apart from stage 4 (IP(9) = 2); 0 or 1 under IP(9) = 1, which itself sets chi5 = chi4; 0
+  // otherwise (no stage 5, or a continuous stage 5 flying the pitch program).
+  const int yaw = options.stage5_chi();
+  const bool stage5 = vehicle.stages[stage_index(5)].in_sequence;
+  if (stage5 && spin == 2 && yaw == 0) {
+    return check.fail(Status::kSpinOptionInconsistent, 4, 5, "ip", 10, yaw, "", between(1, 2),
+                      "1 (chi5 = chi4) or 2 (chi5 independent) when stage 5 is spun apart from stage 4 "
+                      "(IP(9) = 2)");
+  }
+  if (stage5 && spin == 1 && yaw == 2) {
+    return check.fail(Status::kSpinOptionInconsistent, 4, 5, "ip", 10, yaw, "", between(0, 1),
+                      "0 or 1: IP(9) = 1 spins stage 5 on stage 4's attitudes (chi5 = chi4)");
+  }
+  if ((!stage5 || spin == 3) && yaw != 0) {
+    return check.fail(Status::kSpinOptionInconsistent, 4, 5, "ip", 10, yaw, "", exactly(0),
+                      stage5 ? "0 when stage 5 flies the pitch program (IP(9) = 3)"
+                             : "0 with fewer than five stages (Sec. 22)");
+  }
   return Status::kOk;
 }
 
@@ -727,15 +747,19 @@ Status check_adjustable(const AdjustableParameters& a, const Options& options, c
         parameter == AdjustableParameter::kStage5Theta || parameter == AdjustableParameter::kStage5Chi;
     if (stage4_attitude || stage5_attitude) {
       const int stage = stage4_attitude ? 4 : 5;
-      const bool own =
-          stage4_attitude ? options.stage_is_spun(4) : options.stage_is_spun(5) && !options.stage_is_spun(4);
+      // Under IP(10) = 1 the spun stage 5 yaws at chi4: DA2(10), code 9, is not flown.
+      const bool own = stage4_attitude
+                           ? options.stage_is_spun(4)
+                           : options.stage_is_spun(5) && !options.stage_is_spun(4) &&
+                                 !(parameter == AdjustableParameter::kStage5Chi && options.stage5_chi() == 1);
       if (!vehicle.stages[stage_index(stage)].in_sequence || !own) {
         return check.fail(Status::kAdjustableAttitudeNotSpun, 6, stage, "codes", i, code, "", ValueRange{},
                           stage4_attitude
                               ? "codes 1, 2 (spun stage-4 attitudes) only with stage 4 flown and "
                                 "IP(9) = 1"
                               : "codes 8, 9 (spun stage-5 attitudes) only with stage 5 flown and "
-                                "IP(9) = 2 (with IP(9) = 1 stage 5 flies stage 4's attitudes: codes 1, 2)");
+                                "IP(9) = 2, code 9 with IP(10) = 2 (with IP(9) = 1 stage 5 flies stage 4's "
+                                "attitudes: codes 1, 2)");
       }
     }
     TOLIP_CHECK(
@@ -1016,6 +1040,14 @@ StageWeight::StageWeight(const Vehicle& vehicle, int code) {
       trailing_lb_[trailing_count_++] = term_lb;
     }
   };
+  // A coast after the last powered stage (addendum H's "integrated coast following the final
+  // stage") flies what that stage burned out with: its jettison weight and the payload booked in
+  // it (Sec. 14). Nothing is staged after the last powered stage; dropping both would leave it
+  // massless.
+  if (is_coast_stage(code) && last_powered != 0 && position > position_in_sequence(sequence, last_powered)) {
+    add(vehicle.stages[stage_index(last_powered)].jettison_weight_lb);
+    add(vehicle.payload_lb);
+  }
   for (int k = position; k < sequence.count; ++k) {
     const int stage_code = sequence.codes[k];
     if (stage_code < 1 || stage_code > kMaxStages) continue;

@@ -442,9 +442,7 @@ double coast_rate_after_program(const Mission& mission, const PreparedCase& prep
     if (!is_coast_stage(line.code) || !(line.duration_s > 0.0)) continue;
     const int next = line.code - 4;  // the powered stage after coast n + 5
     if (!options.stage_is_steered(next - 1) || !options.stage_is_spun(next)) continue;
-    // IP(9) = 1 spins stage 5 on stage 4's attitudes.
-    const double spun_theta_rad = (next == 4 || options.stage_is_spun(4)) ? mission.misc.stage4_theta_rad
-                                                                          : mission.misc.stage5_theta_rad;
+    const double spun_theta_rad = spun_stage_attitude(options, mission.misc, next).theta_rad;
     return (spun_theta_rad - p.theta_rad[p.segment_count]) / line.duration_s;
   }
   return -1.0;

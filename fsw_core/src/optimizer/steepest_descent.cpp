@@ -128,8 +128,17 @@ void activate_qbar_alpha_if_exceeded(const Mission& mission, const Trajectory& n
 
 // ---- constraint values: tolip/optimizer/constraint_set.hpp -------------------------------------
 
+// A constraint without a value on a run (an asymptote direction the Addendum H stand-in defers: NaN)
+// asks for no change and adds nothing to the error norm or the corrected payoff; within_deadbands
+// still counts it as not met.
 double correction(const Problem& problem, int i, const double achieved[kMaxConstraints]) {
-  return constraint_correction(problem, i, achieved[i]);
+  const double c = constraint_correction(problem, i, achieved[i]);
+  return std::isnan(c) ? 0.0 : c;
+}
+
+bool is_asymptote_direction(ConstraintQuantity kind) {
+  return kind == ConstraintQuantity::kAsymptoteRightAscension ||
+         kind == ConstraintQuantity::kAsymptoteDeclination;
 }
 
 bool within_deadbands(const Problem& problem, const double achieved[kMaxConstraints]) {
@@ -662,7 +671,8 @@ void Iteration::record(RunKind kind, Status run_status, bool successful, double 
   r.payload_lb = ws_->candidate_mission.vehicle.payload_lb;
   r.payload_increment_lb = ws_->candidate_mission.vehicle.payload_lb - ws_->mission.vehicle.payload_lb;
   for (int i = 1; i < problem_.count; ++i) {
-    r.constraint_corrections[i] = flown ? correction(problem_, i, candidate_achieved_) : nan;
+    // NaN too for an asymptote direction the stand-in defers (it has no value on this run).
+    r.constraint_corrections[i] = flown ? constraint_correction(problem_, i, candidate_achieved_[i]) : nan;
     r.payoff_partials[i] = partials_[i];
     // The initial nominal follows no backward run: nothing was steered or held.
     r.constraint_held[i] = kind != RunKind::kInitialNominal && result_->constraint_held[i];
@@ -692,6 +702,7 @@ Status Iteration::fly_nominal_from_table() {
   }
   classify_points(ws_->mission, ws_->nominal, &roles_);
   activate_heating_if_exceeded(ws_->nominal, ws_->mission.options, &problem_);
+  problem_.hyperbolic_stand_in = needs_hyperbolic_stand_in(problem_, ws_->mission, ws_->nominal);
   status = evaluate_constraints(problem_, ws_->mission, ws_->nominal, nominal_achieved_);
   if (!ok(status)) return status;
   for (int i = 0; i < problem_.count; ++i) candidate_achieved_[i] = nominal_achieved_[i];
@@ -755,7 +766,8 @@ Status Iteration::backward(int first, Steering* steering) {
   } else {
     bool deferred[kMaxConstraints] = {};
     for (int i = 1; i < problem_.count; ++i) {
-      deferred[i] = deferred_in_guidance(problem_, i, nominal_achieved_);
+      deferred[i] = deferred_in_guidance(problem_, i, nominal_achieved_) ||
+                    (problem_.hyperbolic_stand_in && is_asymptote_direction(problem_.codes[i].kind));
     }
     const Status guidance = build_steering(problem_, ws_->backward, launch_columns_, roles_.free,
                                            ws_->mission.constants.g0_ft_s2, first, dp2, steering, deferred);
@@ -847,6 +859,17 @@ void Iteration::accept_candidate() {
   ws_->nominal = ws_->candidate;
   for (int i = 0; i < problem_.count; ++i) nominal_achieved_[i] = candidate_achieved_[i];
   classify_points(ws_->mission, ws_->nominal, &roles_);
+  // Addendum H: a nominal that has left the stand-in's range is valued by the true asymptote from
+  // here on (one way: a later nominal never returns to the stand-in).
+  if (problem_.hyperbolic_stand_in && !needs_hyperbolic_stand_in(problem_, ws_->mission, ws_->nominal)) {
+    problem_.hyperbolic_stand_in = false;
+    double values[kMaxConstraints] = {};
+    if (ok(evaluate_constraints(problem_, ws_->mission, ws_->nominal, values))) {
+      for (int i = 0; i < problem_.count; ++i) nominal_achieved_[i] = values[i];
+    } else {
+      problem_.hyperbolic_stand_in = true;
+    }
+  }
   if (!problem_.heating_active) {
     activate_heating_if_exceeded(ws_->nominal, ws_->mission.options, &problem_);
     if (problem_.heating_active) {

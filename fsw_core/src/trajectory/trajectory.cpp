@@ -126,20 +126,13 @@ StepCommand Flight::command_at(const StageContext& stage, int point, double t, d
   command.step_s = step_s;
   command.heading_hold = t + eps < mission_.launch.heading_hold_until_s;
 
-  const MiscellaneousData& misc = mission_.misc;
-  // Spun stages hold the attitudes of data block 17 (IP(9)); so do the coasts that follow them.
-  if ((stage.code == 4 || stage.code == 9) && mission_.options.stage_is_spun(stage.code)) {
+  // Spun stages hold the attitudes of data block 17 (IP(9), IP(10): spun_stage_attitude); so do the
+  // coasts that follow them.
+  if (mission_.options.stage_is_spun(stage.code)) {
+    const SpunAttitude held = spun_stage_attitude(mission_.options, mission_.misc, stage.code);
     command.mode = AttitudeMode::kHeld;
-    command.theta_start_rad = command.theta_end_rad = misc.stage4_theta_rad;
-    command.chi_rad = misc.stage4_chi_rad;
-    return command;
-  }
-  if ((stage.code == 5 || stage.code == 10) && mission_.options.stage_is_spun(stage.code)) {
-    // IP(9) = 1 spins stage 5 on stage 4's attitudes; IP(9) = 2 gives it its own (DA2(9, 10)).
-    const bool coupled = mission_.options.stage_is_spun(4);
-    command.mode = AttitudeMode::kHeld;
-    command.theta_start_rad = command.theta_end_rad = coupled ? misc.stage4_theta_rad : misc.stage5_theta_rad;
-    command.chi_rad = coupled ? misc.stage4_chi_rad : misc.stage5_chi_rad;
+    command.theta_start_rad = command.theta_end_rad = held.theta_rad;
+    command.chi_rad = held.chi_rad;
     return command;
   }
   if (t + eps < mission_.launch.liftoff_duration_s) {

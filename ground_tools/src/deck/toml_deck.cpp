@@ -160,7 +160,9 @@ std::string fault_path(const MissionFault& fault, const Mission& mission) {
     std::string member = core_name.substr(dot + 1);
     if (const std::size_t bracket = member.find('['); bracket != std::string::npos) member.resize(bracket);
     const bool ip_word = fault.data_block == 4 && described.word == index;
-    if (member != field && !ip_word) continue;
+    // An IP(n) fault names its word: every option's core member is `ip`, so the member alone
+    // would name IP(1), the payoff.
+    if (fault.data_block == 4 && field == "ip" ? !ip_word : member != field && !ip_word) continue;
     const int code = described.stage_coding == deck_detail::StageCoding::kNone ? 0 : fault.stage_code;
     if (code != 0 && !deck_detail::applies_to_stage(described, code)) continue;
     if (described.stage_coding != deck_detail::StageCoding::kNone && code == 0) continue;

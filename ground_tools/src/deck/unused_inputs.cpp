@@ -11,15 +11,8 @@ std::vector<InputWarning> unused_inputs(const Mission& mission, const DeckExtras
   const auto warn = [&out](int block, const char* word, const char* field, std::string message) {
     out.push_back(InputWarning{block, word, field, std::move(message)});
   };
-  // Data block 4: options of analyses this version does not compute yet, and the 1966 dump.
-  if (o.stage5_chi() != 0) {
-    warn(
-        4, "IP(10)", "options.stage5_chi",
-        "the stage-5 yaw option = " + std::to_string(o.stage5_chi()) +
-            (o.stage_is_spun(5) ? " has no effect: stage 5 holds the attitudes of data block 17 as IP(9) says"
-                                : " has no effect: stage 5 flies the pitch program (IP(9) = " +
-                                      std::to_string(o.spin_stages_4_5()) + ")"));
-  }
+  // Data block 4: the 1966 dump. (IP(10) acts through spun_stage_attitude() where validate_mission()
+  // admits it.)
   if (o.memory_dump()) {
     warn(4, "IP(15)", "options.memory_dump",
          "the core-memory dump of the 1966 program has no counterpart: ignored");
@@ -57,11 +50,20 @@ std::vector<InputWarning> unused_inputs(const Mission& mission, const DeckExtras
   const MiscellaneousData& misc = mission.misc;
   const bool stage4_flown = mission.vehicle.stages[stage_index(4)].in_sequence;
   const bool stage5_flown = mission.vehicle.stages[stage_index(5)].in_sequence;
-  if (!(stage4_flown && o.stage_is_spun(4)) && (misc.stage4_theta_rad != 0.0 || misc.stage4_chi_rad != 0.0)) {
-    warn(17, "DA2(5), DA2(6)", "misc.stage4_theta_deg/stage4_chi_deg",
-         "the spun stage-4 attitudes have no effect: " +
-             (stage4_flown ? "with " + ip9 + " stage 4 flies the pitch program"
-                           : std::string("stage 4 is not flown")));
+  // Under IP(9) = 2, IP(10) = 1 the spun stage 5 yaws at DA2(6): that word acts, DA2(5) alone not.
+  const bool chi4_flown_by_stage5 =
+      stage5_flown && o.stage_is_spun(5) && !o.stage_is_spun(4) && o.stage5_chi() == 1;
+  const std::string stage4_why =
+      stage4_flown ? "with " + ip9 + " stage 4 flies the pitch program" : std::string("stage 4 is not flown");
+  if (!(stage4_flown && o.stage_is_spun(4))) {
+    if (chi4_flown_by_stage5 && misc.stage4_theta_rad != 0.0) {
+      warn(17, "DA2(5)", "misc.stage4_theta_deg",
+           "the spun stage-4 pitch attitude has no effect: " + stage4_why +
+               " (DA2(6) acts: stage 5 yaws at it, IP(10) = 1)");
+    } else if (!chi4_flown_by_stage5 && (misc.stage4_theta_rad != 0.0 || misc.stage4_chi_rad != 0.0)) {
+      warn(17, "DA2(5), DA2(6)", "misc.stage4_theta_deg/stage4_chi_deg",
+           "the spun stage-4 attitudes have no effect: " + stage4_why);
+    }
   }
   const bool stage5_own_attitudes = stage5_flown && o.stage_is_spun(5) && !o.stage_is_spun(4);
   if (!stage5_own_attitudes && (misc.stage5_theta_rad != 0.0 || misc.stage5_chi_rad != 0.0)) {
@@ -70,6 +72,9 @@ std::vector<InputWarning> unused_inputs(const Mission& mission, const DeckExtras
              (!stage5_flown        ? std::string("stage 5 is not flown")
               : o.stage_is_spun(5) ? "with " + ip9 + " stage 5 holds stage 4's attitudes"
                                    : "with " + ip9 + " stage 5 flies the pitch program"));
+  } else if (stage5_own_attitudes && o.stage5_chi() == 1 && misc.stage5_chi_rad != 0.0) {
+    warn(17, "DA2(10)", "misc.stage5_chi_deg",
+         "the spun stage-5 yaw attitude has no effect: with IP(10) = 1 stage 5 yaws at chi4 (DA2(6))");
   }
   // Data block 17: the platform frame is fixed at lift-off here (the launch matrices), not at uncage.
   if (mission.misc.gyro_uncage_s_before_launch != 0.0) {

@@ -421,8 +421,12 @@ void write_summary(Pager& pager, const OptimizationReport& report,
   for (int i = 1; i < std::min(result.constraint_count, kMaxConstraints); ++i) {
     if (result.deferred_runs[i] == 0) continue;
     pager.reserve(1);
+    // Codes 101-102 wait for the trajectory to become hyperbolic (the Addendum H stand-in), code 13
+    // for the other constraints (docs/theory/optimizer.md).
+    const bool asymptote = result.codes[i] == 101 || result.codes[i] == 102;
     pager.emit("   CONSTRAINT " + std::to_string(i) + " (CODE " + std::to_string(result.codes[i]) +
-               ") DEFERRED UNTIL THE OTHERS MET THEIR DEADBANDS ON " +
+               (asymptote ? ") DEFERRED UNTIL THE TRAJECTORY WAS HYPERBOLIC ON "
+                          : ") DEFERRED UNTIL THE OTHERS MET THEIR DEADBANDS ON ") +
                std::to_string(result.deferred_runs[i]) + " GUIDANCE RUNS");
   }
   pager.emit(labelled("CASE RESULT",

@@ -123,14 +123,12 @@ bool build_guidance_table(const Mission& mission, const DeckExtras& extras, cons
   const Options& o = mission.options;
   const int spin = o.spin_stages_4_5();
   t.spin_option = spin;
-  t.stage4_theta_rad = o.stage_is_spun(4) ? mission.misc.stage4_theta_rad : 0.0;
-  t.stage4_chi_rad = o.stage_is_spun(4) ? mission.misc.stage4_chi_rad : 0.0;
-  t.stage5_theta_rad = !o.stage_is_spun(5)  ? 0.0
-                       : o.stage_is_spun(4) ? mission.misc.stage4_theta_rad
-                                            : mission.misc.stage5_theta_rad;
-  t.stage5_chi_rad = !o.stage_is_spun(5)  ? 0.0
-                     : o.stage_is_spun(4) ? mission.misc.stage4_chi_rad
-                                          : mission.misc.stage5_chi_rad;
+  const SpunAttitude spun4 = spun_stage_attitude(o, mission.misc, 4);
+  const SpunAttitude spun5 = spun_stage_attitude(o, mission.misc, 5);
+  t.stage4_theta_rad = o.stage_is_spun(4) ? spun4.theta_rad : 0.0;
+  t.stage4_chi_rad = o.stage_is_spun(4) ? spun4.chi_rad : 0.0;
+  t.stage5_theta_rad = o.stage_is_spun(5) ? spun5.theta_rad : 0.0;
+  t.stage5_chi_rad = o.stage_is_spun(5) ? spun5.chi_rad : 0.0;
 
   // Data block 33: autopilot gains of stages 1-3; the coasts 6-8 keep the gains of the stage
   // before them; spun stages and the coasts after them have none. Data block 33 has no gains for

@@ -128,6 +128,22 @@ struct MiscellaneousData {
   double minimum_coast_s = 0.0;              // DA2(17)
 };
 
+// The data block 17 attitude a spun stage, and the coast after it, holds (Sec. 22 IP(9), IP(10)):
+// the one rule, asked by the trajectory, the linearization, the table builder and the deck checks.
+// IP(9) = 1 spins stages 4 and 5 together on stage 4's words (theta5 = theta4, chi5 = chi4);
+// IP(9) = 2 spins stage 5 alone on theta5 of DA2(9), with its yaw by IP(10): 1 chi5 = chi4 (DA2(6)),
+// 2 chi5 independent (DA2(10)). validate_mission() admits IP(10) only where it has this meaning.
+struct SpunAttitude {
+  double theta_rad = 0.0;
+  double chi_rad = 0.0;
+};
+inline SpunAttitude spun_stage_attitude(const Options& options, const MiscellaneousData& misc,
+                                        int stage_code) {
+  const bool fifth = stage_code == 5 || stage_code == 10;
+  if (!fifth || options.stage_is_spun(4)) return {misc.stage4_theta_rad, misc.stage4_chi_rad};
+  return {misc.stage5_theta_rad, options.stage5_chi() == 1 ? misc.stage4_chi_rad : misc.stage5_chi_rad};
+}
+
 // Data blocks 8, 19, 29: the payoff first, then terminal, then stage-point constraints.
 struct ConstraintList {
   int count = 0;                                        // IB3(1), includes the payoff

@@ -25,7 +25,26 @@ struct ConstraintSet {
   // Entry 0 is the payoff and the payoff is the payload: its value is the case's payload, not a
   // quantity of the trajectory (the final weight is the inert weight plus it).
   bool payload_payoff = false;
+  // Addendum H from an elliptic start (docs/theory/optimizer.md "Earth escape from an elliptic
+  // start"): while set, the hyperbolic excess velocity (100) is valued by its energy stand-in
+  // (hyperbolic_excess_stand_in_ft_s) and the asymptote's right ascension and declination (101,
+  // 102) have no value (NaN: never met) and zero partials. The optimizer sets it from its nominal
+  // (needs_hyperbolic_stand_in); every other user leaves it false.
+  bool hyperbolic_stand_in = false;
 };
+
+// The energy stand-in for code 100: (2E + v_d^2) / (2 v_d), v_d the desired excess velocity. It
+// equals v_d exactly where v_H = sqrt(2E) does, with the same slope there (1 / (2 v_d) per unit of
+// 2E), exceeds v_H by (v_H - v_d)^2 / (2 v_d) where both exist, and exists at every energy, so a
+// steering from an elliptic nominal asks the energy for the right change. NaN unless v_d > 0.
+double hyperbolic_excess_stand_in_ft_s(double twice_energy_ft2_s2, double desired_ft_s);
+
+// Whether a nominal is to be steered with the stand-in: the set lists a code 100..102 and the final
+// point's 2E is below (v_d / 2)^2 (a quarter of the asked energy; 0 without code 100): not yet
+// hyperbolic, or too close to parabolic for the asymptote's first-order theory (d v_H / d 2E =
+// 1 / (2 v_H) grows without bound).
+bool needs_hyperbolic_stand_in(const ConstraintSet& set, const Mission& mission,
+                               const Trajectory& trajectory);
 
 // The inequality rule: total heating (IP(2), Sec. 13) and the q-bar x alpha excess (issue 15)
 // always, dynamic pressure under IP(13) = 1.
@@ -48,7 +67,8 @@ double constraint_correction(const ConstraintSet& set, int i, double achieved);
 bool constraint_met(const ConstraintCode& code, bool inequality, double achieved, double desired,
                     double deadband);
 
-// Every entry from `first` on (1 when entry 0 is the payoff) has its correction inside its deadband.
+// Every entry from `first` on (1 when entry 0 is the payoff) has its correction inside its deadband
+// (an entry without a value, NaN, is not).
 bool within_deadbands(const ConstraintSet& set, int first, const double achieved[kMaxConstraints]);
 
 // Values of every entry on a flown trajectory (stage-point codes at their stage's end); the
