@@ -1,0 +1,203 @@
+// Sec. 6, 10 with the q-bar x alpha load limit (issue 15, a TOLIP extension;
+// docs/theory/linearization.md "The q-bar x alpha limit"): the linearization keeps the limit the
+// optimizer kept, through the excess integral's row (code 200) in the eq. 6-22 fit, whose
+// sensitivity to the break values is proved here against central differences of forward runs.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "support/reference_mission.hpp"
+#include "tolip/optimizer/backward_run.hpp"
+#include "tolip/optimizer/constraint_parameters.hpp"
+#include "tolip/optimizer/linearization.hpp"
+#include "tolip/optimizer/qbar_alpha.hpp"
+
+namespace tolip {
+namespace {
+
+constexpr double kLimitLbDegFt2 = 3500.0;  // examples/scout/mission_qalpha.toml
+constexpr double kLbDegPerLbRad = 180.0 / kPi;
+
+struct LinearizedQAlpha {
+  Mission mission;
+  OptimizerWorkspace optimized;
+  OptimizerResult optimum;
+  LinearizationWorkspace workspace;
+  LinearizationResult result;
+  Status optimizer_status = Status::kNotPrepared;
+  Status status = Status::kNotPrepared;
+};
+
+// The reference mission with the example's limit and forward-run budget (the two changes
+// scripts/make_scout_examples.py makes for mission_qalpha.toml), optimized and linearized once.
+const LinearizedQAlpha& linearized_qalpha() {
+  static LinearizedQAlpha* built = [] {
+    static LinearizedQAlpha r;
+    test::build_reference_mission(test::ReferenceProgram::kInitialNominal, &r.mission);
+    r.mission.options.qbar_alpha_limit_lbf_rad_ft2 = kLimitLbDegFt2 / kLbDegPerLbRad;
+    r.mission.convergence.max_forward_trajectories = 40;
+    r.optimizer_status = optimize_trajectory(r.mission, &r.optimized, &r.optimum);
+    if (ok(r.optimizer_status)) r.status = linearize_pitch_program(r.optimized, &r.workspace, &r.result);
+    return &r;
+  }();
+  return *built;
+}
+
+// The largest |q-bar alpha| over the points with aerodynamic lift (stages with the lift table and
+// q-bar > 0), written out here from the points' own q-bar and alpha.
+double lift_phase_peak_lbf_rad_ft2(const Mission& m, const Trajectory& t, double* time_s) {
+  double peak = 0.0;
+  for (int k = 0; k < t.point_count; ++k) {
+    const TrajectoryPoint& p = t.points[k];
+    if (!(p.dynamic_pressure_lbf_ft2 > 0.0) || !m.vehicle.stages[stage_index(p.stage_code)].uses_lift_table)
+      continue;
+    const double value = std::fabs(p.dynamic_pressure_lbf_ft2 * p.alpha_rad);
+    if (value > peak) {
+      peak = value;
+      *time_s = p.time_s;
+    }
+  }
+  return peak;
+}
+
+// The linearized program of the limited optimum keeps the limit: code 200 is in its constraint
+// list and met (the excess integral within the optimizer's deadband), with every other
+// constraint and rate limit, and the payload it carries is reported.
+TEST(Sec6QAlphaLinearization, LinearizedProgramKeepsTheLimitWithinTheOptimizersCriterion) {
+  const LinearizedQAlpha& r = linearized_qalpha();
+  ASSERT_EQ(r.optimizer_status, Status::kOk);
+  const LinearizationResult& result = r.result;
+  ASSERT_TRUE(result.finished) << status_name(r.status);
+  int row = -1;
+  for (int j = 0; j < result.constraint_count; ++j) {
+    std::printf("code %3d achieved % .6e desired % .6e tolerance %.3e met %d\n", result.codes[j],
+                result.achieved[j], result.desired[j], result.tolerance[j], result.met[j] ? 1 : 0);
+    if (result.codes[j] == kQbarAlphaConstraintCode) row = j;
+  }
+  ASSERT_GE(row, 0) << "the q-bar x alpha excess (code 200) is a linearization constraint";
+  double time_s = 0.0;
+  const double peak = lift_phase_peak_lbf_rad_ft2(r.workspace.mission, r.workspace.nominal, &time_s);
+  std::printf("linearized: %s in %d forward runs (%d programs, %d repairs, 6D %d), payload %.4f lb "
+              "(optimum %.4f lb), peak %.1f lb deg/ft^2 at %.2f s, excess %.3e s\n",
+              status_name(r.status), result.forward_runs, result.programs_computed,
+              result.program.rate_repair_count, result.body_dynamics ? 1 : 0, result.payoff,
+              r.optimum.payload_lb, peak * kLbDegPerLbRad, time_s, result.achieved[row]);
+  EXPECT_EQ(r.status, Status::kOk) << status_name(r.status);
+  EXPECT_TRUE(result.constraints_met);
+  EXPECT_TRUE(result.rate_limits_met);
+  EXPECT_TRUE(result.met[row]);
+  EXPECT_LE(result.achieved[row], kQbarAlphaExcessDeadbandS);
+  // The row's value is the excess integral of the trajectory the result describes.
+  EXPECT_EQ(result.achieved[row], qbar_alpha_excess_s(r.workspace.mission, r.workspace.nominal));
+  // Within the deadband of the excess integral (1e-4 s: about a 1 % excess held for 1 s).
+  EXPECT_LE(peak * kLbDegPerLbRad, 1.01 * kLimitLbDegFt2);
+  // The straight segments cost payload against the limited optimum, but not much.
+  EXPECT_LE(result.payoff, r.optimum.payload_lb * (1.0 + 1e-4));
+  EXPECT_GE(result.payoff, 0.98 * r.optimum.payload_lb);
+}
+
+// The sensitivity of the excess integral to the break values of the linear program (the row
+// code 200 adds to eq. 6-22, break_value_gradients over the backward run) and to the payload (its
+// payload column) against central differences of forward runs. About the linearized program
+// with the limit lowered to 60 % of its peak, so that the excess is positive over seconds.
+TEST(Sec6QAlphaLinearization, Sec6_QAlphaBreakValueSensitivityMatchesFiniteDifference) {
+  const LinearizedQAlpha& r = linearized_qalpha();
+  ASSERT_TRUE(r.result.finished) << status_name(r.status);
+  static Mission mission;
+  mission = r.workspace.mission;
+  mission.options.ip[6] = 0;  // point mass: the backward run below linearizes a point-mass flight
+  const LinearProgram& p = r.result.program;
+  static ControlProgram program;
+  static Trajectory nominal;
+  static Trajectory perturbed;
+  static BackwardRun backward;
+  // The linearized program at the points (hat functions, written here), flown point mass.
+  program.point_count = r.workspace.nominal.point_count;
+  for (int k = 0; k < program.point_count; ++k) {
+    const double t = r.workspace.nominal.points[k].time_s;
+    double theta = r.workspace.nominal.points[k].theta_rad;  // outside the breaks: as flown
+    for (int s = 0; s < p.segment_count; ++s) {
+      if (t >= p.break_time_s[s] && t <= p.break_time_s[s + 1]) {
+        const double f = (t - p.break_time_s[s]) / (p.break_time_s[s + 1] - p.break_time_s[s]);
+        theta = p.theta_rad[s] + f * (p.theta_rad[s + 1] - p.theta_rad[s]);
+        break;
+      }
+    }
+    program.theta_rad[k] = theta;
+  }
+  ASSERT_EQ(fly_trajectory(mission, r.workspace.prepared, program, &nominal), Status::kOk);
+  double time_s = 0.0;
+  mission.options.qbar_alpha_limit_lbf_rad_ft2 = 0.6 * lift_phase_peak_lbf_rad_ft2(mission, nominal, &time_s);
+  const double j0 = qbar_alpha_excess_s(mission, nominal);
+  ASSERT_GT(j0, 0.0);
+  ConstraintTerminal terminal;
+  terminal.point = nominal.point_count - 1;
+  terminal.qbar_alpha_integral = true;
+  ASSERT_EQ(run_backward(mission, r.workspace.prepared, nominal, 1, &terminal, &backward), Status::kOk);
+  double gradient[kMaxBreakPoints] = {};
+  break_value_gradients(backward, nominal, p, 0, gradient);
+
+  const auto hat = [&](int b, double t) {
+    if (b > 0 && t >= p.break_time_s[b - 1] && t <= p.break_time_s[b])
+      return (t - p.break_time_s[b - 1]) / (p.break_time_s[b] - p.break_time_s[b - 1]);
+    if (b < p.segment_count && t >= p.break_time_s[b] && t <= p.break_time_s[b + 1])
+      return (p.break_time_s[b + 1] - t) / (p.break_time_s[b + 1] - p.break_time_s[b]);
+    return 0.0;
+  };
+  static ControlProgram changed;
+  const double d_theta = 1e-4;  // rad
+  int checked = 0;
+  for (int b = 0; b <= p.segment_count; ++b) {
+    double excess[2] = {};
+    for (int side = 0; side < 2; ++side) {
+      changed = program;
+      for (int k = 0; k < program.point_count; ++k)
+        changed.theta_rad[k] += (side == 0 ? 1.0 : -1.0) * d_theta * hat(b, nominal.points[k].time_s);
+      ASSERT_EQ(fly_trajectory(mission, r.workspace.prepared, changed, &perturbed), Status::kOk);
+      excess[side] = qbar_alpha_excess_s(mission, perturbed);
+    }
+    const double fd = (excess[0] - excess[1]) / (2.0 * d_theta);
+    std::printf("break %2d at %7.2f s: dJ/dtheta adjoint % .6e  fd % .6e\n", b, p.break_time_s[b], gradient[b],
+                fd);
+    if (std::fabs(fd) < 1e-6 * j0 / d_theta && std::fabs(gradient[b]) < 1e-6 * j0 / d_theta) continue;
+    ++checked;
+    EXPECT_LE(std::fabs(gradient[b] - fd), 0.01 * std::fabs(fd)) << "break " << b;
+  }
+  // The excess lies in stage 1: the breaks that bound its segments move it.
+  EXPECT_GE(checked, 2);
+
+  // The payload column (dJ/dW, per lb), which the fit uses when the payload is free.
+  const double d_payload_lb = 0.5;
+  double excess[2] = {};
+  for (int side = 0; side < 2; ++side) {
+    Mission heavier = mission;
+    heavier.vehicle.payload_lb += (side == 0 ? 1.0 : -1.0) * d_payload_lb;
+    static PreparedCase prepared;
+    ASSERT_EQ(prepare_case(heavier, &prepared), Status::kOk);
+    ASSERT_EQ(fly_trajectory(heavier, prepared, program, &perturbed), Status::kOk);
+    excess[side] = qbar_alpha_excess_s(heavier, perturbed);
+  }
+  const double fd = (excess[0] - excess[1]) / (2.0 * d_payload_lb);
+  std::printf("payload: dJ/dW adjoint % .6e  fd % .6e\n", backward.payload(0), fd);
+  EXPECT_GT(std::fabs(fd), 0.0);
+  EXPECT_LE(std::fabs(backward.payload(0) - fd), 0.01 * std::fabs(fd));
+}
+
+// Without a limit the linearization's constraint list has no code 200 (and the reference's
+// results are bit for bit those before the limit existed: its pinned figures elsewhere).
+TEST(Sec6QAlphaLinearization, WithoutALimitTheLinearizationHasNoQAlphaRow) {
+  static Mission mission;
+  static OptimizerWorkspace optimized;
+  static OptimizerResult optimum;
+  static LinearizationWorkspace workspace;
+  static LinearizationResult result;
+  test::build_reference_mission(test::ReferenceProgram::kInitialNominal, &mission);
+  ASSERT_FALSE(mission.options.qbar_alpha_constraint());
+  ASSERT_EQ(optimize_trajectory(mission, &optimized, &optimum), Status::kOk);
+  ASSERT_EQ(linearize_pitch_program(optimized, &workspace, &result), Status::kOk);
+  for (int j = 0; j < result.constraint_count; ++j) EXPECT_NE(result.codes[j], kQbarAlphaConstraintCode);
+}
+
+}  // namespace
+}  // namespace tolip
