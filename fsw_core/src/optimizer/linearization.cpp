@@ -353,16 +353,16 @@ void add_peak_rows(const PeakRows& q, int used, double limit, const BackwardRun&
   for (int i = 0; i < used; ++i) {
     const int row = first_row + i;
     const int col = first_column + i;
+    double gradient[kMaxBreakPoints] = {};
+    qbar_alpha_peak_gradients(backward, nominal, p, col, q.point[i], q.direct[i], gradient);
+    for (int b = 0; b < breaks; ++b) (*kkt)(row, b) = gradient[b] / scale;
+    // The same linearized change about the nominal's own program (at the first run the optimum,
+    // which is no combination of the hat functions).
     for (int k = 0; k < nominal.point_count; ++k) {
       double f = 0.0;
-      const int s = segment_of(p, nominal.points[k].time_s, &f);
-      if (s < 0 || !(backward.quadrature_weight_s[k] > 0.0)) continue;
-      double g = backward.theta_gradient[k](col);
-      if (k == q.point[i]) g += q.direct[i];
-      g /= scale;
-      (*kkt)(row, s) += g * (1.0 - f);
-      (*kkt)(row, s + 1) += g * f;
-      (*rhs)(row) += g * nominal_program.theta_rad[k];
+      if (segment_of(p, nominal.points[k].time_s, &f) < 0 || !(backward.quadrature_weight_s[k] > 0.0)) continue;
+      const double g = backward.theta_gradient[k](col) + (k == q.point[i] ? q.direct[i] : 0.0);
+      (*rhs)(row) += g / scale * nominal_program.theta_rad[k];
     }
     const double target = (q.value[i] < 0.0 ? -1.0 : 1.0) * kPeakTargetFraction * limit;
     (*rhs)(row) += (target - q.value[i]) / scale;
@@ -597,6 +597,16 @@ void break_value_gradients(const BackwardRun& backward, const Trajectory& nomina
     out[s] += backward.theta_gradient[k](j) * (1.0 - f);
     out[s + 1] += backward.theta_gradient[k](j) * f;
   }
+}
+
+void qbar_alpha_peak_gradients(const BackwardRun& backward, const Trajectory& nominal, const LinearProgram& p,
+                               int column, int point, double direct, double out[kMaxBreakPoints]) {
+  break_value_gradients(backward, nominal, p, column, out);
+  double f = 0.0;
+  const int s = (point >= 0 && point < nominal.point_count) ? segment_of(p, nominal.points[point].time_s, &f) : -1;
+  if (s < 0 || !(backward.quadrature_weight_s[point] > 0.0)) return;
+  out[s] += direct * (1.0 - f);
+  out[s + 1] += direct * f;
 }
 
 // A break where the rate does not change joins two segments into one: it is neither a change of

@@ -118,6 +118,13 @@ bool rate_continues_previous(const LinearProgram& program, int segment);
 void break_value_gradients(const BackwardRun& backward, const Trajectory& nominal, const LinearProgram& program,
                            int constraint, double out[kMaxBreakPoints]);
 
+// d s_k / d theta_b for q-bar alpha s_k at `point`: break_value_gradients of the backward run's
+// column `column` (started at the point from qbar_alpha_point_partials) plus the point's own
+// attitude term `direct` (d s_k / d theta_k) on its hat weights: the peak row of eq. 6-22.
+void qbar_alpha_peak_gradients(const BackwardRun& backward, const Trajectory& nominal,
+                               const LinearProgram& program, int column, int point, double direct,
+                               double out[kMaxBreakPoints]);
+
 // Sec. 10's closing checks of coast 7 on `program` (its stage_code per segment filled) with the
 // mission's data block 22 limits; sets result->coast7_below_min_rate(_change).
 void check_coast7_rates(const Mission& mission, const LinearProgram& program, LinearizationResult* result);
