@@ -37,6 +37,15 @@ const LinearizedQAlpha& linearized_qalpha() {
     test::build_reference_mission(test::ReferenceProgram::kInitialNominal, &r.mission);
     r.mission.options.qbar_alpha_limit_lbf_rad_ft2 = kLimitLbDegFt2 / kLbDegPerLbRad;
     r.mission.convergence.max_forward_trajectories = 40;
+    // Its data block 18: stage 1 cut in the load window (QALPHA_TLIN of the generator).
+    const double coded[] = {103.0, 106.0, 109.0, 112.0, 115.0, 122.0, 130.0, 138.0,
+                            145.0, 200.0, 219.0, 238.0, 300.0, 318.0, 336.0};
+    r.mission.linearization.segment_count = 14;
+    for (int b = 0; b <= 14; ++b) {
+      r.mission.linearization.boundaries[b].stage = static_cast<int>(coded[b] / 100.0);
+      r.mission.linearization.boundaries[b].time_from_ignition_s = coded[b] - 100.0 * (int)(coded[b] / 100.0);
+    }
+    for (int s = 0; s < 14; ++s) r.mission.linearization.segment_weights[s] = 1.0;
     r.optimizer_status = optimize_trajectory(r.mission, &r.optimized, &r.optimum);
     if (ok(r.optimizer_status)) r.status = linearize_pitch_program(r.optimized, &r.workspace, &r.result);
     return &r;
@@ -78,11 +87,12 @@ TEST(Sec6QAlphaLinearization, LinearizedProgramKeepsTheLimitWithinTheOptimizersC
   ASSERT_GE(row, 0) << "the q-bar x alpha excess (code 200) is a linearization constraint";
   double time_s = 0.0;
   const double peak = lift_phase_peak_lbf_rad_ft2(r.workspace.mission, r.workspace.nominal, &time_s);
-  std::printf("linearized: %s in %d forward runs (%d programs, %d repairs, 6D %d), payload %.4f lb "
-              "(optimum %.4f lb), peak %.1f lb deg/ft^2 at %.2f s, excess %.3e s\n",
-              status_name(r.status), result.forward_runs, result.programs_computed,
-              result.program.rate_repair_count, result.body_dynamics ? 1 : 0, result.payoff,
-              r.optimum.payload_lb, peak * kLbDegPerLbRad, time_s, result.achieved[row]);
+  std::printf(
+      "linearized: %s in %d forward runs (%d programs, %d repairs, 6D %d), payload %.4f lb "
+      "(optimum %.4f lb), peak %.1f lb deg/ft^2 at %.2f s, excess %.3e s\n",
+      status_name(r.status), result.forward_runs, result.programs_computed, result.program.rate_repair_count,
+      result.body_dynamics ? 1 : 0, result.payoff, r.optimum.payload_lb, peak * kLbDegPerLbRad, time_s,
+      result.achieved[row]);
   EXPECT_EQ(r.status, Status::kOk) << status_name(r.status);
   EXPECT_TRUE(result.constraints_met);
   EXPECT_TRUE(result.rate_limits_met);
@@ -162,7 +172,8 @@ TEST(Sec6QAlphaLinearization, Sec6_QAlphaPeakSensitivityMatchesFiniteDifference)
       value[side] = s_at_peak(perturbed);
     }
     const double fd = (value[0] - value[1]) / (2.0 * d_theta);
-    std::printf("break %2d at %7.2f s: ds/dtheta adjoint % .6e  fd % .6e\n", b, p.break_time_s[b], gradient[b], fd);
+    std::printf("break %2d at %7.2f s: ds/dtheta adjoint % .6e  fd % .6e\n", b, p.break_time_s[b],
+                gradient[b], fd);
     // Breaks after the peak's segment do not reach it: both zero.
     if (p.break_time_s[b] > nominal.points[peak.point].time_s &&
         (b == 0 || p.break_time_s[b - 1] >= nominal.points[peak.point].time_s)) {

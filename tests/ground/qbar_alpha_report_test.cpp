@@ -191,8 +191,8 @@ TEST(QAlphaReport, Sec22_ReferenceMissionWithA3500LimitConvergesAndReportsThePay
       peak_time = t;
     }
   }
-  std::printf("linearized trajectory's own points: peak %.1f lb deg/ft^2 at %.2f s, excess %.3e s\n", peak_lift,
-              peak_time, excess);
+  std::printf("linearized trajectory's own points: peak %.1f lb deg/ft^2 at %.2f s, excess %.3e s\n",
+              peak_lift, peak_time, excess);
   EXPECT_NEAR(peak_lift, lq["lift_peak_lb_deg_ft2"].get<double>(), 1e-6 * peak_lift);
   EXPECT_LE(peak_lift, 1.01 * kLimitLbDegFt2);
   EXPECT_LE(excess, 1e-4);
@@ -226,8 +226,9 @@ TEST(QAlphaReport, Sec22_WithEightyRunsAndA005LbStopTheLimitedCaseReaches277Poin
   const nlohmann::json& iterations = document["iterations"];
   ASSERT_GE(iterations.size(), 3u);
   const double last = iterations[iterations.size() - 1]["payload_lb"].get<double>();
-  std::printf("80 runs: %s, payload %.4f lb in %d forward runs\n", document["status"].get<std::string>().c_str(),
-              document["payload_lb"].get<double>(), document["forward_runs"].get<int>());
+  std::printf("80 runs: %s, payload %.4f lb in %d forward runs\n",
+              document["status"].get<std::string>().c_str(), document["payload_lb"].get<double>(),
+              document["forward_runs"].get<int>());
   EXPECT_EQ(document["status"], "kOptimizationBudgetExhausted");
   EXPECT_EQ(document["forward_runs"].get<int>(), 80);
   EXPECT_NEAR(document["payload_lb"].get<double>(), 277.61, 0.005);

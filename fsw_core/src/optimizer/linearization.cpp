@@ -360,7 +360,8 @@ void add_peak_rows(const PeakRows& q, int used, double limit, const BackwardRun&
     // which is no combination of the hat functions).
     for (int k = 0; k < nominal.point_count; ++k) {
       double f = 0.0;
-      if (segment_of(p, nominal.points[k].time_s, &f) < 0 || !(backward.quadrature_weight_s[k] > 0.0)) continue;
+      if (segment_of(p, nominal.points[k].time_s, &f) < 0 || !(backward.quadrature_weight_s[k] > 0.0))
+        continue;
       const double g = backward.theta_gradient[k](col) + (k == q.point[i] ? q.direct[i] : 0.0);
       (*rhs)(row) += g / scale * nominal_program.theta_rad[k];
     }
@@ -603,7 +604,8 @@ void qbar_alpha_peak_gradients(const BackwardRun& backward, const Trajectory& no
                                int column, int point, double direct, double out[kMaxBreakPoints]) {
   break_value_gradients(backward, nominal, p, column, out);
   double f = 0.0;
-  const int s = (point >= 0 && point < nominal.point_count) ? segment_of(p, nominal.points[point].time_s, &f) : -1;
+  const int s =
+      (point >= 0 && point < nominal.point_count) ? segment_of(p, nominal.points[point].time_s, &f) : -1;
   if (s < 0 || !(backward.quadrature_weight_s[point] > 0.0)) return;
   out[s] += direct * (1.0 - f);
   out[s + 1] += direct * f;
@@ -731,11 +733,13 @@ Status next_program(const LinearConstraints& c, const LinearProgram& base, const
     t = ConstraintTerminal();
     t.point = peaks.point[i];
     StateVector ds_dx;
-    status = qbar_alpha_point_partials(ws->mission, ws->prepared, ws->nominal, t.point, &ds_dx, &peaks.direct[i]);
+    status =
+        qbar_alpha_point_partials(ws->mission, ws->prepared, ws->nominal, t.point, &ds_dx, &peaks.direct[i]);
     if (!ok(status)) return status;
     t.partials.head<6>() = ds_dx;
   }
-  status = run_backward(ws->mission, ws->prepared, ws->nominal, c.count + peaks.count, terminals, &ws->backward);
+  status =
+      run_backward(ws->mission, ws->prepared, ws->nominal, c.count + peaks.count, terminals, &ws->backward);
   if (!ok(status)) return status;
   ++out->backward_runs;
   const double limit = ws->mission.options.qbar_alpha_limit_lbf_rad_ft2;
@@ -754,8 +758,8 @@ Status next_program(const LinearConstraints& c, const LinearProgram& base, const
     // With more peaks than the segments can hold, the smallest ones are left to the next run.
     int peaks_used = peaks.count;
     const LinearProgram unsolved = *program;
-    status = solve_program(c, ws->backward, ws->nominal, ws->program, ws->optimum, achieved, peaks, peaks_used,
-                           limit, &ws->system, program, payload_change_lb);
+    status = solve_program(c, ws->backward, ws->nominal, ws->program, ws->optimum, achieved, peaks,
+                           peaks_used, limit, &ws->system, program, payload_change_lb);
     while (status == Status::kSteeringMatrixSingular && peaks_used > 0) {
       --peaks_used;
       *program = unsolved;

@@ -115,8 +115,8 @@ bool rate_continues_previous(const LinearProgram& program, int segment);
 // gradients summed with the fit's hat functions over the points the fit weighs: the constraint
 // rows of eq. 6-22 before their deadband scaling). For the q-bar x alpha excess (code 200) this is
 // its sensitivity to the segments (docs/theory/linearization.md).
-void break_value_gradients(const BackwardRun& backward, const Trajectory& nominal, const LinearProgram& program,
-                           int constraint, double out[kMaxBreakPoints]);
+void break_value_gradients(const BackwardRun& backward, const Trajectory& nominal,
+                           const LinearProgram& program, int constraint, double out[kMaxBreakPoints]);
 
 // d s_k / d theta_b for q-bar alpha s_k at `point`: break_value_gradients of the backward run's
 // column `column` (started at the point from qbar_alpha_point_partials) plus the point's own

@@ -54,7 +54,8 @@ QbarAlphaPeak peak_qbar_alpha(const Mission& mission, const Trajectory& trajecto
 // at zero; kNonFiniteState if they are not finite. The linearization's peak rows
 // (docs/theory/linearization.md) start their adjoints from them.
 Status qbar_alpha_point_partials(const Mission& mission, const PreparedCase& prepared,
-                                 const Trajectory& trajectory, int point, StateVector* ds_dx, double* ds_dtheta);
+                                 const Trajectory& trajectory, int point, StateVector* ds_dx,
+                                 double* ds_dtheta);
 
 // The forcing of J's adjoint at point k: dJ/dx_k ([V, gamma, r, psi, lambda, tau]) and dJ/dtheta_k
 // (the point's own pitch attitude), both zero where the point is under the limit. q-bar alpha's
