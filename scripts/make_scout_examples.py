@@ -192,6 +192,15 @@ QALPHA_LIMIT_LB_DEG_FT2 = 3500.0
 # runs after the limit joins; docs/theory/constraints-and-ics.md).
 QALPHA_BUDGET = (40, "the reference's 30 ends the q-alpha case one run short")
 
+# Its data block 18: the reference's breaks with stage 1 cut into 3 s segments up to the zero-alpha
+# window's start and 7-8 s ones over it. With the reference's two stage-1 segments the straight
+# program cannot keep the limit (its peak 5,877 lb deg/ft^2 at 15 s; one free break value over the
+# load window); docs/theory/linearization.md "The q-bar x alpha limit".
+QALPHA_TLIN = [14, 103.0, 106.0, 109.0, 112.0, 115.0, 122.0, 130.0, 138.0, 145.0, 200.0, 219.0, 238.0,
+               300.0, 318.0, 336.0]
+QALPHA_TLIN_NOTE = ("14 linear segments: the reference's, with stage 1 cut at 6, 9, 12, 15, 22, 30 and 38 s "
+                    "so that the straight segments can keep the q-bar x alpha limit (docs/theory/linearization.md)")
+
 # Adjustable-parameter codes of block 6 -> keys of the reference's weighting_block27.
 WEIGHT_KEYS = {1: "stage4_theta", 3: "coast_after_stage3"}
 
@@ -348,7 +357,7 @@ def vehicle_sections(deck, ref, variant):
             deck.array("cd", drags[key]["cd"])
 
 
-def mission_sections(deck, ref, variant, budget=None):
+def mission_sections(deck, ref, variant, budget=None, segments=None):
     mission = ref["mission"]
     oracle = ref["oracle_solution"]
     launch = mission["launch"]
@@ -430,7 +439,11 @@ def mission_sections(deck, ref, variant, budget=None):
     pitch = mission["pitch_program_definition"]
     tlin = pitch["tlin_block18"]
     deck.table("linearization", "data blocks 18 (TLIN) and 26 (ETALIN: default 1.0 per segment)")
-    deck.comment(pitch["tlin_note"])
+    if segments is not None:  # (TLIN, note) of a variant
+        tlin, note = segments
+        deck.comment(note)
+    else:
+        deck.comment(pitch["tlin_note"])
     deck.number("segment_count", tlin[0], "TLIN(1)")
     deck.array("coded_times", tlin[1:], "TLIN(2..): 100 x stage + s from stage ignition")
 
@@ -691,7 +704,8 @@ def build(ref, variant):
     flown = "initial" if variant == "qalpha" else variant  # the q-alpha deck flies the initial case
     constants_sections(deck, ref)
     vehicle_sections(deck, ref, flown)
-    mission_sections(deck, ref, flown, QALPHA_BUDGET if variant == "qalpha" else None)
+    mission_sections(deck, ref, flown, QALPHA_BUDGET if variant == "qalpha" else None,
+                     (QALPHA_TLIN, QALPHA_TLIN_NOTE) if variant == "qalpha" else None)
     deck.blank()
     deck.comment("=" * 94)
     deck.comment("Optional computations (IP(6), IP(21)-IP(24)): data blocks 33-37 and 41-55.")

@@ -152,9 +152,88 @@ TEST(QAlphaReport, Sec22_ReferenceMissionWithA3500LimitConvergesAndReportsThePay
               document["linearized"]["payoff"].get<double>(), lq["lift_peak_lb_deg_ft2"].get<double>(),
               lq["lift_peak_time_s"].get<double>(), lq["met"].get<bool>() ? 1 : 0);
   EXPECT_EQ(lq["limit_lb_deg_ft2"].get<double>(), kLimitLbDegFt2);
-  // Not kept yet (docs/theory/constraints-and-ics.md): the linearization flies without the
-  // zero-alpha window and does not constrain q-bar x alpha; the report says so.
-  EXPECT_EQ(lq["met"].get<bool>(), lq["excess_integral_s"].get<double>() <= 1e-4);
+  // Kept by the linearization (docs/theory/linearization.md "The q-bar x alpha limit"): the run
+  // succeeds with code 200 met, by the optimizer's criterion.
+  EXPECT_EQ(document["linearized"]["status"], "kOk");
+  EXPECT_TRUE(lq["met"].get<bool>());
+  EXPECT_LE(lq["excess_integral_s"].get<double>(), 1e-4);
+  bool linearized_listed = false;
+  for (const nlohmann::json& c : document["linearized"]["constraints"]) {
+    EXPECT_TRUE(c["met"].get<bool>()) << c["code"];
+    if (c["code"].get<int>() == 200) linearized_listed = true;
+  }
+  EXPECT_TRUE(linearized_listed) << "code 200 is a linearization constraint";
+  // Recomputed here from the linearized trajectory's own points: q-bar x alpha from the q-bar and
+  // alpha columns, its peak over the lift phases and the excess integral (trapezoids).
+  const nlohmann::json& points = document["linearized"]["trajectory"];
+  ASSERT_TRUE(points.is_array());
+  ASSERT_GT(points.size(), 100u);
+  double peak_lift = 0.0;
+  double peak_time = 0.0;
+  double excess = 0.0;
+  double previous_g = 0.0;
+  double previous_t = 0.0;
+  bool previous_lift = false;
+  for (const nlohmann::json& p : points) {
+    const int stage = p["stage"].get<int>();
+    const double q = p["dynamic_pressure_lbf_ft2"].get<double>();
+    const double t = p["time_s"].get<double>();
+    const bool lift = (stage == 1 || stage == 6) && q > 0.0;
+    const double value = std::fabs(q * p["alpha_deg"].get<double>());
+    const double e = value / kLimitLbDegFt2 - 1.0;
+    const double g = (lift && e > 0.0) ? e * e : 0.0;
+    if (previous_lift || lift) excess += 0.5 * (g + previous_g) * (t - previous_t);
+    previous_g = g;
+    previous_t = t;
+    previous_lift = lift;
+    if (lift && value > peak_lift) {
+      peak_lift = value;
+      peak_time = t;
+    }
+  }
+  std::printf("linearized trajectory's own points: peak %.1f lb deg/ft^2 at %.2f s, excess %.3e s\n",
+              peak_lift, peak_time, excess);
+  EXPECT_NEAR(peak_lift, lq["lift_peak_lb_deg_ft2"].get<double>(), 1e-6 * peak_lift);
+  EXPECT_LE(peak_lift, 1.01 * kLimitLbDegFt2);
+  EXPECT_LE(excess, 1e-4);
+  // The payload the linearized program carries (docs/theory/linearization.md): 264.81 lb, against
+  // 266.27 lb for the limited optimum.
+  EXPECT_NEAR(document["linearized"]["payoff"].get<double>(), 264.81, 0.05);
+}
+
+// docs/theory/constraints-and-ics.md: with DA13(2) = 0.05 lb and 80 forward runs the same case is
+// still improving when the budget ends, at 277.61 lb (the deck's 266.27 lb is what its
+// convergence data reach, not the constrained optimum).
+TEST(QAlphaReport, Sec22_WithEightyRunsAndA005LbStopTheLimitedCaseReaches277Point61Lb) {
+  std::string text = read_text_file(scout_example("mission_qalpha.toml"));
+  const auto replace = [&](const std::string& from, const std::string& to) {
+    const std::size_t at = text.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    text.replace(at, from.size(), to);
+  };
+  replace("stop_improvement = 0.5 ", "stop_improvement = 0.05");
+  replace("max_forward_trajectories = 40 ", "max_forward_trajectories = 80 ");
+  const std::string path = testing::TempDir() + "qalpha_80_runs.toml";
+  {
+    std::FILE* f = std::fopen(path.c_str(), "wb");
+    ASSERT_NE(f, nullptr);
+    std::fwrite(text.data(), 1, text.size(), f);
+    std::fclose(f);
+  }
+  const CommandResult run = run_tolip_executable({"optimize", path, "--json"});
+  std::remove(path.c_str());
+  const nlohmann::json document = nlohmann::json::parse(run.out);
+  const nlohmann::json& iterations = document["iterations"];
+  ASSERT_GE(iterations.size(), 3u);
+  const double last = iterations[iterations.size() - 1]["payload_lb"].get<double>();
+  std::printf("80 runs: %s, payload %.4f lb in %d forward runs\n",
+              document["status"].get<std::string>().c_str(), document["payload_lb"].get<double>(),
+              document["forward_runs"].get<int>());
+  EXPECT_EQ(document["status"], "kOptimizationBudgetExhausted");
+  EXPECT_EQ(document["forward_runs"].get<int>(), 80);
+  EXPECT_NEAR(document["payload_lb"].get<double>(), 277.61, 0.005);
+  EXPECT_NEAR(last, 277.61, 0.005);
+  EXPECT_TRUE(document["qbar_alpha"]["met"].get<bool>());
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 
 #include "tolip/optimizer/constraint_parameters.hpp"
 #include "tolip/optimizer/constraint_set.hpp"
+#include "tolip/optimizer/qbar_alpha.hpp"
 
 namespace tolip {
 namespace {
@@ -42,6 +43,9 @@ struct LinearConstraints : ConstraintSet {
   // Payload payoff: the payload is the payoff, which linearization does not impose, so it is free
   // to absorb what the straight segments lose (docs/theory/linearization.md).
   bool payload_free = false;
+  // The entry of the q-bar x alpha excess (code 200) when the mission has a limit, else -1: the
+  // linearization keeps the limit the optimizer kept (docs/theory/linearization.md).
+  int qbar_alpha = -1;
 };
 
 Status select_constraints(const Mission& mission, LinearConstraints* out) {
@@ -60,6 +64,17 @@ Status select_constraints(const Mission& mission, LinearConstraints* out) {
     }
     status =
         append_constraint(code, list.desired[i], list.deadband_linearization[i - 1], mission.options, out);
+    if (!ok(status)) return status;
+  }
+  out->qbar_alpha = -1;
+  if (mission.options.qbar_alpha_constraint()) {
+    // Listed from the start (not when first exceeded, as in the optimizer): the linearization
+    // starts from an optimum that already rides the limit, and its segments move the load.
+    ConstraintCode code;
+    Status status = decode_constraint_code(kQbarAlphaConstraintCode, &code);
+    if (!ok(status)) return status;
+    out->qbar_alpha = out->count;
+    status = append_constraint(code, 0.0, kQbarAlphaExcessDeadbandS, mission.options, out);
     if (!ok(status)) return status;
   }
   return Status::kOk;
@@ -219,9 +234,21 @@ void assemble_fit(const LinearConstraints& c, const BackwardRun& backward, const
 }
 
 // The constraint rows' corrections and payload column, mirrored into the multiplier columns.
+//
+// The q-bar x alpha excess J (code 200) is listed to be evaluated and reported, not fitted: its
+// row is held out of the fit (multiplier zero) and the peak rows below keep the limit instead
+// (docs/theory/linearization.md: J vanishes like the square of the excess, so a linear step on it
+// is poor, and it has no gradient at all once the program is under the limit).
 void add_constraint_rows(const LinearConstraints& c, const BackwardRun& backward, const double achieved[],
                          int breaks, int n, KktMatrix* kkt, KktVector* rhs) {
   for (int j = 0; j < c.count; ++j) {
+    if (j == c.qbar_alpha) {
+      for (int col = 0; col < kKktSize; ++col) (*kkt)(n + j, col) = 0.0;
+      (*kkt)(n + j, n + j) = 1.0;
+      (*rhs)(n + j) = 0.0;
+      for (int b = 0; b < n; ++b) (*kkt)(b, n + j) = 0.0;
+      continue;
+    }
     (*rhs)(n + j) += constraint_correction(c, j, achieved[j]) / c.deadband[j];
     if (c.payload_free) (*kkt)(n + j, breaks) = backward.payload(j) / c.deadband[j];
     for (int b = 0; b < n; ++b) (*kkt)(b, n + j) = (*kkt)(n + j, b);
@@ -264,10 +291,91 @@ bool equalities_met(const KktMatrix& kkt, const KktVector& rhs, const KktVector&
   return true;
 }
 
+// ---- the q-bar x alpha limit in the fit: peak rows (docs/theory/linearization.md) -------------
+
+// A local peak of |q-bar alpha| on the nominal above this fraction of the limit gets a row; the row
+// asks for the peak at kPeakTargetFraction of the limit (the half per cent absorbs the linearization
+// error of the next run, inside the optimizer's criterion J <= 1e-4 s). The rows are scaled by 1 %
+// of the limit, the order of the terminal rows scaled by their deadbands.
+constexpr double kPeakJoinFraction = 0.95;
+constexpr double kPeakTargetFraction = 0.995;
+constexpr double kPeakRowScaleFraction = 0.01;
+
+struct PeakRows {
+  int count = 0;
+  int point[kMaxQbarAlphaPeakRows] = {};
+  double value[kMaxQbarAlphaPeakRows] = {};   // signed q-bar alpha on the nominal, lbf rad/ft^2
+  double direct[kMaxQbarAlphaPeakRows] = {};  // d(q-bar alpha)/d(theta at the point itself)
+};
+
+// |q-bar alpha| at point k where the limit covers it and alpha is a control there, else -1.
+double limited_magnitude(const Mission& mission, const Trajectory& t, int k) {
+  if (k < 0 || k >= t.point_count) return -1.0;
+  const TrajectoryPoint& p = t.points[k];
+  if (!qbar_alpha_limited(mission, p) || p.alpha_zero || !(trapezoidal_weight_s(t, k) > 0.0)) return -1.0;
+  return std::fabs(qbar_alpha_lbf_rad_ft2(p));
+}
+
+// The local peaks of |q-bar alpha| over the limited points of the nominal above kPeakJoinFraction
+// of the limit, the largest first, at most `room`.
+void select_peaks(const Mission& mission, const Trajectory& t, int room, PeakRows* rows) {
+  rows->count = 0;
+  const double limit = mission.options.qbar_alpha_limit_lbf_rad_ft2;
+  if (!(limit > 0.0)) return;
+  if (room > kMaxQbarAlphaPeakRows) room = kMaxQbarAlphaPeakRows;
+  for (int k = 0; k < t.point_count; ++k) {
+    const double v = limited_magnitude(mission, t, k);
+    if (v < kPeakJoinFraction * limit) continue;
+    // A plateau counts once: strictly above the point before, not below the point after.
+    if (!(v > limited_magnitude(mission, t, k - 1)) || v < limited_magnitude(mission, t, k + 1)) continue;
+    int at = rows->count;
+    while (at > 0 && std::fabs(rows->value[at - 1]) < v) --at;
+    if (at >= room) continue;
+    const int last = rows->count < room ? rows->count : room - 1;
+    for (int i = last; i > at; --i) {
+      rows->point[i] = rows->point[i - 1];
+      rows->value[i] = rows->value[i - 1];
+    }
+    rows->point[at] = k;
+    rows->value[at] = qbar_alpha_lbf_rad_ft2(t.points[k]);
+    if (rows->count < room) ++rows->count;
+  }
+}
+
+// The peak rows of eq. 6-22, after the rate repairs: the linearized change of q-bar alpha at each
+// peak (its adjoint, column first_column + i of the backward run, plus the point's own attitude)
+// brings it to the target.
+void add_peak_rows(const PeakRows& q, int used, double limit, const BackwardRun& backward,
+                   const Trajectory& nominal, const ControlProgram& nominal_program, const LinearProgram& p,
+                   bool payload_free, int breaks, int n, int first_row, int first_column, KktMatrix* kkt,
+                   KktVector* rhs) {
+  const double scale = kPeakRowScaleFraction * limit;
+  for (int i = 0; i < used; ++i) {
+    const int row = first_row + i;
+    const int col = first_column + i;
+    double gradient[kMaxBreakPoints] = {};
+    qbar_alpha_peak_gradients(backward, nominal, p, col, q.point[i], q.direct[i], gradient);
+    for (int b = 0; b < breaks; ++b) (*kkt)(row, b) = gradient[b] / scale;
+    // The same linearized change about the nominal's own program (at the first run the optimum,
+    // which is no combination of the hat functions).
+    for (int k = 0; k < nominal.point_count; ++k) {
+      double f = 0.0;
+      if (segment_of(p, nominal.points[k].time_s, &f) < 0 || !(backward.quadrature_weight_s[k] > 0.0))
+        continue;
+      const double g = backward.theta_gradient[k](col) + (k == q.point[i] ? q.direct[i] : 0.0);
+      (*rhs)(row) += g / scale * nominal_program.theta_rad[k];
+    }
+    const double target = (q.value[i] < 0.0 ? -1.0 : 1.0) * kPeakTargetFraction * limit;
+    (*rhs)(row) += (target - q.value[i]) / scale;
+    if (payload_free) (*kkt)(row, breaks) = backward.payload(col) / scale;
+    for (int b = 0; b < n; ++b) (*kkt)(b, row) = (*kkt)(row, b);
+  }
+}
+
 Status solve_program(const LinearConstraints& c, const BackwardRun& backward, const Trajectory& nominal,
                      const ControlProgram& nominal_program, const ControlProgram& optimum,
-                     const double achieved[], LinearizationSystem* system, LinearProgram* p,
-                     double* payload_change_lb) {
+                     const double achieved[], const PeakRows& peaks, int peaks_used, double limit,
+                     LinearizationSystem* system, LinearProgram* p, double* payload_change_lb) {
   // Unknowns: the break values, then the payload change when it is free.
   const int breaks = p->segment_count + 1;
   const int n = breaks + (c.payload_free ? 1 : 0);
@@ -278,6 +386,8 @@ Status solve_program(const LinearConstraints& c, const BackwardRun& backward, co
   assemble_fit(c, backward, nominal, nominal_program, optimum, *p, n, &kkt, &rhs);
   add_constraint_rows(c, backward, achieved, breaks, n, &kkt, &rhs);
   add_rate_repair_rows(*p, n, n + c.count, &kkt, &rhs);
+  add_peak_rows(peaks, peaks_used, limit, backward, nominal, nominal_program, *p, c.payload_free, breaks, n,
+                n + c.count + p->rate_repair_count, c.count, &kkt, &rhs);
   // Fixed break values (eq. 6-16): their rows become theta_b = value.
   for (int b = 0; b < breaks; ++b) {
     if (!p->fixed[b]) continue;
@@ -285,7 +395,7 @@ Status solve_program(const LinearConstraints& c, const BackwardRun& backward, co
     kkt(b, b) = 1.0;
     rhs(b) = p->theta_rad[b];
   }
-  const int rows = n + c.count + p->rate_repair_count;
+  const int rows = n + c.count + p->rate_repair_count + peaks_used;
   for (int i = rows; i < kKktSize; ++i) kkt(i, i) = 1.0;
   system->eliminated = kkt;
   KktVector eliminated_rhs = rhs;
@@ -475,6 +585,30 @@ Status fly_linearized(const LinearizationWorkspace& ws, bool body_dynamics, Traj
 
 }  // namespace
 
+void break_value_gradients(const BackwardRun& backward, const Trajectory& nominal, const LinearProgram& p,
+                           int j, double out[kMaxBreakPoints]) {
+  for (int b = 0; b < kMaxBreakPoints; ++b) out[b] = 0.0;
+  for (int k = 0; k < nominal.point_count; ++k) {
+    double f = 0.0;
+    const int s = segment_of(p, nominal.points[k].time_s, &f);
+    // The points assemble_fit weighs (the same rule: inside the program, positive weight).
+    if (s < 0 || !(backward.quadrature_weight_s[k] > 0.0)) continue;
+    out[s] += backward.theta_gradient[k](j) * (1.0 - f);
+    out[s + 1] += backward.theta_gradient[k](j) * f;
+  }
+}
+
+void qbar_alpha_peak_gradients(const BackwardRun& backward, const Trajectory& nominal, const LinearProgram& p,
+                               int column, int point, double direct, double out[kMaxBreakPoints]) {
+  break_value_gradients(backward, nominal, p, column, out);
+  double f = 0.0;
+  const int s =
+      (point >= 0 && point < nominal.point_count) ? segment_of(p, nominal.points[point].time_s, &f) : -1;
+  if (s < 0 || !(backward.quadrature_weight_s[point] > 0.0)) return;
+  out[s] += direct * (1.0 - f);
+  out[s + 1] += direct * f;
+}
+
 // A break where the rate does not change joins two segments into one: it is neither a change of
 // rate nor a second positive rate.
 bool rate_continues_previous(const LinearProgram& p, int s) {
@@ -588,9 +722,25 @@ Status next_program(const LinearConstraints& c, const LinearProgram& base, const
   ConstraintTerminal terminals[kMaxConstraints];
   Status status = constraint_terminals(c, ws->mission, ws->nominal, terminals);
   if (!ok(status)) return status;
-  status = run_backward(ws->mission, ws->prepared, ws->nominal, c.count, terminals, &ws->backward);
+  // The q-bar x alpha peaks get adjoint columns after the constraints': each starts at its point
+  // from the partials of q-bar alpha there.
+  PeakRows peaks;
+  select_peaks(ws->mission, ws->nominal, kMaxConstraints - c.count, &peaks);
+  for (int i = 0; i < peaks.count; ++i) {
+    ConstraintTerminal& t = terminals[c.count + i];
+    t = ConstraintTerminal();
+    t.point = peaks.point[i];
+    StateVector ds_dx;
+    status =
+        qbar_alpha_point_partials(ws->mission, ws->prepared, ws->nominal, t.point, &ds_dx, &peaks.direct[i]);
+    if (!ok(status)) return status;
+    t.partials.head<6>() = ds_dx;
+  }
+  status =
+      run_backward(ws->mission, ws->prepared, ws->nominal, c.count + peaks.count, terminals, &ws->backward);
   if (!ok(status)) return status;
   ++out->backward_runs;
+  const double limit = ws->mission.options.qbar_alpha_limit_lbf_rad_ft2;
 
   const LinearProgram previous = *program;
   *payload_change_lb = 0.0;
@@ -603,8 +753,17 @@ Status next_program(const LinearConstraints& c, const LinearProgram& base, const
   }
   for (int sg = 0; sg < program->segment_count; ++sg) program->eta[sg] = previous.eta[sg];
   for (int attempt = 0; attempt < kMaxProgramsPerBackwardRun; ++attempt) {
-    status = solve_program(c, ws->backward, ws->nominal, ws->program, ws->optimum, achieved, &ws->system,
-                           program, payload_change_lb);
+    // With more peaks than the segments can hold, the smallest ones are left to the next run.
+    int peaks_used = peaks.count;
+    const LinearProgram unsolved = *program;
+    status = solve_program(c, ws->backward, ws->nominal, ws->program, ws->optimum, achieved, peaks,
+                           peaks_used, limit, &ws->system, program, payload_change_lb);
+    while (status == Status::kSteeringMatrixSingular && peaks_used > 0) {
+      --peaks_used;
+      *program = unsolved;
+      status = solve_program(c, ws->backward, ws->nominal, ws->program, ws->optimum, achieved, peaks,
+                             peaks_used, limit, &ws->system, program, payload_change_lb);
+    }
     if (!ok(status)) return status;
     ++out->programs_computed;
     if (!repair_rate_limits(ws->mission, c, coast_rate_after_program(ws->mission, ws->prepared, *program),

@@ -88,6 +88,31 @@ QbarAlphaPeak peak_qbar_alpha(const Mission& mission, const Trajectory& trajecto
   return peak;
 }
 
+Status qbar_alpha_point_partials(const Mission& mission, const PreparedCase& prepared,
+                                 const Trajectory& trajectory, int k, StateVector* ds_dx, double* ds_dtheta) {
+  ds_dx->setZero();
+  *ds_dtheta = 0.0;
+  if (k < 0 || k >= trajectory.point_count) return Status::kOk;
+  const TrajectoryPoint& p = trajectory.points[k];
+  const int slot = stage_slot_of(trajectory, k);
+  if (!qbar_alpha_limited(mission, p) || p.alpha_zero || slot < 0) return Status::kOk;
+  const StageContext stage = make_stage_context(mission, prepared, prepared.timeline[slot]);
+  for (int i = 0; i < 6; ++i) {
+    StateVector plus = p.state;
+    StateVector minus = p.state;
+    plus[i] += kStateStep[i];
+    minus[i] -= kStateStep[i];
+    (*ds_dx)[i] = (model_qbar_alpha(mission, prepared, stage, p, plus, p.theta_rad) -
+                   model_qbar_alpha(mission, prepared, stage, p, minus, p.theta_rad)) /
+                  (2.0 * kStateStep[i]);
+  }
+  *ds_dtheta = (model_qbar_alpha(mission, prepared, stage, p, p.state, p.theta_rad + kThetaStepRad) -
+                model_qbar_alpha(mission, prepared, stage, p, p.state, p.theta_rad - kThetaStepRad)) /
+               (2.0 * kThetaStepRad);
+  if (!ds_dx->allFinite() || !std::isfinite(*ds_dtheta)) return Status::kNonFiniteState;
+  return Status::kOk;
+}
+
 Status qbar_alpha_excess_gradient(const Mission& mission, const PreparedCase& prepared,
                                   const Trajectory& trajectory, int k, StateVector* d_state,
                                   double* d_theta) {
@@ -104,22 +129,10 @@ Status qbar_alpha_excess_gradient(const Mission& mission, const PreparedCase& pr
   if (!(e > 0.0) || !(w > 0.0) || slot < 0) return Status::kOk;
   // dJ/ds = w 2 e sign(s) / L, times ds/dx and ds/dtheta.
   const double dj_ds = w * 2.0 * e * ((s < 0.0) ? -1.0 : 1.0) / limit;
-  const StageContext stage = make_stage_context(mission, prepared, prepared.timeline[slot]);
   StateVector ds_dx;
-  for (int i = 0; i < 6; ++i) {
-    StateVector plus = p.state;
-    StateVector minus = p.state;
-    plus[i] += kStateStep[i];
-    minus[i] -= kStateStep[i];
-    ds_dx[i] = (model_qbar_alpha(mission, prepared, stage, p, plus, p.theta_rad) -
-                model_qbar_alpha(mission, prepared, stage, p, minus, p.theta_rad)) /
-               (2.0 * kStateStep[i]);
-  }
-  const double ds_dtheta =
-      (model_qbar_alpha(mission, prepared, stage, p, p.state, p.theta_rad + kThetaStepRad) -
-       model_qbar_alpha(mission, prepared, stage, p, p.state, p.theta_rad - kThetaStepRad)) /
-      (2.0 * kThetaStepRad);
-  if (!ds_dx.allFinite() || !std::isfinite(ds_dtheta)) return Status::kNonFiniteState;
+  double ds_dtheta = 0.0;
+  const Status status = qbar_alpha_point_partials(mission, prepared, trajectory, k, &ds_dx, &ds_dtheta);
+  if (!ok(status)) return status;
   *d_state = dj_ds * ds_dx;
   *d_theta = dj_ds * ds_dtheta;
   return Status::kOk;

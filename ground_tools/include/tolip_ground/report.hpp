@@ -149,6 +149,10 @@ void write_trajectory_csv(std::ostream& out, const SimulationReport& report);
 // The JSON document of `tolip simulate --json` (schema in docs/cli.md).
 nlohmann::ordered_json trajectory_json(const SimulationReport& report);
 
+// The "trajectory" array of that document: every stored point of `trajectory`, one object each
+// (also the linearized trajectory's points in `optimize --json`).
+nlohmann::ordered_json trajectory_points_json(const Trajectory& trajectory);
+
 // Serializes a document for stdout: 2-space indent, invalid UTF-8 replaced, trailing newline.
 std::string dump_json(const nlohmann::ordered_json& document);
 

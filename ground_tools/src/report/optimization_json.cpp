@@ -198,6 +198,9 @@ json linearized_json(const OptimizationReport& report) {
       {"qbar_alpha", report.linearized_trajectory != nullptr && report.linearized_mission != nullptr
                          ? qbar_alpha_json(*report.linearized_mission, *report.linearized_trajectory)
                          : json(nullptr)},
+      {"trajectory", report.linearized_trajectory != nullptr
+                         ? trajectory_points_json(*report.linearized_trajectory)
+                         : json(nullptr)},
   };
 }
 

@@ -197,10 +197,14 @@ json trajectory_json(const SimulationReport& report) {
   if (report.hardover != nullptr) document["hardover"] = hardover_json(*report.hardover);
   if (report.radar != nullptr) document["radar"] = radar_json(*report.radar);
 
-  json points = json::array();
-  for (int i = 0; i < count; ++i) points.push_back(point_json(trajectory.points[i]));
-  document["trajectory"] = std::move(points);
+  document["trajectory"] = trajectory_points_json(trajectory);
   return document;
+}
+
+json trajectory_points_json(const Trajectory& trajectory) {
+  json points = json::array();
+  for (int i = 0; i < stored_point_count(trajectory); ++i) points.push_back(point_json(trajectory.points[i]));
+  return points;
 }
 
 std::string dump_json(const nlohmann::ordered_json& document) {

@@ -21,9 +21,12 @@ namespace tolip {
 inline constexpr int kMaxBreakPoints = kMaxLinearSegments + 1;
 // Rate repairs a program can carry: at most one per segment.
 inline constexpr int kMaxRateRepairs = kMaxLinearSegments;
+// Peaks of q-bar x alpha a fit can hold to the limit (docs/theory/linearization.md): one row each.
+inline constexpr int kMaxQbarAlphaPeakRows = 4;
 // Unknowns of the eq. 6-22 system: break values, the payload (payload payoff), constraint
-// multipliers, rate-repair multipliers.
-inline constexpr int kLinearizationKktSize = kMaxBreakPoints + 1 + kMaxConstraints + kMaxRateRepairs;
+// multipliers, rate-repair multipliers, q-bar x alpha peak multipliers.
+inline constexpr int kLinearizationKktSize =
+    kMaxBreakPoints + 1 + kMaxConstraints + kMaxRateRepairs + kMaxQbarAlphaPeakRows;
 
 struct LinearProgram {
   int segment_count = 0;
@@ -106,6 +109,21 @@ struct LinearizationWorkspace {
 // to its neighbour's): the break between them is no change of rate (Sec. 10: a merge "in effect,
 // eliminates a segment").
 bool rate_continues_previous(const LinearProgram& program, int segment);
+
+// dZ_j / d theta_b, b = 0..segment_count: the change of constraint j per unit change of break
+// value b of `program`, linearized about `nominal` by its backward run (the per-point pitch
+// gradients summed with the fit's hat functions over the points the fit weighs: the constraint
+// rows of eq. 6-22 before their deadband scaling). For the q-bar x alpha excess (code 200) this is
+// its sensitivity to the segments (docs/theory/linearization.md).
+void break_value_gradients(const BackwardRun& backward, const Trajectory& nominal,
+                           const LinearProgram& program, int constraint, double out[kMaxBreakPoints]);
+
+// d s_k / d theta_b for q-bar alpha s_k at `point`: break_value_gradients of the backward run's
+// column `column` (started at the point from qbar_alpha_point_partials) plus the point's own
+// attitude term `direct` (d s_k / d theta_k) on its hat weights: the peak row of eq. 6-22.
+void qbar_alpha_peak_gradients(const BackwardRun& backward, const Trajectory& nominal,
+                               const LinearProgram& program, int column, int point, double direct,
+                               double out[kMaxBreakPoints]);
 
 // Sec. 10's closing checks of coast 7 on `program` (its stage_code per segment filled) with the
 // mission's data block 22 limits; sets result->coast7_below_min_rate(_change).

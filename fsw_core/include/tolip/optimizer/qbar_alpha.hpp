@@ -48,6 +48,15 @@ struct QbarAlphaPeak {
 };
 QbarAlphaPeak peak_qbar_alpha(const Mission& mission, const Trajectory& trajectory, bool limited_only);
 
+// The partials of q-bar alpha itself at point k (lbf rad/ft^2 per state unit, per rad of the point's
+// pitch attitude): central differences of the model evaluation the forward run made there (same
+// atmosphere, frames and attitude); zero where the limit does not cover the point or alpha is held
+// at zero; kNonFiniteState if they are not finite. The linearization's peak rows
+// (docs/theory/linearization.md) start their adjoints from them.
+Status qbar_alpha_point_partials(const Mission& mission, const PreparedCase& prepared,
+                                 const Trajectory& trajectory, int point, StateVector* ds_dx,
+                                 double* ds_dtheta);
+
 // The forcing of J's adjoint at point k: dJ/dx_k ([V, gamma, r, psi, lambda, tau]) and dJ/dtheta_k
 // (the point's own pitch attitude), both zero where the point is under the limit. q-bar alpha's
 // partials are central differences of the model evaluation the forward run made there (same
