@@ -360,8 +360,9 @@ void add_peak_rows(const PeakRows& q, int used, double limit, const BackwardRun&
     // which is no combination of the hat functions).
     for (int k = 0; k < nominal.point_count; ++k) {
       double f = 0.0;
-      if (segment_of(p, nominal.points[k].time_s, &f) < 0 || !(backward.quadrature_weight_s[k] > 0.0))
+      if (segment_of(p, nominal.points[k].time_s, &f) < 0 || !(backward.quadrature_weight_s[k] > 0.0)) {
         continue;
+      }
       const double g = backward.theta_gradient[k](col) + (k == q.point[i] ? q.direct[i] : 0.0);
       (*rhs)(row) += g / scale * nominal_program.theta_rad[k];
     }
@@ -868,8 +869,9 @@ Status linearize_pitch_program(const OptimizerWorkspace& optimized, Linearizatio
     sample(program, ws->nominal, ws->optimum, &ws->program);
     ws->mission.vehicle.payload_lb += payload_change_lb;
     if (!(ws->mission.vehicle.payload_lb >= 0.0)) return out->status = Status::kLinearizedPayloadNegative;
-    if (observer != nullptr)
+    if (observer != nullptr) {
       observer->on_linearization_run(out->forward_runs + 1, program, out->body_dynamics);
+    }
     status = fly_linearized(*ws, out->body_dynamics, &ws->candidate);
     ++out->forward_runs;
     if (!ok(status)) return out->status = status;
