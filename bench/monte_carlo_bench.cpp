@@ -12,6 +12,7 @@
 #include "tolip/dispersion/monte_carlo.hpp"
 #include "tolip_ground/card_deck.hpp"
 #include "tolip_ground/dispersion_run.hpp"
+#include "tolip_ground/impact_run.hpp"
 #include "tolip_ground/monte_carlo_run.hpp"
 #include "tolip_ground/optimization_run.hpp"
 
@@ -24,6 +25,8 @@ struct Prepared {
   tolip::ground::OptimizationRun run;
   std::unique_ptr<tolip::DispersionData> data = std::make_unique<tolip::DispersionData>();
   tolip::DispersionNominal nominal;
+  std::unique_ptr<tolip::ImpactLocusData> impact = std::make_unique<tolip::ImpactLocusData>();
+  tolip::MonteCarloImpactRequest impacts;  // the casings of stages 1-3 (data block 43)
 };
 
 const Prepared& prepared() {
@@ -45,6 +48,15 @@ const Prepared& prepared() {
       std::fprintf(stderr, "the example did not prepare\n");
       std::exit(1);
     }
+    const bool stages[tolip::kImpactStages] = {true, true, true};
+    tolip::ground::ImpactMappingFault impact_fault;
+    if (!tolip::ground::fill_casing_impact_data(*c.mission, c.extras, stages, "the bench", made->impact.get(),
+                                                &impact_fault)) {
+      std::fprintf(stderr, "%s\n", impact_fault.message.c_str());
+      std::exit(1);
+    }
+    made->impacts.data = made->impact.get();
+    for (int k = 0; k < tolip::kImpactStages; ++k) made->impacts.stages[k] = true;
     return made;
   }();
   return *p;
@@ -90,6 +102,51 @@ BENCHMARK(BM_MonteCarloOneSample)->Unit(benchmark::kMicrosecond);
 //   valgrind --tool=callgrind --toggle-collect='tolip::fly_monte_carlo_sample*' \
 //     build/bench/monte_carlo_bench --benchmark_filter=BM_MonteCarloOneSample/iterations:20
 BENCHMARK(BM_MonteCarloOneSample)->Unit(benchmark::kMicrosecond)->Iterations(20);
+
+// The same sample with its expended casings of stages 1-3 flown to impact (--impacts, by default
+// under IP(23) = 1: fly_monte_carlo_casings after fly_monte_carlo_sample, as run_monte_carlo does):
+// the difference to BM_MonteCarloOneSample is the casings' cost (docs/performance.md).
+void BM_MonteCarloOneSampleWithImpacts(benchmark::State& state) {
+  const Prepared& p = prepared();
+  auto ws = std::make_unique<tolip::DispersionWorkspace>();
+  auto impact_ws = std::make_unique<tolip::ImpactWorkspace>();
+  if (!tolip::ok(tolip::prepare_monte_carlo(p.nominal, ws.get()))) std::exit(1);
+  tolip::DispersedTrajectory nominal_values;
+  tolip::record_dispersed_trajectory(*p.nominal.mission, ws->nominal_prepared, ws->nominal, ws->nominal,
+                                     nullptr, &nominal_values);
+  tolip::DispersedTrajectory out;
+  tolip::MonteCarloImpacts impacts;
+  std::uint64_t sample = 0;
+  long steps = 0;
+  for (auto _ : state) {
+    tolip::Status status = tolip::fly_monte_carlo_sample(p.nominal, *p.data, 1, sample++ % kSamples,
+                                                         nominal_values, ws.get(), &out);
+    if (tolip::ok(status)) {
+      status = tolip::fly_monte_carlo_casings(p.nominal, p.impacts, ws->mission, ws->prepared, ws->dispersed,
+                                              impact_ws.get(), &impacts);
+      for (int k = 0; k < impacts.count; ++k) steps += impacts.casings[k].steps;
+    }
+    benchmark::DoNotOptimize(status);
+  }
+  state.counters["samples_per_s"] = benchmark::Counter(1.0, benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["casing_steps"] = static_cast<double>(steps) / static_cast<double>(state.iterations());
+}
+BENCHMARK(BM_MonteCarloOneSampleWithImpacts)->Unit(benchmark::kMicrosecond);
+
+// 200 samples on 1 and 2 threads with the casings (run_monte_carlo with the impact request).
+void BM_MonteCarloSamplesWithImpacts(benchmark::State& state) {
+  const Prepared& p = prepared();
+  const int threads = static_cast<int>(state.range(0));
+  tolip::ground::MonteCarloSamples samples;
+  for (auto _ : state) {
+    const tolip::Status status =
+        tolip::ground::run_monte_carlo(p.nominal, *p.data, 1, kSamples, threads, &samples, {}, p.impacts);
+    benchmark::DoNotOptimize(status);
+  }
+  state.counters["samples_per_s"] =
+      benchmark::Counter(static_cast<double>(kSamples), benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(BM_MonteCarloSamplesWithImpacts)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // The parts of one sample: building its case (the copy of the mission and prepared case, the draws,
 // prepare_case when a weight or the azimuth changes), then the flight alone.

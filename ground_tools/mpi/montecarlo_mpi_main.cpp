@@ -27,10 +27,66 @@ int g_rank = 0;
 int g_ranks = 1;
 
 // One sample as doubles: status, values, dispersions (all columns), orbit elements and dispersions,
-// max q-bar alpha and its time.
-constexpr int kRecord = 1 + 2 * kMaxStagingPoints * kStagingVariables + 2 * kOrbitDispersionElements + 2;
+// max q-bar alpha and its time; then its casing impacts (--impacts): their status and count, and of
+// every casing each member of ImpactCase.
+constexpr int kCaseWords = 16;
+constexpr int kImpactWords = 2 + kImpactStages * kCaseWords;
+constexpr int kRecord =
+    1 + 2 * kMaxStagingPoints * kStagingVariables + 2 * kOrbitDispersionElements + 2 + kImpactWords;
 
-void pack(const DispersedTrajectory& t, double* out) {
+void pack_impacts(const MonteCarloImpacts& m, double* out) {
+  int k = 0;
+  out[k++] = static_cast<double>(static_cast<int>(m.status));
+  out[k++] = m.count;
+  for (const ImpactCase& c : m.casings) {
+    const double words[kCaseWords] = {
+        static_cast<double>(static_cast<int>(c.kind)),
+        static_cast<double>(c.stage),
+        static_cast<double>(c.nominal_point),
+        c.failure_time_s,
+        c.weight_lb,
+        static_cast<double>(static_cast<int>(c.status)),
+        c.impact_time_s,
+        c.geodetic_latitude_rad,
+        c.geocentric_latitude_rad,
+        c.longitude_rad,
+        c.downrange_rad,
+        c.crossrange_rad,
+        c.impact_velocity_ft_s,
+        c.impact_flight_path_angle_rad,
+        c.max_altitude_ft,
+        static_cast<double>(c.steps) + (c.reached_terminal_velocity ? 0.5 : 0.0)};
+    for (double w : words) out[k++] = w;
+  }
+}
+
+void unpack_impacts(const double* in, MonteCarloImpacts* m) {
+  int k = 0;
+  m->status = static_cast<Status>(static_cast<int>(in[k++]));
+  m->count = static_cast<int>(in[k++]);
+  for (ImpactCase& c : m->casings) {
+    c.kind = static_cast<ImpactKind>(static_cast<int>(in[k++]));
+    c.stage = static_cast<int>(in[k++]);
+    c.nominal_point = static_cast<int>(in[k++]);
+    c.failure_time_s = in[k++];
+    c.weight_lb = in[k++];
+    c.status = static_cast<Status>(static_cast<int>(in[k++]));
+    c.impact_time_s = in[k++];
+    c.geodetic_latitude_rad = in[k++];
+    c.geocentric_latitude_rad = in[k++];
+    c.longitude_rad = in[k++];
+    c.downrange_rad = in[k++];
+    c.crossrange_rad = in[k++];
+    c.impact_velocity_ft_s = in[k++];
+    c.impact_flight_path_angle_rad = in[k++];
+    c.max_altitude_ft = in[k++];
+    const double steps = in[k++];
+    c.steps = static_cast<int>(steps);
+    c.reached_terminal_velocity = steps != static_cast<double>(c.steps);
+  }
+}
+
+void pack(const DispersedTrajectory& t, const MonteCarloImpacts& m, double* out) {
   int k = 0;
   out[k++] = static_cast<double>(static_cast<int>(t.status));
   for (int j = 0; j < kMaxStagingPoints; ++j) {
@@ -43,9 +99,10 @@ void pack(const DispersedTrajectory& t, double* out) {
   for (int i = 0; i < kOrbitDispersionElements; ++i) out[k++] = t.orbit_dispersions[i];
   out[k++] = t.max_qbar_alpha_lbf_rad_ft2;
   out[k++] = t.max_qbar_alpha_time_s;
+  pack_impacts(m, out + k);
 }
 
-void unpack(const double* in, DispersedTrajectory* t) {
+void unpack(const double* in, DispersedTrajectory* t, MonteCarloImpacts* m) {
   int k = 0;
   t->status = static_cast<Status>(static_cast<int>(in[k++]));
   for (int j = 0; j < kMaxStagingPoints; ++j) {
@@ -58,6 +115,7 @@ void unpack(const double* in, DispersedTrajectory* t) {
   for (int i = 0; i < kOrbitDispersionElements; ++i) t->orbit_dispersions[i] = in[k++];
   t->max_qbar_alpha_lbf_rad_ft2 = in[k++];
   t->max_qbar_alpha_time_s = in[k++];
+  unpack_impacts(in + k, m);
 }
 
 // The flier: this rank's share of the samples, gathered on rank 0 in sample order.
@@ -78,13 +136,20 @@ bool fly_on_ranks(const MonteCarloJob& job, MonteCarloSamples* samples) {
     samples->status = status;
     return rank == 0;
   }
+  const bool with_impacts = job.impacts.data != nullptr;
+  auto impact_ws = std::make_unique<ImpactWorkspace>();
   std::vector<double> mine;
   for (int i = rank; i < count; i += ranks) {
     DispersedTrajectory t;
-    (void)fly_monte_carlo_sample(*job.nominal, *job.data, job.seed, static_cast<std::uint64_t>(i),
-                                 nominal_values, ws.get(), &t);
+    MonteCarloImpacts impacts;
+    const Status sample = fly_monte_carlo_sample(*job.nominal, *job.data, job.seed,
+                                                 static_cast<std::uint64_t>(i), nominal_values, ws.get(), &t);
+    if (with_impacts && ok(sample)) {
+      (void)fly_monte_carlo_casings(*job.nominal, job.impacts, ws->mission, ws->prepared, ws->dispersed,
+                                    impact_ws.get(), &impacts);
+    }
     mine.resize(mine.size() + kRecord);
-    pack(t, mine.data() + mine.size() - kRecord);
+    pack(t, impacts, mine.data() + mine.size() - kRecord);
     if (rank == 0 && job.progress != nullptr && job.progress->enabled()) {
       job.progress->update("sample", static_cast<long>(i + 1), count, "(rank 0's share)");
     }
@@ -104,12 +169,24 @@ bool fly_on_ranks(const MonteCarloJob& job, MonteCarloSamples* samples) {
   samples->status = Status::kOk;
   samples->nominal = nominal_values;
   samples->samples.assign(static_cast<std::size_t>(count), DispersedTrajectory{});
+  samples->impact_request = job.impacts;
+  samples->nominal_impacts = MonteCarloImpacts{};
+  if (with_impacts) {
+    (void)fly_monte_carlo_casings(*job.nominal, job.impacts, *job.nominal->mission, ws->nominal_prepared,
+                                  ws->nominal, impact_ws.get(), &samples->nominal_impacts);
+  }
+  std::vector<MonteCarloImpacts> impacts(static_cast<std::size_t>(count));
   for (int r = 0; r < ranks; ++r) {
     const double* block = all.data() + offsets[static_cast<std::size_t>(r)];
     for (int i = r, n = 0; i < count; i += ranks, ++n) {
-      unpack(block + static_cast<std::ptrdiff_t>(n) * kRecord,
-             &samples->samples[static_cast<std::size_t>(i)]);
+      unpack(block + static_cast<std::ptrdiff_t>(n) * kRecord, &samples->samples[static_cast<std::size_t>(i)],
+             &impacts[static_cast<std::size_t>(i)]);
     }
+  }
+  if (with_impacts) {
+    samples->impacts = std::move(impacts);
+  } else {
+    samples->impacts.clear();
   }
   return true;
 }

@@ -534,4 +534,25 @@ Status fly_monte_carlo_sample(const DispersionNominal& nominal, const Dispersion
   return Status::kOk;
 }
 
+Status fly_monte_carlo_casings(const DispersionNominal& nominal, const MonteCarloImpactRequest& request,
+                               const Mission& mission, const PreparedCase& prepared, const Trajectory& flight,
+                               ImpactWorkspace* workspace, MonteCarloImpacts* out) {
+  out->count = 0;
+  if (request.data == nullptr || nominal.mission == nullptr) {
+    return out->status = Status::kDispersionNominalNotPrepared;
+  }
+  if (!ok(flight.status)) {
+    return out->status = Status::kImpactNominalFailed;
+  }
+  double weight_change_lb[kImpactStages] = {};
+  for (int stage = 1; stage <= kImpactStages; ++stage) {
+    const int k = stage_index(stage);
+    weight_change_lb[stage - 1] =
+        mission.vehicle.stages[k].jettison_weight_lb - nominal.mission->vehicle.stages[k].jettison_weight_lb;
+  }
+  out->status = fly_expended_casings(mission, prepared, nominal.mission->launch, flight, *request.data,
+                                     request.stages, weight_change_lb, workspace, out->casings, &out->count);
+  return out->status;
+}
+
 }  // namespace tolip

@@ -131,25 +131,8 @@ class BallisticFlight {
   StepCommand command_;
 };
 
-}  // namespace
-
-Status validate_impact_data(const Mission& mission, const ImpactLocusData& data, ImpactFault* fault) {
-  for (int stage = 1; stage <= kImpactStages; ++stage) {
-    const StageData& flown = mission.vehicle.stages[stage_index(stage)];
-    if (!flown.in_sequence) continue;
-    const int k = stage - 1;
-    Status status = check_body(data.failure_mode[k], 42, stage, kFailureTableNames[k], false, fault);
-    if (!ok(status)) return status;
-    status = check_body(data.expended_casing[k], 43, stage, kCasingTableNames[k], true, fault);
-    if (!ok(status)) return status;
-    const int n = data.every_nth_point[k];
-    if (n < 1 || n > flown.integration_steps) {
-      return fault_at(fault, Status::kImpactEveryNthPointOutOfRange, 33, stage, kStepRateWords[k], n,
-                      "n between 1 and the stage's integration steps (data block 16): a larger n puts "
-                      "the first failure point after the lift-off past the end of the stage");
-    }
-  }
-  const ImpactStepSizes& s = data.steps;
+// The limits of INTPIM's steps, all finite and > 0.
+Status check_steps(const ImpactStepSizes& s, ImpactFault* fault) {
   const double positive[] = {s.in_atmosphere_s,
                              s.out_of_atmosphere_s,
                              s.reentered_s,
@@ -172,6 +155,46 @@ Status validate_impact_data(const Mission& mission, const ImpactLocusData& data,
     }
   }
   return Status::kOk;
+}
+
+Status check_casing(const ImpactLocusData& data, int stage, ImpactFault* fault) {
+  const int k = stage - 1;
+  return check_body(data.expended_casing[k], 43, stage, kCasingTableNames[k], true, fault);
+}
+
+}  // namespace
+
+Status validate_casing_data(const Mission& mission, const ImpactLocusData& data,
+                            const bool (&stages)[kImpactStages], ImpactFault* fault) {
+  for (int stage = 1; stage <= kImpactStages; ++stage) {
+    if (!stages[stage - 1] || !mission.vehicle.stages[stage_index(stage)].in_sequence) {
+      continue;
+    }
+    const Status status = check_casing(data, stage, fault);
+    if (!ok(status)) {
+      return status;
+    }
+  }
+  return check_steps(data.steps, fault);
+}
+
+Status validate_impact_data(const Mission& mission, const ImpactLocusData& data, ImpactFault* fault) {
+  for (int stage = 1; stage <= kImpactStages; ++stage) {
+    const StageData& flown = mission.vehicle.stages[stage_index(stage)];
+    if (!flown.in_sequence) continue;
+    const int k = stage - 1;
+    Status status = check_body(data.failure_mode[k], 42, stage, kFailureTableNames[k], false, fault);
+    if (!ok(status)) return status;
+    status = check_casing(data, stage, fault);
+    if (!ok(status)) return status;
+    const int n = data.every_nth_point[k];
+    if (n < 1 || n > flown.integration_steps) {
+      return fault_at(fault, Status::kImpactEveryNthPointOutOfRange, 33, stage, kStepRateWords[k], n,
+                      "n between 1 and the stage's integration steps (data block 16): a larger n puts "
+                      "the first failure point after the lift-off past the end of the stage");
+    }
+  }
+  return check_steps(data.steps, fault);
 }
 
 Status fly_to_impact(const Mission& mission, const PreparedCase& prepared, const ImpactBody& body,
@@ -322,68 +345,132 @@ double launch_crossrange_angle_rad(double launch_latitude_rad, double launch_lon
   return std::asin(std::fmax(-1.0, std::fmin(1.0, s)));
 }
 
+Status fly_impact_case(const Mission& mission, const PreparedCase& prepared,
+                       const LaunchConditions& range_origin, const Trajectory& flight, ImpactKind kind,
+                       int stage, int point, const ImpactBody& body, double weight_lb,
+                       const ImpactStepSizes& steps, ImpactWorkspace* workspace, ImpactCase* out) {
+  const Constants& constants = mission.constants;
+  const TrajectoryPoint& p = flight.points[point];
+  ImpactCase& c = *out;
+  c = ImpactCase{};
+  c.kind = kind;
+  c.stage = stage;
+  c.nominal_point = point;
+  c.failure_time_s = p.time_s;
+  c.weight_lb = weight_lb;
+  ImpactFlight body_flight;
+  c.status = fly_to_impact(mission, prepared, body, weight_lb, p.time_s, p.state, steps,
+                           &workspace->body_stage, &body_flight);
+  c.steps = body_flight.steps;
+  c.max_altitude_ft = body_flight.max_altitude_ft;
+  if (!ok(c.status)) {
+    return c.status;
+  }
+  const StateVector& x = body_flight.impact_state;
+  c.impact_time_s = body_flight.impact_time_s;
+  c.geocentric_latitude_rad = x[kStateLambda];
+  c.geodetic_latitude_rad = geodetic_from_geocentric_rad(constants, x[kStateLambda]);
+  c.longitude_rad = std::remainder(
+      x[kStateTau] - constants.earth_rotation_rate_rad_s * body_flight.impact_time_s, 2.0 * kPi);
+  c.downrange_rad = downrange_angle_rad(range_origin.geocentric_latitude_rad, range_origin.longitude_rad,
+                                        c.geocentric_latitude_rad, c.longitude_rad);
+  c.crossrange_rad =
+      launch_crossrange_angle_rad(range_origin.geocentric_latitude_rad, range_origin.longitude_rad,
+                                  range_origin.azimuth_rad, c.geocentric_latitude_rad, c.longitude_rad);
+  c.impact_velocity_ft_s = x[kStateV];
+  c.impact_flight_path_angle_rad = x[kStateGamma];
+  c.reached_terminal_velocity = body_flight.reached_terminal_velocity;
+  return c.status;
+}
+
+namespace {
+
+// The events of stages 1-3 in `flight` (null: not flown).
+void stage_events(const Trajectory& flight, const StageEvent* (&events)[kImpactStages]) {
+  for (const StageEvent*& e : events) {
+    e = nullptr;
+  }
+  for (int k = 0; k < flight.stage_count; ++k) {
+    const StageEvent& e = flight.stages[k];
+    if (e.code >= 1 && e.code <= kImpactStages) {
+      events[e.code - 1] = &e;
+    }
+  }
+}
+
+}  // namespace
+
+Status fly_expended_casings(const Mission& mission, const PreparedCase& prepared,
+                            const LaunchConditions& range_origin, const Trajectory& flight,
+                            const ImpactLocusData& data, const bool (&stages)[kImpactStages],
+                            const double* weight_change_lb, ImpactWorkspace* workspace,
+                            ImpactCase (&cases)[kImpactStages], int* count) {
+  *count = 0;
+  const StageEvent* events[kImpactStages];
+  stage_events(flight, events);
+  Status first_failure = Status::kOk;
+  for (int stage = 1; stage <= kImpactStages; ++stage) {
+    if (!stages[stage - 1]) {
+      continue;
+    }
+    const StageEvent* e = events[stage - 1];
+    if (e == nullptr || !e->completed) {
+      if (ok(first_failure)) {
+        first_failure = Status::kImpactNominalStageIncomplete;
+      }
+      continue;
+    }
+    const ImpactBody& body = data.expended_casing[stage - 1];
+    const double weight_lb =
+        body.casing_weight_lb + (weight_change_lb != nullptr ? weight_change_lb[stage - 1] : 0.0);
+    const Status status =
+        fly_impact_case(mission, prepared, range_origin, flight, ImpactKind::kExpendedCasing, stage,
+                        e->last_point, body, weight_lb, data.steps, workspace, &cases[(*count)++]);
+    if (!ok(status) && ok(first_failure)) {
+      first_failure = status;
+    }
+  }
+  return first_failure;
+}
+
 Status compute_impact_locus(const Mission& mission, const PreparedCase& prepared, const Trajectory& nominal,
                             const ImpactLocusData& data, ImpactWorkspace* workspace, ImpactLocus* locus) {
   locus->count = 0;
   Status status = validate_impact_data(mission, data, nullptr);
-  if (!ok(status)) return locus->status = status;
-  if (!ok(nominal.status)) return locus->status = Status::kImpactNominalFailed;
+  if (!ok(status)) {
+    return locus->status = status;
+  }
+  if (!ok(nominal.status)) {
+    return locus->status = Status::kImpactNominalFailed;
+  }
 
   const Constants& constants = mission.constants;
   const LaunchConditions& launch = mission.launch;
-  Status first_failure = Status::kOk;
-  const auto add = [&](ImpactKind kind, int stage, int point, const ImpactBody& body, double weight_lb) {
-    if (locus->count >= kMaxImpactCases) return;
-    const TrajectoryPoint& p = nominal.points[point];
-    ImpactCase& c = locus->cases[locus->count++];
-    c = ImpactCase{};
-    c.kind = kind;
-    c.stage = stage;
-    c.nominal_point = point;
-    c.failure_time_s = p.time_s;
-    c.weight_lb = weight_lb;
-    ImpactFlight flight;
-    c.status = fly_to_impact(mission, prepared, body, weight_lb, p.time_s, p.state, data.steps,
-                             &workspace->body_stage, &flight);
-    c.steps = flight.steps;
-    c.max_altitude_ft = flight.max_altitude_ft;
-    if (!ok(c.status)) {
-      if (ok(first_failure)) first_failure = c.status;
-      return;
+  const StageEvent* events[kImpactStages];
+  stage_events(nominal, events);
+  bool flown[kImpactStages] = {};
+  for (int stage = 1; stage <= kImpactStages; ++stage) {
+    if (!mission.vehicle.stages[stage_index(stage)].in_sequence) {
+      continue;
     }
-    const StateVector& x = flight.impact_state;
-    c.impact_time_s = flight.impact_time_s;
-    c.geocentric_latitude_rad = x[kStateLambda];
-    c.geodetic_latitude_rad = geodetic_from_geocentric_rad(constants, x[kStateLambda]);
-    c.longitude_rad =
-        std::remainder(x[kStateTau] - constants.earth_rotation_rate_rad_s * flight.impact_time_s, 2.0 * kPi);
-    c.downrange_rad = downrange_angle_rad(launch.geocentric_latitude_rad, launch.longitude_rad,
-                                          c.geocentric_latitude_rad, c.longitude_rad);
-    c.crossrange_rad =
-        launch_crossrange_angle_rad(launch.geocentric_latitude_rad, launch.longitude_rad, launch.azimuth_rad,
-                                    c.geocentric_latitude_rad, c.longitude_rad);
-    c.impact_velocity_ft_s = x[kStateV];
-    c.impact_flight_path_angle_rad = x[kStateGamma];
-    c.reached_terminal_velocity = flight.reached_terminal_velocity;
-  };
-
-  const StageEvent* events[kImpactStages] = {};
-  for (int k = 0; k < nominal.stage_count; ++k) {
-    const StageEvent& e = nominal.stages[k];
-    if (e.code >= 1 && e.code <= kImpactStages) events[e.code - 1] = &e;
+    const StageEvent* e = events[stage - 1];
+    if (e == nullptr || !e->completed) {
+      return locus->status = Status::kImpactNominalStageIncomplete;
+    }
   }
   for (int stage = 1; stage <= kImpactStages; ++stage) {
-    if (!mission.vehicle.stages[stage_index(stage)].in_sequence) continue;
-    const StageEvent* e = events[stage - 1];
-    if (e == nullptr || !e->completed) return locus->status = Status::kImpactNominalStageIncomplete;
+    flown[stage - 1] = events[stage - 1] != nullptr;
   }
 
   // Thrust failures: every n-th integration point of the stage, from its first point (stage 1: from
   // the end of the vertical lift-off: the pad point has no flight to fail), up to the last step's
   // start (the end point is the burnout).
+  Status first_failure = Status::kOk;
   for (int stage = 1; stage <= kImpactStages; ++stage) {
     const StageEvent* e = events[stage - 1];
-    if (e == nullptr) continue;
+    if (e == nullptr) {
+      continue;
+    }
     int first = e->first_point;
     if (stage == 1) {
       while (first < e->last_point &&
@@ -392,17 +479,25 @@ Status compute_impact_locus(const Mission& mission, const PreparedCase& prepared
       }
     }
     const int n = data.every_nth_point[stage - 1];
-    for (int point = first; point < e->last_point; point += n) {
-      add(ImpactKind::kThrustFailure, stage, point, data.failure_mode[stage - 1],
-          nominal.points[point].weight_lb);
+    for (int point = first; point < e->last_point && locus->count < kMaxImpactCases; point += n) {
+      status = fly_impact_case(mission, prepared, launch, nominal, ImpactKind::kThrustFailure, stage, point,
+                               data.failure_mode[stage - 1], nominal.points[point].weight_lb, data.steps,
+                               workspace, &locus->cases[locus->count++]);
+      if (!ok(status) && ok(first_failure)) {
+        first_failure = status;
+      }
     }
   }
-  // The expended casings, from their stages' burnout points.
-  for (int stage = 1; stage <= kImpactStages; ++stage) {
-    const StageEvent* e = events[stage - 1];
-    if (e == nullptr) continue;
-    const ImpactBody& body = data.expended_casing[stage - 1];
-    add(ImpactKind::kExpendedCasing, stage, e->last_point, body, body.casing_weight_lb);
+  // The expended casings, from their stages' burnout points (as the Monte Carlo flies its samples').
+  ImpactCase casings[kImpactStages];
+  int casing_count = 0;
+  status = fly_expended_casings(mission, prepared, launch, nominal, data, flown, nullptr, workspace, casings,
+                                &casing_count);
+  if (!ok(status) && ok(first_failure)) {
+    first_failure = status;
+  }
+  for (int k = 0; k < casing_count && locus->count < kMaxImpactCases; ++k) {
+    locus->cases[locus->count++] = casings[k];
   }
   return locus->status = first_failure;
 }

@@ -29,6 +29,14 @@ struct ImpactMappingFault {
 bool fill_impact_data(const Mission& mission, const DeckExtras& extras, ImpactLocusData* data,
                       ImpactMappingFault* fault);
 
+// Data block 43 alone -> core for the casings of `stages` (stage k when stages[k - 1]; the Monte
+// Carlo's casing impacts): each stage asked for in the sequence, with its casing table, area and
+// weight valid (validate_casing_data); blocks 42 and DA6D(17-19) are not needed. False with
+// *fault otherwise, `needed_by` naming the asker in the message ("--impacts").
+bool fill_casing_impact_data(const Mission& mission, const DeckExtras& extras,
+                             const bool (&stages)[kImpactStages], const std::string& needed_by,
+                             ImpactLocusData* data, ImpactMappingFault* fault);
+
 // "DECK: data block 33, DA6D(19) (body_dynamics.impact_every_nth_step[2]): message"
 std::string impact_fault_text(const std::string& deck_path, const ImpactMappingFault& fault);
 

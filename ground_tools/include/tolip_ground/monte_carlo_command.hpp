@@ -1,8 +1,9 @@
 // `tolip montecarlo DECK --samples N --seed S [--threads K] [--json] [--csv FILE] [--plots DIR]
-// [--orbit-perigee-nmi H]`: Monte Carlo dispersions of a deck's case (issue 11; docs/cli.md
-// "tolip montecarlo", docs/theory/dispersions.md "Monte Carlo"). The deck's case is optimized, the
-// final nominal chosen as the dispersion analysis chooses it, and N samples drawn from data blocks
-// 46-55 are flown; the reports (monte_carlo_report.hpp) are formed from the samples in sample order.
+// [--orbit-perigee-nmi H] [--impacts | --no-impacts] [--impact-stages LIST]`: Monte Carlo dispersions of a
+// deck's case (issue 11; docs/cli.md "tolip montecarlo", docs/theory/dispersions.md "Monte Carlo"). The
+// deck's case is optimized, the final nominal chosen as the dispersion analysis chooses it, and N samples
+// drawn from data blocks 46-55 are flown; the reports (monte_carlo_report.hpp) are formed from the samples in
+// sample order.
 //
 // Who flies the samples is a parameter (MonteCarloFlier): the threads of this process for `tolip`,
 // the ranks of an MPI job for `tolip_montecarlo_mpi` (ground_tools/mpi/), which takes the same
@@ -13,6 +14,7 @@
 #include <functional>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "tolip_ground/monte_carlo_report.hpp"
 #include "tolip_ground/progress.hpp"
@@ -28,6 +30,10 @@ namespace tolip::ground {
 inline constexpr long long kMaxMonteCarloSamples = 100000;
 inline constexpr int kMaxMonteCarloThreads = 256;
 
+// Whether the samples' casings are flown to impact (--impacts / --no-impacts; docs/cli.md): by
+// default when the deck asks for the impact analysis (IP(23) = 1).
+enum class ImpactMode { kAuto, kOn, kOff };
+
 struct MonteCarloCommandOptions {
   std::string deck_path;
   long long samples = 0;  // 1..kMaxMonteCarloSamples
@@ -39,6 +45,8 @@ struct MonteCarloCommandOptions {
   std::string gnuplot;    // the gnuplot program; empty: $TOLIP_GNUPLOT, else gnuplot on PATH
   double orbit_perigee_nmi = kDefaultOrbitPerigee_nmi;
   ProgressMode progress = ProgressMode::kAuto;
+  ImpactMode impacts = ImpactMode::kAuto;
+  std::vector<int> impact_stages;  // --impact-stages: empty, every stage 1-3 in the sequence
 };
 
 // Adds the command's arguments and options to `command` (the `montecarlo` subcommand, or the MPI
@@ -57,6 +65,7 @@ struct MonteCarloJob {
   int count = 0;
   int threads = 1;
   ProgressLine* progress = nullptr;
+  MonteCarloImpactRequest impacts;  // data null: no casing impacts
 };
 
 // Flies the job's samples into *samples (index = sample number) on the process that reports and

@@ -63,6 +63,31 @@ struct DispersionEllipse {
   double fraction_inside = 0.0;       // of the samples that flew
 };
 
+// The 99.7 % ellipse of the points (x[i], y[i]) (finite pairs of equal-length vectors, in sample
+// order): the one computation of every Monte Carlo ellipse (the burnout point's, the casings'
+// impacts'). Fewer than 3 points: the axes, angle and fraction NaN; a degenerate covariance: the
+// fraction NaN.
+DispersionEllipse dispersion_ellipse(const std::vector<double>& x, const std::vector<double>& y);
+
+// One stage's expended casing over the samples (--impacts; Sec. 17 data block 43): the nominal's
+// impact (fly_monte_carlo_casings about the nominal: the casing line of the impact locus about the
+// same nominal), the samples whose casing reached the surface, their mean impact point and the
+// 99.7 % ellipse of their downrange and crossrange (Sec. 4, from the launch site and the nominal's
+// azimuth) dispersion from the nominal impact, n.mi.
+struct CasingImpactStatistics {
+  int stage = 0;
+  double casing_weight_lb = 0.0;  // the nominal's (block 43)
+  ImpactCase nominal;             // status: kImpactNominalStageIncomplete when not flown
+  int impacted = 0;               // samples that flew and whose casing reached the surface
+  int not_impacted = 0;           // samples that flew but whose casing did not
+  double mean_impact_time_s = 0.0;
+  double mean_geodetic_latitude_deg = 0.0;
+  double mean_longitude_deg = 0.0;  // about the nominal's longitude, (-180, 180]
+  double mean_downrange_nmi = 0.0;
+  double mean_crossrange_nmi = 0.0;
+  DispersionEllipse ellipse;  // of the dispersions from the nominal impact
+};
+
 struct MonteCarloSummary {
   int samples = 0;
   int flown = 0;
@@ -73,6 +98,7 @@ struct MonteCarloSummary {
   std::vector<QuantityStatistics> orbit;           // TWOE .. OMEGAE, perigee and apogee altitudes
   std::vector<QuantityStatistics> max_qbar_alpha;  // value, time
   DispersionEllipse burnout_ellipse;
+  std::vector<CasingImpactStatistics> impact_ellipses;  // --impacts: the casings asked for, by stage
   // Per sample (index = sample): perigee and apogee altitude, n.mi. (NaN when not flown; apogee NaN
   // unless elliptic) and whether it reached orbit.
   std::vector<double> perigee_altitude_nmi;

@@ -17,6 +17,12 @@ struct MonteCarloSamples {
   Status status = Status::kNotPrepared;  // the nominal's
   DispersedTrajectory nominal;
   std::vector<DispersedTrajectory> samples;  // index = sample number; each with its own status
+  // With a MonteCarloImpactRequest (its data not null): the request, the nominal's casings and every
+  // sample's (index = sample number; count 0 for a sample that did not fly). Otherwise no request
+  // data and `impacts` empty.
+  MonteCarloImpactRequest impact_request;
+  MonteCarloImpacts nominal_impacts;
+  std::vector<MonteCarloImpacts> impacts;
 };
 
 // Told, on the calling thread, how many samples have been flown so far (of `count`); for a
@@ -24,10 +30,13 @@ struct MonteCarloSamples {
 using MonteCarloProgress = std::function<void(int flown, int count)>;
 
 // Flies samples 0..count-1 of (seed) on `threads` threads (>= 1). With `progress`, the calling
-// thread only waits and reports (every 50 ms and at the end) while `threads` workers fly.
+// thread only waits and reports (every 50 ms and at the end) while `threads` workers fly. With
+// impacts.data, each sample that flew then flies its casings (fly_monte_carlo_casings), and the
+// nominal its own.
 Status run_monte_carlo(const DispersionNominal& nominal, const DispersionData& data, std::uint64_t seed,
                        int count, int threads, MonteCarloSamples* out,
-                       const MonteCarloProgress& progress = MonteCarloProgress());
+                       const MonteCarloProgress& progress = MonteCarloProgress(),
+                       const MonteCarloImpactRequest& impacts = MonteCarloImpactRequest());
 
 struct MonteCarloStatistic {
   int count = 0;  // samples that flew

@@ -33,10 +33,8 @@ bool fill_body(const ImpactDragTable& deck, int block, int stage, const char* gr
   return true;
 }
 
-}  // namespace
-
-bool fill_impact_data(const Mission& mission, const DeckExtras& extras, ImpactLocusData* data,
-                      ImpactMappingFault* fault) {
+// Deck data blocks 42-43 and DA6D(17-19) into *data, unchecked but for the core's table capacity.
+bool map_impact_data(const DeckExtras& extras, ImpactLocusData* data, ImpactMappingFault* fault) {
   *data = ImpactLocusData{};
   for (int stage = 1; stage <= kImpactStages; ++stage) {
     const std::size_t k = static_cast<std::size_t>(stage - 1);
@@ -47,9 +45,12 @@ bool fill_impact_data(const Mission& mission, const DeckExtras& extras, ImpactLo
     }
     data->every_nth_point[k] = extras.body_dynamics.impact_every_nth_step[k];
   }
-  ImpactFault core;
-  const Status status = validate_impact_data(mission, *data, &core);
-  if (ok(status)) return true;
+  return true;
+}
+
+// The core's validation fault in deck terms; `needed_by` names what needs a missing table.
+void describe_fault(const Mission& mission, Status status, const ImpactFault& core,
+                    const std::string& needed_by, ImpactMappingFault* fault) {
   fault->data_block = core.data_block;
   fault->word = core.field;
   const std::string stage = str(core.stage);
@@ -63,13 +64,45 @@ bool fill_impact_data(const Mission& mission, const DeckExtras& extras, ImpactLo
     fault->field =
         std::string("impact.") + (core.data_block == 42 ? "failure_drag." : "casing_drag.") + stage;
     if (status == Status::kImpactDataMissing) {
-      fault->message = std::string("missing: options.impact (IP(23)) needs the data block ") +
-                       str(core.data_block) + " drag table of stage " + stage;
+      fault->message = "missing: " + needed_by + " needs the data block " + str(core.data_block) +
+                       " drag table of stage " + stage;
     } else {
       fault->message = std::string(core.field) + ": expected " + core.expected + " (" + status_name(status) +
                        ": " + status_message(status) + ")";
     }
   }
+}
+
+}  // namespace
+
+bool fill_impact_data(const Mission& mission, const DeckExtras& extras, ImpactLocusData* data,
+                      ImpactMappingFault* fault) {
+  if (!map_impact_data(extras, data, fault)) return false;
+  ImpactFault core;
+  const Status status = validate_impact_data(mission, *data, &core);
+  if (ok(status)) return true;
+  describe_fault(mission, status, core, "options.impact (IP(23))", fault);
+  return false;
+}
+
+bool fill_casing_impact_data(const Mission& mission, const DeckExtras& extras,
+                             const bool (&stages)[kImpactStages], const std::string& needed_by,
+                             ImpactLocusData* data, ImpactMappingFault* fault) {
+  if (!map_impact_data(extras, data, fault)) return false;
+  for (int stage = 1; stage <= kImpactStages; ++stage) {
+    if (stages[stage - 1] && !mission.vehicle.stages[stage_index(stage)].in_sequence) {
+      fault->data_block = 43;
+      fault->word = std::string("CD") + str(stage) + "E";
+      fault->field = "impact.casing_drag." + str(stage);
+      fault->message = needed_by + " asks for the casing of stage " + str(stage) +
+                       ", which is not in the vehicle's stage sequence";
+      return false;
+    }
+  }
+  ImpactFault core;
+  const Status status = validate_casing_data(mission, *data, stages, &core);
+  if (ok(status)) return true;
+  describe_fault(mission, status, core, needed_by, fault);
   return false;
 }
 

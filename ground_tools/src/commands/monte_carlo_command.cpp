@@ -14,6 +14,7 @@
 #include "tolip_ground/card_deck.hpp"
 #include "tolip_ground/commands.hpp"
 #include "tolip_ground/dispersion_run.hpp"
+#include "tolip_ground/impact_run.hpp"
 #include "tolip_ground/optimization_run.hpp"
 #include "tolip_ground/plot_files.hpp"
 #include "tolip_ground/unused_inputs.hpp"
@@ -97,6 +98,45 @@ bool any_sampled_kind(const DispersionData& data) {
   return false;
 }
 
+// The casings the samples fly (--impacts, --impact-stages, --no-impacts; by default those of the
+// deck's impact analysis, IP(23) = 1) with their data block 43 in *data: "" and *request set (data
+// null when off), or the message naming the block, the table and the deck field.
+std::string impact_request(const MonteCarloCommandOptions& options, const Deck& deck, ImpactLocusData* data,
+                           MonteCarloImpactRequest* request) {
+  *request = MonteCarloImpactRequest{};
+  const DeckCase& deck_case = deck.cases.front();
+  const Mission& mission = *deck_case.mission;
+  const bool asked = options.impacts == ImpactMode::kOn || !options.impact_stages.empty();
+  const bool on = asked || (options.impacts == ImpactMode::kAuto && mission.options.impact());
+  if (!on) return {};
+  const std::string needed_by = !options.impact_stages.empty() ? "--impact-stages"
+                                : asked                        ? "--impacts"
+                                                               : "options.impact (IP(23))";
+  bool stages[kImpactStages] = {};
+  for (int stage : options.impact_stages) {
+    if (stage < 1 || stage > kImpactStages) {
+      return "--impact-stages " + std::to_string(stage) +
+             ": expected stages 1 to 3 (the expended casings of data block 43)";
+    }
+    stages[stage - 1] = true;
+  }
+  if (options.impact_stages.empty()) {
+    for (int stage = 1; stage <= kImpactStages; ++stage)
+      stages[stage - 1] = mission.vehicle.stages[stage_index(stage)].in_sequence;
+  }
+  if (!deck_case.extras.impact.present) {
+    return deck.path + ": data block 43 (impact.casing_drag): " + needed_by +
+           " needs the expended-casing drag tables [impact.casing_drag.N] of the stages flown to impact";
+  }
+  ImpactMappingFault fault;
+  if (!fill_casing_impact_data(mission, deck_case.extras, stages, needed_by, data, &fault)) {
+    return impact_fault_text(deck.path, fault);
+  }
+  request->data = data;
+  for (int k = 0; k < kImpactStages; ++k) request->stages[k] = stages[k];
+  return {};
+}
+
 int fail(std::ostream& err, int code, const std::string& message) {
   err << "tolip: " << message << '\n';
   return code;
@@ -147,6 +187,21 @@ void add_monte_carlo_options(CLI::App& command, MonteCarloCommandOptions* option
                   "A sample reaches orbit when its perigee altitude is above\n"
                   "H n.mi. (default 100; 0 to 100000)")
       ->type_name("H");
+  CLI::Option* impacts_on = command.add_flag_callback(
+      "--impacts", [options] { options->impacts = ImpactMode::kOn; },
+      "Also fly every sample's expended casings of stages 1-3 to\n"
+      "impact (Sec. 17, data block 43) and report their 99.7 %\n"
+      "ellipses (default: when the deck sets IP(23))");
+  CLI::Option* impacts_off = command.add_flag_callback(
+      "--no-impacts", [options] { options->impacts = ImpactMode::kOff; }, "Never fly the casings to impact");
+  impacts_on->excludes(impacts_off);
+  command
+      .add_option("--impact-stages", options->impact_stages,
+                  "The casings to fly, e.g. 1,3 (implies --impacts; default:\n"
+                  "every stage 1-3 in the sequence)")
+      ->delimiter(',')
+      ->type_name("LIST")
+      ->excludes(impacts_off);
   CLI::Option* on = command.add_flag_callback(
       "--progress", [options] { options->progress = ProgressMode::kOn; },
       "Show the progress line on stderr even when it is not a terminal");
@@ -166,7 +221,8 @@ CLI::App* add_monte_carlo_command(CLI::App& app, MonteCarloCommandOptions* optio
       "a table source scaled by its draw). Prints the mean, standard deviation and 0.135/50/99.865 %\n"
       "points of every staging-point quantity and orbit element beside\n"
       "the manual's linear RSS three-sigma, the fraction reaching orbit\n"
-      "and the 99.7 % ellipse of the burnout point.");
+      "and the 99.7 % ellipse of the burnout point; with --impacts (by\n"
+      "default under IP(23)) the 99.7 % ellipses of the casings' impacts.");
   command->footer(
       "Examples:\n"
       "  tolip montecarlo examples/scout/mission.toml --samples 1000 --seed 1\n"
@@ -191,7 +247,8 @@ bool fly_on_threads(const MonteCarloJob& job, MonteCarloSamples* samples) {
       line->update("sample", flown, count);
     };
   }
-  (void)run_monte_carlo(*job.nominal, *job.data, job.seed, job.count, job.threads, samples, progress);
+  (void)run_monte_carlo(*job.nominal, *job.data, job.seed, job.count, job.threads, samples, progress,
+                        job.impacts);
   return true;
 }
 
@@ -254,6 +311,12 @@ int run_monte_carlo_command(const MonteCarloCommandOptions& options, const Monte
   if (const std::string sign = negative_sigma_fault(deck, dispersions); !sign.empty()) {
     return fail(err, kExitBadInput, sign);
   }
+  // The casing impacts: asked for, or the deck's impact analysis (IP(23)); their data checked now.
+  auto impact_data = std::make_unique<ImpactLocusData>();
+  MonteCarloImpactRequest impacts;
+  if (const std::string bad = impact_request(options, deck, impact_data.get(), &impacts); !bad.empty()) {
+    return fail(err, kExitBadInput, bad);
+  }
   print_deck_input_warnings(err, options.deck_path, deck);
 
   // The nominal: the optimization job, then the dispersion analysis' choice of the final nominal.
@@ -309,6 +372,7 @@ int run_monte_carlo_command(const MonteCarloCommandOptions& options, const Monte
   job.count = static_cast<int>(options.samples);
   job.threads = threads;
   job.progress = &progress;
+  job.impacts = impacts;
   MonteCarloSamples samples;
   const bool reports = flier(job, &samples);
   progress.clear();

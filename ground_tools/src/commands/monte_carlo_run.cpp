@@ -11,12 +11,19 @@
 namespace tolip::ground {
 
 Status run_monte_carlo(const DispersionNominal& nominal, const DispersionData& data, std::uint64_t seed,
-                       int count, int threads, MonteCarloSamples* out, const MonteCarloProgress& progress) {
+                       int count, int threads, MonteCarloSamples* out, const MonteCarloProgress& progress,
+                       const MonteCarloImpactRequest& impacts) {
   out->samples.assign(static_cast<std::size_t>(std::max(count, 0)), DispersedTrajectory{});
+  const bool with_impacts = impacts.data != nullptr;
+  out->impact_request = impacts;
+  out->nominal_impacts = MonteCarloImpacts{};
+  out->impacts.assign(with_impacts ? static_cast<std::size_t>(std::max(count, 0)) : 0u, MonteCarloImpacts{});
   const int workers = std::max(1, std::min(threads, std::max(count, 1)));
   std::vector<std::unique_ptr<DispersionWorkspace>> workspaces;
+  std::vector<std::unique_ptr<ImpactWorkspace>> impact_workspaces;
   for (int t = 0; t < workers; ++t) {
     workspaces.push_back(std::make_unique<DispersionWorkspace>());
+    impact_workspaces.push_back(std::make_unique<ImpactWorkspace>());
     const Status status = prepare_monte_carlo(nominal, workspaces.back().get());
     if (!ok(status)) return out->status = status;
   }
@@ -26,13 +33,23 @@ Status run_monte_carlo(const DispersionNominal& nominal, const DispersionData& d
                                               first.nominal, nullptr, &out->nominal);
   out->nominal.status = status;
   if (!ok(status)) return out->status = status;
+  if (with_impacts) {
+    (void)fly_monte_carlo_casings(nominal, impacts, *nominal.mission, first.nominal_prepared, first.nominal,
+                                  impact_workspaces.front().get(), &out->nominal_impacts);
+  }
   // Sample i on worker i mod K: which worker flies a sample does not change it (counter draws).
   std::atomic<int> flown{0};
   const auto work = [&](int worker) {
+    DispersionWorkspace* ws = workspaces[static_cast<std::size_t>(worker)].get();
     for (int i = worker; i < count; i += workers) {
-      (void)fly_monte_carlo_sample(nominal, data, seed, static_cast<std::uint64_t>(i), out->nominal,
-                                   workspaces[static_cast<std::size_t>(worker)].get(),
-                                   &out->samples[static_cast<std::size_t>(i)]);
+      const std::size_t at = static_cast<std::size_t>(i);
+      const Status sample = fly_monte_carlo_sample(nominal, data, seed, static_cast<std::uint64_t>(i),
+                                                   out->nominal, ws, &out->samples[at]);
+      if (with_impacts && ok(sample)) {
+        (void)fly_monte_carlo_casings(nominal, impacts, ws->mission, ws->prepared, ws->dispersed,
+                                      impact_workspaces[static_cast<std::size_t>(worker)].get(),
+                                      &out->impacts[at]);
+      }
       flown.fetch_add(1, std::memory_order_relaxed);
     }
   };

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "number_format.hpp"
+#include "tolip/orbit/orbit_elements.hpp"
 #include "tolip_ground/dispersion_report.hpp"
 #include "tolip_ground/report.hpp"
 
@@ -48,6 +49,9 @@ constexpr Quantity kOrbit[kOrbitDispersionElements] = {
 constexpr Quantity kPerigee = {"PERIGEE ALT NMI", "perigee_altitude_nmi", 1.0, 3};
 constexpr Quantity kApogee = {"APOGEE ALT NMI", "apogee_altitude_nmi", 1.0, 3};
 constexpr Quantity kQbarAlpha = {"MAX QBAR*ALPHA LB DEG/FT2", "max_qbar_alpha_lb_deg_ft2", kRadToDeg, 1};
+// The CSV columns of one casing (--impacts), after "casingK_".
+constexpr const char* kCasingColumns[] = {"status",        "impact_time_s", "geodetic_latitude_deg",
+                                          "longitude_deg", "downrange_nmi", "crossrange_nmi"};
 constexpr Quantity kQbarAlphaTime = {"TIME OF MAX QBAR*ALPHA S", "max_qbar_alpha_time_s", 1.0, 2};
 
 // Perigee and apogee altitudes (n.mi.) from the recorded TWOE, RP, EYE, BETAP (summarize_orbit: the
@@ -138,7 +142,6 @@ QuantityStatistics quantity(const Quantity& q, const MonteCarloInputs& in, const
 }
 
 DispersionEllipse burnout_ellipse(const MonteCarloSamples& samples, int final_column) {
-  DispersionEllipse e;
   std::vector<double> x;
   std::vector<double> y;
   const int down = static_cast<int>(StagingVariable::kDownrange);
@@ -152,7 +155,130 @@ DispersionEllipse burnout_ellipse(const MonteCarloSamples& samples, int final_co
       y.push_back(dy);
     }
   }
-  const std::size_t n = x.size();
+  return dispersion_ellipse(x, y);
+}
+
+// The casing of `stage` among a record's, or null.
+const ImpactCase* casing_of(const MonteCarloImpacts& impacts, int stage) {
+  for (int k = 0; k < impacts.count; ++k) {
+    if (impacts.casings[k].stage == stage) return &impacts.casings[k];
+  }
+  return nullptr;
+}
+
+CasingImpactStatistics casing_statistics(const MonteCarloSamples& samples, int stage) {
+  CasingImpactStatistics c;
+  c.stage = stage;
+  c.casing_weight_lb = samples.impact_request.data->expended_casing[stage - 1].casing_weight_lb;
+  const ImpactCase* nominal = casing_of(samples.nominal_impacts, stage);
+  if (nominal != nullptr) {
+    c.nominal = *nominal;
+  } else {
+    c.nominal.stage = stage;
+    c.nominal.status = Status::kImpactNominalStageIncomplete;
+  }
+  const bool nominal_ok = ok(c.nominal.status);
+  std::vector<double> x;
+  std::vector<double> y;
+  double time = 0.0, latitude = 0.0, longitude = 0.0, down = 0.0, cross = 0.0;
+  for (std::size_t i = 0; i < samples.samples.size(); ++i) {
+    if (!ok(samples.samples[i].status)) continue;
+    const ImpactCase* casing = casing_of(samples.impacts[i], stage);
+    if (casing == nullptr || !ok(casing->status)) {
+      ++c.not_impacted;
+      continue;
+    }
+    ++c.impacted;
+    time += casing->impact_time_s;
+    latitude += casing->geodetic_latitude_rad;
+    longitude += std::remainder(casing->longitude_rad - c.nominal.longitude_rad, 2.0 * kPi);
+    down += casing->downrange_rad;
+    cross += casing->crossrange_rad;
+    x.push_back((casing->downrange_rad - c.nominal.downrange_rad) * kNauticalMilesPerRadian);
+    y.push_back((casing->crossrange_rad - c.nominal.crossrange_rad) * kNauticalMilesPerRadian);
+  }
+  if (c.impacted == 0 || !nominal_ok) {
+    c.mean_impact_time_s = c.mean_geodetic_latitude_deg = c.mean_longitude_deg = kNaN;
+    c.mean_downrange_nmi = c.mean_crossrange_nmi = kNaN;
+    c.ellipse = dispersion_ellipse({}, {});
+    c.ellipse.center_downrange_nmi = c.ellipse.center_crossrange_nmi = kNaN;
+    return c;
+  }
+  const double n = static_cast<double>(c.impacted);
+  c.mean_impact_time_s = time / n;
+  c.mean_geodetic_latitude_deg = latitude / n * kRadToDeg;
+  c.mean_longitude_deg = std::remainder(c.nominal.longitude_rad + longitude / n, 2.0 * kPi) * kRadToDeg;
+  c.mean_downrange_nmi = down / n * kNauticalMilesPerRadian;
+  c.mean_crossrange_nmi = cross / n * kNauticalMilesPerRadian;
+  c.ellipse = dispersion_ellipse(x, y);
+  return c;
+}
+
+json statistic_json(const QuantityStatistics& q) {
+  const MonteCarloStatistic& s = q.statistic;
+  const bool any = s.count > 0;
+  const double mc3 = 3.0 * s.standard_deviation;
+  return json{{"nominal", number(q.nominal)},
+              {"count", s.count},
+              {"mean", any ? number(s.mean) : json(nullptr)},
+              {"standard_deviation", any ? number(s.standard_deviation) : json(nullptr)},
+              {"p00135", any ? number(s.p00135) : json(nullptr)},
+              {"p50", any ? number(s.p50) : json(nullptr)},
+              {"p99865", any ? number(s.p99865) : json(nullptr)},
+              {"monte_carlo_3sigma", any ? number(mc3) : json(nullptr)},
+              {"rss_3sigma", number(q.rss_three_sigma)},
+              {"monte_carlo_over_rss",
+               (any && q.rss_three_sigma > 0.0) ? number(mc3 / q.rss_three_sigma) : json(nullptr)}};
+}
+
+json codes_json(const std::vector<int>& codes) {
+  json out = json::array();
+  for (int code : codes) out.push_back(code);
+  return out;
+}
+
+int final_column(const MonteCarloInputs& in) { return in.linear->staging_count - 1; }
+
+json ellipse_json(const DispersionEllipse& e) {
+  return json{{"probability", e.probability},
+              {"center_downrange_nmi", number(e.center_downrange_nmi)},
+              {"center_crossrange_nmi", number(e.center_crossrange_nmi)},
+              {"semi_major_nmi", number(e.semi_major_nmi)},
+              {"semi_minor_nmi", number(e.semi_minor_nmi)},
+              {"major_axis_angle_deg", number(e.major_axis_angle_deg)},
+              {"fraction_inside", number(e.fraction_inside)}};
+}
+
+json casing_json(const CasingImpactStatistics& c) {
+  const ImpactCase& n = c.nominal;
+  const bool flown = ok(n.status);
+  json nominal =
+      json{{"status", status_name(n.status)},
+           {"separation_time_s", flown ? number(n.failure_time_s) : json(nullptr)},
+           {"impact_time_s", flown ? number(n.impact_time_s) : json(nullptr)},
+           {"geodetic_latitude_deg", flown ? number(n.geodetic_latitude_rad * kRadToDeg) : json(nullptr)},
+           {"longitude_deg", flown ? number(n.longitude_rad * kRadToDeg) : json(nullptr)},
+           {"downrange_nmi", flown ? number(n.downrange_rad * kNauticalMilesPerRadian) : json(nullptr)},
+           {"crossrange_nmi", flown ? number(n.crossrange_rad * kNauticalMilesPerRadian) : json(nullptr)}};
+  json mean = json{{"impact_time_s", number(c.mean_impact_time_s)},
+                   {"geodetic_latitude_deg", number(c.mean_geodetic_latitude_deg)},
+                   {"longitude_deg", number(c.mean_longitude_deg)},
+                   {"downrange_nmi", number(c.mean_downrange_nmi)},
+                   {"crossrange_nmi", number(c.mean_crossrange_nmi)}};
+  return json{{"stage", c.stage},
+              {"casing_weight_lb", number(c.casing_weight_lb)},
+              {"nominal", std::move(nominal)},
+              {"impacted", c.impacted},
+              {"not_impacted", c.not_impacted},
+              {"mean", std::move(mean)},
+              {"ellipse", ellipse_json(c.ellipse)}};
+}
+
+}  // namespace
+
+DispersionEllipse dispersion_ellipse(const std::vector<double>& x, const std::vector<double>& y) {
+  DispersionEllipse e;
+  const std::size_t n = std::min(x.size(), y.size());
   if (n < 3) {
     e.semi_major_nmi = e.semi_minor_nmi = e.major_axis_angle_deg = e.fraction_inside = kNaN;
     return e;
@@ -201,33 +327,6 @@ DispersionEllipse burnout_ellipse(const MonteCarloSamples& samples, int final_co
   e.fraction_inside = static_cast<double>(inside) / static_cast<double>(n);
   return e;
 }
-
-json statistic_json(const QuantityStatistics& q) {
-  const MonteCarloStatistic& s = q.statistic;
-  const bool any = s.count > 0;
-  const double mc3 = 3.0 * s.standard_deviation;
-  return json{{"nominal", number(q.nominal)},
-              {"count", s.count},
-              {"mean", any ? number(s.mean) : json(nullptr)},
-              {"standard_deviation", any ? number(s.standard_deviation) : json(nullptr)},
-              {"p00135", any ? number(s.p00135) : json(nullptr)},
-              {"p50", any ? number(s.p50) : json(nullptr)},
-              {"p99865", any ? number(s.p99865) : json(nullptr)},
-              {"monte_carlo_3sigma", any ? number(mc3) : json(nullptr)},
-              {"rss_3sigma", number(q.rss_three_sigma)},
-              {"monte_carlo_over_rss",
-               (any && q.rss_three_sigma > 0.0) ? number(mc3 / q.rss_three_sigma) : json(nullptr)}};
-}
-
-json codes_json(const std::vector<int>& codes) {
-  json out = json::array();
-  for (int code : codes) out.push_back(code);
-  return out;
-}
-
-int final_column(const MonteCarloInputs& in) { return in.linear->staging_count - 1; }
-
-}  // namespace
 
 MonteCarloSummary summarize_monte_carlo(const MonteCarloInputs& in) {
   MonteCarloSummary s;
@@ -293,6 +392,12 @@ MonteCarloSummary summarize_monte_carlo(const MonteCarloInputs& in) {
     return d ? t.max_qbar_alpha_time_s - nominal.max_qbar_alpha_time_s : t.max_qbar_alpha_time_s;
   }));
   s.burnout_ellipse = burnout_ellipse(samples, final_column(in));
+  if (samples.impact_request.data != nullptr) {
+    for (int stage = 1; stage <= kImpactStages; ++stage) {
+      if (samples.impact_request.stages[stage - 1])
+        s.impact_ellipses.push_back(casing_statistics(samples, stage));
+    }
+  }
   return s;
 }
 
@@ -323,14 +428,12 @@ json monte_carlo_json(const MonteCarloInputs& in, const MonteCarloSummary& s) {
   for (const QuantityStatistics& q : s.orbit) orbit[q.key] = statistic_json(q);
   out["orbit_elements"] = std::move(orbit);
   for (const QuantityStatistics& q : s.max_qbar_alpha) out[q.key] = statistic_json(q);
-  const DispersionEllipse& e = s.burnout_ellipse;
-  out["burnout_ellipse"] = json{{"probability", e.probability},
-                                {"center_downrange_nmi", number(e.center_downrange_nmi)},
-                                {"center_crossrange_nmi", number(e.center_crossrange_nmi)},
-                                {"semi_major_nmi", number(e.semi_major_nmi)},
-                                {"semi_minor_nmi", number(e.semi_minor_nmi)},
-                                {"major_axis_angle_deg", number(e.major_axis_angle_deg)},
-                                {"fraction_inside", number(e.fraction_inside)}};
+  out["burnout_ellipse"] = ellipse_json(s.burnout_ellipse);
+  if (in.samples->impact_request.data != nullptr) {
+    json casings = json::array();
+    for (const CasingImpactStatistics& c : s.impact_ellipses) casings.push_back(casing_json(c));
+    out["impact_ellipses"] = std::move(casings);
+  }
   return out;
 }
 
@@ -392,6 +495,39 @@ void write_monte_carlo_listing(std::ostream& out, const MonteCarloInputs& in, co
                 e.center_downrange_nmi, e.center_crossrange_nmi, e.semi_major_nmi, e.semi_minor_nmi,
                 e.major_axis_angle_deg, 100.0 * e.fraction_inside);
   out << line;
+  if (!s.impact_ellipses.empty()) {
+    out << "\n EXPENDED CASING IMPACTS (SEC. 17, DATA BLOCK 43; RANGES FROM THE LAUNCH SITE AND THE NOMINAL"
+           " AZIMUTH)\n";
+  }
+  for (const CasingImpactStatistics& c : s.impact_ellipses) {
+    const ImpactCase& n = c.nominal;
+    if (!ok(n.status)) {
+      std::snprintf(line, sizeof line, " STAGE %d CASING: NOMINAL NOT FLOWN TO IMPACT: %s\n", c.stage,
+                    status_name(n.status));
+      out << line;
+      continue;
+    }
+    std::snprintf(line, sizeof line,
+                  " STAGE %d CASING %.1f LB  NOMINAL IMPACT: T %.2f S, GEODETIC LAT %.4f DEG, LON %.4f DEG,"
+                  " DOWNRANGE %.3f NMI, CROSSRANGE %.3f NMI\n",
+                  c.stage, c.casing_weight_lb, n.impact_time_s, n.geodetic_latitude_rad * kRadToDeg,
+                  n.longitude_rad * kRadToDeg, n.downrange_rad * kNauticalMilesPerRadian,
+                  n.crossrange_rad * kNauticalMilesPerRadian);
+    out << line;
+    std::snprintf(line, sizeof line,
+                  "   %d SAMPLES IMPACTED (%d NOT); MEAN: LAT %.4f DEG, LON %.4f DEG, DOWNRANGE %.3f NMI,"
+                  " CROSSRANGE %.3f NMI\n",
+                  c.impacted, c.not_impacted, c.mean_geodetic_latitude_deg, c.mean_longitude_deg,
+                  c.mean_downrange_nmi, c.mean_crossrange_nmi);
+    out << line;
+    const DispersionEllipse& ce = c.ellipse;
+    std::snprintf(line, sizeof line,
+                  "   99.7 %% ELLIPSE (DISPERSION FROM THE NOMINAL IMPACT): CENTER %.4f, %.4f NMI;"
+                  " SEMI-AXES %.4f, %.4f NMI; MAJOR AXIS %.3f DEG FROM DOWNRANGE; %.2f %% INSIDE\n",
+                  ce.center_downrange_nmi, ce.center_crossrange_nmi, ce.semi_major_nmi, ce.semi_minor_nmi,
+                  ce.major_axis_angle_deg, 100.0 * ce.fraction_inside);
+    out << line;
+  }
 }
 
 void write_monte_carlo_csv(std::ostream& out, const MonteCarloInputs& in, const MonteCarloSummary& s) {
@@ -405,7 +541,12 @@ void write_monte_carlo_csv(std::ostream& out, const MonteCarloInputs& in, const 
   for (const Quantity& o : kOrbit) out << ',' << o.key;
   for (const Quantity& o : kOrbit) out << ",d_" << o.key;
   out << ",perigee_altitude_nmi,apogee_altitude_nmi,reaches_orbit,max_qbar_alpha_lb_deg_ft2,"
-         "max_qbar_alpha_time_s\n";
+         "max_qbar_alpha_time_s";
+  for (const CasingImpactStatistics& c : s.impact_ellipses) {
+    const std::string stem = ",casing" + std::to_string(c.stage) + "_";
+    for (const char* column : kCasingColumns) out << stem << column;
+  }
+  out << '\n';
   for (std::size_t i = 0; i < in.samples->samples.size(); ++i) {
     const DispersedTrajectory& t = in.samples->samples[i];
     out << i << ',' << status_name(t.status);
@@ -428,6 +569,23 @@ void write_monte_carlo_csv(std::ostream& out, const MonteCarloInputs& in, const 
       const int empty = r.staging_count * 2 * kStagingVariables + 2 * kOrbitDispersionElements + 2;
       for (int k = 0; k < empty; ++k) out << ',';
       out << ",0,,";
+    }
+    for (const CasingImpactStatistics& c : s.impact_ellipses) {
+      const ImpactCase* casing = ok(t.status) ? casing_of(in.samples->impacts[i], c.stage) : nullptr;
+      if (casing == nullptr) {
+        out << ",,,,,,";
+        continue;
+      }
+      out << ',' << status_name(casing->status);
+      if (!ok(casing->status)) {
+        out << ",,,,,";
+        continue;
+      }
+      out << ',' << round_trip(casing->impact_time_s) << ','
+          << round_trip(casing->geodetic_latitude_rad * kRadToDeg) << ','
+          << round_trip(casing->longitude_rad * kRadToDeg) << ','
+          << round_trip(casing->downrange_rad * kNauticalMilesPerRadian) << ','
+          << round_trip(casing->crossrange_rad * kNauticalMilesPerRadian);
     }
     out << '\n';
   }
@@ -493,6 +651,47 @@ Figure histogram(const std::string& name, const std::string& title, const std::s
   f.x_markers.push_back({nominal, "nominal", 0});
   f.x_markers.push_back({st.p00135, "0.135 %", 0});
   f.x_markers.push_back({st.p99865, "99.865 %", 0});
+  return f;
+}
+
+// The impact points of one stage's casing (downrange, crossrange from the launch site, n.mi.), the
+// nominal impact and the 99.7 % ellipse about the mean.
+Figure casing_figure(const MonteCarloInputs& in, const CasingImpactStatistics& c,
+                     const std::vector<std::string>& subtitle) {
+  Figure f;
+  f.name = "montecarlo_stage" + std::to_string(c.stage) + "_casing_impacts";
+  f.title = "Stage " + std::to_string(c.stage) + " expended casing impact points (Sec. 17, data block 43)";
+  f.x_label = "downrange (n.mi.)";
+  f.y_label = "crossrange (n.mi., right of the nominal azimuth)";
+  f.subtitle = subtitle;
+  PlotSeries points;
+  points.title = "samples (" + std::to_string(c.impacted) + " impacted)";
+  points.style = SeriesStyle::kPoints;
+  for (std::size_t i = 0; i < in.samples->samples.size(); ++i) {
+    if (!ok(in.samples->samples[i].status)) continue;
+    const ImpactCase* casing = casing_of(in.samples->impacts[i], c.stage);
+    if (casing == nullptr || !ok(casing->status)) continue;
+    points.x.push_back(casing->downrange_rad * kNauticalMilesPerRadian);
+    points.y.push_back(casing->crossrange_rad * kNauticalMilesPerRadian);
+  }
+  f.series.push_back(std::move(points));
+  const double x0 = c.nominal.downrange_rad * kNauticalMilesPerRadian;
+  const double y0 = c.nominal.crossrange_rad * kNauticalMilesPerRadian;
+  const DispersionEllipse& e = c.ellipse;
+  if (std::isfinite(e.semi_major_nmi) && std::isfinite(e.semi_minor_nmi)) {
+    PlotSeries outline;
+    outline.title = "99.7 % ellipse";
+    const double a = e.major_axis_angle_deg / kRadToDeg;
+    for (int k = 0; k <= 180; ++k) {
+      const double t = 2.0 * kPi * k / 180.0;
+      const double u = e.semi_major_nmi * std::cos(t);
+      const double v = e.semi_minor_nmi * std::sin(t);
+      outline.x.push_back(x0 + e.center_downrange_nmi + u * std::cos(a) - v * std::sin(a));
+      outline.y.push_back(y0 + e.center_crossrange_nmi + u * std::sin(a) + v * std::cos(a));
+    }
+    f.series.push_back(std::move(outline));
+  }
+  f.points.push_back({x0, y0, "nominal", 0});
   return f;
 }
 
@@ -583,6 +782,10 @@ std::vector<Figure> monte_carlo_figures(const MonteCarloInputs& in, const MonteC
   ratio.x_min = 0.5;
   ratio.x_max = static_cast<double>(s.columns.size()) + 0.5;
   figures.push_back(std::move(ratio));
+  for (const CasingImpactStatistics& c : s.impact_ellipses) {
+    if (!ok(c.nominal.status)) continue;
+    figures.push_back(casing_figure(in, c, subtitle));
+  }
   return figures;
 }
 

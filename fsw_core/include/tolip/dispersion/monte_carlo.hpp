@@ -8,6 +8,7 @@
 #include <cstdint>
 
 #include "tolip/dispersion/dispersion.hpp"
+#include "tolip/impact/impact.hpp"
 
 namespace tolip {
 
@@ -58,5 +59,34 @@ Status fly_monte_carlo_sample(const DispersionNominal& nominal, const Dispersion
                               std::uint64_t seed, std::uint64_t sample,
                               const DispersedTrajectory& nominal_values, DispersionWorkspace* workspace,
                               DispersedTrajectory* out);
+
+// The casing impacts of the Monte Carlo (issue 11: "dispersion ellipses ... of stage impact
+// points"; docs/theory/dispersions.md "Monte Carlo"): which expended casings (stage k when
+// stages[k - 1]) a sample flies to impact, with the data blocks 43 tables and INTPIM steps of `data`
+// (validate_casing_data() checked). Null data: no impacts.
+struct MonteCarloImpactRequest {
+  const ImpactLocusData* data = nullptr;
+  bool stages[kImpactStages] = {};
+};
+
+// One sample's (or the nominal's) casings, in stage order: at most kImpactStages, no heap.
+struct MonteCarloImpacts {
+  Status status = Status::kNotPrepared;  // kOk: every casing asked for reached the surface
+  int count = 0;
+  ImpactCase casings[kImpactStages];
+};
+
+// The casings of `request` flown from the burnouts of `flight` (a completed flight of `mission` /
+// `prepared`: a sample's ws->mission, ws->prepared, ws->dispersed, or the nominal's) exactly as the
+// impact locus flies the nominal's (fly_expended_casings(): the same record, the same Sec. 4
+// ranges), with the ranges from the nominal's launch site and azimuth (a sample's azimuth
+// dispersion, code 33, moves its impact off the nominal's ground track instead of turning the
+// track with it) and the casing weight changed by the sample's jettison weight increment of the
+// stage (codes 9-14: mission's jettison weight minus the nominal mission's). The casing falls in
+// still air with its block 43 drag: a sample's wind and drag draws (36-38, 17-18) disperse the
+// ascent only. Returns out->status.
+Status fly_monte_carlo_casings(const DispersionNominal& nominal, const MonteCarloImpactRequest& request,
+                               const Mission& mission, const PreparedCase& prepared, const Trajectory& flight,
+                               ImpactWorkspace* workspace, MonteCarloImpacts* out);
 
 }  // namespace tolip

@@ -77,6 +77,13 @@ struct ImpactFault {
 // kImpactEveryNthPointOutOfRange / kImpactStepSizeNotPositive, with *fault.
 Status validate_impact_data(const Mission& mission, const ImpactLocusData& data, ImpactFault* fault);
 
+// validate_impact_data()'s check of the expended-casing tables (block 43) alone, for the stages k
+// with stages[k - 1] set (each must be in the sequence: kImpactDataMissing otherwise), and of the
+// step sizes: what flying the casings needs (the Monte Carlo's casing impacts, which fly no thrust
+// failure and so need neither block 42 nor DA6D(17-19)).
+Status validate_casing_data(const Mission& mission, const ImpactLocusData& data,
+                            const bool (&stages)[kImpactStages], ImpactFault* fault);
+
 enum class ImpactKind : int { kThrustFailure, kExpendedCasing };
 
 // INTPIM's regimes.
@@ -134,6 +141,26 @@ struct ImpactLocus {
 struct ImpactWorkspace {
   StageData body_stage;
 };
+
+// The one record of an impact trajectory (a line of the locus, a Monte Carlo sample's casing):
+// `body` of weight_lb flown with fly_to_impact() from point `point` of `flight` (a flight of
+// `mission` / `prepared`), its impact recorded into *out with the ranges of Sec. 4 from
+// `range_origin` (the launch site; the crossrange from the great circle of its azimuth). Returns
+// out->status.
+Status fly_impact_case(const Mission& mission, const PreparedCase& prepared,
+                       const LaunchConditions& range_origin, const Trajectory& flight, ImpactKind kind,
+                       int stage, int point, const ImpactBody& body, double weight_lb,
+                       const ImpactStepSizes& steps, ImpactWorkspace* workspace, ImpactCase* out);
+
+// The expended casings of the stages k with stages[k - 1] set that `flight` flew to their end
+// (flight.stages: completed), each from its stage's burnout point with the block 43 casing weight
+// plus weight_change_lb[k - 1] (null: none), in stage order into cases[0..count). *count the
+// casings flown; returns kOk or the first casing's failure (each carries its own status).
+Status fly_expended_casings(const Mission& mission, const PreparedCase& prepared,
+                            const LaunchConditions& range_origin, const Trajectory& flight,
+                            const ImpactLocusData& data, const bool (&stages)[kImpactStages],
+                            const double* weight_change_lb, ImpactWorkspace* workspace,
+                            ImpactCase (&cases)[kImpactStages], int* count);
 
 // The whole locus about `nominal` (a completed flight of `mission` / `prepared`): thrust failures at
 // every n-th integration point of stages 1-3 (stage 1 from the end of the vertical lift-off; a
