@@ -167,6 +167,98 @@ TEST(MonteCarloCommand, Sec15SigmaAgreesWithTheRssSigmaInTheLinearRegime) {
   EXPECT_EQ(mc["fraction_reaching_orbit"], 1.0);
 }
 
+// Casing impacts (Sec. 17, data block 43) in the linear regime: on by default under IP(23) = 1, each
+// stage's nominal impact is the casing line of `tolip optimize`'s impact locus about the same
+// nominal, every sample's casing impacts, and the 99.7 % ellipse of the impact points holds about
+// 99.7 % of them (of 300: at most a handful outside); the listing and the CSV carry them too.
+TEST(MonteCarloCommand, Sec17CasingImpactEllipsesHoldAbout99_7PercentInTheLinearRegime) {
+  ScratchDirectory scratch("montecarlo_impacts");
+  const std::string deck = scaled_deck(scratch, 0.1);
+  const int n = 300;
+  const std::string csv = (scratch / "impacts.csv").string();
+  const CommandResult run = run_tolip_executable({"montecarlo", deck, "--samples", std::to_string(n),
+                                                  "--seed", "13", "--threads", "2", "--json", "--csv", csv});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const nlohmann::json mc = nlohmann::json::parse(run.out, nullptr, false);
+  ASSERT_TRUE(mc.is_object());
+  ASSERT_EQ(mc["flown"], n);
+  const CommandResult optimize = run_tolip_executable({"optimize", deck, "--json"});
+  ASSERT_EQ(optimize.exit_code, 0) << optimize.err;
+  const nlohmann::json locus = nlohmann::json::parse(optimize.out, nullptr, false)["impact"]["cases"];
+  ASSERT_TRUE(locus.is_array());
+  ASSERT_EQ(mc["impact_ellipses"].size(), 3u);
+  for (int stage = 1; stage <= 3; ++stage) {
+    const nlohmann::json& c = mc["impact_ellipses"][stage - 1];
+    EXPECT_EQ(c["stage"], stage);
+    EXPECT_EQ(c["impacted"], n);
+    EXPECT_EQ(c["not_impacted"], 0);
+    const nlohmann::json* line = nullptr;
+    for (const nlohmann::json& row : locus) {
+      if (row["kind"] == "expended_casing" && row["stage"] == stage) line = &row;
+    }
+    ASSERT_NE(line, nullptr) << stage;
+    for (const char* key :
+         {"impact_time_s", "geodetic_latitude_deg", "longitude_deg", "downrange_nmi", "crossrange_nmi"}) {
+      EXPECT_EQ(c["nominal"][key], (*line)[key]) << stage << " " << key;
+    }
+    const nlohmann::json& e = c["ellipse"];
+    std::printf(
+        "stage %d casing: nominal %.3f n.mi. downrange; ellipse %.4f x %.4f n.mi. at %.2f deg, %.4f "
+        "inside\n",
+        stage, c["nominal"]["downrange_nmi"].get<double>(), e["semi_major_nmi"].get<double>(),
+        e["semi_minor_nmi"].get<double>(), e["major_axis_angle_deg"].get<double>(),
+        e["fraction_inside"].get<double>());
+    EXPECT_GT(e["fraction_inside"].get<double>(), 0.985) << stage;
+    EXPECT_GT(e["semi_major_nmi"].get<double>(), e["semi_minor_nmi"].get<double>());
+    EXPECT_GT(e["semi_minor_nmi"].get<double>(), 0.0);
+    // Symmetric sources: the mean impact within 3 standard errors (the ellipse's axes / 3.41 are
+    // sigmas) of the nominal.
+    const double sigma = e["semi_major_nmi"].get<double>() / std::sqrt(-2.0 * std::log(0.003));
+    EXPECT_LT(std::hypot(e["center_downrange_nmi"].get<double>(), e["center_crossrange_nmi"].get<double>()),
+              3.0 * sigma / std::sqrt(n) * std::sqrt(2.0))
+        << stage;
+  }
+  const std::string rows = read_text_file(csv);
+  EXPECT_NE(rows.find(",casing1_status,casing1_impact_time_s,casing1_geodetic_latitude_deg,"),
+            std::string::npos);
+  EXPECT_NE(rows.find(",casing3_crossrange_nmi\n"), std::string::npos);
+  const CommandResult listing =
+      run_tolip_executable({"montecarlo", deck, "--samples", "6", "--seed", "13", "--no-progress"});
+  ASSERT_EQ(listing.exit_code, 0) << listing.err;
+  EXPECT_NE(listing.out.find(" STAGE 2 CASING 1650.0 LB  NOMINAL IMPACT:"), std::string::npos) << listing.out;
+  EXPECT_NE(listing.out.find("   99.7 % ELLIPSE (DISPERSION FROM THE NOMINAL IMPACT)"), std::string::npos);
+}
+
+// Off (--no-impacts, or a deck without IP(23) and no --impacts): the JSON and CSV of before the
+// casing impacts, byte for byte the same either way; --impact-stages flies only the stages named.
+TEST(MonteCarloCommand, Sec17NoImpactsLeavesTheOutputsAsWithoutTheImpactAnalysis) {
+  ScratchDirectory scratch("montecarlo_no_impacts");
+  const std::string off_deck =
+      edited_example_deck(scratch, "ip23_off.toml", {{"impact = true ", "impact = false "}});
+  const std::string csv_a = (scratch / "a.csv").string();
+  const std::string csv_b = (scratch / "b.csv").string();
+  const CommandResult a = run_tolip_executable({"montecarlo", mission_deck(), "--samples", "6", "--seed", "4",
+                                                "--json", "--no-impacts", "--csv", csv_a});
+  const CommandResult b = run_tolip_executable(
+      {"montecarlo", off_deck, "--samples", "6", "--seed", "4", "--json", "--csv", csv_b});
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  ASSERT_EQ(b.exit_code, 0) << b.err;
+  EXPECT_EQ(a.out.find("impact_ellipses"), std::string::npos);
+  EXPECT_EQ(read_text_file(csv_a).find("casing"), std::string::npos);
+  EXPECT_EQ(a.out, b.out);
+  EXPECT_EQ(read_text_file(csv_a), read_text_file(csv_b));
+  const nlohmann::json jb = nlohmann::json::parse(b.out, nullptr, false);
+  // Asked for on the deck without IP(23): the casings of stages 1 and 3 only.
+  const CommandResult some = run_tolip_executable(
+      {"montecarlo", off_deck, "--samples", "6", "--seed", "4", "--json", "--impact-stages", "1,3"});
+  ASSERT_EQ(some.exit_code, 0) << some.err;
+  const nlohmann::json js = nlohmann::json::parse(some.out, nullptr, false);
+  ASSERT_EQ(js["impact_ellipses"].size(), 2u);
+  EXPECT_EQ(js["impact_ellipses"][0]["stage"], 1);
+  EXPECT_EQ(js["impact_ellipses"][1]["stage"], 3);
+  EXPECT_EQ(js["staging_points"], jb["staging_points"]);  // the samples themselves are unchanged
+}
+
 // A perigee threshold above every sample's perigee: no sample reaches orbit; the listing says so.
 TEST(MonteCarloCommand, OrbitThresholdIsTheCommandLines) {
   const CommandResult run = run_tolip_executable(
@@ -185,7 +277,8 @@ TEST(MonteCarloCommand, PlotsAreDrawnIntoTheDirectory) {
   ASSERT_EQ(run.exit_code, 0) << run.err;
   for (const char* name :
        {"montecarlo_burnout_altitude", "montecarlo_burnout_velocity", "montecarlo_burnout_flight_path_angle",
-        "montecarlo_perigee_apogee", "montecarlo_rss_comparison"}) {
+        "montecarlo_perigee_apogee", "montecarlo_rss_comparison", "montecarlo_stage1_casing_impacts",
+        "montecarlo_stage2_casing_impacts", "montecarlo_stage3_casing_impacts"}) {
     for (const char* extension : {".png", ".svg"}) {
       const std::filesystem::path file = std::filesystem::path(dir) / (std::string(name) + extension);
       EXPECT_TRUE(std::filesystem::exists(file)) << file;
@@ -253,6 +346,40 @@ TEST(MonteCarloCommand, BadInputExitsTwoNamingTheFieldAndWritesNothing) {
   std::ofstream(none) << text;
   expect_bad_input(scratch, {"montecarlo", none, "--samples", "5", "--seed", "1"},
                    "data block 46: no dispersion source the Monte Carlo draws");
+}
+
+// Casings asked for without their data: exit 2 naming data block 43, the table and the deck field;
+// no [impact] at all; a stage outside 1-3; --impacts with --no-impacts.
+TEST(MonteCarloCommand, Sec17ImpactsWithoutBlock43DataAreBadInputNamingTheBlock) {
+  ScratchDirectory scratch("montecarlo_impacts_bad");
+  // IP(23) off (it would require every table), then the stage-2 casing table cut from the deck.
+  const std::string ip23_off =
+      read_text_file(edited_example_deck(scratch, "ip23_off.toml", {{"impact = true ", "impact = false "}}));
+  const auto cut = [&](const std::string& from, const std::string& to, const std::string& name) {
+    std::string text = ip23_off;
+    const std::size_t a = text.find(from);
+    const std::size_t b = text.find(to);
+    EXPECT_NE(a, std::string::npos);
+    EXPECT_NE(b, std::string::npos);
+    text.erase(a, b - a);
+    const std::string path = (scratch / name).string();
+    std::ofstream(path) << text;
+    return path;
+  };
+  const std::string no_stage2 = cut("[impact.casing_drag.2]", "[impact.casing_drag.3]", "no_cd2e.toml");
+  expect_bad_input(scratch, {"montecarlo", no_stage2, "--samples", "5", "--seed", "1", "--impacts"},
+                   "data block 43, CD2E (impact.casing_drag.2): missing: --impacts needs the data block 43 "
+                   "drag table of stage 2");
+  const std::string none = cut("[impact.failure_drag.1]", "# Data blocks 44-45", "no_impact.toml");
+  expect_bad_input(
+      scratch, {"montecarlo", none, "--samples", "5", "--seed", "1", "--impact-stages", "1,3"},
+      "data block 43 (impact.casing_drag): --impact-stages needs the expended-casing drag tables");
+  expect_bad_input(scratch,
+                   {"montecarlo", mission_deck(), "--samples", "5", "--seed", "1", "--impact-stages", "4"},
+                   "--impact-stages 4: expected stages 1 to 3");
+  expect_bad_input(
+      scratch, {"montecarlo", mission_deck(), "--samples", "5", "--seed", "1", "--impacts", "--no-impacts"},
+      "--impacts");
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 
 #include "support/allocation_counter.hpp"
 #include "support/dispersion_sources.hpp"
+#include "support/reference_impact.hpp"
 #include "support/reference_mission.hpp"
 #include "tolip/dispersion/dispersion.hpp"
 #include "tolip/dispersion/monte_carlo.hpp"
@@ -85,6 +86,49 @@ TEST(CoreNoHeap, MonteCarloSampleAllocatesNothing) {
   EXPECT_EQ(status, Status::kOk);
   EXPECT_EQ(flown, Status::kOk);
   EXPECT_NE(sample.dispersions[3][0], 0.0);  // the work really happened
+  EXPECT_EQ(allocations, 0u);
+}
+
+// A sample's expended casings of stages 1-3 flown to impact (Sec. 17, data block 43; the Monte
+// Carlo's casing impacts, at most kImpactStages in fixed storage) after the sample: no heap.
+TEST(CoreNoHeap, MonteCarloCasingImpactsAllocateNothing) {
+  static Mission mission;
+  static DispersionData data;
+  static DispersionWorkspace workspace;
+  static DispersedTrajectory nominal_values;
+  static DispersedTrajectory sample;
+  static ImpactLocusData impact;
+  static ImpactWorkspace impact_workspace;
+  static MonteCarloImpacts impacts;
+  test::build_reference_mission(test::ReferenceProgram::kOptimum, &mission);
+  test::build_reference_impact_data(&impact);
+  for (int code : {9, 11, 13, 33}) {
+    DispersionSource& s = test::add_dispersion_source(&data, code);
+    s.weight_increment_lb = 50.0;
+    s.launch_change_rad = 0.005;
+  }
+  DispersionNominal nominal;
+  nominal.mission = &mission;
+  MonteCarloImpactRequest request;
+  request.data = &impact;
+  for (bool& stage : request.stages) stage = true;
+
+  test::AllocationScope scope;
+  Status status = prepare_monte_carlo(nominal, &workspace);
+  if (ok(status)) {
+    status = record_dispersed_trajectory(mission, workspace.nominal_prepared, workspace.nominal,
+                                         workspace.nominal, nullptr, &nominal_values);
+  }
+  const Status flown = fly_monte_carlo_sample(nominal, data, 1, 3, nominal_values, &workspace, &sample);
+  const Status casings = fly_monte_carlo_casings(nominal, request, workspace.mission, workspace.prepared,
+                                                 workspace.dispersed, &impact_workspace, &impacts);
+  const auto allocations = scope.count();
+
+  EXPECT_EQ(status, Status::kOk);
+  EXPECT_EQ(flown, Status::kOk);
+  EXPECT_EQ(casings, Status::kOk);
+  EXPECT_EQ(impacts.count, 3);  // the work really happened
+  EXPECT_GT(impacts.casings[2].steps, 10);
   EXPECT_EQ(allocations, 0u);
 }
 
