@@ -25,8 +25,8 @@ class App;
 
 namespace tolip::ground {
 
-// The most samples a run takes: the samples are kept in memory (about 0.6 kB each) until the
-// statistics are formed, so 100,000 is about 60 MB per process.
+// The most samples a run takes: the samples are kept in memory (about 0.6 kB each, 1 kB with the
+// casing impacts) until the statistics are formed, so 100,000 is about 60 (100) MB per process.
 inline constexpr long long kMaxMonteCarloSamples = 100000;
 inline constexpr int kMaxMonteCarloThreads = 256;
 

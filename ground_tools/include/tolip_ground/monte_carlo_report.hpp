@@ -1,7 +1,8 @@
 // The reports of `tolip montecarlo` (docs/cli.md "tolip montecarlo"; docs/theory/dispersions.md
 // "Monte Carlo"): the statistics of every Sec. 15 quantity over the samples (mean, standard
 // deviation, 0.135/50/99.865 % points) beside the manual's linear RSS three-sigma of the same
-// sources, the fraction of samples reaching orbit, the 99.7 % ellipse of the burnout point; as a
+// sources, the fraction of samples reaching orbit, the 99.7 % ellipse of the burnout point (and, with
+// the casing impacts, of every casing's impact point); as a
 // listing, one JSON document, a CSV of every sample and gnuplot figures. Everything is formed from
 // the samples in sample order, so the same samples give the same bytes whoever flew them.
 #pragma once
@@ -116,12 +117,14 @@ void write_monte_carlo_listing(std::ostream& out, const MonteCarloInputs& inputs
                                const MonteCarloSummary& summary);
 
 // One row per sample: its status, every staging point's values and dispersions, the orbit elements,
-// perigee and apogee altitudes, reaches_orbit, the max q-bar alpha.
+// perigee and apogee altitudes, reaches_orbit, the max q-bar alpha, and with the casing impacts
+// each casing's status, impact time, latitude, longitude, downrange and crossrange.
 void write_monte_carlo_csv(std::ostream& out, const MonteCarloInputs& inputs,
                            const MonteCarloSummary& summary);
 
 // The figures of --plots DIR: histograms of burnout altitude, velocity and flight-path angle,
-// perigee vs apogee, and the Monte Carlo three-sigma over the RSS three-sigma at every staging point.
+// perigee vs apogee, the Monte Carlo three-sigma over the RSS three-sigma at every staging point,
+// and with the casing impacts each casing's impact points with their ellipse.
 std::vector<Figure> monte_carlo_figures(const MonteCarloInputs& inputs, const MonteCarloSummary& summary);
 
 }  // namespace tolip::ground

@@ -172,13 +172,14 @@ void add_monte_carlo_options(CLI::App& command, MonteCarloCommandOptions* option
       .add_option("--csv", options->csv_path,
                   "Also write one row per sample (status, staging-point values\n"
                   "and dispersions, orbit elements, perigee and apogee, max\n"
-                  "q-bar alpha) to FILE as CSV, atomically")
+                  "q-bar alpha, casing impacts) to FILE as CSV, atomically")
       ->type_name("FILE");
   command
       .add_option("--plots", options->plots_dir,
                   "Also draw the figures (burnout altitude, velocity and\n"
                   "flight-path angle histograms, perigee vs apogee, Monte\n"
-                  "Carlo vs RSS three-sigma) into DIR as PNG and SVG")
+                  "Carlo vs RSS three-sigma, the casing impact points) into\n"
+                  "DIR as PNG and SVG")
       ->type_name("DIR");
   command.add_option("--gnuplot", options->gnuplot, "The gnuplot program for --plots (as 'tolip plot')")
       ->type_name("PROGRAM");
