@@ -40,6 +40,10 @@ TEST(MonteCarloCommand, SameSeedGivesTheSameJsonAndCsvOnOneTwoAndThreeThreads) {
   EXPECT_EQ(document["flown"], 30);
   EXPECT_EQ(document["nominal_kind"], "linearized program");
   EXPECT_EQ(document["staging_points"].size(), 4u);
+  // The example sets IP(23): the casing impacts are in both outputs, and so compared too.
+  ASSERT_EQ(document["impact_ellipses"].size(), 3u);
+  EXPECT_EQ(document["impact_ellipses"][2]["impacted"], 30);
+  EXPECT_NE(csv[0].find(",casing3_crossrange_nmi\n"), std::string::npos);
   for (int t = 1; t < 3; ++t) {
     EXPECT_EQ(json[0], json[t]) << t + 1 << " threads";
     EXPECT_EQ(csv[0], csv[t]) << t + 1 << " threads";
