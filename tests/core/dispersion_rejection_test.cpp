@@ -234,6 +234,112 @@ TEST(Sec15Dispersions, CasesThatCannotBeBuiltAreNamed) {
             Status::kTrajectoryEmpty);
 }
 
+// Page 22-30 stacked tables (codes 7-8 with block 55): stage 4 (0-10 s), a 2 s coast of zero
+// thrust, stage 5 (0-5 s), restarting at 0 or continuing, with block 55 = (10, 5).
+void stacked_source(DispersionSource* s, bool restart) {
+  const double o = restart ? 0.0 : 12.0;  // stage 5 ignition in table time
+  if (restart) {
+    table(&s->vacuum_thrust_lbf, {0.0, 5.0, 10.0, 0.0, 2.0, 0.0, 5.0},
+          {900.0, 800.0, 0.0, 0.0, 0.0, 300.0, 0.0}, false);
+    table(&s->consumable_weight_lb, {0.0, 5.0, 10.0, 0.0, 2.0, 0.0, 5.0},
+          {100.0, 50.0, 0.0, 0.0, 0.0, 40.0, 0.0}, false);
+  } else {
+    table(&s->vacuum_thrust_lbf, {0.0, 5.0, 10.0, o, o + 5.0}, {900.0, 800.0, 0.0, 300.0, 0.0});
+    table(&s->consumable_weight_lb, {0.0, 5.0, 10.0, o, o + 5.0}, {100.0, 50.0, 0.0, 40.0, 0.0});
+  }
+  s->stacked_stage4_5_tables = true;
+  s->stage4_5_durations_s[0] = 10.0;
+  s->stage4_5_durations_s[1] = 5.0;
+}
+
+// Sec. 22 data block 55 and page 22-30: both unambiguous layouts of the stacked tables split at
+// block 55's durations into stage 4's and stage 5's own tables (stage time from 0, burn time the
+// last time), and every table that does not split is refused by name, with its code, before
+// anything flies.
+TEST(Sec22DispersionBlocks, StackedStage45TablesSplitInEitherLayoutOrAreRefusedByName) {
+  for (bool restart : {true, false}) {
+    SCOPED_TRACE(restart ? "restarting" : "continuing");
+    DispersionSource s;
+    s.code = 7;
+    s.stage = 4;
+    stacked_source(&s, restart);
+    StackedStage45Split split;
+    ASSERT_EQ(find_stacked_stage4_5_split(s, &split), Status::kOk);
+    EXPECT_EQ(split.stage4_last, 2);
+    EXPECT_EQ(split.stage5_first, restart ? 5 : 3);
+    EXPECT_EQ(split.stage5_offset_s, restart ? 0.0 : 12.0);
+    StageData stage4, stage5;
+    ASSERT_EQ(unstack_stage4_5_tables(s, &stage4, &stage5), Status::kOk);
+    ASSERT_EQ(stage4.vacuum_thrust_lbf.size(), 3);
+    ASSERT_EQ(stage5.vacuum_thrust_lbf.size(), 2);
+    EXPECT_EQ(stage4.duration_s, 10.0);
+    EXPECT_EQ(stage5.duration_s, 5.0);
+    EXPECT_EQ(stage5.vacuum_thrust_lbf.x(0), 0.0);
+    EXPECT_EQ(stage5.vacuum_thrust_lbf.y(0), 300.0);
+    EXPECT_EQ(stage5.consumable_weight_lb.y(0), 40.0);   // stage 5's own remaining weight
+    EXPECT_EQ(stage4.consumable_weight_lb.y(0), 100.0);  // stage 4's own, nothing added
+    EXPECT_TRUE(stage4.vacuum_thrust_lbf.finalized() && stage5.consumable_weight_lb.finalized());
+    DispersionData data;
+    data.count = 1;
+    data.sources[0] = s;
+    int fault_code = -1;
+    EXPECT_EQ(validate_dispersion_data(data, &fault_code), Status::kOk);
+
+    struct Row {
+      const char* what;
+      void (*edit)(DispersionSource&);
+      Status status;
+    };
+    const Row rows[] = {
+        {"stage 4 duration not a table time", [](DispersionSource& d) { d.stage4_5_durations_s[0] = 9.0; },
+         Status::kDispersionStageDurationsMismatch},
+        {"stage 5 duration not its part's final time",
+         [](DispersionSource& d) { d.stage4_5_durations_s[1] = 4.0; },
+         Status::kDispersionStageDurationsMismatch},
+        {"block 55 missing (zero durations)",
+         [](DispersionSource& d) { d.stage4_5_durations_s[0] = d.stage4_5_durations_s[1] = 0.0; },
+         Status::kDispersionStageDurationsMismatch},
+        {"stage 5 duration not finite", [](DispersionSource& d) { d.stage4_5_durations_s[1] = kNaN; },
+         Status::kDispersionStageDurationsMismatch},
+        {"stage code 5 on the stage-4 area", [](DispersionSource& d) { d.stage = 5; },
+         Status::kDispersionStageCodeMismatch},
+        {"weight table given", [](DispersionSource& d) { d.consumable_weight_lb.clear(); },
+         Status::kTableEmpty},
+    };
+    for (const Row& row : rows) {
+      SCOPED_TRACE(row.what);
+      data.sources[0] = s;
+      row.edit(data.sources[0]);
+      EXPECT_EQ(validate_dispersion_data(data, &fault_code), row.status);
+      EXPECT_EQ(fault_code, 7);
+    }
+  }
+  // Not splittable: thrust in the coast; a restart not at stage time 0; no coast between the stages.
+  DispersionSource s;
+  s.code = 8;
+  s.stage = 4;
+  stacked_source(&s, true);
+  s.vacuum_thrust_lbf.set_y(4, 10.0);  // the coast's 2 s entry
+  StackedStage45Split split;
+  EXPECT_EQ(find_stacked_stage4_5_split(s, &split), Status::kDispersionStackedTablesNotSplittable);
+  table(&s.vacuum_thrust_lbf, {0.0, 5.0, 10.0, 1.0, 6.0}, {900.0, 800.0, 0.0, 300.0, 0.0}, false);
+  table(&s.consumable_weight_lb, {0.0, 5.0, 10.0, 1.0, 6.0}, {100.0, 50.0, 0.0, 40.0, 0.0}, false);
+  EXPECT_EQ(find_stacked_stage4_5_split(s, &split), Status::kDispersionStackedTablesNotSplittable);
+  table(&s.vacuum_thrust_lbf, {0.0, 5.0, 10.0, 15.0}, {900.0, 800.0, 300.0, 0.0});
+  table(&s.consumable_weight_lb, {0.0, 5.0, 10.0, 15.0}, {100.0, 50.0, 40.0, 0.0});
+  EXPECT_EQ(find_stacked_stage4_5_split(s, &split), Status::kDispersionStackedTablesNotSplittable);
+  // A part that breaks a per-stage rule: stage 5's weight rising.
+  stacked_source(&s, false);
+  s.consumable_weight_lb.set_y(4, 41.0);
+  EXPECT_EQ(find_stacked_stage4_5_split(s, &split), Status::kConsumableWeightIncreases);
+
+  // A vehicle without stage 5 (the four-stage reference): named when the code is built, not flown.
+  auto f = make_fixture();
+  stacked_source(&s, true);
+  EXPECT_EQ(build_dispersed_case(nominal_of(*f, false), f->prepared, s, &f->workspace),
+            Status::kDispersionStackedTablesNeedStage5);
+}
+
 // Which sources a Monte Carlo sample draws: a low code whose high code is listed shares the high
 // code's draw (it is not drawn on its own); misalignment and C_M_alpha only in a 6D case; tip-off
 // only for a spun stage; thrust only for a flown stage and not from stacked stage-4/5 tables.
@@ -374,6 +480,76 @@ TEST(MonteCarlo, SampleBuiltAfterOtherSamplesEqualsTheSampleBuiltAfresh) {
   EXPECT_EQ(ws.mission.launch.azimuth_rad, f->mission.launch.azimuth_rad);
   const AeroTable& nominal_cd = f->mission.vehicle.stages[stage_index(1)].drag_coefficient;
   for (int i = 0; i < nominal_cd.size(); ++i) EXPECT_EQ(cd.y(i), nominal_cd.y(i)) << i;
+}
+
+// Page 22-30 in the Monte Carlo: stacked stage-4/5 tables (codes 7-8 with block 55) are drawn on a
+// five-stage vehicle, unstacked and blended stage by stage with the one draw of code 7: with one
+// stage dispersed (the stage's own tables, thrust x 1.03, times / 1.03) and the other's nominal
+// tables stacked with it, the dispersed stage of a sample is, bit for bit, that of the per-stage
+// form (code 7 on stage 4, or with stage code 5) of the same seed and sample; the other keeps its
+// nominal burn time. A sample flies; the grids are checked for both stages before it.
+TEST(MonteCarlo, StackedStage45TablesBlendEachStageAsTheirPerStageForm) {
+  auto f = make_fixture();
+  DispersionData& d = f->data;
+  d.count = 0;
+  test::stack_stage4_5_tables(f->mission.vehicle.stages[stage_index(4)],
+                              f->mission.vehicle.stages[stage_index(4)], true, &add(&d, 7));
+  EXPECT_FALSE(monte_carlo_draws_source(nominal_of(*f, false), d, 0));  // no stage 5
+  test::make_five_stage_vehicle(&f->mission);
+  ASSERT_EQ(prepare_case(f->mission, &f->prepared), Status::kOk);
+  const DispersionNominal nominal = nominal_of(*f, false);
+  const StageData n4 = f->mission.vehicle.stages[stage_index(4)];
+  const StageData n5 = f->mission.vehicle.stages[stage_index(5)];
+  StageData high;
+  for (int i = 0; i < n4.vacuum_thrust_lbf.size(); ++i) {
+    const double t = n4.vacuum_thrust_lbf.x(i) / 1.03;
+    ASSERT_EQ(high.vacuum_thrust_lbf.append(t, 1.03 * n4.vacuum_thrust_lbf.y(i)), Status::kOk);
+    ASSERT_EQ(high.consumable_weight_lb.append(t, n4.consumable_weight_lb.y(i)), Status::kOk);
+  }
+  ASSERT_EQ(high.vacuum_thrust_lbf.finalize(), Status::kOk);
+  ASSERT_EQ(high.consumable_weight_lb.finalize(), Status::kOk);
+  auto per_stage = std::make_unique<DispersionWorkspace>();
+  for (int dispersed : {4, 5}) {
+    SCOPED_TRACE(dispersed);
+    DispersionData per;
+    DispersionSource& p = add(&per, 7);
+    p.stage = dispersed;
+    p.vacuum_thrust_lbf = high.vacuum_thrust_lbf;
+    p.consumable_weight_lb = high.consumable_weight_lb;
+    d.count = 0;
+    test::stack_stage4_5_tables(dispersed == 4 ? high : n4, dispersed == 5 ? high : n5, true, &add(&d, 7));
+    ASSERT_TRUE(monte_carlo_draws_source(nominal, d, 0));
+    int fault_code = -1;
+    ASSERT_EQ(check_monte_carlo_data(nominal, d, &fault_code), Status::kOk);
+    for (std::uint64_t sample : {3u, 4u}) {
+      ASSERT_EQ(build_monte_carlo_case(nominal, f->prepared, per, 1966, sample, per_stage.get()),
+                Status::kOk);
+      ASSERT_EQ(build_monte_carlo_case(nominal, f->prepared, d, 1966, sample, &f->workspace), Status::kOk);
+      const StageData& a = f->workspace.mission.vehicle.stages[stage_index(dispersed)];
+      const StageData& b = per_stage->mission.vehicle.stages[stage_index(dispersed)];
+      EXPECT_EQ(a.duration_s, b.duration_s);
+      EXPECT_NE(a.duration_s, (dispersed == 4 ? n4 : n5).duration_s);
+      ASSERT_EQ(a.vacuum_thrust_lbf.size(), b.vacuum_thrust_lbf.size());
+      for (int i = 0; i < a.vacuum_thrust_lbf.size(); ++i) {
+        EXPECT_EQ(a.vacuum_thrust_lbf.x(i), b.vacuum_thrust_lbf.x(i)) << i;
+        EXPECT_EQ(a.vacuum_thrust_lbf.y(i), b.vacuum_thrust_lbf.y(i)) << i;
+        EXPECT_EQ(a.consumable_weight_lb.y(i), b.consumable_weight_lb.y(i)) << i;
+      }
+      const int other = dispersed == 4 ? 5 : 4;
+      EXPECT_EQ(f->workspace.mission.vehicle.stages[stage_index(other)].duration_s,
+                f->mission.vehicle.stages[stage_index(other)].duration_s);
+    }
+  }
+  // A sample of the stacked source flies.
+  ASSERT_EQ(prepare_monte_carlo(nominal, &f->workspace), Status::kOk);
+  auto nominal_values = std::make_unique<DispersedTrajectory>();
+  ASSERT_EQ(record_dispersed_trajectory(f->mission, f->workspace.nominal_prepared, f->workspace.nominal,
+                                        f->workspace.nominal, nullptr, nominal_values.get()),
+            Status::kOk);
+  auto out = std::make_unique<DispersedTrajectory>();
+  EXPECT_EQ(fly_monte_carlo_sample(nominal, d, 1966, 3, *nominal_values, &f->workspace, out.get()),
+            Status::kOk);
+  EXPECT_NE(out->dispersions[4][static_cast<int>(StagingVariable::kVelocity)], 0.0);
 }
 
 // Table sources are blended on the union of their grids: more points than the tables hold is

@@ -262,20 +262,20 @@ TEST(Sec15Dispersions, SignsOfEveryFamilyOnTheReferenceData) {
   EXPECT_TRUE(r.three_sigma.computed);
 }
 
+constexpr auto stack = test::stack_stage4_5_tables;
+
 TEST(Sec15Dispersions, CodesThatCannotFlyAreNamedNotSkipped) {
   auto f = make_fixture();
   DispersionData& data = f->data;
   data.count = 0;
-  DispersionSource& stacked = add(&data, 7);
-  stacked.vacuum_thrust_lbf = f->mission.vehicle.stages[3].vacuum_thrust_lbf;
-  stacked.consumable_weight_lb = f->mission.vehicle.stages[3].consumable_weight_lb;
-  stacked.stacked_stage4_5_tables = true;
+  // Stacked stage 4/5 tables (block 55) on the four-stage reference: there is no stage 5.
+  stack(f->mission.vehicle.stages[3], f->mission.vehicle.stages[3], true, &add(&data, 7));
   add(&data, 19).pitching_moment_per_rad = f->mission.body_dynamics.pitching_moment_per_rad;
   add(&data, 21).misalignment_rad = 0.25 * kDeg;
   add(&data, 31).stage = 5;  // no stage 5
   ASSERT_EQ(run_dispersions(nominal_of(*f, false), data, &f->workspace, &f->result), Status::kOk);
   ASSERT_EQ(f->result.count, 4);
-  EXPECT_EQ(f->result.trajectories[0].status, Status::kDispersionNotImplemented);
+  EXPECT_EQ(f->result.trajectories[0].status, Status::kDispersionStackedTablesNeedStage5);
   EXPECT_EQ(f->result.trajectories[1].status, Status::kDispersionNeedsBodyDynamics);
   EXPECT_EQ(f->result.trajectories[2].status, Status::kDispersionNeedsBodyDynamics);
   EXPECT_EQ(f->result.trajectories[3].status, Status::kDispersionStageNotInSequence);
@@ -384,6 +384,102 @@ void expect_final_equals(const DispersedTrajectory& t, int final_column, const T
             end.downrange_rad * kNauticalMilesPerRadian)
       << t.code;
   EXPECT_NE(t.dispersions[final_column][kVel], 0.0) << t.code;  // the change did something
+}
+
+void expect_same_values(const DispersedTrajectory& a, const DispersedTrajectory& b, int columns) {
+  ASSERT_EQ(a.status, Status::kOk) << a.code;
+  ASSERT_EQ(b.status, Status::kOk) << b.code;
+  for (int j = 0; j < columns; ++j) {
+    for (int i = 0; i < kStagingVariables; ++i) EXPECT_EQ(a.values[j][i], b.values[j][i]) << j << " " << i;
+  }
+  for (int i = 0; i < kOrbitDispersionElements; ++i) EXPECT_EQ(a.orbit[i], b.orbit[i]) << i;
+}
+
+// Manual Sec. 15 / Sec. 22 page 22-30 and data block 55: codes 7-8 with stages 4 and 5 stacked in
+// the stage-4 tables fly as the two stages' own replacement tables. On the five-stage vehicle,
+// with the reference "stage 4 high" tables (thrust x 1.03, times / 1.03) for either stage:
+//  * stacked [4 high | coast | 5 nominal] and [4 nominal | coast | 5 high] give, bit for bit, every
+//    staging value and orbit element of the per-stage form (code 7 on stage 4; code 7 with stage
+//    code 5);
+//  * stacked [4 high | coast | 5 high] is, bit for bit, the forward run of the mission with both
+//    stages' tables replaced by hand (burn times their last times, coast 9 as optimized: 6 s, not
+//    the 2 s of the tables);
+//  * the continuing layout (stage 5 at d4 + 2 + t) flies as the restarting one, to round-off of
+//    (d4 + 2 + t) - (d4 + 2).
+TEST(Sec15Dispersions, StackedStage45TablesFlyAsTheirPerStageForm) {
+  auto f = make_fixture();
+  Mission& m = f->mission;
+  test::make_five_stage_vehicle(&m);
+  const nlohmann::json& t =
+      test::scout_reference()["dispersions"]["codes_1_8_vacuum_thrust_variation"]["tables"]["stage_4_high"];
+  StageData high;
+  fill(&high.vacuum_thrust_lbf, t["time_s"], t["vacuum_thrust_lbf"]);
+  fill(&high.consumable_weight_lb, t["time_s"], t["consumable_weight_remaining_lb"]);
+  const StageData& nominal4 = m.vehicle.stages[stage_index(4)];
+  const StageData& nominal5 = m.vehicle.stages[stage_index(5)];
+  DispersionNominal nominal;
+  nominal.mission = &m;  // the block 40 table
+
+  // The per-stage form.
+  DispersionData& data = f->data;
+  data.count = 0;
+  DispersionSource& per4 = add(&data, 7);
+  per4.vacuum_thrust_lbf = high.vacuum_thrust_lbf;
+  per4.consumable_weight_lb = high.consumable_weight_lb;
+  DispersionSource& per5 = add(&data, 8);
+  per5.stage = 5;
+  per5.vacuum_thrust_lbf = high.vacuum_thrust_lbf;
+  per5.consumable_weight_lb = high.consumable_weight_lb;
+  ASSERT_EQ(run_dispersions(nominal, data, &f->workspace, &f->result), Status::kOk);
+  const auto per_stage = std::make_unique<DispersionResult>(f->result);
+  ASSERT_EQ(per_stage->staging_count, 5);
+  ASSERT_EQ(per_stage->trajectories[0].status, Status::kOk);
+  ASSERT_EQ(per_stage->trajectories[1].status, Status::kOk);
+
+  // The stacked form: one stage dispersed, the other's nominal tables stacked with it.
+  data.count = 0;
+  stack(high, nominal5, true, &add(&data, 7));
+  stack(nominal4, high, true, &add(&data, 8));
+  ASSERT_EQ(run_dispersions(nominal, data, &f->workspace, &f->result), Status::kOk);
+  ASSERT_EQ(f->result.count, 2);
+  for (int k = 0; k < 2; ++k) expect_same_values(f->result.trajectories[k], per_stage->trajectories[k], 5);
+  // Stage 5's thrust leaves every column before its ignition as the nominal's.
+  for (int j = 0; j < 4; ++j) EXPECT_EQ(f->result.trajectories[1].dispersions[j][kVel], 0.0) << j;
+  EXPECT_NE(f->result.trajectories[0].dispersions[3][kVel], 0.0);  // stage 5 ignition moved
+
+  // Both stages dispersed: the hand-made forward run.
+  data.count = 0;
+  stack(high, high, true, &add(&data, 7));
+  stack(high, high, false, &add(&data, 8));
+  ASSERT_EQ(run_dispersions(nominal, data, &f->workspace, &f->result), Status::kOk);
+  Mission& hand = f->hand_mission;
+  hand = m;
+  for (int code : {4, 5}) {
+    StageData& stage = hand.vehicle.stages[stage_index(code)];
+    stage.vacuum_thrust_lbf = high.vacuum_thrust_lbf;
+    stage.consumable_weight_lb = high.consumable_weight_lb;
+    stage.duration_s = high.vacuum_thrust_lbf.last_x();
+  }
+  ASSERT_EQ(hand.vehicle.stages[stage_index(9)].duration_s, 6.0);
+  ASSERT_EQ(prepare_case(hand, &f->hand_prepared), Status::kOk);
+  ASSERT_EQ(fly_trajectory(hand, f->hand_prepared, &f->hand), Status::kOk);
+  expect_final_equals(f->result.trajectories[0], 4, f->hand);
+  // The coast between them flew its 6 s (flight order 1 6 2 7 3 8 4 9 5), stage 5 its table's time.
+  const PreparedCase& flown = f->workspace.prepared;
+  EXPECT_EQ(flown.timeline[7].code, 9);
+  EXPECT_EQ(flown.timeline[7].duration_s, 6.0);
+  EXPECT_NEAR(flown.timeline[8].duration_s, high.vacuum_thrust_lbf.last_x(), 1e-12);
+  // The continuing layout: the same flight to round-off.
+  const DispersedTrajectory& restarting = f->result.trajectories[0];
+  const DispersedTrajectory& continuing = f->result.trajectories[1];
+  ASSERT_EQ(continuing.status, Status::kOk);
+  for (int j = 0; j < 5; ++j) {
+    EXPECT_NEAR(continuing.values[j][kAlt], restarting.values[j][kAlt],
+                1e-6 * std::fabs(restarting.values[j][kAlt]) + 1e-6)
+        << j;
+    EXPECT_NEAR(continuing.values[j][kVel], restarting.values[j][kVel], 1e-9 * restarting.values[j][kVel])
+        << j;
+  }
 }
 
 // Codes 1-8: the replacement tables of the reference data (tests/reference, stage 2 high) put into

@@ -4,6 +4,7 @@
 // CSV, and a table the core cannot hold rejected as bad input. One run is shared (static cache).
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <memory>
@@ -197,13 +198,14 @@ TEST(Sec15DispersionCommand, OptimumIsTheNominalWithoutLinearization) {
 // column; stage 5's thrust and tip-off leave the columns before stage 5 ignition untouched, its
 // lighter jettison weight speeds every stage, and each moves the final point with the expected sign; the card
 // deck converted from it gives the same dispersions.
-TEST(Sec15DispersionCommand, FiveStageVehicleDispersesStage5WithoutTheSqueeze) {
-  ScratchDirectory scratch("dispersions_five_stages");
+// The example with an illustrative spun kick stage 5 (IP(9) = 1: on stage 4's attitudes) after a
+// coast 9 of 6 s, without its dispersion cases (the caller appends its own).
+std::string five_stage_deck_text() {
   std::string text = read_text_file(mission_deck());
   const auto edit = [&text](const std::string& from, const std::string& to) {
     const std::size_t at = text.find(from);
-    ASSERT_NE(at, std::string::npos) << from;
-    text.replace(at, from.size(), to);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at != std::string::npos) text.replace(at, from.size(), to);
   };
   edit("sequence = [1, 6, 2, 7, 3, 8, 4] ", "sequence = [1, 6, 2, 7, 3, 8, 4, 9, 5] ");
   edit("[launch]  # data blocks 20 and 21",
@@ -216,6 +218,12 @@ TEST(Sec15DispersionCommand, FiveStageVehicleDispersesStage5WithoutTheSqueeze) {
        "0.0]\n\n"
        "[launch]  # data blocks 20 and 21");
   text.erase(text.find("[[dispersion]]"));
+  return text;
+}
+
+TEST(Sec15DispersionCommand, FiveStageVehicleDispersesStage5WithoutTheSqueeze) {
+  ScratchDirectory scratch("dispersions_five_stages");
+  std::string text = five_stage_deck_text();
   text +=
       "\n[[dispersion]]\ncode = 7\ntitle = \"THRUST HI S5\"\nstage = 5\n"
       "[dispersion.thrust]\ntime_s = [0.0, 0.19417475728155337, 14.368932038834952, 14.563106796116505]\n"
@@ -263,6 +271,108 @@ TEST(Sec15DispersionCommand, FiveStageVehicleDispersesStage5WithoutTheSqueeze) {
     const double a = d["trajectories"][k]["dispersions"][4]["velocity_ft_s"].get<double>();
     const double b = c["trajectories"][k]["dispersions"][4]["velocity_ft_s"].get<double>();
     EXPECT_NEAR(a, b, 1e-3 * std::fabs(a) + 1e-6) << k;
+  }
+}
+
+// Manual page 22-30 and data block 55: the stacked five-stage form of codes 7-8 - stage 4's and
+// stage 5's thrust and weight tables both in the stage-4 tables of blocks 30 and 38, the coast
+// between them "input arbitrarily as two seconds", block 55 the two durations - flies through
+// `tolip dispersions`, from TOML and from the card deck converted from it (the heritage form):
+// code 7 stacks stage 4 high (the example's code-7 table: thrust x 1.03, time / 1.03) with stage 5
+// high (restarting at stage time 0), code 8 stage 4 nominal with stage 5 high (continuing at
+// 28 + 2 s). Code 8's stage 5 alone leaves every column before stage 5 ignition as the nominal's;
+// code 7 moves stage 5 ignition. A block 55 duration that is not its part's final time is bad
+// input: exit 2 naming data block 55 and the code, nothing flown.
+TEST(Sec15DispersionCommand, StackedStage45TablesFlyFromTomlAndCards) {
+  ScratchDirectory scratch("dispersions_stacked");
+  const std::string high4_t =
+      "0.0, 0.0971, 0.2427, 0.4854, 1.9417, 4.8544, 8.7379, 12.6214, 16.5049, 19.4175, 21.8447, 23.301, "
+      "24.2718, 25.2427, 26.0194, 26.6019, 27.1845";
+  const std::string high4_f =
+      "0.0, 3159.5, 6003.1, 6319.2, 6192.8, 6129.5, 6192.8, 6319.2, 6382.3, 6319.2, 6129.5, 5687.1, 4739.3, "
+      "3033.1, 1390.2, 442.4, 0.0";
+  const std::string high4_w =
+      "560.0, 559.448, 557.048, 551.669, 518.897, 454.347, 368.279, 280.888, 192.172, 125.636, 71.292, "
+      "40.341, 22.135, 8.562, 2.383, 0.463, 0.0";
+  const std::string nominal4_t =
+      "0.0, 0.1, 0.25, 0.5, 2.0, 5.0, 9.0, 13.0, 17.0, 20.0, 22.5, 24.0, 25.0, 26.0, 26.8, 27.4, 28.0";
+  const std::string nominal4_f =
+      "0.0, 3067.5, 5828.3, 6135.1, 6012.4, 5951.0, 6012.4, 6135.1, 6196.4, 6135.1, 5951.0, 5521.5, 4601.3, "
+      "2944.8, 1349.7, 429.5, 0.0";
+  const std::string high5_t = "0.0, 0.19417475728155337, 14.368932038834952, 14.563106796116505";
+  const std::string high5_f = "0.0, 1545.0, 1545.0, 0.0";
+  const std::string high5_w = "80.0, 79.99, 0.01, 0.0";
+  // Stage 4's nominal weights: the example's own block 38 table.
+  std::string text = five_stage_deck_text();
+  const std::size_t w4 = text.find("[stage.4.consumable_weight]");
+  ASSERT_NE(w4, std::string::npos);
+  const std::size_t w4_from = text.find("remaining_lb = [", w4) + 16;
+  std::string nominal4_w = text.substr(w4_from, text.find(']', w4_from) - w4_from);
+  while (!nominal4_w.empty() &&
+         (std::isspace(static_cast<unsigned char>(nominal4_w.back())) != 0 || nominal4_w.back() == ','))
+    nominal4_w.pop_back();
+  const auto stacked = [](int code, const std::string& title, const std::string& t, const std::string& f,
+                          const std::string& w, const std::string& durations) {
+    return "\n[[dispersion]]\ncode = " + std::to_string(code) + "\ntitle = \"" + title +
+           "\"\nstage_durations_s = [" + durations + "]\n[dispersion.thrust]\ntime_s = [" + t +
+           "]\nvacuum_thrust_lbf = [" + f + "]\n[dispersion.consumable_weight]\ntime_s = [" + t +
+           "]\nremaining_lb = [" + w + "]\n";
+  };
+  // Code 7: restarting (stage 4, coast 0-2 s, stage 5); code 8: continuing (stage 5 from 30 s).
+  std::string continuing_t, continuing_t5;
+  for (const double t : {0.0, 0.19417475728155337, 14.368932038834952, 14.563106796116505}) {
+    std::ostringstream v;
+    v.precision(17);
+    v << 30.0 + t;
+    continuing_t5 += (continuing_t5.empty() ? "" : ", ") + v.str();
+  }
+  text += stacked(7, "STACKED HI", high4_t + ", 0.0, 2.0, " + high5_t, high4_f + ", 0.0, 0.0, " + high5_f,
+                  high4_w + ", 0.0, 0.0, " + high5_w, "27.1845, 14.563106796116505");
+  const std::string code8 =
+      stacked(8, "STACKED S5", nominal4_t + ", " + continuing_t5, nominal4_f + ", " + high5_f,
+              nominal4_w + ", " + high5_w, "28.0, 14.563106796116505");
+  const std::string deck = (scratch / "stacked.toml").string();
+  std::ofstream(deck) << text + code8;
+  const std::string cards = (scratch / "stacked.dat").string();
+  const CommandResult converted = run_tolip_executable({"convert", deck, "--to", cards});
+  ASSERT_EQ(converted.exit_code, 0) << converted.err;
+  nlohmann::json results[2];
+  for (int form = 0; form < 2; ++form) {
+    SCOPED_TRACE(form == 0 ? "TOML" : "cards");
+    const CommandResult run = run_tolip_executable({"dispersions", form == 0 ? deck : cards, "--json"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const nlohmann::json d = nlohmann::json::parse(run.out, nullptr, false)["dispersions"];
+    ASSERT_EQ(d["status"], "kOk") << d.dump();
+    ASSERT_EQ(d["staging_points"].size(), 5u);
+    ASSERT_EQ(d["trajectories"].size(), 2u);
+    for (const nlohmann::json& t : d["trajectories"]) ASSERT_EQ(t["status"], "kOk") << t.dump();
+    const nlohmann::json& both = d["trajectories"][0]["dispersions"];
+    const nlohmann::json& stage5 = d["trajectories"][1]["dispersions"];
+    EXPECT_NE(both[3]["velocity_ft_s"].get<double>(), 0.0);  // stage 4 high: stage 5 ignition moves
+    for (int j = 0; j < 4; ++j) EXPECT_EQ(stage5[j]["velocity_ft_s"].get<double>(), 0.0) << j;
+    EXPECT_NE(stage5[4]["velocity_ft_s"].get<double>(), 0.0);
+    results[form] = d;
+  }
+  for (std::size_t k = 0; k < 2; ++k) {
+    const double a = results[0]["trajectories"][k]["dispersions"][4]["velocity_ft_s"].get<double>();
+    const double b = results[1]["trajectories"][k]["dispersions"][4]["velocity_ft_s"].get<double>();
+    EXPECT_NEAR(a, b, 1e-3 * std::fabs(a) + 1e-6) << k;
+  }
+
+  // Block 55's stage 5 duration not the final time of stage 5's part: exit 2, block 55 and code 8
+  // named, from TOML and from cards.
+  const std::string bad = (scratch / "stacked_bad.toml").string();
+  std::string bad_code8 = code8;
+  bad_code8.replace(bad_code8.find("28.0, 14.563106796116505"), 24, "28.0, 14.0");
+  std::ofstream(bad) << text + bad_code8;
+  const std::string bad_cards = (scratch / "stacked_bad.dat").string();
+  ASSERT_EQ(run_tolip_executable({"convert", bad, "--to", bad_cards}).exit_code, 0);
+  for (const std::string& path : {bad, bad_cards}) {
+    const CommandResult run = run_tolip_executable({"dispersions", path, "--json"});
+    EXPECT_EQ(run.exit_code, 2) << run.err;
+    EXPECT_TRUE(run.out.empty());
+    EXPECT_NE(run.err.find("data block 55, dispersion code 8"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("kDispersionStageDurationsMismatch"), std::string::npos) << run.err;
   }
 }
 

@@ -34,4 +34,57 @@ inline DispersionNominal dispersion_nominal(const Mission& mission, const Contro
   return n;
 }
 
+// The five-stage vehicle of the stacked-table tests: the reference, a coast 9 and a second spun
+// kick stage 5 (stage 4's motor) after stage 4 - the sequence 4, 9, 5 of the manual's five-stage
+// Scout (page 22-30).
+inline void make_five_stage_vehicle(Mission* m) {
+  StageData& coast = m->vehicle.stages[stage_index(9)];
+  coast = StageData{};
+  coast.duration_s = 6.0;
+  coast.integration_steps = 3;
+  StageData& s5 = m->vehicle.stages[stage_index(5)];
+  s5 = m->vehicle.stages[stage_index(4)];
+  s5.integration_steps = 20;
+  s5.jettison_weight_lb = 60.0;
+  m->vehicle.sequence.codes[m->vehicle.sequence.count++] = 9;
+  m->vehicle.sequence.codes[m->vehicle.sequence.count++] = 5;
+  coast.in_sequence = true;
+  s5.in_sequence = true;
+  MissionFault fault;
+  ASSERT_EQ(validate_mission(*m, &fault), Status::kOk) << fault.field;
+}
+
+// Appends entries of one stage's tables to stacked tables, at table time offset_s + stage time.
+inline void append_part(const ThrustTable& thrust, const WeightTable& weight, double offset_s,
+                        DispersionSource* s) {
+  for (int i = 0; i < thrust.size(); ++i) {
+    ASSERT_EQ(s->vacuum_thrust_lbf.append(offset_s + thrust.x(i), thrust.y(i)), Status::kOk);
+    ASSERT_EQ(s->consumable_weight_lb.append(offset_s + weight.x(i), weight.y(i)), Status::kOk);
+  }
+}
+
+// Page 22-30's stacked source: stage 4's table, the coast "input arbitrarily as two seconds" (zero
+// thrust; stage 4's last remaining weight), stage 5's table, and block 55 = both durations. With
+// restart, stage 5 and the coast each restart at stage time 0; else the times continue
+// (d4, d4 + 2, d4 + 2 + t).
+inline void stack_stage4_5_tables(const StageData& stage4, const StageData& stage5, bool restart,
+                                  DispersionSource* s) {
+  s->vacuum_thrust_lbf.clear();
+  s->consumable_weight_lb.clear();
+  const double d4 = stage4.vacuum_thrust_lbf.last_x();
+  append_part(stage4.vacuum_thrust_lbf, stage4.consumable_weight_lb, 0.0, s);
+  if (restart) {
+    for (double t : {0.0, 2.0}) {
+      ASSERT_EQ(s->vacuum_thrust_lbf.append(t, 0.0), Status::kOk);
+      ASSERT_EQ(s->consumable_weight_lb.append(t, stage4.consumable_weight_lb.last_y()), Status::kOk);
+    }
+  }
+  append_part(stage5.vacuum_thrust_lbf, stage5.consumable_weight_lb, restart ? 0.0 : d4 + 2.0, s);
+  (void)s->vacuum_thrust_lbf.finalize();  // the restarting layout is not one increasing table
+  (void)s->consumable_weight_lb.finalize();
+  s->stacked_stage4_5_tables = true;
+  s->stage4_5_durations_s[0] = d4;
+  s->stage4_5_durations_s[1] = stage5.vacuum_thrust_lbf.last_x();
+}
+
 }  // namespace tolip::test

@@ -207,6 +207,9 @@ const char* status_name(Status status) {
     case Status::kIntegrationMultiplierNotInteger: return "kIntegrationMultiplierNotInteger";
     case Status::kIntegrationMultiplierBelowOne: return "kIntegrationMultiplierBelowOne";
     case Status::kIntegrationMultiplierAboveCapacity: return "kIntegrationMultiplierAboveCapacity";
+    case Status::kDispersionStageDurationsMismatch: return "kDispersionStageDurationsMismatch";
+    case Status::kDispersionStackedTablesNotSplittable: return "kDispersionStackedTablesNotSplittable";
+    case Status::kDispersionStackedTablesNeedStage5: return "kDispersionStackedTablesNeedStage5";
   }
   return "kUnknownStatus";
 }
@@ -618,6 +621,16 @@ const char* status_message(Status status) {
     case Status::kIntegrationMultiplierAboveCapacity:
       return "a 6D integration frequency multiplier (DA6D(12-15)) is above "
              "kMaxIntegrationFrequencyMultiplier";
+    case Status::kDispersionStageDurationsMismatch:
+      return "a data block 55 stage 4 or 5 duration is not positive or is not the final time of that "
+             "stage's part of the stacked stage-4 tables of data blocks 30 and 38 (codes 7-8)";
+    case Status::kDispersionStackedTablesNotSplittable:
+      return "the stacked stage-4 tables of data blocks 30 and 38 (codes 7-8 with data block 55) do not "
+             "split into stage 4's table from time 0, a coast of zero thrust and stage 5's table "
+             "(restarting at 0 or continuing)";
+    case Status::kDispersionStackedTablesNeedStage5:
+      return "codes 7-8 with data block 55 (stacked stage 4 and 5 tables) need a five-stage vehicle: "
+             "stage 5 is not in the stage sequence";
   }
   return "unknown status";
 }

@@ -106,7 +106,123 @@ void finish(int columns, ThreeSigmaGroup* group) {
   }
 }
 
+// The rules of one stage's replacement tables, as data blocks 30 and 38 (validate_mission):
+// entries [first, last] of the thrust and weight tables at stage time x - offset_s, from stage
+// time 0 and ending after it, on the same times, the thrust not negative, the consumable weight
+// not increasing and not negative. A per-stage source is the whole table at offset 0; a stacked
+// one (codes 7-8 with block 55) has two such parts.
+Status check_replacement_part(const ThrustTable& thrust, const WeightTable& weight, int first, int last,
+                              double offset_s) {
+  if (thrust.x(first) - offset_s != 0.0 || !(thrust.x(last) - offset_s > 0.0)) {
+    return Status::kDispersionThrustTableTimesInvalid;
+  }
+  for (int i = first; i <= last; ++i) {
+    if (thrust.x(i) != weight.x(i)) return Status::kThrustWeightTimesDiffer;
+    if (i > first && !(thrust.x(i) > thrust.x(i - 1))) return Status::kTableNotMonotonic;
+    if (thrust.y(i) < 0.0) return Status::kDispersionThrustNegative;
+    if (weight.y(i) < 0.0) return Status::kNegativeWeight;
+    if (i > first && weight.y(i) > weight.y(i - 1)) return Status::kConsumableWeightIncreases;
+  }
+  return Status::kOk;
+}
+
+// Block 55 against the table times (Sec. 22: "These must be the same as final entries in data
+// blocks 30 and 38"): the same number, up to the round-off of t_last - d5 in the continuing layout.
+constexpr double kStackedTimeTolerance = 1e-9;  // relative to the larger time, at least 1 s
+
+bool same_time_s(double a, double b) {
+  return std::fabs(a - b) <= kStackedTimeTolerance * std::fmax(1.0, std::fmax(std::fabs(a), std::fabs(b)));
+}
+
+// One part of a split stacked source into a stage's tables, in its own stage time.
+Status copy_part(const DispersionSource& source, int first, int last, double offset_s, StageData* out) {
+  out->vacuum_thrust_lbf.clear();
+  out->consumable_weight_lb.clear();
+  for (int i = first; i <= last; ++i) {
+    const double t = source.vacuum_thrust_lbf.x(i) - offset_s;
+    Status status = out->vacuum_thrust_lbf.append(t, source.vacuum_thrust_lbf.y(i));
+    if (ok(status)) status = out->consumable_weight_lb.append(t, source.consumable_weight_lb.y(i));
+    if (!ok(status)) return status;
+  }
+  Status status = out->vacuum_thrust_lbf.finalize();
+  if (ok(status)) status = out->consumable_weight_lb.finalize();
+  if (!ok(status)) return status;
+  out->duration_s = out->vacuum_thrust_lbf.last_x();
+  return Status::kOk;
+}
+
 }  // namespace
+
+Status find_stacked_stage4_5_split(const DispersionSource& source, StackedStage45Split* split) {
+  *split = StackedStage45Split{};
+  const ThrustTable& thrust = source.vacuum_thrust_lbf;
+  const WeightTable& weight = source.consumable_weight_lb;
+  const double d4 = source.stage4_5_durations_s[0];
+  const double d5 = source.stage4_5_durations_s[1];
+  if (!(d4 > 0.0) || !(d5 > 0.0) || !std::isfinite(d4) || !std::isfinite(d5)) {
+    return Status::kDispersionStageDurationsMismatch;
+  }
+  if (thrust.empty() || weight.empty()) return Status::kTableEmpty;
+  const int n = thrust.size();
+  if (weight.size() != n) return Status::kThrustWeightTimesDiffer;
+  for (int i = 0; i < n; ++i) {
+    if (thrust.x(i) != weight.x(i)) return Status::kThrustWeightTimesDiffer;
+  }
+  // Stage 4: the first run of increasing times, up to its entry at d4.
+  int stage4_last = 0;
+  while (stage4_last + 1 < n && thrust.x(stage4_last + 1) > thrust.x(stage4_last) &&
+         (thrust.x(stage4_last + 1) <= d4 || same_time_s(thrust.x(stage4_last + 1), d4))) {
+    ++stage4_last;
+  }
+  if (!same_time_s(thrust.x(stage4_last), d4)) return Status::kDispersionStageDurationsMismatch;
+  // Stage 5: the last run when the times restart (at stage time 0), else the entries of the last
+  // d5 seconds of the one continuing run.
+  int restart = -1;
+  for (int i = stage4_last + 1; i < n; ++i) {
+    if (!(thrust.x(i) > thrust.x(i - 1))) restart = i;
+  }
+  const double end_s = thrust.x(n - 1);
+  int stage5_first = -1;
+  double offset_s = 0.0;
+  if (restart >= 0) {
+    if (thrust.x(restart) != 0.0) return Status::kDispersionStackedTablesNotSplittable;
+    if (!same_time_s(end_s, d5)) return Status::kDispersionStageDurationsMismatch;
+    stage5_first = restart;
+  } else {
+    const double ignition_s = end_s - d5;  // stage 4 duration + the coast as input
+    if (!(ignition_s > thrust.x(stage4_last)) || same_time_s(ignition_s, thrust.x(stage4_last))) {
+      return Status::kDispersionStackedTablesNotSplittable;  // no coast between the stages
+    }
+    for (int i = stage4_last + 1; i + 1 < n && stage5_first < 0; ++i) {
+      if (same_time_s(thrust.x(i), ignition_s)) stage5_first = i;
+    }
+    if (stage5_first < 0) return Status::kDispersionStageDurationsMismatch;
+    offset_s = thrust.x(stage5_first);
+  }
+  // The coast between them: zero thrust ("one segment of thrust equal to zero over the coast").
+  for (int i = stage4_last + 1; i < stage5_first; ++i) {
+    if (thrust.y(i) != 0.0) return Status::kDispersionStackedTablesNotSplittable;
+    if (weight.y(i) < 0.0) return Status::kNegativeWeight;
+  }
+  Status status = check_replacement_part(thrust, weight, 0, stage4_last, 0.0);
+  if (ok(status)) status = check_replacement_part(thrust, weight, stage5_first, n - 1, offset_s);
+  if (!ok(status)) return status;
+  split->stage4_last = stage4_last;
+  split->stage5_first = stage5_first;
+  split->stage5_offset_s = offset_s;
+  return Status::kOk;
+}
+
+Status unstack_stage4_5_tables(const DispersionSource& source, StageData* stage4, StageData* stage5) {
+  StackedStage45Split split;
+  Status status = find_stacked_stage4_5_split(source, &split);
+  if (ok(status)) status = copy_part(source, 0, split.stage4_last, 0.0, stage4);
+  if (ok(status)) {
+    status = copy_part(source, split.stage5_first, source.vacuum_thrust_lbf.size() - 1, split.stage5_offset_s,
+                       stage5);
+  }
+  return status;
+}
 
 // The nominal per-point program carried onto a dispersed timeline: a stage whose grid is the
 // nominal's keeps its values; one whose burn time changed (codes 1-8) flies the nominal program
@@ -179,33 +295,30 @@ Status validate_dispersion_data(const DispersionData& data, int* fault_code) {
     if (!dispersion_code_info(s.code, &info) || s.code <= previous) return Status::kDispersionCodeInvalid;
     previous = s.code;
     switch (info.kind) {
-      case Kind::kVacuumThrust:
+      case Kind::kVacuumThrust: {
         if (s.stage != 0 && s.stage != info.stage && !(info.stage == 4 && s.stage == 5)) {
           return Status::kDispersionStageCodeMismatch;
+        }
+        if (s.stacked_stage4_5_tables) {
+          // Page 22-30: both stages "into the stage 4 tables" (stage code 4), split by block 55.
+          if (s.stage == 5) return Status::kDispersionStageCodeMismatch;
+          StackedStage45Split split;
+          const Status status = find_stacked_stage4_5_split(s, &split);
+          if (!ok(status)) return status;
+          break;
         }
         if (s.vacuum_thrust_lbf.empty() || s.consumable_weight_lb.empty()) return Status::kTableEmpty;
         if (!s.vacuum_thrust_lbf.finalized() || !s.consumable_weight_lb.finalized()) {
           return Status::kTableNotMonotonic;
         }
-        // As data blocks 30 and 38 (validate_mission): from stage time 0, on the same times, the
-        // thrust not negative, the consumable weight not increasing and not negative.
         if (s.vacuum_thrust_lbf.size() != s.consumable_weight_lb.size()) {
           return Status::kThrustWeightTimesDiffer;
         }
-        if (s.vacuum_thrust_lbf.first_x() != 0.0 || !(s.vacuum_thrust_lbf.last_x() > 0.0)) {
-          return Status::kDispersionThrustTableTimesInvalid;
-        }
-        for (int i = 0; i < s.vacuum_thrust_lbf.size(); ++i) {
-          if (s.vacuum_thrust_lbf.x(i) != s.consumable_weight_lb.x(i)) {
-            return Status::kThrustWeightTimesDiffer;
-          }
-          if (s.vacuum_thrust_lbf.y(i) < 0.0) return Status::kDispersionThrustNegative;
-          if (s.consumable_weight_lb.y(i) < 0.0) return Status::kNegativeWeight;
-          if (i > 0 && s.consumable_weight_lb.y(i) > s.consumable_weight_lb.y(i - 1)) {
-            return Status::kConsumableWeightIncreases;
-          }
-        }
+        const Status status = check_replacement_part(s.vacuum_thrust_lbf, s.consumable_weight_lb, 0,
+                                                     s.vacuum_thrust_lbf.size() - 1, 0.0);
+        if (!ok(status)) return status;
         break;
+      }
       case Kind::kPitchingMoment:
         if (s.pitching_moment_per_rad.empty()) return Status::kTableEmpty;
         if (!s.pitching_moment_per_rad.finalized()) return Status::kTableNotMonotonic;
@@ -260,7 +373,16 @@ Status build_dispersed_case(const DispersionNominal& nominal, const PreparedCase
     case Kind::kVacuumThrust: {
       // Blocks 30 and 38 replace the stage's tables; its burn time is the new table's last time.
       // prepare_case() below re-tabulates it (Sec. 14) at the dispersed burn time.
-      if (source.stacked_stage4_5_tables) return Status::kDispersionNotImplemented;
+      if (source.stacked_stage4_5_tables) {
+        // Page 22-30: stages 4 and 5 stacked in the stage-4 tables, both replaced; the coast 9
+        // between them keeps its optimized length ("the program automatically changes this to
+        // the optimized value").
+        if (!in_sequence(m, 5)) return Status::kDispersionStackedTablesNeedStage5;
+        const Status status = unstack_stage4_5_tables(source, &m.vehicle.stages[stage_index(4)],
+                                                      &m.vehicle.stages[stage_index(5)]);
+        if (!ok(status)) return status;
+        break;
+      }
       StageData& data = m.vehicle.stages[stage_index(stage)];
       data.vacuum_thrust_lbf = source.vacuum_thrust_lbf;
       data.consumable_weight_lb = source.consumable_weight_lb;

@@ -63,9 +63,22 @@ struct Grid {
   int count = 0;
 };
 
-template <int G, int A, int B, int C, int D>
-bool merge_grid(const Table<A>* a, double sa, const Table<B>* b, double sb, const Table<C>* c, double sc,
-                const Table<D>* d, double sd, Grid<G>* out) {
+// A run of a table's entries [first, first + count) at abscissa x - offset: one stage's part of
+// stacked stage-4/5 tables (codes 7-8 with block 55), merged as a table of its own.
+template <int N>
+struct TablePart {
+  const Table<N>* table = nullptr;
+  int first = 0;
+  int count = 0;
+  double offset = 0.0;
+  int size() const { return count; }
+  double x(int i) const { return table->x(first + i) - offset; }
+};
+
+// A, B, C, D: Table<N> or TablePart<N> (size() and x(i)).
+template <int G, class A, class B, class C, class D>
+bool merge_grid(const A* a, double sa, const B* b, double sb, const C* c, double sc, const D* d, double sd,
+                Grid<G>* out) {
   out->count = 0;
   int ia = 0, ib = 0, ic = 0, id = 0;
   const auto next = [](auto* table, double scale, int i) {
@@ -90,14 +103,15 @@ bool merge_grid(const Table<A>* a, double sa, const Table<B>* b, double sb, cons
 // nominal's (c = 0) and the source's (c = 1) in normalized stage time tau = t / burn time:
 // b = b_n + c (b_s - b_n), T(tau b) = T_n(tau b_n) + c (T_s(tau b_s) - T_n(tau b_n)), W alike, on
 // the union of both grids (exactly the source's tables at c = 1, linear in c).
-Status blend_thrust(const StageData& nominal, const DispersionSource& source, double c, StageData* out) {
+Status blend_thrust(const StageData& nominal, const ThrustTable& source_thrust,
+                    const WeightTable& source_weight, double c, StageData* out) {
   const double bn = nominal.duration_s;
-  const double bs = source.vacuum_thrust_lbf.last_x();
+  const double bs = source_thrust.last_x();
   const double b = bn + c * (bs - bn);
   if (!(bn > 0.0) || !(bs > 0.0) || !(b > 0.0)) return Status::kMonteCarloBurnTimeNotPositive;
   Grid<kMaxThrustPoints> grid;
-  if (!merge_grid(&nominal.vacuum_thrust_lbf, bn, &nominal.consumable_weight_lb, bn,
-                  &source.vacuum_thrust_lbf, bs, &source.consumable_weight_lb, bs, &grid)) {
+  if (!merge_grid(&nominal.vacuum_thrust_lbf, bn, &nominal.consumable_weight_lb, bn, &source_thrust, bs,
+                  &source_weight, bs, &grid)) {
     return Status::kTooManyTablePoints;
   }
   out->vacuum_thrust_lbf.clear();
@@ -106,9 +120,9 @@ Status blend_thrust(const StageData& nominal, const DispersionSource& source, do
   for (int i = 0; i < grid.count; ++i) {
     const double tau = grid.x[i];
     const double tn = nominal.vacuum_thrust_lbf(tau * bn, &hint_tn);
-    const double ts = source.vacuum_thrust_lbf(tau * bs, &hint_ts);
+    const double ts = source_thrust(tau * bs, &hint_ts);
     const double wn = nominal.consumable_weight_lb(tau * bn, &hint_wn);
-    const double ws = source.consumable_weight_lb(tau * bs, &hint_ws);
+    const double ws = source_weight(tau * bs, &hint_ws);
     const double thrust = tn + c * (ts - tn);
     const double weight = wn + c * (ws - wn);
     if (!(thrust >= 0.0)) return Status::kMonteCarloThrustNegative;
@@ -224,8 +238,9 @@ bool monte_carlo_draws_source(const DispersionNominal& nominal, const Dispersion
     case DispersionKind::kTipoff:
       return nominal.mission != nullptr && nominal.mission->options.stage_is_spun(s.stage);
     case DispersionKind::kVacuumThrust:
-      return nominal.mission != nullptr && !s.stacked_stage4_5_tables &&
-             in_sequence(*nominal.mission, dispersion_source_stage(s));
+      // Stacked stage-4/5 tables (block 55) blend both stages, so stage 5 must fly too.
+      return nominal.mission != nullptr && in_sequence(*nominal.mission, dispersion_source_stage(s)) &&
+             (!s.stacked_stage4_5_tables || in_sequence(*nominal.mission, 5));
     case DispersionKind::kPitchingMoment: return nominal.body_dynamics;
     case DispersionKind::kWind: return true;
     default: return false;
@@ -239,9 +254,10 @@ int monte_carlo_low_partner(const DispersionNominal& nominal, const DispersionDa
   for (int j = 0; j < data.count; ++j) {
     const int code = data.sources[j].code;
     if (code != data.sources[k].code && family_leader(code) == data.sources[k].code) {
-      // The low member flies its own table only where it is a table of the same stage.
+      // The low member flies its own table only where it is a table of the same stage(s): both
+      // stacked (stages 4 and 5), or both of one stage.
       if (info.kind == DispersionKind::kVacuumThrust &&
-          (data.sources[j].stacked_stage4_5_tables ||
+          (data.sources[j].stacked_stage4_5_tables != data.sources[k].stacked_stage4_5_tables ||
            dispersion_source_stage(data.sources[j]) != dispersion_source_stage(data.sources[k]))) {
         return -1;
       }
@@ -373,14 +389,26 @@ Status build_monte_carlo_case(const DispersionNominal& nominal, const PreparedCa
         const DispersionSource& table = (partner >= 0 && z < 0.0) ? data.sources[partner] : s;
         const double c = (partner >= 0 && z < 0.0) ? -z : z;
         if (info.kind == DispersionKind::kVacuumThrust) {
-          const int slot = stage_index(dispersion_source_stage(table));
-          edits.thrust_blended[slot] = true;  // before the blend: a failed one leaves it changed
-          thrust_drawn[slot] = true;
-          const Status status =
-              blend_thrust(nominal.mission->vehicle.stages[slot], table, c, &m.vehicle.stages[slot]);
-          if (!ok(status)) return status;
-          if (slot == 0 && !(m.vehicle.stages[0].duration_s > m.launch.liftoff_duration_s)) {
-            return Status::kLiftoffLongerThanStage1;
+          // The stage's own tables, or stages 4 and 5 of stacked tables (page 22-30), each blended
+          // with the same draw.
+          const bool stacked = table.stacked_stage4_5_tables;
+          if (stacked) {
+            const Status status = unstack_stage4_5_tables(table, &ws->unstacked[0], &ws->unstacked[1]);
+            if (!ok(status)) return status;
+          }
+          for (int part = 0; part < (stacked ? 2 : 1); ++part) {
+            const int slot = stage_index(stacked ? 4 + part : dispersion_source_stage(table));
+            edits.thrust_blended[slot] = true;  // before the blend: a failed one leaves it changed
+            thrust_drawn[slot] = true;
+            const Status status =
+                blend_thrust(nominal.mission->vehicle.stages[slot],
+                             stacked ? ws->unstacked[part].vacuum_thrust_lbf : table.vacuum_thrust_lbf,
+                             stacked ? ws->unstacked[part].consumable_weight_lb : table.consumable_weight_lb,
+                             c, &m.vehicle.stages[slot]);
+            if (!ok(status)) return status;
+            if (slot == 0 && !(m.vehicle.stages[0].duration_s > m.launch.liftoff_duration_s)) {
+              return Status::kLiftoffLongerThanStage1;
+            }
           }
           prepares = true;
           thrust_changed = true;
@@ -451,12 +479,34 @@ Status check_monte_carlo_data(const DispersionNominal& nominal, const Dispersion
       if (side == 1 && partner < 0) break;
       *fault_code = t.code;
       if (info.kind == DispersionKind::kVacuumThrust) {
-        const StageData& n = nominal.mission->vehicle.stages[stage_index(dispersion_source_stage(t))];
-        Grid<kMaxThrustPoints> grid;
-        if (!merge_grid(&n.vacuum_thrust_lbf, n.duration_s, &n.consumable_weight_lb, n.duration_s,
-                        &t.vacuum_thrust_lbf, t.vacuum_thrust_lbf.last_x(), &t.consumable_weight_lb,
-                        t.vacuum_thrust_lbf.last_x(), &grid)) {
-          return Status::kTooManyTablePoints;
+        // The table's part of each stage it replaces: the whole table, or stage 4's and stage 5's
+        // entries of stacked tables (find_stacked_stage4_5_split).
+        const int n_table = t.vacuum_thrust_lbf.size();
+        TablePart<kMaxThrustPoints> thrust_parts[2] = {{&t.vacuum_thrust_lbf, 0, n_table, 0.0}, {}};
+        int stages[2] = {dispersion_source_stage(t), 0};
+        int parts = 1;
+        if (t.stacked_stage4_5_tables) {
+          StackedStage45Split split;
+          const Status status = find_stacked_stage4_5_split(t, &split);
+          if (!ok(status)) return status;
+          thrust_parts[0].count = split.stage4_last + 1;
+          thrust_parts[1] = {&t.vacuum_thrust_lbf, split.stage5_first, n_table - split.stage5_first,
+                             split.stage5_offset_s};
+          stages[0] = 4;
+          stages[1] = 5;
+          parts = 2;
+        }
+        for (int part = 0; part < parts; ++part) {
+          const TablePart<kMaxThrustPoints>& thrust = thrust_parts[part];
+          const TablePart<kMaxWeightPoints> weight{&t.consumable_weight_lb, thrust.first, thrust.count,
+                                                   thrust.offset};
+          const double burn_s = thrust.x(thrust.count - 1);
+          const StageData& n = nominal.mission->vehicle.stages[stage_index(stages[part])];
+          Grid<kMaxThrustPoints> grid;
+          if (!merge_grid(&n.vacuum_thrust_lbf, n.duration_s, &n.consumable_weight_lb, n.duration_s, &thrust,
+                          burn_s, &weight, burn_s, &grid)) {
+            return Status::kTooManyTablePoints;
+          }
         }
       } else if (info.kind == DispersionKind::kPitchingMoment) {
         Grid<kMaxAeroTablePoints> grid;

@@ -2,6 +2,7 @@
 #include "tolip_ground/dispersion_run.hpp"
 
 #include <cstring>
+#include <sstream>
 
 namespace tolip::ground {
 namespace {
@@ -25,8 +26,37 @@ bool fill_table(const DeckTable& deck, Table<N>* table, int block, int code, con
     const std::size_t at = static_cast<std::size_t>(i);
     (void)table->append(deck.x[at], deck.y[at]);  // finite and increasing (deck reader)
   }
+  // Stacked stage 4/5 tables (block 55) restart at 0 and stay unfinalized: the core splits them.
   (void)table->finalize();
   return true;
+}
+
+// Codes 7-8 with block 55: the stacked tables must split by its durations before anything runs.
+bool stacked_tables_split(const DispersionSource& source, const std::string& path,
+                          DispersionMappingFault* fault) {
+  StackedStage45Split split;
+  const Status status = find_stacked_stage4_5_split(source, &split);
+  if (ok(status)) return true;
+  fault->code = source.code;
+  if (status == Status::kDispersionStageDurationsMismatch) {
+    fault->data_block = 55;
+    fault->field = path + ".stage_durations_s";
+  } else if (status == Status::kNegativeWeight || status == Status::kConsumableWeightIncreases) {
+    fault->data_block = 38;
+    fault->field = path + ".consumable_weight";
+  } else {
+    fault->data_block = 30;
+    fault->field = path + ".thrust";
+  }
+  std::ostringstream given;
+  given.precision(10);
+  given << " (data block 55: stage 4 " << source.stage4_5_durations_s[0] << " s, stage 5 "
+        << source.stage4_5_durations_s[1] << " s)";
+  fault->message = std::string(
+                       "the stacked stage 4 and 5 tables (data blocks 30 and 38 with data block 55, "
+                       "manual page 22-30): ") +
+                   status_name(status) + ": " + status_message(status) + given.str();
+  return false;
 }
 
 }  // namespace
@@ -59,6 +89,9 @@ bool fill_dispersion_data(const std::vector<DispersionCase>& deck, DispersionDat
       return false;
     }
     s.stacked_stage4_5_tables = d.has_stage_durations;
+    s.stage4_5_durations_s[0] = d.stage4_5_durations_s[0];
+    s.stage4_5_durations_s[1] = d.stage4_5_durations_s[1];
+    if (s.stacked_stage4_5_tables && !stacked_tables_split(s, path, fault)) return false;
     s.weight_increment_lb = d.weight_increment_lb;
     s.drag_variation_fraction = d.drag_variation_fraction;
     s.misalignment_rad = d.misalignment_rad;

@@ -17,9 +17,9 @@ std::string str(int value) { return std::to_string(value); }
 // A table sub-section read completely (two arrays, nothing else).
 DeckTable read_table(Section& parent, std::string_view key, int block, std::string_view x_key,
                      std::string_view y_key, const std::string& x_what, const std::string& y_what,
-                     double y_scale, const std::string& what) {
+                     double y_scale, const std::string& what, bool restarts_at_zero = false) {
   Section section = parent.table(key, block, what);
-  const ReadTable read = section.xy(x_key, y_key, block, x_what, y_what);
+  const ReadTable read = section.xy(x_key, y_key, block, x_what, y_what, 1, restarts_at_zero);
   section.finish();
   return to_deck_table(read, y_scale);
 }
@@ -316,20 +316,24 @@ void read_dispersion(Section& entry, int code, DispersionCase* out) {
     case DispersionKind::kThrust: {
       out->stage = card_stage;
       if (card_stage < 0) out->stage = read_stage_4_or_5(entry, code, 30);
-      const std::string stage = "stage " + str(out->stage);
-      out->vacuum_thrust_lbf = read_table(
-          entry, item(30).key, 30, item(30).x_key, item(30).y_key, "stage time in s", "vacuum thrust in lbf",
-          1.0, "data block 30 replacement thrust table of " + stage + " for " + label);
-      out->consumable_weight_lb =
-          read_table(entry, item(38).key, 38, item(38).x_key, item(38).y_key, "stage time in s",
-                     "consumable weight remaining in lb", 1.0,
-                     "data block 38 replacement weight table of " + stage + " for " + label);
+      // Block 55 first: with it the tables are the stacked stage 4/5 tables of page 22-30, whose
+      // stage-5 entries may restart at stage time 0 (the core splits and checks them).
       if (dispersion_takes(code, 55)) {
         if (auto durations = entry.optional_numbers(item(55).key, 55, "stage 4 and 5 durations, s", 2)) {
           out->has_stage_durations = true;
           out->stage4_5_durations_s = {(*durations)[0], (*durations)[1]};
         }
       }
+      const bool stacked = out->has_stage_durations;
+      const std::string stage =
+          stacked ? "stages 4 and 5 (stacked, data block 55)" : "stage " + str(out->stage);
+      out->vacuum_thrust_lbf = read_table(
+          entry, item(30).key, 30, item(30).x_key, item(30).y_key, "stage time in s", "vacuum thrust in lbf",
+          1.0, "data block 30 replacement thrust table of " + stage + " for " + label, stacked);
+      out->consumable_weight_lb =
+          read_table(entry, item(38).key, 38, item(38).x_key, item(38).y_key, "stage time in s",
+                     "consumable weight remaining in lb", 1.0,
+                     "data block 38 replacement weight table of " + stage + " for " + label, stacked);
       break;
     }
     case DispersionKind::kWeightIncrement:

@@ -685,8 +685,8 @@ std::vector<DispersionCodes> make_dispersion_codes() {
        8,
        DispersionKind::kThrust,
        "vacuum thrust variation",
-       "data blocks 30 and 38 (stage code 4, or 5 for stage 5's own tables) and, for the five-stage "
-       "squeeze, 55",
+       "data blocks 30 and 38 (stage code 4, or 5 for stage 5's own tables) and, for the stacked five-stage "
+       "form (stages 4 and 5 in the stage-4 tables, page 22-30), 55",
        {thrust, weight, {55, 1, 2, "stage_durations_s", "", ""}},
        &stage_4_or_5},
       {9,

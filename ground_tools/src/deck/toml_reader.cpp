@@ -350,7 +350,8 @@ std::vector<Section> Section::array_of_tables(std::string_view key, int data_blo
 }
 
 ReadTable Section::xy(std::string_view x_key, std::string_view y_key, int data_block,
-                      const std::string& x_what, const std::string& y_what, int min_points) {
+                      const std::string& x_what, const std::string& y_what, int min_points,
+                      bool restarts_at_zero) {
   ReadTable result;
   result.line = line_;
   result.x = numbers(x_key, data_block, x_what);
@@ -367,6 +368,7 @@ ReadTable Section::xy(std::string_view x_key, std::string_view y_key, int data_b
                 " in the table, got " + std::to_string(result.x.size()));
   }
   for (std::size_t i = 1; i < result.x.size(); ++i) {
+    if (restarts_at_zero && result.x[i] == 0.0) continue;  // a new run (the core splits it)
     if (!(result.x[i] > result.x[i - 1])) {
       reader_->fail(element_line(x_key, i), data_block, key_path(x_key) + "[" + std::to_string(i) + "]",
                     "table not monotonic: " + std::string(x_key) + "[" + std::to_string(i) +

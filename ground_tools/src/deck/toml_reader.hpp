@@ -119,8 +119,10 @@ class Section {
 
   // Reads this section's x and y arrays as a table: equal lengths, at least min_points points,
   // strictly increasing x. x_what / y_what name the quantities and units for messages.
+  // restarts_at_zero: an x of 0 may also start a new increasing run (the stacked stage 4, coast
+  // and stage 5 tables of codes 7-8 with data block 55, manual page 22-30).
   ReadTable xy(std::string_view x_key, std::string_view y_key, int data_block, const std::string& x_what,
-               const std::string& y_what, int min_points = 1);
+               const std::string& y_what, int min_points = 1, bool restarts_at_zero = false);
 
   // Rejects every key not asked for, naming it and listing the keys this table accepts.
   void finish();

@@ -127,6 +127,8 @@ enum class Status : int {
   kNoActiveTable,
   kStageEventOutOfOrder,
   // Dispersion analysis (dispersion/dispersion.hpp, manual Sec. 15)
+  // Returned by nothing since the stacked stage-4/5 tables fly (issue 11); kept so that the
+  // enumerators after it keep their numbers.
   kDispersionNotImplemented,
   kDispersionNeedsBodyDynamics,
   kDispersionStageNotInSequence,
@@ -243,6 +245,10 @@ enum class Status : int {
   kIntegrationMultiplierNotInteger,
   kIntegrationMultiplierBelowOne,
   kIntegrationMultiplierAboveCapacity,
+  // Codes 7-8 with data block 55: the stacked stage-4/5 tables of page 22-30 (dispersion.hpp)
+  kDispersionStageDurationsMismatch,
+  kDispersionStackedTablesNotSplittable,
+  kDispersionStackedTablesNeedStage5,
 };
 
 const char* status_name(Status status);

@@ -68,9 +68,13 @@ struct DispersionSource {
   char title[13] = {};  // block 46 title, 2A6
   ThrustTable vacuum_thrust_lbf;     // codes 1-8: block 30 replacement table (stage time)
   WeightTable consumable_weight_lb;  // codes 1-8: block 38 replacement table
-  // Codes 7-8 with block 55: the manual's five-stage squeeze (stages 4 and 5 stacked in the stage-4
-  // tables). Not flown (kDispersionNotImplemented): here stage 4's tables are stage 4's alone.
+  // Codes 7-8 with block 55 (page 22-30, five-stage Scout): stages 4 and 5 stacked in the stage-4
+  // tables above - stage 4's own table (stage time 0 to d4), the coast (zero thrust, "input
+  // arbitrarily as two seconds"), stage 5's own table (restarting at 0, or continuing) - split by
+  // the block 55 durations d4, d5 (find_stacked_stage4_5_split) and flown as the replacement tables
+  // of both stages; the coast keeps its optimized length.
   bool stacked_stage4_5_tables = false;
+  double stage4_5_durations_s[2] = {};   // block 55: (1) stage 4, (2) stage 5 duration
   double weight_increment_lb = 0.0;      // codes 9-16, signed
   double drag_variation_fraction = 0.0;  // codes 17-18, signed (0.xxxx)
   AeroTable pitching_moment_per_rad;     // codes 19-20: Mach -> C_M_alpha about X_FS
@@ -105,8 +109,8 @@ enum class StagingVariable : int { kAltitude, kVelocity, kFlightPathAngle, kDown
 // One GIANT plane: a dispersed trajectory (or the nominal, code 40).
 struct DispersedTrajectory {
   int code = 0;
-  // kOk: flown and recorded. Otherwise why not, by name: kDispersionNotImplemented,
-  // kDispersionNeedsBodyDynamics, kDispersionStageNotInSequence, kDispersionStageNotSpun, or the
+  // kOk: flown and recorded. Otherwise why not, by name: kDispersionNeedsBodyDynamics,
+  // kDispersionStageNotInSequence, kDispersionStackedTablesNeedStage5, kDispersionStageNotSpun, or the
   // failure of the dispersed flight itself (kAltitudeBelowSurface, ...). Only kOk entries are grouped.
   Status status = Status::kNotPrepared;
   char title[13] = {};
@@ -160,6 +164,9 @@ struct DispersionWorkspace {
   Trajectory nominal;
   Trajectory dispersed;
   WindProfile wind;  // a Monte Carlo sample's wind (the drawn profiles, scaled and summed)
+  // A Monte Carlo sample's stacked stage-4/5 tables (codes 7-8 with block 55) as stage 4's and
+  // stage 5's own (unstack_stage4_5_tables): only their thrust, weight and burn time are used.
+  StageData unstacked[2];
   // The dispersed flight's air-relative angle of attack at every point (FlightInputs::air_alpha_rad).
   double air_alpha_rad[kMaxTrajectoryPoints] = {};
   // `mission` as the Monte Carlo left it: a copy of *base but for the stage weights, the launch
@@ -173,6 +180,29 @@ struct DispersionWorkspace {
     bool pitching_moment_blended = false;  // C_M_alpha (19-20)
   } monte_carlo_edits;
 };
+
+// Where stacked stage-4/5 tables (codes 7-8 with block 55) split: entries [0, stage4_last] are
+// stage 4's table; [stage5_first, size) are stage 5's, at table time stage5_offset_s + stage time
+// (0 when stage 5's entries restart at 0, else the stage 4 duration plus the coast as input); the
+// entries between are the coast (zero thrust, not flown: the coast keeps its optimized length).
+struct StackedStage45Split {
+  int stage4_last = 0;
+  int stage5_first = 0;
+  double stage5_offset_s = 0.0;
+};
+
+// Splits a stacked source by its block 55 durations. Stage 4 runs from the first entry (time 0) to
+// the entry at d4 of the first increasing run of times; stage 5 is the last run when the times
+// restart (it must start at 0 and end at d5), else the entries from t_last - d5 (one must lie
+// there). Each part obeys the rules of a per-stage replacement table (validate_dispersion_data).
+// kOk, or kDispersionStageDurationsMismatch (d4 or d5 not positive, or not a part's final time),
+// kDispersionStackedTablesNotSplittable (a restart not at 0, thrust in the coast, no coast),
+// kThrustWeightTimesDiffer or a per-stage table rule's status.
+Status find_stacked_stage4_5_split(const DispersionSource& source, StackedStage45Split* split);
+
+// The two parts of a split stacked source as stage 4's and stage 5's replacement tables (stage
+// time from 0 at each ignition), each stage's burn time its table's last time.
+Status unstack_stage4_5_tables(const DispersionSource& source, StageData* stage4, StageData* stage5);
 
 // The stage a source disperses: the code table's, the card's stage for a tip-off (30-32), and
 // stage 5 for the stage-4 thrust and weight codes (7-8, 15-16) whose card names stage 5 (five

@@ -39,7 +39,8 @@ Status check_monte_carlo_data(const DispersionNominal& nominal, const Dispersion
 // high code) and one per yaw code: weight increments (9-16), drag (17-18), misalignment (21-23,
 // with body dynamics), deadbands (24-29), tip-off (30-32, spun stages), launch azimuth (33) and
 // attitude (34-35); and the table sources with c = the draw (z / 3): thrust 1-8 (thrust, consumed
-// weight and burn time blended between the nominal's and the code's tables, c = 1 the code's) and
+// weight and burn time blended between the nominal's and the code's tables, c = 1 the code's;
+// stacked stage-4/5 tables of codes 7-8 with block 55 unstacked and both stages blended) and
 // C_M_alpha 19-20 (with body dynamics) alike, winds 36-38 (the profile scaled by c; the high/low and
 // the yaw profile of a sample summed as vectors). A negative draw of a pair flies its low table
 // (monte_carlo_low_partner) or the mirror. `nominal_prepared` is the nominal's prepare_case().
