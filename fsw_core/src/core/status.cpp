@@ -207,6 +207,7 @@ const char* status_name(Status status) {
     case Status::kIntegrationMultiplierNotInteger: return "kIntegrationMultiplierNotInteger";
     case Status::kIntegrationMultiplierBelowOne: return "kIntegrationMultiplierBelowOne";
     case Status::kIntegrationMultiplierAboveCapacity: return "kIntegrationMultiplierAboveCapacity";
+    case Status::kStage5YawOptionInconsistent: return "kStage5YawOptionInconsistent";
   }
   return "kUnknownStatus";
 }
@@ -618,6 +619,9 @@ const char* status_message(Status status) {
     case Status::kIntegrationMultiplierAboveCapacity:
       return "a 6D integration frequency multiplier (DA6D(12-15)) is above "
              "kMaxIntegrationFrequencyMultiplier";
+    case Status::kStage5YawOptionInconsistent:
+      return "IP(10) (the stage-5 yaw) does not fit IP(9) and the stage sequence: 1 or 2 when stage 5 is "
+             "spun apart from stage 4 (IP(9) = 2), 0 or 1 under IP(9) = 1, 0 without a spun stage 5";
   }
   return "unknown status";
 }
