@@ -55,7 +55,6 @@ COAST9_S = 20.0
 COAST10_S = 300.0
 STAGE5_THETA_DEG = 0.0
 STAGE5_CHI_DEG = 0.0
-LAUNCH_DATE_DAYS = 2373.625  # 1966-07-01T15:00:00 UT, the reference's
 CRUDE_TIMES = [0.0, 3.0, 8.0, 15.0, 45.0, 50.0, 69.0, 88.0, 130.0, 220.0, 260.0]
 CRUDE_THETAS = [90.0, 90.0, 80.0, 65.0, 49.0, 33.0, 27.0, 22.0, 18.0, 5.0, 0.0]
 
@@ -168,30 +167,9 @@ def build(ref):
     scout.vehicle_sections(deck, r, "initial")
 
     mission = r["mission"]
-    launch = mission["launch"]
-    ic = mission["initial_conditions_block21"]
-    deck.table("launch", "data blocks 20 and 21: the reference's site, azimuth and date")
-    deck.comment("%s; geodetic latitude %s deg; %s UT" % (launch["site"], scout.num(launch["geodetic_latitude_deg"]),
-                                                          launch["launch_utc"]))
-    deck.number("liftoff_duration_s", mission["liftoff_duration_s_block20_word1"], "block 20 DA5(1)")
-    deck.number("space_age_date_days", LAUNCH_DATE_DAYS,
-                "block 20 DA5(2), Julian date - 2436934.5; adjustable parameter 7 (time of day)")
-    deck.number("altitude_ft", ic["altitude_ft"], "block 21 DA6(1)")
-    deck.number("longitude_deg", ic["longitude_deg"], "block 21 DA6(2), east positive")
-    deck.number("geocentric_latitude_deg", ic["geocentric_latitude_deg"], "block 21 DA6(3)")
-    deck.number("velocity_ft_s", ic["velocity_ft_per_s"], "block 21 DA6(4), must be 0")
-    deck.number("azimuth_deg", ic["azimuth_deg"], "block 21 DA6(5), east of north")
-    deck.number("flight_path_angle_deg", ic["flight_path_angle_deg"], "block 21 DA6(6), must be 90")
-    deck.number("heading_hold_until_s", mission["heading_hold_until_s"],
-                "extension: dpsi/dt = 0 on steps starting before this time")
-
-    block22 = mission["block22_control_constraints"]
-    deck.table("control_constraints", "data block 22, DA7")
-    deck.number("zero_alpha_start_s", block22["alpha_zero_start_s"], "DA7(1), s from launch")
-    deck.number("zero_alpha_end_s", block22["alpha_zero_end_s"], "DA7(2), s from launch")
-    deck.number("max_pitch_rate_deg_s", block22["max_pitch_rate_deg_per_s"], "DA7(3)")
-    deck.number("min_pitch_rate_deg_s", block22["min_pitch_rate_deg_per_s"], "DA7(4)")
-    deck.number("min_pitch_rate_change_deg_s", block22["min_change_in_pitch_rate_deg_per_s"], "DA7(5)")
+    scout.launch_and_control_sections(deck, mission,
+                                      "data blocks 20 and 21: the reference's site, azimuth and date",
+                                      "; adjustable parameter 7 (time of day)")
 
     block17 = mission["block17"]
     deck.table("misc", "data block 17, DA2")

@@ -357,17 +357,18 @@ def vehicle_sections(deck, ref, variant):
             deck.array("cd", drags[key]["cd"])
 
 
-def mission_sections(deck, ref, variant, budget=None, segments=None):
-    mission = ref["mission"]
-    oracle = ref["oracle_solution"]
+def launch_and_control_sections(deck, mission, launch_note="data blocks 20 and 21", date_note=""):
+    """[launch] (data blocks 20 and 21: the reference's site, azimuth and date) and
+    [control_constraints] (data block 22), as every deck built on the reference mission has them;
+    launch_note heads [launch], date_note is added to the note of the launch date."""
     launch = mission["launch"]
     ic = mission["initial_conditions_block21"]
-    deck.table("launch", "data blocks 20 and 21")
+    deck.table("launch", launch_note)
     deck.comment("%s; geodetic latitude %s deg; %s UT" % (launch["site"], num(launch["geodetic_latitude_deg"]),
                                                           launch["launch_utc"]))
     deck.number("liftoff_duration_s", mission["liftoff_duration_s_block20_word1"], "block 20 DA5(1)")
     deck.number("space_age_date_days", mission["launch_date_space_age_days_block20_word2"],
-                "block 20 DA5(2), Julian date - 2436934.5")
+                "block 20 DA5(2), Julian date - 2436934.5" + date_note)
     deck.number("altitude_ft", ic["altitude_ft"], "block 21 DA6(1)")
     deck.number("longitude_deg", ic["longitude_deg"], "block 21 DA6(2), east positive")
     deck.number("geocentric_latitude_deg", ic["geocentric_latitude_deg"], "block 21 DA6(3)")
@@ -384,6 +385,12 @@ def mission_sections(deck, ref, variant, budget=None, segments=None):
     deck.number("max_pitch_rate_deg_s", block22["max_pitch_rate_deg_per_s"], "DA7(3)")
     deck.number("min_pitch_rate_deg_s", block22["min_pitch_rate_deg_per_s"], "DA7(4)")
     deck.number("min_pitch_rate_change_deg_s", block22["min_change_in_pitch_rate_deg_per_s"], "DA7(5)")
+
+
+def mission_sections(deck, ref, variant, budget=None, segments=None):
+    mission = ref["mission"]
+    oracle = ref["oracle_solution"]
+    launch_and_control_sections(deck, mission)
 
     block17 = mission["block17"]
     theta4 = oracle["tth_block40_initial_nominal"]["theta4_deg"] if variant == "initial" else oracle["stage4_theta_deg"]

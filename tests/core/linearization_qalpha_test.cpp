@@ -7,10 +7,9 @@
 #include <cmath>
 #include <cstdio>
 
-#include "support/reference_mission.hpp"
+#include "support/linearized_reference.hpp"
 #include "tolip/optimizer/backward_run.hpp"
 #include "tolip/optimizer/constraint_parameters.hpp"
-#include "tolip/optimizer/linearization.hpp"
 #include "tolip/optimizer/qbar_alpha.hpp"
 
 namespace tolip {
@@ -19,38 +18,29 @@ namespace {
 constexpr double kLimitLbDegFt2 = 3500.0;  // examples/scout/mission_qalpha.toml
 constexpr double kLbDegPerLbRad = 180.0 / kPi;
 
-struct LinearizedQAlpha {
-  Mission mission;
-  OptimizerWorkspace optimized;
-  OptimizerResult optimum;
-  LinearizationWorkspace workspace;
-  LinearizationResult result;
-  Status optimizer_status = Status::kNotPrepared;
-  Status status = Status::kNotPrepared;
-};
-
 // The reference mission with the example's limit and forward-run budget (the two changes
 // scripts/make_scout_examples.py makes for mission_qalpha.toml), optimized and linearized once.
-const LinearizedQAlpha& linearized_qalpha() {
-  static LinearizedQAlpha* built = [] {
-    static LinearizedQAlpha r;
-    test::build_reference_mission(test::ReferenceProgram::kInitialNominal, &r.mission);
-    r.mission.options.qbar_alpha_limit_lbf_rad_ft2 = kLimitLbDegFt2 / kLbDegPerLbRad;
-    r.mission.convergence.max_forward_trajectories = 40;
-    // Its data block 18: stage 1 cut in the load window (QALPHA_TLIN of the generator).
-    const double coded[] = {103.0, 106.0, 109.0, 112.0, 115.0, 122.0, 130.0, 138.0,
-                            145.0, 200.0, 219.0, 238.0, 300.0, 318.0, 336.0};
-    r.mission.linearization.segment_count = 14;
-    for (int b = 0; b <= 14; ++b) {
-      r.mission.linearization.boundaries[b].stage = static_cast<int>(coded[b] / 100.0);
-      r.mission.linearization.boundaries[b].time_from_ignition_s = coded[b] - 100.0 * (int)(coded[b] / 100.0);
-    }
-    for (int s = 0; s < 14; ++s) r.mission.linearization.segment_weights[s] = 1.0;
-    r.optimizer_status = optimize_trajectory(r.mission, &r.optimized, &r.optimum);
-    if (ok(r.optimizer_status)) r.status = linearize_pitch_program(r.optimized, &r.workspace, &r.result);
-    return &r;
+const test::LinearizedCase& linearized_qalpha() {
+  static test::LinearizedCase r;
+  static const bool built = [] {
+    test::optimize_reference(&r, [](Mission& m) {
+      m.options.qbar_alpha_limit_lbf_rad_ft2 = kLimitLbDegFt2 / kLbDegPerLbRad;
+      m.convergence.max_forward_trajectories = 40;
+      // Its data block 18: stage 1 cut in the load window (QALPHA_TLIN of the generator).
+      const double coded[] = {103.0, 106.0, 109.0, 112.0, 115.0, 122.0, 130.0, 138.0,
+                              145.0, 200.0, 219.0, 238.0, 300.0, 318.0, 336.0};
+      m.linearization.segment_count = 14;
+      for (int b = 0; b <= 14; ++b) {
+        m.linearization.boundaries[b].stage = static_cast<int>(coded[b] / 100.0);
+        m.linearization.boundaries[b].time_from_ignition_s = coded[b] - 100.0 * (int)(coded[b] / 100.0);
+      }
+      for (int s = 0; s < 14; ++s) m.linearization.segment_weights[s] = 1.0;
+    });
+    test::linearize_optimum(&r);
+    return true;
   }();
-  return *built;
+  static_cast<void>(built);
+  return r;
 }
 
 // The largest |q-bar alpha| over the points with aerodynamic lift (stages with the lift table and
@@ -74,7 +64,7 @@ double lift_phase_peak_lbf_rad_ft2(const Mission& m, const Trajectory& t, double
 // list and met (the excess integral within the optimizer's deadband), with every other
 // constraint and rate limit, and the payload it carries is reported.
 TEST(Sec6QAlphaLinearization, LinearizedProgramKeepsTheLimitWithinTheOptimizersCriterion) {
-  const LinearizedQAlpha& r = linearized_qalpha();
+  const test::LinearizedCase& r = linearized_qalpha();
   ASSERT_EQ(r.optimizer_status, Status::kOk);
   const LinearizationResult& result = r.result;
   ASSERT_TRUE(result.finished) << status_name(r.status);
@@ -112,7 +102,7 @@ TEST(Sec6QAlphaLinearization, LinearizedProgramKeepsTheLimitWithinTheOptimizersC
 // attitude) to every break value, and its payload column, against central differences of forward
 // runs, about the linearized program flown point mass at its largest peak.
 TEST(Sec6QAlphaLinearization, Sec6_QAlphaPeakSensitivityMatchesFiniteDifference) {
-  const LinearizedQAlpha& r = linearized_qalpha();
+  const test::LinearizedCase& r = linearized_qalpha();
   ASSERT_TRUE(r.result.finished) << status_name(r.status);
   static Mission mission;
   mission = r.workspace.mission;
@@ -209,16 +199,11 @@ TEST(Sec6QAlphaLinearization, Sec6_QAlphaPeakSensitivityMatchesFiniteDifference)
 // Without a limit the linearization's constraint list has no code 200 (and the reference's
 // results are bit for bit those before the limit existed: its pinned figures elsewhere).
 TEST(Sec6QAlphaLinearization, WithoutALimitTheLinearizationHasNoQAlphaRow) {
-  static Mission mission;
-  static OptimizerWorkspace optimized;
-  static OptimizerResult optimum;
-  static LinearizationWorkspace workspace;
-  static LinearizationResult result;
-  test::build_reference_mission(test::ReferenceProgram::kInitialNominal, &mission);
-  ASSERT_FALSE(mission.options.qbar_alpha_constraint());
-  ASSERT_EQ(optimize_trajectory(mission, &optimized, &optimum), Status::kOk);
-  ASSERT_EQ(linearize_pitch_program(optimized, &workspace, &result), Status::kOk);
-  for (int j = 0; j < result.constraint_count; ++j) EXPECT_NE(result.codes[j], kQbarAlphaConstraintCode);
+  const test::LinearizedCase& r = test::linearized_reference();
+  ASSERT_FALSE(r.mission.options.qbar_alpha_constraint());
+  ASSERT_EQ(r.optimizer_status, Status::kOk);
+  ASSERT_EQ(r.status, Status::kOk);
+  for (int j = 0; j < r.result.constraint_count; ++j) EXPECT_NE(r.result.codes[j], kQbarAlphaConstraintCode);
 }
 
 }  // namespace

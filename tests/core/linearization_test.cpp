@@ -4,39 +4,28 @@
 #include <cmath>
 #include <cstdio>
 
-#include "support/reference_mission.hpp"
-#include "tolip/optimizer/linearization.hpp"
+#include "support/linearized_reference.hpp"
 
 namespace tolip {
 namespace {
 
-struct LinearizedReference {
-  Mission mission;
-  OptimizerWorkspace optimized;
-  OptimizerResult optimum;
-  LinearizationWorkspace workspace;
-  LinearizationResult result;
-  Status optimizer_status = Status::kNotPrepared;
-  Status status = Status::kNotPrepared;
-};
+using test::LinearizedCase;
 
-// The reference optimized from its crude program, then linearized (large: built once, static).
-const LinearizedReference& linearized_reference(bool reference_rate_limits) {
-  static LinearizedReference with_limits;
-  static LinearizedReference relaxed;
-  static bool built[2] = {false, false};
-  LinearizedReference& r = reference_rate_limits ? with_limits : relaxed;
-  if (!built[reference_rate_limits ? 1 : 0]) {
-    built[reference_rate_limits ? 1 : 0] = true;
-    test::build_reference_mission(test::ReferenceProgram::kInitialNominal, &r.mission);
-    if (!reference_rate_limits) {
-      r.mission.control.min_pitch_rate_rad_s = 0.0;
-      r.mission.control.min_pitch_rate_change_rad_s = 0.0;
-    }
-    r.optimizer_status = optimize_trajectory(r.mission, &r.optimized, &r.optimum);
-    if (ok(r.optimizer_status)) r.status = linearize_pitch_program(r.optimized, &r.workspace, &r.result);
-  }
-  return r;
+// The reference optimized from its crude program, then linearized (built once): with the rate
+// limits of its data block 22, or without the two minimum-rate limits.
+const LinearizedCase& linearized_reference(bool reference_rate_limits) {
+  if (reference_rate_limits) return test::linearized_reference();
+  static LinearizedCase relaxed;
+  static const bool built = [] {
+    test::optimize_reference(&relaxed, [](Mission& m) {
+      m.control.min_pitch_rate_rad_s = 0.0;
+      m.control.min_pitch_rate_change_rad_s = 0.0;
+    });
+    test::linearize_optimum(&relaxed);
+    return true;
+  }();
+  static_cast<void>(built);
+  return relaxed;
 }
 
 double rate_between(const LinearProgram& p, int s) {
@@ -48,7 +37,7 @@ double rate_between(const LinearProgram& p, int s) {
 // terminal constraint within the linearization deadbands; the payload, which linearization does
 // not impose, absorbs the loss and stays within 0.5% of the optimum.
 TEST(Sec6Linearization, NineSegmentsMeetEveryRateLimitAndConstraintWithinHalfAPercentOfTheOptimum) {
-  const LinearizedReference& r = linearized_reference(true);
+  const LinearizedCase& r = linearized_reference(true);
   const Mission& mission = r.mission;
   const OptimizerResult& optimum = r.optimum;
   const LinearizationResult& result = r.result;
@@ -113,7 +102,7 @@ TEST(Sec6Linearization, NineSegmentsMeetEveryRateLimitAndConstraintWithinHalfAPe
 // pitch-over by K_q/K_theta times the rate); the 6D re-linearization brings every constraint and
 // rate limit back within the same DA13(4) budget, and the payoff stays within 0.5% of the optimum.
 TEST(Sec10Linearization, SixDRelinearizationMeetsEveryLimitAndConstraintAgain) {
-  const LinearizedReference& r = linearized_reference(true);
+  const LinearizedCase& r = linearized_reference(true);
   ASSERT_EQ(r.mission.options.body_dynamics_6d(), 1);
   ASSERT_EQ(r.status, Status::kOk) << status_name(r.result.status);
   const LinearizationResult& result = r.result;
@@ -154,8 +143,8 @@ TEST(Sec10Linearization, SixDRelinearizationMeetsEveryLimitAndConstraintAgain) {
 // Without the minimum-rate limits the fit stays closer to the optimum: fewer repairs, a smaller
 // payoff loss than with them, and every constraint still met.
 TEST(Sec6Linearization, RelaxingTheMinimumRateLimitsLosesLessPayoff) {
-  const LinearizedReference& strict = linearized_reference(true);
-  const LinearizedReference& relaxed = linearized_reference(false);
+  const LinearizedCase& strict = linearized_reference(true);
+  const LinearizedCase& relaxed = linearized_reference(false);
   ASSERT_EQ(strict.status, Status::kOk);
   ASSERT_EQ(relaxed.status, Status::kOk);
   EXPECT_TRUE(relaxed.result.constraints_met);

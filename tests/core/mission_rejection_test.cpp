@@ -96,7 +96,7 @@ TEST(Sec22DataBlocks, OptionConstantAndAtmosphereRejectionsNameTheirWord) {
        Status::kSpinOptionInconsistent, 4, 5, "ip", 9},
       // Sec. 22 IP(10): "0 fewer than 5 stages, 1 chi5 = chi4, 2 chi5 independent of chi4".
       {"IP(10) 0 with fewer than five stages", [](Mission& m) { m.options.ip[10] = 1; },
-       Status::kSpinOptionInconsistent, 4, 5, "ip", 10},
+       Status::kStage5YawOptionInconsistent, 4, 5, "ip", 10},
       {"earth rotation finite", [](Mission& m) { m.constants.earth_rotation_rate_rad_s = kNaN; },
        Status::kValueNotFinite, 10, 0, "earth_rotation_rate_rad_s", -1},
       {"ct1_13 finite", [](Mission& m) { m.constants.ct1_13 = HUGE_VAL; }, Status::kValueNotFinite, 10, 0,

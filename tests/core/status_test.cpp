@@ -7,8 +7,7 @@
 namespace tolip {
 
 TEST(Status, EveryStatusHasANameAndAMessage) {
-  for (int i = 0; i <= static_cast<int>(Status::kDispersionStackedTablesNeedStage5);
-       ++i) {  // the last enumerator
+  for (int i = 0; i <= static_cast<int>(Status::kStage5YawOptionInconsistent); ++i) {  // the last enumerator
     const auto s = static_cast<Status>(i);
     EXPECT_STRNE(status_name(s), "kUnknownStatus") << i;
     EXPECT_GT(std::strlen(status_message(s)), 5u) << i;
@@ -17,7 +16,7 @@ TEST(Status, EveryStatusHasANameAndAMessage) {
 
 // Issue 18: one enumerator per cause, so no two share a name or a message.
 TEST(Status, EveryStatusHasItsOwnNameAndMessage) {
-  const int last = static_cast<int>(Status::kDispersionStackedTablesNeedStage5);
+  const int last = static_cast<int>(Status::kStage5YawOptionInconsistent);
   for (int i = 0; i <= last; ++i) {
     for (int j = i + 1; j <= last; ++j) {
       const auto a = static_cast<Status>(i);

@@ -316,7 +316,7 @@ TEST(Sec22Validation, StageFiveYawIP10ActsWhereStageFiveIsSpunApartAndIsRejected
   m.misc.stage5_chi_rad = 3.0 * kDegToRad;
   MissionFault fault;
   m.options.ip[10] = 0;  // "fewer than 5 stages", with a spun stage 5 flown
-  EXPECT_EQ(validate_mission(m, &fault), Status::kSpinOptionInconsistent);
+  EXPECT_EQ(validate_mission(m, &fault), Status::kStage5YawOptionInconsistent);
   EXPECT_EQ(fault.data_block, 4);
   EXPECT_EQ(fault.index, 10);
 
@@ -368,14 +368,14 @@ TEST(Sec22Validation, StageFiveYawIP10ActsWhereStageFiveIsSpunApartAndIsRejected
   test::build_reference_mission(test::ReferenceProgram::kOptimum, &spun);
   add_stage5(&spun);
   spun.options.ip[10] = 2;
-  EXPECT_EQ(validate_mission(spun, &fault), Status::kSpinOptionInconsistent);
+  EXPECT_EQ(validate_mission(spun, &fault), Status::kStage5YawOptionInconsistent);
   EXPECT_EQ(fault.index, 10);
   spun.options.ip[10] = 1;
   EXPECT_EQ(validate_mission(spun, &fault), Status::kOk) << fault.field;
   // IP(9) = 3: stage 5 flies the pitch program, IP(10) stays 0.
   m.options.ip[9] = 3;
   m.options.ip[10] = 1;
-  EXPECT_EQ(validate_mission(m, &fault), Status::kSpinOptionInconsistent);
+  EXPECT_EQ(validate_mission(m, &fault), Status::kStage5YawOptionInconsistent);
   EXPECT_EQ(fault.index, 10);
 }
 

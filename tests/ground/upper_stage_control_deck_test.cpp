@@ -133,6 +133,21 @@ TEST(Sec22Deck, IP9Is2_Stage4AttitudeWordsAreReportedUnusedAndItsAdjustableCodeI
   EXPECT_NE(result.err.find("IP(9)"), std::string::npos) << result.err;
 }
 
+// Sec. 22 IP(10) ("0 fewer than 5 stages"): a stage-5 yaw option on the four-stage example is a
+// deck fault (exit 2) that names IP(10), its key and its own status, not IP(9), which is right.
+TEST(Sec22Deck, IP10FaultIsReportedNamingIP10NotIP9) {
+  ScratchDirectory scratch("ip10_rejected");
+  const std::string rejected =
+      edited_example_deck(scratch, "ip10.toml", {{"stage5_chi = 0", "stage5_chi = 1"}});
+  const CommandResult result = run_tolip_executable({"optimize", rejected});
+  EXPECT_EQ(result.exit_code, 2) << result.err;
+  EXPECT_NE(result.err.find("kStage5YawOptionInconsistent"), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find("options.stage5_chi"), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find("IP(10)"), std::string::npos) << result.err;
+  EXPECT_EQ(result.err.find("IP(9) does not fit"), std::string::npos) << result.err;
+  EXPECT_EQ(result.err.find("kSpinOptionInconsistent"), std::string::npos) << result.err;
+}
+
 // The card deck (80 columns, Sec. 22) acts on IP(9) as the TOML deck does: converted, it optimizes
 // to the same payload (to the E12.8 rounding of two words).
 TEST(Sec22Deck, IP9Is2_TheCardDeckOptimizesLikeTheTomlDeck) {

@@ -3,29 +3,23 @@
 #include <gtest/gtest.h>
 
 #include "support/allocation_counter.hpp"
-#include "support/reference_mission.hpp"
-#include "tolip/optimizer/linearization.hpp"
-#include "tolip/optimizer/steepest_descent.hpp"
+#include "support/linearized_reference.hpp"
 
 namespace tolip {
 namespace {
 
 TEST(CoreNoHeap, LinearizationAllocatesNothing) {
-  static Mission mission;
-  static OptimizerWorkspace optimized;
-  static OptimizerResult optimum;
-  static LinearizationWorkspace workspace;
-  static LinearizationResult result;
-  test::build_reference_mission(test::ReferenceProgram::kInitialNominal, &mission);
-  ASSERT_EQ(optimize_trajectory(mission, &optimized, &optimum), Status::kOk);
+  static test::LinearizedCase c;
+  test::optimize_reference(&c);
+  ASSERT_EQ(c.optimizer_status, Status::kOk);
 
   test::AllocationScope scope;
-  const Status status = linearize_pitch_program(optimized, &workspace, &result);
+  test::linearize_optimum(&c);
   const auto allocations = scope.count();
 
-  EXPECT_EQ(status, Status::kOk);
-  EXPECT_GE(result.forward_runs, 1);       // the work really happened
-  EXPECT_GE(result.programs_computed, 2);  // with rate repairs
+  EXPECT_EQ(c.status, Status::kOk);
+  EXPECT_GE(c.result.forward_runs, 1);       // the work really happened
+  EXPECT_GE(c.result.programs_computed, 2);  // with rate repairs
   EXPECT_EQ(allocations, 0u);
 }
 

@@ -210,6 +210,7 @@ const char* status_name(Status status) {
     case Status::kDispersionStageDurationsMismatch: return "kDispersionStageDurationsMismatch";
     case Status::kDispersionStackedTablesNotSplittable: return "kDispersionStackedTablesNotSplittable";
     case Status::kDispersionStackedTablesNeedStage5: return "kDispersionStackedTablesNeedStage5";
+    case Status::kStage5YawOptionInconsistent: return "kStage5YawOptionInconsistent";
   }
   return "kUnknownStatus";
 }
@@ -631,6 +632,9 @@ const char* status_message(Status status) {
     case Status::kDispersionStackedTablesNeedStage5:
       return "codes 7-8 with data block 55 (stacked stage 4 and 5 tables) need a five-stage vehicle: "
              "stage 5 is not in the stage sequence";
+    case Status::kStage5YawOptionInconsistent:
+      return "IP(10) (the stage-5 yaw) does not fit IP(9) and the stage sequence: 1 or 2 when stage 5 is "
+             "spun apart from stage 4 (IP(9) = 2), 0 or 1 under IP(9) = 1, 0 without a spun stage 5";
   }
   return "unknown status";
 }

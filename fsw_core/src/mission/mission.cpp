@@ -266,16 +266,16 @@ Status check_spin_option(const Options& options, const Vehicle& vehicle, const C
   const int yaw = options.stage5_chi();
   const bool stage5 = vehicle.stages[stage_index(5)].in_sequence;
   if (stage5 && spin == 2 && yaw == 0) {
-    return check.fail(Status::kSpinOptionInconsistent, 4, 5, "ip", 10, yaw, "", between(1, 2),
+    return check.fail(Status::kStage5YawOptionInconsistent, 4, 5, "ip", 10, yaw, "", between(1, 2),
                       "1 (chi5 = chi4) or 2 (chi5 independent) when stage 5 is spun apart from stage 4 "
                       "(IP(9) = 2)");
   }
   if (stage5 && spin == 1 && yaw == 2) {
-    return check.fail(Status::kSpinOptionInconsistent, 4, 5, "ip", 10, yaw, "", between(0, 1),
+    return check.fail(Status::kStage5YawOptionInconsistent, 4, 5, "ip", 10, yaw, "", between(0, 1),
                       "0 or 1: IP(9) = 1 spins stage 5 on stage 4's attitudes (chi5 = chi4)");
   }
   if ((!stage5 || spin == 3) && yaw != 0) {
-    return check.fail(Status::kSpinOptionInconsistent, 4, 5, "ip", 10, yaw, "", exactly(0),
+    return check.fail(Status::kStage5YawOptionInconsistent, 4, 5, "ip", 10, yaw, "", exactly(0),
                       stage5 ? "0 when stage 5 flies the pitch program (IP(9) = 3)"
                              : "0 with fewer than five stages (Sec. 22)");
   }

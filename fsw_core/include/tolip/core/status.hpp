@@ -249,6 +249,8 @@ enum class Status : int {
   kDispersionStageDurationsMismatch,
   kDispersionStackedTablesNotSplittable,
   kDispersionStackedTablesNeedStage5,
+  // Data block 4 against data block 5 and IP(9): the stage-5 yaw option IP(10) (Sec. 22)
+  kStage5YawOptionInconsistent,
 };
 
 const char* status_name(Status status);
