@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <memory>
 
@@ -507,8 +508,64 @@ TEST(Sec15Dispersions, ThrustTablesEqualTheCaseChangedByHand) {
     fill(&stage.consumable_weight_lb, t[key]["time_s"], t[key]["consumable_weight_remaining_lb"]);
     stage.duration_s = t[key]["time_s"].back().get<double>();
     ASSERT_EQ(prepare_case(m, &f->hand_prepared), Status::kOk);
-    ASSERT_EQ(fly_trajectory(m, f->hand_prepared, &f->hand), Status::kOk);
+    // The table read in stage time (every later stage's clock starts at the nominal's start of it:
+    // shifted by the burn-time change) and, in stage 1, with its step grid.
+    FlightPerturbation clock;
+    for (int k = 0; k < f->hand_prepared.stage_count; ++k) {
+      const StageTimeline& hand_line = f->hand_prepared.timeline[k];
+      const StageTimeline& nominal_line = f->prepared.timeline[k];
+      clock.program_clock_shift_s[stage_index(hand_line.code)] = hand_line.start_s - nominal_line.start_s;
+      if (hand_line.code == 1) clock.stage1_program_clock_rate = nominal_line.step_s / hand_line.step_s;
+    }
+    FlightInputs inputs;
+    inputs.perturbation = &clock;
+    ASSERT_EQ(fly_trajectory(m, f->hand_prepared, inputs, &f->hand), Status::kOk);
     expect_final_equals(f->result.trajectories[0], f->result.staging_count - 1, f->hand);
+  }
+}
+
+// Sec. 15 "variation in thrust, burn time, and consumed weight" of stage 1 about the reference's
+// data block 40 nominal with body dynamics (IP(11) zero-alpha window and IP(12) on): thrust x c,
+// every table time / c. A smooth model's burnout altitude is linear in c - 1 for small changes:
+// the slopes of +d and -d agree, the central difference converges, and a change across TIMEP/2 of
+// burn time (d ~ 2.2e-4: where the window end and the stage-2 ignition used to leave the table's
+// nodes at 45 and 50 s) or across 0.035 s at the window start (d ~ 7.8e-4) has the same slope.
+TEST(Sec15Dispersions, Stage1ThrustResponseIsLinearForSmallChanges) {
+  auto f = make_fixture();
+  const StageData& n = f->mission.vehicle.stages[stage_index(1)];
+  const DispersionNominal nominal = test::dispersion_nominal(f->mission, nullptr, true);
+  const auto final_altitude_dispersion = [&](double d) {
+    DispersionData& data = f->data;
+    data.count = 0;
+    DispersionSource& s = add(&data, 1);
+    for (int i = 0; i < n.vacuum_thrust_lbf.size(); ++i) {
+      EXPECT_EQ(s.vacuum_thrust_lbf.append(n.vacuum_thrust_lbf.x(i) / (1.0 + d),
+                                           n.vacuum_thrust_lbf.y(i) * (1.0 + d)),
+                Status::kOk);
+      EXPECT_EQ(
+          s.consumable_weight_lb.append(n.consumable_weight_lb.x(i) / (1.0 + d), n.consumable_weight_lb.y(i)),
+          Status::kOk);
+    }
+    EXPECT_EQ(s.vacuum_thrust_lbf.finalize(), Status::kOk);
+    EXPECT_EQ(s.consumable_weight_lb.finalize(), Status::kOk);
+    EXPECT_EQ(run_dispersions(nominal, data, &f->workspace, &f->result), Status::kOk);
+    EXPECT_EQ(f->result.trajectories[0].status, Status::kOk);
+    return f->result.trajectories[0].dispersions[f->result.staging_count - 1][kAlt];
+  };
+  const double slope_plus_4 = final_altitude_dispersion(1e-4) / 1e-4;
+  const double slope_minus_4 = final_altitude_dispersion(-1e-4) / -1e-4;
+  const double slope_plus_3 = final_altitude_dispersion(1e-3) / 1e-3;
+  const double slope_minus_3 = final_altitude_dispersion(-1e-3) / -1e-3;
+  std::printf("stage-1 thrust: slopes ft per unit c: +1e-4 %.6g, -1e-4 %.6g, +1e-3 %.6g, -1e-3 %.6g\n",
+              slope_plus_4, slope_minus_4, slope_plus_3, slope_minus_3);
+  EXPECT_GT(slope_plus_4, 0.0);  // the same impulse burnt sooner: less gravity loss, higher
+  EXPECT_NEAR(slope_plus_4 / slope_minus_4, 1.0, 0.01);
+  EXPECT_NEAR(slope_plus_3 / slope_minus_3, 1.0, 0.01);
+  const double central_4 = 0.5 * (slope_plus_4 + slope_minus_4);
+  const double central_3 = 0.5 * (slope_plus_3 + slope_minus_3);
+  EXPECT_NEAR(central_3 / central_4, 1.0, 0.005);
+  for (double d : {2.0e-4, 2.5e-4, 7.5e-4, 8.5e-4, 3e-3, -3e-3}) {
+    EXPECT_NEAR(final_altitude_dispersion(d) / d / central_4, 1.0, 0.01) << d;
   }
 }
 

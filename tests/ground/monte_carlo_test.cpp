@@ -142,16 +142,16 @@ TEST(MonteCarlo, SigmaAgreesWithTheRssSigmaInTheLinearRegime) {
 }
 
 // The table sources at about 10 % of the reference data's size, built here from the nominal's own
-// tables: thrust high of stages 2-4 (thrust x 1.003, every time / 1.003: the same impulse, the
-// 3 % of the reference scaled to 0.3 %; stage 1 is left out: about this block 40 nominal its
-// burnout altitude is not linear in the stage-1 burn time even at 0.3 %, docs/theory/dispersions.md),
+// tables: thrust high of stages 1-4 (thrust x 1.003, every time / 1.003: the same impulse, the
+// 3 % of the reference scaled to 0.3 %; stage 1 linear since the block 40 table is read on the
+// program clock of a changed burn time, Sec15Dispersions.Stage1ThrustResponseIsLinearForSmallChanges),
 // C_M_alpha forward (x 1.02) and the reference winds (high headwind and yaw crosswind) at 10 % of their
 // speed. Nominal with body dynamics (C_M_alpha acts through it).
 std::unique_ptr<Case> make_table_case() {
   auto c = std::make_unique<Case>();
   build_reference_mission(ReferenceProgram::kOptimum, &c->mission);
   const auto add = [&](int code) -> DispersionSource& { return add_dispersion_source(&c->data, code); };
-  for (int stage = 2; stage <= 4; ++stage) {
+  for (int stage = 1; stage <= 4; ++stage) {
     DispersionSource& s = add(2 * stage - 1);
     const StageData& n = c->mission.vehicle.stages[stage_index(stage)];
     for (int i = 0; i < n.vacuum_thrust_lbf.size(); ++i) {
@@ -201,7 +201,7 @@ TEST(MonteCarlo, TableSourcesAreBlendedByTheirOneDraw) {
   for (std::uint64_t sample = 0; sample < 6; ++sample) {
     ASSERT_EQ(build_monte_carlo_case(c->nominal, ws->nominal_prepared, c->data, 99, sample, ws.get()),
               Status::kOk);
-    for (int stage = 2; stage <= 4; ++stage) {
+    for (int stage = 1; stage <= 4; ++stage) {
       const double draw = counter_normal(99, sample, static_cast<std::uint32_t>(2 * stage - 1)) / 3.0;
       const StageData& n = c->mission.vehicle.stages[stage_index(stage)];
       const StageData& d = ws->mission.vehicle.stages[stage_index(stage)];
@@ -227,7 +227,7 @@ TEST(MonteCarlo, TableSourcesAreBlendedByTheirOneDraw) {
   // A lone wind profile: speed x |c|, azimuth turned by pi for a negative draw.
   DispersionData wind_only;
   wind_only.count = 1;
-  wind_only.sources[0] = c->data.sources[5];  // code 38
+  wind_only.sources[0] = c->data.sources[6];  // code 38
   ASSERT_EQ(wind_only.sources[0].code, 38);
   int signs = 0;
   for (std::uint64_t sample = 0; sample < 8; ++sample) {

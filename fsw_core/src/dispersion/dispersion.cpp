@@ -257,6 +257,19 @@ void map_control_program(const PreparedCase& nominal, const ControlProgram& prog
   }
 }
 
+void set_program_clock_shifts(const PreparedCase& nominal, const PreparedCase& dispersed,
+                              FlightPerturbation* perturbation) {
+  for (int slot = 0; slot < dispersed.stage_count && slot < nominal.stage_count; ++slot) {
+    const StageTimeline& line = dispersed.timeline[slot];
+    perturbation->program_clock_shift_s[stage_index(line.code)] =
+        line.start_s - nominal.timeline[slot].start_s;
+    // Stage 1's clock runs with its step grid, so that the zero-alpha window (a stage-1 rule, decided
+    // on the step that starts in it: Sec. 22 IP(11)) opens and closes on the nominal's integration
+    // points; the later stages' clocks run in stage time, as map_control_program.
+    if (line.code == 1) perturbation->stage1_program_clock_rate = nominal.timeline[slot].step_s / line.step_s;
+  }
+}
+
 bool dispersion_code_info(int code, DispersionCodeInfo* info) {
   for (const CodeRow& row : kCodeTable) {
     if (row.code != code) continue;
@@ -465,6 +478,8 @@ Status build_dispersed_case(const DispersionNominal& nominal, const PreparedCase
     }
     map_control_program(nominal_prepared, *nominal.program, ws->prepared, &ws->program);
     ws->program_mapped = true;
+  } else if (info.kind == Kind::kVacuumThrust) {
+    set_program_clock_shifts(nominal_prepared, ws->prepared, &p);
   }
   return Status::kOk;
 }

@@ -461,6 +461,8 @@ Status build_monte_carlo_case(const DispersionNominal& nominal, const PreparedCa
     }
     map_control_program(nominal_prepared, *nominal.program, ws->prepared, &ws->program);
     ws->program_mapped = true;
+  } else if (thrust_changed) {
+    set_program_clock_shifts(nominal_prepared, ws->prepared, &p);
   }
   return Status::kOk;
 }

@@ -60,6 +60,8 @@ class Flight {
   StepCommand command_at(const StageContext& stage, int point, double t, double step_s,
                          const StateVector& state);
   void perturb_command(const StageContext& stage, double t, StepCommand* command) const;
+  double program_clock_shift_s(const StageContext& stage) const;
+  double program_time_s(const StageContext& stage, double t) const;
   double program_theta(int point, double t) const;
   Status record(const StageContext& stage, double t, const StateVector& state, const StateTrig& trig,
                 const StepCommand& command, const Evaluation& eval);
@@ -78,12 +80,33 @@ class Flight {
   double cos_launch_latitude_;
 };
 
+// FlightPerturbation::program_clock_shift_s of the stage: 0 but on a changed burn time (codes 1-8
+// about a data block 40 nominal).
+double Flight::program_clock_shift_s(const StageContext& stage) const {
+  return (inputs_.perturbation != nullptr)
+             ? inputs_.perturbation->program_clock_shift_s[stage_index(stage.code)]
+             : 0.0;
+}
+
+// Flight time t on the program's clock: t less the stage's shift; in stage 1, after the lift-off,
+// at stage1_program_clock_rate program seconds per flight second.
+double Flight::program_time_s(const StageContext& stage, double t) const {
+  const FlightPerturbation* perturbation = inputs_.perturbation;
+  if (perturbation == nullptr) return t;
+  const double shift_s = perturbation->program_clock_shift_s[stage_index(stage.code)];
+  const double rate = perturbation->stage1_program_clock_rate;
+  const double liftoff_s = mission_.launch.liftoff_duration_s;
+  if (stage.code != 1 || rate == 1.0 || !(t > liftoff_s)) return t - shift_s;
+  return liftoff_s + (t - liftoff_s) * rate;  // stage 1 starts at 0 on every flight
+}
+
+// `t` on the program's clock (program_time_s).
 void Flight::latch_segments(const StageContext& stage, double t, const StateVector& state) {
   const double eps = 0.5 * mission_.constants.time_epsilon_s;
   const bool window_ends = mission_.options.zero_alpha_window() && !window_end_latched_ &&
                            t + eps >= mission_.control.zero_alpha_end_s;
   const bool stage2_ignites = mission_.options.alpha_zero_at_stage2_ignition() && stage.code == 2 &&
-                              std::fabs(t - stage.start_s) < eps;
+                              std::fabs(t - (stage.start_s - program_clock_shift_s(stage))) < eps;
   if (!window_ends && !stage2_ignites) return;
   if (window_ends) window_end_latched_ = true;
 
@@ -115,12 +138,15 @@ double Flight::program_theta(int point, double t) const {
 
 // The attitude command of the step that starts at `point` (time t, state x), in order of
 // precedence: spun stages, lift-off, the zero-alpha window, alpha = 0 at stage-2 ignition, and
-// the pitch program.
+// the pitch program. The program, its window and its latched segments are read on the program's
+// clock (program_time_s); the lift-off and the heading hold on the flight's.
 StepCommand Flight::command_at(const StageContext& stage, int point, double t, double step_s,
                                const StateVector& state) {
   // Step-start times are sums of fixed steps; half of TIMEP (CT1(10)) absorbs their round-off.
   const double eps = 0.5 * mission_.constants.time_epsilon_s;
-  latch_segments(stage, t, state);
+  const double shift_s = program_clock_shift_s(stage);
+  const double tp = program_time_s(stage, t);
+  latch_segments(stage, tp, state);
   StepCommand command;
   command.step_start_s = t;
   command.step_s = step_s;
@@ -140,16 +166,16 @@ StepCommand Flight::command_at(const StageContext& stage, int point, double t, d
     command.theta_start_rad = command.theta_end_rad = kHalfPi;
     return command;
   }
-  if (mission_.options.zero_alpha_window() && t + eps >= mission_.control.zero_alpha_start_s &&
-      t + eps < mission_.control.zero_alpha_end_s) {
+  if (mission_.options.zero_alpha_window() && tp + eps >= mission_.control.zero_alpha_start_s &&
+      tp + eps < mission_.control.zero_alpha_end_s) {
     command.mode = AttitudeMode::kZeroAlpha;
     return command;
   }
   command.mode = AttitudeMode::kLinear;
-  command.theta_start_rad = attitude_set_in_flight(mission_, stage.code, stage.start_s, t)
+  command.theta_start_rad = attitude_set_in_flight(mission_, stage.code, stage.start_s - shift_s, tp)
                                 ? zero_alpha_theta_rad(prepared_, state)
-                                : program_theta(point, t);
-  command.theta_end_rad = program_theta(point + 1, t + step_s);
+                                : program_theta(point, tp);
+  command.theta_end_rad = program_theta(point + 1, program_time_s(stage, t + step_s));
   return command;
 }
 

@@ -230,6 +230,14 @@ Status build_dispersed_case(const DispersionNominal& nominal, const PreparedCase
 void map_control_program(const PreparedCase& nominal, const ControlProgram& program,
                          const PreparedCase& dispersed, ControlProgram* out);
 
+// The same rule for a data block 40 nominal (no per-point program): the table, its zero-alpha
+// window and its latched segments read on a program clock that starts each stage at the nominal's
+// start of it (FlightPerturbation::program_clock_shift_s: its start on `dispersed` minus its start
+// on `nominal`); in stage 1 the clock runs with the step grid (program_clock_rate: the nominal's
+// step over the dispersed), so the window opens and closes on the nominal's integration points.
+void set_program_clock_shifts(const PreparedCase& nominal, const PreparedCase& dispersed,
+                              FlightPerturbation* perturbation);
+
 // Records the staging variables, orbit elements and max q-bar alpha of `flown` into *out (values
 // only; dispersions are filled by run_dispersions). `reference` is the nominal trajectory (its
 // staging points define the columns and the crossrange planes); `wind` may be null.

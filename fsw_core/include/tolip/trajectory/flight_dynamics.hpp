@@ -29,6 +29,14 @@ struct FlightPerturbation {
   double misalignment_pitch_rad = 0.0;
   double misalignment_yaw_rad = 0.0;
   double thrust_station_ft = 0.0;
+  // Codes 1-8 about a data block 40 nominal (set_program_clock_shifts): the table, its zero-alpha
+  // window (IP(11)) and its latched segments (IP(11), IP(12)) are read on a program clock, not at
+  // the flight time t. A stage's clock starts at the nominal's start of the stage: t less
+  // program_clock_shift_s (its start on this flight minus its start on the nominal); stage 1's runs,
+  // after the lift-off, at stage1_program_clock_rate program seconds per flight second (the
+  // nominal's step over this flight's). The defaults, 0 and 1, are the flight time itself.
+  double program_clock_shift_s[kMaxStages] = {};
+  double stage1_program_clock_rate = 1.0;
 };
 
 // A flight's memo for evaluate_flight: the interval each table look-up found last (the next
