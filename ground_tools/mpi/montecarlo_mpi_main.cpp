@@ -28,11 +28,14 @@ int g_ranks = 1;
 
 // One sample as doubles: status, values, dispersions (all columns), orbit elements and dispersions,
 // max q-bar alpha and its time; then its casing impacts (--impacts): their status and count, and of
-// every casing each member of ImpactCase.
+// every casing each member of ImpactCase, only when the casings are flown (a record without them is
+// kTrajectoryWords long).
 constexpr int kCaseWords = 16;
 constexpr int kImpactWords = 2 + kImpactStages * kCaseWords;
-constexpr int kRecord =
-    1 + 2 * kMaxStagingPoints * kStagingVariables + 2 * kOrbitDispersionElements + 2 + kImpactWords;
+constexpr int kTrajectoryWords =
+    1 + 2 * kMaxStagingPoints * kStagingVariables + 2 * kOrbitDispersionElements + 2;
+
+int record_words(bool with_impacts) { return kTrajectoryWords + (with_impacts ? kImpactWords : 0); }
 
 void pack_impacts(const MonteCarloImpacts& m, double* out) {
   int k = 0;
@@ -86,7 +89,7 @@ void unpack_impacts(const double* in, MonteCarloImpacts* m) {
   }
 }
 
-void pack(const DispersedTrajectory& t, const MonteCarloImpacts& m, double* out) {
+void pack(const DispersedTrajectory& t, const MonteCarloImpacts* m, double* out) {
   int k = 0;
   out[k++] = static_cast<double>(static_cast<int>(t.status));
   for (int j = 0; j < kMaxStagingPoints; ++j) {
@@ -99,7 +102,7 @@ void pack(const DispersedTrajectory& t, const MonteCarloImpacts& m, double* out)
   for (int i = 0; i < kOrbitDispersionElements; ++i) out[k++] = t.orbit_dispersions[i];
   out[k++] = t.max_qbar_alpha_lbf_rad_ft2;
   out[k++] = t.max_qbar_alpha_time_s;
-  pack_impacts(m, out + k);
+  if (m != nullptr) pack_impacts(*m, out + k);
 }
 
 void unpack(const double* in, DispersedTrajectory* t, MonteCarloImpacts* m) {
@@ -115,7 +118,7 @@ void unpack(const double* in, DispersedTrajectory* t, MonteCarloImpacts* m) {
   for (int i = 0; i < kOrbitDispersionElements; ++i) t->orbit_dispersions[i] = in[k++];
   t->max_qbar_alpha_lbf_rad_ft2 = in[k++];
   t->max_qbar_alpha_time_s = in[k++];
-  unpack_impacts(in + k, m);
+  if (m != nullptr) unpack_impacts(in + k, m);
 }
 
 // The flier: this rank's share of the samples, gathered on rank 0 in sample order.
@@ -137,6 +140,7 @@ bool fly_on_ranks(const MonteCarloJob& job, MonteCarloSamples* samples) {
     return rank == 0;
   }
   const bool with_impacts = job.impacts.data != nullptr;
+  const int record = record_words(with_impacts);
   auto impact_ws = std::make_unique<ImpactWorkspace>();
   std::vector<double> mine;
   for (int i = rank; i < count; i += ranks) {
@@ -148,8 +152,8 @@ bool fly_on_ranks(const MonteCarloJob& job, MonteCarloSamples* samples) {
       (void)fly_monte_carlo_casings(*job.nominal, job.impacts, ws->mission, ws->prepared, ws->dispersed,
                                     impact_ws.get(), &impacts);
     }
-    mine.resize(mine.size() + kRecord);
-    pack(t, impacts, mine.data() + mine.size() - kRecord);
+    mine.resize(mine.size() + static_cast<std::size_t>(record));
+    pack(t, with_impacts ? &impacts : nullptr, mine.data() + mine.size() - record);
     if (rank == 0 && job.progress != nullptr && job.progress->enabled()) {
       job.progress->update("sample", static_cast<long>(i + 1), count, "(rank 0's share)");
     }
@@ -158,11 +162,11 @@ bool fly_on_ranks(const MonteCarloJob& job, MonteCarloSamples* samples) {
   std::vector<int> offsets(static_cast<std::size_t>(ranks));
   for (int r = 0, at = 0; r < ranks; ++r) {
     const int share = (count - r + ranks - 1) / ranks;
-    counts[static_cast<std::size_t>(r)] = share * kRecord;
+    counts[static_cast<std::size_t>(r)] = share * record;
     offsets[static_cast<std::size_t>(r)] = at;
-    at += share * kRecord;
+    at += share * record;
   }
-  std::vector<double> all(rank == 0 ? static_cast<std::size_t>(count) * kRecord : 0);
+  std::vector<double> all(rank == 0 ? static_cast<std::size_t>(count) * static_cast<std::size_t>(record) : 0);
   MPI_Gatherv(mine.data(), static_cast<int>(mine.size()), MPI_DOUBLE, all.data(), counts.data(),
               offsets.data(), MPI_DOUBLE, 0, MPI_COMM_WORLD);
   if (rank != 0) return false;
@@ -179,8 +183,8 @@ bool fly_on_ranks(const MonteCarloJob& job, MonteCarloSamples* samples) {
   for (int r = 0; r < ranks; ++r) {
     const double* block = all.data() + offsets[static_cast<std::size_t>(r)];
     for (int i = r, n = 0; i < count; i += ranks, ++n) {
-      unpack(block + static_cast<std::ptrdiff_t>(n) * kRecord, &samples->samples[static_cast<std::size_t>(i)],
-             &impacts[static_cast<std::size_t>(i)]);
+      unpack(block + static_cast<std::ptrdiff_t>(n) * record, &samples->samples[static_cast<std::size_t>(i)],
+             with_impacts ? &impacts[static_cast<std::size_t>(i)] : nullptr);
     }
   }
   if (with_impacts) {

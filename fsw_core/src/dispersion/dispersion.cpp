@@ -484,6 +484,21 @@ Status build_dispersed_case(const DispersionNominal& nominal, const PreparedCase
   return Status::kOk;
 }
 
+Status fly_dispersed_case(const DispersionNominal& nominal, DispersionWorkspace* ws,
+                          DispersedTrajectory* out) {
+  FlightInputs inputs;
+  inputs.program = ws->program_mapped ? &ws->program : nominal.program;
+  inputs.body_dynamics = nominal.body_dynamics;
+  inputs.perturbation = &ws->perturbation;
+  // Only what the record reads (lean points, the air-relative alpha kept from the flight).
+  inputs.lean_points = true;
+  inputs.air_alpha_rad = ws->air_alpha_rad;
+  const Status status = fly_trajectory(ws->mission, ws->prepared, inputs, &ws->dispersed);
+  if (!ok(status)) return status;
+  return record_dispersed_trajectory(ws->mission, ws->prepared, ws->nominal, ws->dispersed,
+                                     ws->perturbation.wind, ws->air_alpha_rad, out);
+}
+
 Status record_dispersed_trajectory(const Mission& mission, const PreparedCase& prepared,
                                    const Trajectory& reference, const Trajectory& flown,
                                    const WindProfile* wind, DispersedTrajectory* out) {
@@ -675,20 +690,7 @@ Status run_dispersions(const DispersionNominal& nominal, const DispersionData& d
     out.code = source.code;
     copy_title(source.title, out.title);
     Status code_status = build_dispersed_case(nominal, ws->nominal_prepared, source, ws);
-    if (ok(code_status)) {
-      FlightInputs dispersed;
-      dispersed.program = ws->program_mapped ? &ws->program : nominal.program;
-      dispersed.body_dynamics = nominal.body_dynamics;
-      dispersed.perturbation = &ws->perturbation;
-      // Only what the record reads (lean points, the air-relative alpha kept from the flight).
-      dispersed.lean_points = true;
-      dispersed.air_alpha_rad = ws->air_alpha_rad;
-      code_status = fly_trajectory(ws->mission, ws->prepared, dispersed, &ws->dispersed);
-      if (ok(code_status)) {
-        code_status = record_dispersed_trajectory(ws->mission, ws->prepared, ws->nominal, ws->dispersed,
-                                                  ws->perturbation.wind, ws->air_alpha_rad, &out);
-      }
-    }
+    if (ok(code_status)) code_status = fly_dispersed_case(nominal, ws, &out);
     out.status = code_status;
     if (!ok(code_status)) continue;
     for (int j = 0; j < columns; ++j) {

@@ -558,20 +558,7 @@ Status fly_monte_carlo_sample(const DispersionNominal& nominal, const Dispersion
                               DispersedTrajectory* out) {
   *out = DispersedTrajectory{};
   Status status = build_monte_carlo_case(nominal, ws->nominal_prepared, data, seed, sample, ws);
-  if (ok(status)) {
-    FlightInputs inputs;
-    inputs.program = ws->program_mapped ? &ws->program : nominal.program;
-    inputs.body_dynamics = nominal.body_dynamics;
-    inputs.perturbation = &ws->perturbation;
-    // Only what the record reads (lean points, the air-relative alpha kept from the flight).
-    inputs.lean_points = true;
-    inputs.air_alpha_rad = ws->air_alpha_rad;
-    status = fly_trajectory(ws->mission, ws->prepared, inputs, &ws->dispersed);
-  }
-  if (ok(status)) {
-    status = record_dispersed_trajectory(ws->mission, ws->prepared, ws->nominal, ws->dispersed,
-                                         ws->perturbation.wind, ws->air_alpha_rad, out);
-  }
+  if (ok(status)) status = fly_dispersed_case(nominal, ws, out);
   out->status = status;
   if (!ok(status)) return status;
   for (int j = 0; j < kMaxStagingPoints; ++j) {

@@ -91,10 +91,9 @@ double Flight::program_clock_shift_s(const StageContext& stage) const {
 // Flight time t on the program's clock: t less the stage's shift; in stage 1, after the lift-off,
 // at stage1_program_clock_rate program seconds per flight second.
 double Flight::program_time_s(const StageContext& stage, double t) const {
-  const FlightPerturbation* perturbation = inputs_.perturbation;
-  if (perturbation == nullptr) return t;
-  const double shift_s = perturbation->program_clock_shift_s[stage_index(stage.code)];
-  const double rate = perturbation->stage1_program_clock_rate;
+  const double shift_s = program_clock_shift_s(stage);
+  const double rate =
+      (inputs_.perturbation != nullptr) ? inputs_.perturbation->stage1_program_clock_rate : 1.0;
   const double liftoff_s = mission_.launch.liftoff_duration_s;
   if (stage.code != 1 || rate == 1.0 || !(t > liftoff_s)) return t - shift_s;
   return liftoff_s + (t - liftoff_s) * rate;  // stage 1 starts at 0 on every flight

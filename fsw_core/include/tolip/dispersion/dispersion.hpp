@@ -223,6 +223,13 @@ Status validate_dispersion_data(const DispersionData& data, int* fault_code);
 Status build_dispersed_case(const DispersionNominal& nominal, const PreparedCase& nominal_prepared,
                             const DispersionSource& source, DispersionWorkspace* workspace);
 
+// Flies the case build_dispersed_case (or build_monte_carlo_case) left in the workspace about the
+// nominal, lean (only what the record reads, with the flight's air-relative alpha), and records
+// it into *out with record_dispersed_trajectory: the one flight of a dispersed trajectory, shared
+// by the deterministic codes and the Monte Carlo samples. Leaves out->status alone.
+Status fly_dispersed_case(const DispersionNominal& nominal, DispersionWorkspace* workspace,
+                          DispersedTrajectory* out);
+
 // The nominal per-point program carried onto a dispersed timeline (codes 1-8 change a burn time):
 // a stage whose grid is the nominal's keeps its values; one whose grid changed flies the nominal
 // program as a function of stage time, linear between the nominal points and continued at the
