@@ -222,9 +222,10 @@ TEST(Sec19Atmosphere, TableValidationRejectsWhatHasNoAtmosphere) {
   t.base_geopotential_altitude_ft[0] = kNaN;
   EXPECT_EQ(validate_atmosphere_table(t), Status::kValueNotFinite);
   t = good;
-  // A later base that is not a number is first met as the layer below it having no thickness.
+  // A later base that is not a number is a value that is not finite, though the layer below it
+  // reads it for its thickness (before, it was named as that layer having no thickness).
   t.base_geopotential_altitude_ft[3] = kNaN;
-  EXPECT_EQ(validate_atmosphere_table(t), Status::kAtmosphereTableInvalid);
+  EXPECT_EQ(validate_atmosphere_table(t), Status::kValueNotFinite);
   t = good;
   t.base_molecular_temperature_R[2] = HUGE_VAL;
   EXPECT_EQ(validate_atmosphere_table(t), Status::kValueNotFinite);

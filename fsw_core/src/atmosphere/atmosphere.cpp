@@ -79,12 +79,16 @@ Status evaluate_atmosphere(const AtmosphereTable& table, const Constants& consta
 }
 
 Status validate_atmosphere_table(const AtmosphereTable& table) {
+  // Every word finite first: a layer's thickness reads the next layer's base, whose NaN is a
+  // value that is not finite, not a table out of order.
   for (int b = 0; b < kAtmosphereLayers; ++b) {
     if (!std::isfinite(table.base_geopotential_altitude_ft[b]) ||
         !std::isfinite(table.base_molecular_temperature_R[b]) ||
         !std::isfinite(table.lapse_rate_R_per_ft[b]) || !std::isfinite(table.base_density_slug_ft3[b])) {
       return Status::kValueNotFinite;
     }
+  }
+  for (int b = 0; b < kAtmosphereLayers; ++b) {
     if (!(table.base_molecular_temperature_R[b] > 0.0) || !(table.base_density_slug_ft3[b] > 0.0)) {
       return Status::kAtmosphereTableInvalid;
     }
