@@ -7,6 +7,7 @@
 #   build-coverage/coverage/branches.txt   per file, branches (text)
 #   build-coverage/coverage/summary.json   totals and per file (gcovr --json-summary)
 #   build-coverage/coverage/functions.txt  functions never called (gcov's function counts)
+#   build-coverage/coverage/gaps.txt       the branches never taken, by kind (scripts/coverage_gaps.py)
 #
 #   scripts/coverage.sh [--build DIR [--restore]] [CTEST ARGUMENTS...]
 #
@@ -52,6 +53,8 @@ for f in sorted(data["files"], key=lambda f: f["file"]):
             print(f"{f['file']}:{fn.get('lineno', 0)}: {fn.get('name', '?')}")
 PY
 echo "coverage.sh: $(wc -l < "$out/functions.txt") core functions never called ($out/functions.txt)"
+python3 "$root/scripts/coverage_gaps.py" "$out/coverage.json" > "$out/gaps.txt"
+echo "coverage.sh: $(head -1 "$out/gaps.txt") ($out/gaps.txt)"
 if [[ $restore -eq 1 ]]; then
   nice -n 10 cmake -S "$root" -B "$build" -DTOLIP_COVERAGE=OFF >/dev/null
   nice -n 10 cmake --build "$build" -j2 >/dev/null
