@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <random>
 
+#include "support/adjoint_check.hpp"
 #include "support/cartesian_model.hpp"
 #include "support/reference_mission.hpp"
 #include "tolip/core/constants.hpp"
@@ -76,14 +77,7 @@ TEST(Sec4VerticalFlight, RegularDerivativeIsContinuousAtTheVertical) {
   }
 }
 
-struct HeritageFlight {
-  Mission mission;
-  PreparedCase prepared;
-  Trajectory nominal;
-  Trajectory perturbed;
-  ControlProgram program;
-  BackwardRun backward;
-};
+using HeritageFlight = test::AdjointCase;
 
 // The reference optimum flown without the heading hold (a heritage deck).
 HeritageFlight& heritage_flight() {
