@@ -43,15 +43,7 @@ struct Case {
 std::unique_ptr<Case> make_case(double scale) {
   auto c = std::make_unique<Case>();
   build_reference_mission(ReferenceProgram::kOptimum, &c->mission);
-  const auto add = [&](int code) -> DispersionSource& { return add_dispersion_source(&c->data, code); };
-  add(9).weight_increment_lb = 150.0 * scale;
-  add(11).weight_increment_lb = 50.0 * scale;
-  add(13).weight_increment_lb = 15.0 * scale;
-  add(17).drag_variation_fraction = 0.1 * scale;
-  add(24).deadband_rad = 0.5 * kDeg * scale;
-  add(27).deadband_rad = 0.5 * kDeg * scale;
-  add(33).launch_change_rad = 0.5 * kDeg * scale;
-  add(34).launch_change_rad = 0.3 * kDeg * scale;
+  add_reference_scalar_sources(&c->data, scale, {9, 11, 13, 17, 24, 27, 33, 34});
   c->nominal.mission = &c->mission;
   build_reference_impact_data(&c->impact);
   c->request.data = &c->impact;
