@@ -30,10 +30,7 @@ using ground::run_monte_carlo;
 
 constexpr double kDeg = kPi / 180.0;
 
-struct Case {
-  Mission mission;
-  DispersionData data;
-  DispersionNominal nominal;
+struct Case : ReferenceDispersionCase {
   ImpactLocusData impact;
   MonteCarloImpactRequest request;
 };
@@ -42,9 +39,7 @@ struct Case {
 // `scale`, and the casings of stages 1-3.
 std::unique_ptr<Case> make_case(double scale) {
   auto c = std::make_unique<Case>();
-  build_reference_mission(ReferenceProgram::kOptimum, &c->mission);
-  add_reference_scalar_sources(&c->data, scale, {9, 11, 13, 17, 24, 27, 33, 34});
-  c->nominal.mission = &c->mission;
+  make_reference_dispersion_case(scale, {9, 11, 13, 17, 24, 27, 33, 34}, c.get());
   build_reference_impact_data(&c->impact);
   c->request.data = &c->impact;
   for (bool& stage : c->request.stages) stage = true;

@@ -53,18 +53,12 @@ TEST(MonteCarlo, CounterDrawsAreUniformAndNormalWhateverTheOrder) {
   }
 }
 
-struct Case {
-  Mission mission;
-  DispersionData data;
-  DispersionNominal nominal;
-};
+using Case = ReferenceDispersionCase;
 
 // The scalar sources of the reference data (high codes and yaw codes), scaled.
 std::unique_ptr<Case> make_case(double scale) {
   auto c = std::make_unique<Case>();
-  build_reference_mission(ReferenceProgram::kOptimum, &c->mission);
-  add_reference_scalar_sources(&c->data, scale, {9, 11, 13, 15, 17, 24, 26, 27, 29, 30, 32, 33, 34});
-  c->nominal.mission = &c->mission;  // the block 40 table, point mass
+  make_reference_dispersion_case(scale, {9, 11, 13, 15, 17, 24, 26, 27, 29, 30, 32, 33, 34}, c.get());
   return c;
 }
 

@@ -8,6 +8,7 @@
 
 #include <initializer_list>
 
+#include "support/reference_mission.hpp"
 #include "tolip/core/constants.hpp"
 #include "tolip/dispersion/dispersion.hpp"
 
@@ -55,6 +56,22 @@ inline void add_reference_scalar_sources(DispersionData* data, double scale,
       default: ADD_FAILURE() << "code " << code << " is not a reference scalar source";
     }
   }
+}
+
+// The reference mission (the oracle's optimum) with reference scalar sources, and the nominal a
+// run flies about it: the block 40 table, point mass.
+struct ReferenceDispersionCase {
+  Mission mission;
+  DispersionData data;
+  DispersionNominal nominal;
+};
+
+// Fills `c` with the reference mission and the reference scalar sources of `codes` at `scale`.
+inline void make_reference_dispersion_case(double scale, std::initializer_list<int> codes,
+                                           ReferenceDispersionCase* c) {
+  build_reference_mission(ReferenceProgram::kOptimum, &c->mission);
+  add_reference_scalar_sources(&c->data, scale, codes);
+  c->nominal.mission = &c->mission;
 }
 
 // The nominal of a dispersion run: `mission` flown with `program` (nullptr: the mission's own
