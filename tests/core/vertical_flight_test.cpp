@@ -237,7 +237,7 @@ TEST(Sec5Adjoint, NearVerticalStepsWithoutTheHoldMatchCentralDifferences) {
   }
 
   // State injections at the points 4 and 5 s after launch (inside and after the near-vertical steps).
-  const double sizes[6] = {0.5, 1e-4, 50.0, 1e-4, 1e-6, 1e-6};
+  const double* const sizes = test::kStateInjectionSizes;
   for (double time : {4.0, 5.0}) {
     int point = 0;
     while (point < f.nominal.point_count && std::fabs(f.nominal.points[point].time_s - time) > 1e-9) ++point;
