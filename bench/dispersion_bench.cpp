@@ -8,16 +8,14 @@
 #include <cstdlib>
 #include <memory>
 
+#include "bench_support.hpp"
 #include "tolip/dispersion/dispersion.hpp"
-#include "tolip_ground/card_deck.hpp"
 #include "tolip_ground/dispersion_run.hpp"
 #include "tolip_ground/optimization_run.hpp"
 
 namespace {
 
-struct Prepared {
-  tolip::ground::Deck deck;
-  tolip::ground::OptimizationRun run;
+struct Prepared : tolip::bench::OptimizedExample {
   std::unique_ptr<tolip::DispersionData> data = std::make_unique<tolip::DispersionData>();
   tolip::DispersionNominal nominal;
 };
@@ -25,19 +23,12 @@ struct Prepared {
 const Prepared& prepared() {
   static Prepared* p = [] {
     auto* made = new Prepared;
-    tolip::ground::DeckError error;
-    if (!tolip::ground::load_deck(std::string(TOLIP_EXAMPLES_DIR) + "/scout/mission.toml", &made->deck,
-                                  &error)) {
-      std::fprintf(stderr, "%s\n", error.to_string().c_str());
-      std::exit(1);
-    }
-    const tolip::ground::DeckCase& c = made->deck.cases.front();
-    tolip::ground::run_optimization(*c.mission, nullptr, &made->run);
+    tolip::bench::load_and_optimize_example(made);
+    const tolip::ground::DeckCase& c = made->example();
     tolip::ground::DispersionMappingFault fault;
     if (!tolip::ground::fill_dispersion_data(c.extras.dispersions, made->data.get(), &fault) ||
         made->run.linearization.result == nullptr) {
-      std::fprintf(stderr, "the example did not prepare\n");
-      std::exit(1);
+      tolip::bench::stop_setup("the example did not prepare");
     }
     made->nominal.mission = &made->run.linearization.workspace->mission;
     made->nominal.program = &made->run.linearization.workspace->program;

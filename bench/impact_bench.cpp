@@ -9,40 +9,30 @@
 #include <cstdlib>
 #include <memory>
 
+#include "bench_support.hpp"
 #include "tolip/impact/impact.hpp"
-#include "tolip_ground/card_deck.hpp"
 #include "tolip_ground/impact_run.hpp"
 #include "tolip_ground/optimization_run.hpp"
 
 namespace {
 
-struct Prepared {
-  tolip::ground::Deck deck;
-  tolip::ground::OptimizationRun run;
+struct Prepared : tolip::bench::OptimizedExample {
   tolip::ground::ImpactStep step;
 };
 
 const Prepared& prepared() {
   static Prepared* p = [] {
     auto* made = new Prepared;
-    tolip::ground::DeckError error;
-    if (!tolip::ground::load_deck(std::string(TOLIP_EXAMPLES_DIR) + "/scout/mission.toml", &made->deck,
-                                  &error)) {
-      std::fprintf(stderr, "%s\n", error.to_string().c_str());
-      std::exit(1);
-    }
-    const tolip::ground::DeckCase& c = made->deck.cases.front();
-    tolip::ground::run_optimization(*c.mission, nullptr, &made->run);
+    tolip::bench::load_and_optimize_example(made);
+    const tolip::ground::DeckCase& c = made->example();
     auto data = std::make_unique<tolip::ImpactLocusData>();
     tolip::ground::ImpactMappingFault fault;
     if (!tolip::ground::fill_impact_data(*c.mission, c.extras, data.get(), &fault)) {
-      std::fprintf(stderr, "%s\n", fault.message.c_str());
-      std::exit(1);
+      tolip::bench::stop_setup(fault.message);
     }
     tolip::ground::run_impact_step(*c.mission, made->run, std::move(data), &made->step);
     if (made->step.outcome != tolip::ground::StepOutcome::kRun || !tolip::ok(made->step.status)) {
-      std::fprintf(stderr, "the example's impact locus did not run\n");
-      std::exit(1);
+      tolip::bench::stop_setup("the example's impact locus did not run");
     }
     std::fprintf(stderr, "impact locus about the %s: %d cases\n", made->step.nominal_kind.c_str(),
                  made->step.locus->count);

@@ -9,8 +9,8 @@
 #include <cstdlib>
 #include <memory>
 
+#include "bench_support.hpp"
 #include "tolip/dispersion/monte_carlo.hpp"
-#include "tolip_ground/card_deck.hpp"
 #include "tolip_ground/dispersion_run.hpp"
 #include "tolip_ground/impact_run.hpp"
 #include "tolip_ground/monte_carlo_run.hpp"
@@ -20,9 +20,7 @@ namespace {
 
 constexpr int kSamples = 200;
 
-struct Prepared {
-  tolip::ground::Deck deck;
-  tolip::ground::OptimizationRun run;
+struct Prepared : tolip::bench::OptimizedExample {
   std::unique_ptr<tolip::DispersionData> data = std::make_unique<tolip::DispersionData>();
   tolip::DispersionNominal nominal;
   std::unique_ptr<tolip::ImpactLocusData> impact = std::make_unique<tolip::ImpactLocusData>();
@@ -32,28 +30,20 @@ struct Prepared {
 const Prepared& prepared() {
   static Prepared* p = [] {
     auto* made = new Prepared;
-    tolip::ground::DeckError error;
-    if (!tolip::ground::load_deck(std::string(TOLIP_EXAMPLES_DIR) + "/scout/mission.toml", &made->deck,
-                                  &error)) {
-      std::fprintf(stderr, "%s\n", error.to_string().c_str());
-      std::exit(1);
-    }
-    const tolip::ground::DeckCase& c = made->deck.cases.front();
-    tolip::ground::run_optimization(*c.mission, nullptr, &made->run);
+    tolip::bench::load_and_optimize_example(made);
+    const tolip::ground::DeckCase& c = made->example();
     tolip::ground::DispersionMappingFault fault;
     std::string kind;
     tolip::Status why = tolip::Status::kOk;
     if (!tolip::ground::fill_dispersion_data(c.extras.dispersions, made->data.get(), &fault) ||
         !tolip::ground::final_dispersion_nominal(*c.mission, made->run, &made->nominal, &kind, &why)) {
-      std::fprintf(stderr, "the example did not prepare\n");
-      std::exit(1);
+      tolip::bench::stop_setup("the example did not prepare");
     }
     const bool stages[tolip::kImpactStages] = {true, true, true};
     tolip::ground::ImpactMappingFault impact_fault;
     if (!tolip::ground::fill_casing_impact_data(*c.mission, c.extras, stages, "the bench", made->impact.get(),
                                                 &impact_fault)) {
-      std::fprintf(stderr, "%s\n", impact_fault.message.c_str());
-      std::exit(1);
+      tolip::bench::stop_setup(impact_fault.message);
     }
     made->impacts.data = made->impact.get();
     for (int k = 0; k < tolip::kImpactStages; ++k) made->impacts.stages[k] = true;

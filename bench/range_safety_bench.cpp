@@ -9,18 +9,16 @@
 #include <cstdlib>
 #include <memory>
 
+#include "bench_support.hpp"
 #include "tolip/hardover/hardover.hpp"
 #include "tolip/radar/radar.hpp"
-#include "tolip_ground/card_deck.hpp"
 #include "tolip_ground/hardover_run.hpp"
 #include "tolip_ground/optimization_run.hpp"
 #include "tolip_ground/radar_run.hpp"
 
 namespace {
 
-struct Prepared {
-  tolip::ground::Deck deck;
-  tolip::ground::OptimizationRun run;
+struct Prepared : tolip::bench::OptimizedExample {
   const tolip::Trajectory* nominal = nullptr;
   std::unique_ptr<tolip::RadarStations> stations = std::make_unique<tolip::RadarStations>();
   tolip::ground::FinalNominal flight;
@@ -31,27 +29,19 @@ struct Prepared {
 const Prepared& prepared() {
   static Prepared* p = [] {
     auto* made = new Prepared;
-    tolip::ground::DeckError error;
-    if (!tolip::ground::load_deck(std::string(TOLIP_EXAMPLES_DIR) + "/scout/mission.toml", &made->deck,
-                                  &error)) {
-      std::fprintf(stderr, "%s\n", error.to_string().c_str());
-      std::exit(1);
-    }
-    const tolip::ground::DeckCase& c = made->deck.cases.front();
-    tolip::ground::run_optimization(*c.mission, nullptr, &made->run);
+    tolip::bench::load_and_optimize_example(made);
+    const tolip::ground::DeckCase& c = made->example();
     std::string kind;
     tolip::Status why = tolip::Status::kOk;
     made->nominal = tolip::ground::final_nominal_trajectory(*c.mission, made->run, &kind, &why);
     if (made->nominal == nullptr) {
-      std::fprintf(stderr, "the example did not converge: %s\n", tolip::status_name(why));
-      std::exit(1);
+      tolip::bench::stop_setup(std::string("the example did not converge: ") + tolip::status_name(why));
     }
     tolip::ground::fill_radar_stations(c.extras.radar_stations, made->stations.get());
     tolip::ground::HardoverMappingFault fault;
     if (!tolip::ground::final_nominal_flight(*c.mission, made->run, &made->flight, &kind, &why) ||
         !tolip::ground::fill_hardover_data(c.extras.hardover, made->hardover.get(), &fault)) {
-      std::fprintf(stderr, "the example's hardover data did not prepare\n");
-      std::exit(1);
+      tolip::bench::stop_setup("the example's hardover data did not prepare");
     }
     return made;
   }();

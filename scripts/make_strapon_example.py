@@ -134,6 +134,32 @@ def orbit_targets():
     return rp, -MU_FT3_S2 / a
 
 
+def w_stage(w, code, name, note, settings, tables, drag=None):
+    """Writes a powered stage's data block 16 entries through `w`: its name, a comment line
+    `note`, the `settings` lines as given, the thrust and consumable weight tables of `tables`
+    (times, thrust, remaining weight) and, when given, the drag table (its mach and cd lines)."""
+    times, thrust, remaining = tables
+    w("[stage.%d]" % code)
+    w('name = "%s"' % name)
+    w("# " + note)
+    for line in settings:
+        w(line)
+    w("")
+    w("[stage.%d.thrust]" % code)
+    w("time_s = " + array(times))
+    w("vacuum_thrust_lbf = " + array(thrust))
+    w("")
+    w("[stage.%d.consumable_weight]" % code)
+    w("time_s = " + array(times))
+    w("remaining_lb = " + array(remaining))
+    w("")
+    if drag is not None:
+        w("[stage.%d.drag]  # C_D at alpha = 0, referenced to stage %d area" % (code, code))
+        for line in drag:
+            w(line)
+        w("")
+
+
 def deck(five_elements=False):
     (t1, f1, w1, p1), (t2, f2, w2, p2), (t3, f3, w3, p3) = stage_tables()
     rp, two_e = orbit_targets()
@@ -174,72 +200,41 @@ def deck(five_elements=False):
     w("sequence = [1, 2, 7, 3]                      # boosters+core, core alone (back to back), coast, upper stage")
     w("payload_lb = 1000.0                          # initial guess; the payoff")
     w("")
-    w("[stage.1]")
-    w('name = "two strap-on solid boosters and the liquid core, in parallel"')
-    w("# boosters %.0f lbf each at Isp %.0f s, core %.0f lbf at Isp %.0f s (vacuum); propellant burned %.1f lb"
-      % (BOOSTER_THRUST_LBF, BOOSTER_ISP_S, CORE_THRUST_LBF, CORE_ISP_S, p1))
-    w("duration_s = 60.0")
-    w("integration_steps = 40")
-    w("jettison_weight_lb = 3600.0                  # the two booster cases, dropped at 60 s")
-    w("reference_area_ft2 = 75.4                    # core 8 ft and two 4 ft boosters")
-    w("nozzle_exit_area_ft2 = 17.0")
-    w("")
-    w("[stage.1.thrust]")
-    w("time_s = " + array(t1))
-    w("vacuum_thrust_lbf = " + array(f1))
-    w("")
-    w("[stage.1.consumable_weight]")
-    w("time_s = " + array(t1))
-    w("remaining_lb = " + array(w1))
-    w("")
-    w("[stage.1.drag]  # C_D at alpha = 0, referenced to stage 1 area")
-    w("mach = [0.0, 0.6, 0.8, 0.9, 1.0, 1.1, 1.2, 1.5, 2.0, 3.0, 4.0, 6.0, 10.0]")
-    w("cd = [0.42, 0.42, 0.45, 0.52, 0.68, 0.78, 0.78, 0.72, 0.62, 0.50, 0.44, 0.38, 0.35]")
-    w("")
-    w("[stage.2]")
-    w('name = "liquid core alone after booster separation"')
-    w("# core %.0f lbf at Isp %.0f s; propellant %.1f lb" % (CORE_THRUST_LBF, CORE_ISP_S, p2))
-    w("duration_s = 90.0")
-    w("integration_steps = 45")
-    w("jettison_weight_lb = 4000.0                  # core tanks and engine, interstage, payload fairing")
-    w("reference_area_ft2 = 50.27                   # 8 ft core")
-    w("nozzle_exit_area_ft2 = 7.0")
-    w("")
-    w("[stage.2.thrust]")
-    w("time_s = " + array(t2))
-    w("vacuum_thrust_lbf = " + array(f2))
-    w("")
-    w("[stage.2.consumable_weight]")
-    w("time_s = " + array(t2))
-    w("remaining_lb = " + array(w2))
-    w("")
-    w("[stage.2.drag]  # C_D at alpha = 0, referenced to stage 2 area")
-    w("mach = [0.0, 0.8, 1.0, 1.2, 1.5, 2.0, 3.0, 4.0, 6.0, 10.0]")
-    w("cd = [0.30, 0.33, 0.50, 0.60, 0.56, 0.47, 0.38, 0.33, 0.28, 0.25]")
-    w("")
+    w_stage(w, 1, "two strap-on solid boosters and the liquid core, in parallel",
+            "boosters %.0f lbf each at Isp %.0f s, core %.0f lbf at Isp %.0f s (vacuum); propellant burned %.1f lb"
+            % (BOOSTER_THRUST_LBF, BOOSTER_ISP_S, CORE_THRUST_LBF, CORE_ISP_S, p1),
+            ["duration_s = 60.0",
+             "integration_steps = 40",
+             "jettison_weight_lb = 3600.0                  # the two booster cases, dropped at 60 s",
+             "reference_area_ft2 = 75.4                    # core 8 ft and two 4 ft boosters",
+             "nozzle_exit_area_ft2 = 17.0"],
+            (t1, f1, w1),
+            ("mach = [0.0, 0.6, 0.8, 0.9, 1.0, 1.1, 1.2, 1.5, 2.0, 3.0, 4.0, 6.0, 10.0]",
+             "cd = [0.42, 0.42, 0.45, 0.52, 0.68, 0.78, 0.78, 0.72, 0.62, 0.50, 0.44, 0.38, 0.35]"))
+    w_stage(w, 2, "liquid core alone after booster separation",
+            "core %.0f lbf at Isp %.0f s; propellant %.1f lb" % (CORE_THRUST_LBF, CORE_ISP_S, p2),
+            ["duration_s = 90.0",
+             "integration_steps = 45",
+             "jettison_weight_lb = 4000.0                  # core tanks and engine, interstage, payload fairing",
+             "reference_area_ft2 = 50.27                   # 8 ft core",
+             "nozzle_exit_area_ft2 = 7.0"],
+            (t2, f2, w2),
+            ("mach = [0.0, 0.8, 1.0, 1.2, 1.5, 2.0, 3.0, 4.0, 6.0, 10.0]",
+             "cd = [0.30, 0.33, 0.50, 0.60, 0.56, 0.47, 0.38, 0.33, 0.28, 0.25]"))
     w("[stage.7]")
     w("# separation coast before the upper stage; above the sensible atmosphere, no aerodynamic tables")
     w("duration_s = 6.0")
     w("integration_steps = 3")
     w("")
-    w("[stage.3]")
-    w('name = "long-burning upper stage (steered)"')
-    w("# %.2f lbf at Isp %.0f s for 99 s; propellant %.1f lb; the payload is added to its jettison weight"
-      % (UPPER_THRUST_LBF, UPPER_ISP_S, p3))
-    w("duration_s = 99.0")
-    w("integration_steps = 40")
-    w("jettison_weight_lb = 900.0")
-    w("reference_area_ft2 = 50.27")
-    w("nozzle_exit_area_ft2 = 3.0")
-    w("")
-    w("[stage.3.thrust]")
-    w("time_s = " + array(t3))
-    w("vacuum_thrust_lbf = " + array(f3))
-    w("")
-    w("[stage.3.consumable_weight]")
-    w("time_s = " + array(t3))
-    w("remaining_lb = " + array(w3))
-    w("")
+    w_stage(w, 3, "long-burning upper stage (steered)",
+            "%.2f lbf at Isp %.0f s for 99 s; propellant %.1f lb; the payload is added to its jettison weight"
+            % (UPPER_THRUST_LBF, UPPER_ISP_S, p3),
+            ["duration_s = 99.0",
+             "integration_steps = 40",
+             "jettison_weight_lb = 900.0",
+             "reference_area_ft2 = 50.27",
+             "nozzle_exit_area_ft2 = 3.0"],
+            (t3, f3, w3))
     w("[launch]")
     w("# an illustrative site at 28.5 deg (on a sphere geodetic = geocentric)")
     w("liftoff_duration_s = 4.0")

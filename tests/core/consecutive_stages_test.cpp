@@ -59,43 +59,27 @@ void drop_repeated_staging_instants(Mission* mission) {
   }
 }
 
-using test::expect_agreement;
 using test::kTerminalCount;
 using test::kTerminalNames;
 using test::terminal;
 using test::terminal_partials;
 
-struct Fixture {
-  Mission mission;  // the reference optimum without coast 6
-  PreparedCase prepared;
-  ControlProgram program;
-  Trajectory nominal;
-  Trajectory perturbed;
-  BackwardRun backward;
-};
-
-Fixture& fixture() {
-  static Fixture* f = [] {
-    static Fixture fx;
-    test::build_reference_mission(test::ReferenceProgram::kOptimum, &fx.mission);
-    leave_out_of_sequence(&fx.mission, 6);
-    drop_repeated_staging_instants(&fx.mission);
-    EXPECT_EQ(validate_mission(fx.mission, nullptr), Status::kOk);
-    EXPECT_EQ(prepare_case(fx.mission, &fx.prepared), Status::kOk);
-    EXPECT_EQ(fly_trajectory(fx.mission, fx.prepared, &fx.nominal), Status::kOk);
-    fx.program.point_count = fx.nominal.point_count;
-    for (int i = 0; i < fx.nominal.point_count; ++i) fx.program.theta_rad[i] = fx.nominal.points[i].theta_rad;
-    ConstraintTerminal terminals[kTerminalCount];
-    terminal_partials(fx.mission.constants, fx.nominal, terminals);
-    EXPECT_EQ(run_backward(fx.mission, fx.prepared, fx.nominal, kTerminalCount, terminals, &fx.backward),
-              Status::kOk);
-    return &fx;
+// The reference optimum without coast 6, flown with its own per-point program, and its backward run.
+test::AdjointCase& fixture() {
+  static test::AdjointCase* f = [] {
+    static test::AdjointCase c;
+    test::build_reference_mission(test::ReferenceProgram::kOptimum, &c.mission);
+    leave_out_of_sequence(&c.mission, 6);
+    drop_repeated_staging_instants(&c.mission);
+    EXPECT_EQ(validate_mission(c.mission, nullptr), Status::kOk);
+    test::fly_nominal_and_run_backward(&c);
+    return &c;
   }();
   return *f;
 }
 
 TEST(Sec22Block5ConsecutiveStages, SequenceWithoutTheCoastAfterStage1FliesWithTheJettisonAtTheBoundary) {
-  Fixture& f = fixture();
+  test::AdjointCase& f = fixture();
   ASSERT_EQ(f.nominal.status, Status::kOk);
   const int expected[] = {1, 2, 7, 3, 8, 4};
   ASSERT_EQ(f.nominal.stage_count, 6);
@@ -135,7 +119,7 @@ TEST(Sec22Block5ConsecutiveStages, SequenceWithoutTheCoastAfterStage1FliesWithTh
 // starts there, and where the zero-alpha window starts (t = 15 s) that is the alpha = 0 attitude,
 // not the table's value the step before it ended on (1.5e-7 rad apart on the reference tables).
 TEST(Sec22Block5ConsecutiveStages, AbsentCoastAgreesWithAnEpsilonCoastToFirstOrder) {
-  Fixture& absent = fixture();
+  test::AdjointCase& absent = fixture();
   static Mission eps_mission;
   static PreparedCase eps_prepared;
   static Trajectory eps_table_flight;
@@ -183,40 +167,17 @@ TEST(Sec22Block5ConsecutiveStages, AbsentCoastAgreesWithAnEpsilonCoastToFirstOrd
   }
 }
 
-// Central difference of every terminal quantity for a change flown by `fly(sign, perturbed)`.
-template <typename Fly>
-void central_difference(const Fly& fly, double out[kTerminalCount]) {
-  Fixture& f = fixture();
-  test::central_difference(f.mission.constants, fly, &f.perturbed, out);
-}
-
 TEST(Sec5AdjointConsecutiveStages, StatePerturbationsAcrossTheStage1To2BoundaryMatchCentralDifferences) {
-  Fixture& f = fixture();
+  test::AdjointCase& f = fixture();
   const StageEvent& stage1 = f.nominal.stages[0];
   const StageEvent& stage2 = f.nominal.stages[1];
   // The last step of stage 1 (its start point), stage 2's first point (the state stage 1 burnt
   // out with, now with stage 2's weight and thrust) and the one after it.
   const int points[] = {stage1.last_point - 1, stage2.first_point, stage2.first_point + 1};
-  const double sizes[6] = {0.5, 1e-4, 50.0, 1e-4, 1e-6, 1e-6};
   for (int point : points) {
-    for (int i = 0; i < 6; ++i) {
-      FlightInputs inputs;
-      inputs.program = &f.program;
-      inputs.injection_point = point;
-      double fd[kTerminalCount], predicted[kTerminalCount];
-      central_difference(
-          [&](double sign, Trajectory* out) {
-            inputs.injection = StateVector::Zero();
-            inputs.injection[i] = sign * sizes[i];
-            return fly_trajectory(f.mission, f.prepared, inputs, out);
-          },
-          fd);
-      for (int j = 0; j < kTerminalCount; ++j) predicted[j] = f.backward.lambda[point](i, j) * sizes[i];
-      char what[64];
-      std::snprintf(what, sizeof what, "pt %d (stage %d) dX[%d]", point, f.nominal.points[point].stage_code,
-                    i);
-      expect_agreement(what, predicted, fd);
-    }
+    char label[48];
+    std::snprintf(label, sizeof label, "pt %d (stage %d)", point, f.nominal.points[point].stage_code);
+    test::expect_state_injections_match(&f, point, label);
   }
   // The adjoint is continuous across the boundary: stage 1's end point and stage 2's first point
   // share the state.
@@ -228,41 +189,19 @@ TEST(Sec5AdjointConsecutiveStages, StatePerturbationsAcrossTheStage1To2BoundaryM
 }
 
 TEST(Sec5AdjointConsecutiveStages, PitchAcrossTheBoundaryAndPayloadMatchCentralDifferences) {
-  Fixture& f = fixture();
+  test::AdjointCase& f = fixture();
   const double boundary_s = f.nominal.points[f.nominal.stages[0].last_point].time_s;
-  static ControlProgram changed;
-  static Mission heavier;
-  double fd[kTerminalCount], predicted[kTerminalCount] = {};
   // Theta over the last 3 s of stage 1 and the first 3 s of stage 2.
   const double d_theta = 1e-3;
-  for (int i = 0; i < f.nominal.point_count; ++i) {
+  const auto about_staging = [&](int i) {
     const double t = f.nominal.points[i].time_s;
-    if (t < boundary_s - 3.0 || t > boundary_s + 3.0) continue;
-    for (int j = 0; j < kTerminalCount; ++j) predicted[j] += f.backward.theta_gradient[i](j) * d_theta;
-  }
-  central_difference(
-      [&](double sign, Trajectory* out) {
-        changed = f.program;
-        for (int i = 0; i < f.nominal.point_count; ++i) {
-          const double t = f.nominal.points[i].time_s;
-          if (t >= boundary_s - 3.0 && t <= boundary_s + 3.0) changed.theta_rad[i] += sign * d_theta;
-        }
-        return fly_trajectory(f.mission, f.prepared, changed, out);
-      },
-      fd);
-  expect_agreement("theta +-3 s about staging", predicted, fd);
+    return t >= boundary_s - 3.0 && t <= boundary_s + 3.0;
+  };
+  double fd[kTerminalCount];
+  test::expect_theta_change_matches(&f, about_staging, d_theta, "theta +-3 s about staging", fd);
 
   // Payload: the mass adjoint carried through the jettison at the boundary.
-  const double d_payload = 1.0;
-  central_difference(
-      [&](double sign, Trajectory* out) {
-        heavier = f.mission;
-        heavier.vehicle.payload_lb += sign * d_payload;
-        return fly_trajectory(heavier, f.prepared, f.program, out);
-      },
-      fd);
-  for (int j = 0; j < kTerminalCount; ++j) predicted[j] = f.backward.payload(j) * d_payload;
-  expect_agreement("payload 1 lb", predicted, fd);
+  test::expect_payload_change_matches(&f, 1.0, "payload 1 lb");
 }
 
 TEST(Sec22Block5ConsecutiveStages, ZeroLengthCoastIsRejectedTellingToLeaveItOut) {

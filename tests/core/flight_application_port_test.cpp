@@ -119,30 +119,29 @@ TEST(HalFlightApplication, AnIncompleteSetOfPortsDoesNotBoot) {
   static Fake fake;
   const Ports good = fake.ports();
   ASSERT_TRUE(ports_complete(good));
+  // Each port without its function in turn, then a clock period that is not a positive number:
+  // one change from the complete set at a time, so that each check proves its own rule.
+  struct Broken {
+    const char* what;
+    void (*apply)(Ports*);
+  };
+  const Broken broken[] = {
+      {"clock.wait_next_cycle", [](Ports* p) { p->clock.wait_next_cycle = nullptr; }},
+      {"platform.read", [](Ports* p) { p->platform.read = nullptr; }},
+      {"actuators.command", [](Ports* p) { p->actuators.command = nullptr; }},
+      {"table_store.read", [](Ports* p) { p->table_store.read = nullptr; }},
+      {"discretes.read", [](Ports* p) { p->discretes.read = nullptr; }},
+      {"telemetry.emit", [](Ports* p) { p->telemetry.emit = nullptr; }},
+      {"clock.period_s NaN", [](Ports* p) { p->clock.period_s = std::nan(""); }},
+      {"clock.period_s 0", [](Ports* p) { p->clock.period_s = 0.0; }},
+  };
   Ports p = good;
-  p.clock.wait_next_cycle = nullptr;
-  EXPECT_FALSE(ports_complete(p));
-  p = good;
-  p.platform.read = nullptr;
-  EXPECT_FALSE(ports_complete(p));
-  p = good;
-  p.actuators.command = nullptr;
-  EXPECT_FALSE(ports_complete(p));
-  p = good;
-  p.table_store.read = nullptr;
-  EXPECT_FALSE(ports_complete(p));
-  p = good;
-  p.discretes.read = nullptr;
-  EXPECT_FALSE(ports_complete(p));
-  p = good;
-  p.telemetry.emit = nullptr;
-  EXPECT_FALSE(ports_complete(p));
-  p = good;
-  p.clock.period_s = std::nan("");
-  EXPECT_FALSE(ports_complete(p));
-  p = good;
-  p.clock.period_s = 0.0;
-  EXPECT_FALSE(ports_complete(p));
+  for (const Broken& b : broken) {
+    p = good;
+    b.apply(&p);
+    EXPECT_FALSE(ports_complete(p)) << b.what;
+  }
+  // The last of them (a zero clock period) must not boot either.
   static FlightApplication app(p);
   EXPECT_EQ(app.boot(), Status::kHalPortMissing);
   EXPECT_EQ(app.counters().table_loads, 0u);

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "support/adjoint_check.hpp"
 #include "support/reference_mission.hpp"
 #include "tolip/optimizer/backward_run.hpp"
 #include "tolip/optimizer/constraint_parameters.hpp"
@@ -16,13 +17,8 @@ namespace {
 
 constexpr double kLbDegPerLbRad = 180.0 / kPi;
 
-struct Fixture {
-  Mission mission;
-  PreparedCase prepared;
-  ControlProgram program;
-  Trajectory nominal;
-  Trajectory perturbed;
-  BackwardRun backward;
+// The backward run here is that of the excess integral alone, not of the six terminal quantities.
+struct Fixture : test::AdjointCase {
   double peak_lbf_rad_ft2 = 0.0;
 };
 

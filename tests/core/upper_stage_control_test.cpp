@@ -17,17 +17,9 @@
 namespace tolip {
 namespace {
 
-using test::expect_agreement;
 using test::kTerminalCount;
 
-struct Case {
-  Mission mission;
-  PreparedCase prepared;
-  ControlProgram program;
-  Trajectory nominal;
-  Trajectory perturbed;
-  BackwardRun backward;
-};
+using Case = test::AdjointCase;
 
 // The reference optimum with stage 4 continuous (IP(9) = 2): the spun attitude code leaves data
 // block 6, and stage 4 joins data block 18 (ignition and burnout).
@@ -124,32 +116,18 @@ void expect_stage_sensitivities_match(Case* c, int code) {
   const double d_theta = 1e-3;  // rad
   int steered = 0;
   for (const auto& w : windows) {
-    double predicted[kTerminalCount] = {};
     const auto inside = [&](int i) {
       const TrajectoryPoint& p = c->nominal.points[i];
       return p.stage_code == code && p.time_s >= span.start_s + w[0] - 1e-9 &&
              p.time_s <= span.start_s + w[1] + 1e-9;
     };
     for (int i = 0; i < c->nominal.point_count; ++i) {
-      if (!inside(i)) continue;
-      ++steered;
-      for (int j = 0; j < kTerminalCount; ++j) predicted[j] += c->backward.theta_gradient[i](j) * d_theta;
+      if (inside(i)) ++steered;
     }
-    static ControlProgram changed;
-    double fd[kTerminalCount];
-    test::central_difference(
-        c->mission.constants,
-        [&](double sign, Trajectory* out) {
-          changed = c->program;
-          for (int i = 0; i < c->nominal.point_count; ++i) {
-            if (inside(i)) changed.theta_rad[i] += sign * d_theta;
-          }
-          return fly_trajectory(c->mission, c->prepared, changed, out);
-        },
-        &c->perturbed, fd);
     char what[64];
     std::snprintf(what, sizeof what, "stage %d theta +%.1f-%.1f s", code, w[0], w[1]);
-    expect_agreement(what, predicted, fd);
+    double fd[kTerminalCount];
+    test::expect_theta_change_matches(c, inside, d_theta, what, fd);
     EXPECT_GT(std::fabs(fd[1]), 1e-6) << what << ": the window must turn gamma_I (a test that cannot fail)";
   }
   EXPECT_GT(steered, 6);
@@ -160,25 +138,9 @@ void expect_stage_sensitivities_match(Case* c, int code) {
     if (c->nominal.points[i].stage_code == code && c->nominal.points[i].time_s <= span.start_s + 0.5 * length)
       point = i;
   }
-  const double sizes[6] = {0.5, 1e-4, 50.0, 1e-4, 1e-6, 1e-6};
-  for (int i = 0; i < 6; ++i) {
-    FlightInputs inputs;
-    inputs.program = &c->program;
-    inputs.injection_point = point;
-    double fd[kTerminalCount], predicted[kTerminalCount];
-    test::central_difference(
-        c->mission.constants,
-        [&](double sign, Trajectory* out) {
-          inputs.injection = StateVector::Zero();
-          inputs.injection[i] = sign * sizes[i];
-          return fly_trajectory(c->mission, c->prepared, inputs, out);
-        },
-        &c->perturbed, fd);
-    for (int j = 0; j < kTerminalCount; ++j) predicted[j] = c->backward.lambda[point](i, j) * sizes[i];
-    char what[64];
-    std::snprintf(what, sizeof what, "stage %d t=%.2f dX[%d]", code, c->nominal.points[point].time_s, i);
-    expect_agreement(what, predicted, fd);
-  }
+  char label[48];
+  std::snprintf(label, sizeof label, "stage %d t=%.2f", code, c->nominal.points[point].time_s);
+  test::expect_state_injections_match(c, point, label);
 }
 
 TEST(Sec5Adjoint, Sec22_IP9Is2_Stage4PitchProgramSensitivitiesMatchCentralDifferences) {

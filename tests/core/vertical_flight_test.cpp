@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <random>
 
+#include "support/adjoint_check.hpp"
 #include "support/cartesian_model.hpp"
 #include "support/reference_mission.hpp"
 #include "tolip/core/constants.hpp"
@@ -76,14 +77,7 @@ TEST(Sec4VerticalFlight, RegularDerivativeIsContinuousAtTheVertical) {
   }
 }
 
-struct HeritageFlight {
-  Mission mission;
-  PreparedCase prepared;
-  Trajectory nominal;
-  Trajectory perturbed;
-  ControlProgram program;
-  BackwardRun backward;
-};
+using HeritageFlight = test::AdjointCase;
 
 // The reference optimum flown without the heading hold (a heritage deck).
 HeritageFlight& heritage_flight() {
@@ -243,7 +237,7 @@ TEST(Sec5Adjoint, NearVerticalStepsWithoutTheHoldMatchCentralDifferences) {
   }
 
   // State injections at the points 4 and 5 s after launch (inside and after the near-vertical steps).
-  const double sizes[6] = {0.5, 1e-4, 50.0, 1e-4, 1e-6, 1e-6};
+  const double* const sizes = test::kStateInjectionSizes;
   for (double time : {4.0, 5.0}) {
     int point = 0;
     while (point < f.nominal.point_count && std::fabs(f.nominal.points[point].time_s - time) > 1e-9) ++point;

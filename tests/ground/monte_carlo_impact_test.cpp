@@ -30,10 +30,7 @@ using ground::run_monte_carlo;
 
 constexpr double kDeg = kPi / 180.0;
 
-struct Case {
-  Mission mission;
-  DispersionData data;
-  DispersionNominal nominal;
+struct Case : ReferenceDispersionCase {
   ImpactLocusData impact;
   MonteCarloImpactRequest request;
 };
@@ -42,17 +39,7 @@ struct Case {
 // `scale`, and the casings of stages 1-3.
 std::unique_ptr<Case> make_case(double scale) {
   auto c = std::make_unique<Case>();
-  build_reference_mission(ReferenceProgram::kOptimum, &c->mission);
-  const auto add = [&](int code) -> DispersionSource& { return add_dispersion_source(&c->data, code); };
-  add(9).weight_increment_lb = 150.0 * scale;
-  add(11).weight_increment_lb = 50.0 * scale;
-  add(13).weight_increment_lb = 15.0 * scale;
-  add(17).drag_variation_fraction = 0.1 * scale;
-  add(24).deadband_rad = 0.5 * kDeg * scale;
-  add(27).deadband_rad = 0.5 * kDeg * scale;
-  add(33).launch_change_rad = 0.5 * kDeg * scale;
-  add(34).launch_change_rad = 0.3 * kDeg * scale;
-  c->nominal.mission = &c->mission;
+  make_reference_dispersion_case(scale, {9, 11, 13, 17, 24, 27, 33, 34}, c.get());
   build_reference_impact_data(&c->impact);
   c->request.data = &c->impact;
   for (bool& stage : c->request.stages) stage = true;

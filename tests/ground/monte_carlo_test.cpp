@@ -53,35 +53,12 @@ TEST(MonteCarlo, CounterDrawsAreUniformAndNormalWhateverTheOrder) {
   }
 }
 
-struct Case {
-  Mission mission;
-  DispersionData data;
-  DispersionNominal nominal;
-};
+using Case = ReferenceDispersionCase;
 
 // The scalar sources of the reference data (high codes and yaw codes), scaled.
 std::unique_ptr<Case> make_case(double scale) {
   auto c = std::make_unique<Case>();
-  build_reference_mission(ReferenceProgram::kOptimum, &c->mission);
-  const auto add = [&](int code) -> DispersionSource& { return add_dispersion_source(&c->data, code); };
-  add(9).weight_increment_lb = 150.0 * scale;
-  add(11).weight_increment_lb = 50.0 * scale;
-  add(13).weight_increment_lb = 15.0 * scale;
-  add(15).weight_increment_lb = 5.0 * scale;
-  add(17).drag_variation_fraction = 0.1 * scale;
-  add(24).deadband_rad = 0.5 * kDeg * scale;
-  add(26).deadband_rad = 0.5 * kDeg * scale;
-  add(27).deadband_rad = 0.5 * kDeg * scale;
-  add(29).deadband_rad = 0.5 * kDeg * scale;
-  DispersionSource& tipoff = add(30);
-  tipoff.stage = 4;
-  tipoff.tipoff_rad = 2.0 * kDeg * scale;
-  DispersionSource& yaw_tipoff = add(32);
-  yaw_tipoff.stage = 4;
-  yaw_tipoff.tipoff_rad = 2.0 * kDeg * scale;
-  add(33).launch_change_rad = 0.5 * kDeg * scale;
-  add(34).launch_change_rad = 0.3 * kDeg * scale;
-  c->nominal.mission = &c->mission;  // the block 40 table, point mass
+  make_reference_dispersion_case(scale, {9, 11, 13, 15, 17, 24, 26, 27, 29, 30, 32, 33, 34}, c.get());
   return c;
 }
 

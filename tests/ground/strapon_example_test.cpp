@@ -12,6 +12,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "cli_runner.hpp"
 
@@ -20,12 +22,26 @@ namespace {
 
 std::string strapon_deck() { return std::string(TOLIP_EXAMPLES_DIR) + "/strapon/mission.toml"; }
 
+std::string five_element_deck() { return std::string(TOLIP_EXAMPLES_DIR) + "/strapon/five_elements.toml"; }
+
+// `tolip COMMAND DECK --json` run to a clean exit and its output parsed into `document`; a fatal
+// failure otherwise (the caller stops under ASSERT_NO_FATAL_FAILURE).
+void run_json(const std::string& command, const std::string& deck, nlohmann::json* document) {
+  const CommandResult run = run_tolip_executable({command, deck, "--json"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  *document = nlohmann::json::parse(run.out);
+}
+
+// The optimization of a deck, run once and shared by the tests that read it (each run takes
+// seconds).
+nlohmann::json optimize_json(const std::string& deck) {
+  nlohmann::json document;
+  run_json("optimize", deck, &document);
+  return document;
+}
+
 const nlohmann::json& optimized() {
-  static const nlohmann::json document = [] {
-    const CommandResult run = run_tolip_executable({"optimize", strapon_deck(), "--json"});
-    EXPECT_EQ(run.exit_code, 0) << run.err;
-    return nlohmann::json::parse(run.out);
-  }();
+  static const nlohmann::json document = optimize_json(strapon_deck());
   return document;
 }
 
@@ -77,15 +93,31 @@ std::string exact(double value) {
   return out.str();
 }
 
-// The optimum as a guidance system flies it: the linearized program (IP(7), Sec. 6), its break
-// values as the deck's data block 40 table, with the payload it carries and the optimized launch
-// azimuth, flown by `tolip simulate`. The linearization flies without the zero-alpha window ("applied
-// only during optimization", docs/theory/linearization.md), so the deck switches IP(11) off.
-// Measured: perigee radius -189 ft, 2E -4.4e5 ft^2/s^2, inclination +0.0004 deg.
-TEST(Sec6StrapOnExample, TheLinearizedOptimumFlownBackBySimulateMeetsEveryConstraint) {
-  const nlohmann::json& d = optimized();
-  const nlohmann::json& linear = d["linearized"];
-  ASSERT_EQ(linear["status"], "kOk");
+using Edits = std::vector<std::pair<std::string, std::string>>;
+
+// `text` with each `from` replaced by its `to`; each must occur.
+void apply_edits(const Edits& edits, std::string* text) {
+  for (const auto& [from, to] : edits) {
+    const std::size_t at = text->find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    text->replace(at, from.size(), to);
+  }
+}
+
+// Writes a deck's text as `name` into the scratch folder; returns its path.
+std::string write_deck(const ScratchDirectory& scratch, const std::string& name, const std::string& text) {
+  const std::string path = (scratch / name).string();
+  std::ofstream(path) << text;
+  return path;
+}
+
+// The optimum `optimum` of `deck` as a guidance system flies it, flown by `tolip simulate` into
+// `flown`: the deck with `edits` (the payload it carries, the adjusted parameters) and its pitch
+// program replaced by the linearized program's break values (IP(7), Sec. 6) as the data block 40
+// table.
+void fly_back_linearized_optimum(const std::string& deck, const nlohmann::json& optimum, const Edits& edits,
+                                 const std::string& scratch_name, nlohmann::json* flown) {
+  const nlohmann::json& linear = optimum["linearized"];
   std::string times = "0.0";
   std::string thetas = "90.0";
   for (const nlohmann::json& segment : linear["segments"]) {
@@ -96,25 +128,44 @@ TEST(Sec6StrapOnExample, TheLinearizedOptimumFlownBackBySimulateMeetsEveryConstr
   thetas += ", " + exact(linear["end_theta_deg"].get<double>());
   ASSERT_LE(linear["segments"].size() + 2, 15u);  // data block 40 holds 15 points
 
-  std::string text = read_text_file(strapon_deck());
-  const auto replace = [&text](const std::string& from, const std::string& to) {
-    const std::size_t at = text.find(from);
-    ASSERT_NE(at, std::string::npos) << from;
-    text.replace(at, from.size(), to);
-  };
-  replace("zero_alpha_window = true ", "zero_alpha_window = false ");
-  replace("payload_lb = 1000.0 ", "payload_lb = " + exact(linear["payoff"].get<double>()) + " ");
-  replace("azimuth_deg = 55.0 ", "azimuth_deg = " + exact(d["adjustable"][0]["value"].get<double>()) + " ");
+  std::string text = read_text_file(deck);
+  ASSERT_NO_FATAL_FAILURE(apply_edits(edits, &text));
   const std::size_t table = text.find("[pitch_program]");
   ASSERT_NE(table, std::string::npos);
   text = text.substr(0, table) + "[pitch_program]\ntime_s = [" + times + "]\ntheta_deg = [" + thetas + "]\n";
-  ScratchDirectory scratch("strapon_flown_back");
-  const std::string path = (scratch / "optimum.toml").string();
-  std::ofstream(path) << text;
+  ScratchDirectory scratch(scratch_name);
+  run_json("simulate", write_deck(scratch, "optimum.toml", text), flown);
+}
 
-  const CommandResult run = run_tolip_executable({"simulate", path, "--json"});
-  ASSERT_EQ(run.exit_code, 0) << run.err;
-  const nlohmann::json flown = nlohmann::json::parse(run.out);
+// The crude start's payload guess and pitch lines of the bundled decks (the tests below replace them).
+constexpr const char* kCrudePayload = "payload_lb = 1000.0 ";
+constexpr const char* kCrudePitchLines = "theta_deg = [90.0, 90.0, 84.0, 30.0, 0.0]";
+
+// The deck `text` optimized from another crude start: its payload guess and pitch lines replaced.
+void optimize_from_start(const std::string& text, const std::string& payload, const std::string& pitch_lines,
+                         const ScratchDirectory& scratch, nlohmann::json* document) {
+  std::string edited = text;
+  edited.replace(edited.find(kCrudePayload), std::string(kCrudePayload).size(), payload);
+  edited.replace(edited.find(kCrudePitchLines), std::string(kCrudePitchLines).size(), pitch_lines);
+  run_json("optimize", write_deck(scratch, "start.toml", edited), document);
+}
+
+// The optimum as a guidance system flies it: the linearized program (IP(7), Sec. 6), its break
+// values as the deck's data block 40 table, with the payload it carries and the optimized launch
+// azimuth, flown by `tolip simulate`. The linearization flies without the zero-alpha window ("applied
+// only during optimization", docs/theory/linearization.md), so the deck switches IP(11) off.
+// Measured: perigee radius -189 ft, 2E -4.4e5 ft^2/s^2, inclination +0.0004 deg.
+TEST(Sec6StrapOnExample, TheLinearizedOptimumFlownBackBySimulateMeetsEveryConstraint) {
+  const nlohmann::json& d = optimized();
+  const nlohmann::json& linear = d["linearized"];
+  ASSERT_EQ(linear["status"], "kOk");
+  const Edits edits = {
+      {"zero_alpha_window = true ", "zero_alpha_window = false "},
+      {"payload_lb = 1000.0 ", "payload_lb = " + exact(linear["payoff"].get<double>()) + " "},
+      {"azimuth_deg = 55.0 ", "azimuth_deg = " + exact(d["adjustable"][0]["value"].get<double>()) + " "}};
+  nlohmann::json flown;
+  ASSERT_NO_FATAL_FAILURE(
+      fly_back_linearized_optimum(strapon_deck(), d, edits, "strapon_flown_back", &flown));
   EXPECT_EQ(flown["status"], "kOk");
   ASSERT_EQ(flown["constraints"].size(), 3u);
   for (const nlohmann::json& c : flown["constraints"]) {
@@ -128,23 +179,16 @@ TEST(Sec22StrapOnExample, OtherCrudeStartsConvergeWithinHalfAPercent) {
   const double reference = optimized()["payload_lb"].get<double>();
   ScratchDirectory scratch("strapon_starts");
   const std::string text = read_text_file(strapon_deck());
-  const std::string lines = "theta_deg = [90.0, 90.0, 84.0, 30.0, 0.0]";
-  ASSERT_NE(text.find(lines), std::string::npos);
-  ASSERT_NE(text.find("payload_lb = 1000.0 "), std::string::npos);
+  ASSERT_NE(text.find(kCrudePitchLines), std::string::npos);
+  ASSERT_NE(text.find(kCrudePayload), std::string::npos);
   struct Start {
     const char* payload;
     const char* theta;
   };
   for (const Start& s : {Start{"payload_lb = 1300.0 ", "theta_deg = [90.0, 90.0, 84.0, 30.0, 0.0]"},
                          Start{"payload_lb = 1300.0 ", "theta_deg = [90.0, 90.0, 80.0, 35.0, -5.0]"}}) {
-    std::string edited = text;
-    edited.replace(edited.find("payload_lb = 1000.0 "), 20, s.payload);
-    edited.replace(edited.find(lines), lines.size(), s.theta);
-    const std::string path = (scratch / "start.toml").string();
-    std::ofstream(path) << edited;
-    const CommandResult run = run_tolip_executable({"optimize", path, "--json"});
-    ASSERT_EQ(run.exit_code, 0) << run.err;
-    const nlohmann::json d = nlohmann::json::parse(run.out);
+    nlohmann::json d;
+    ASSERT_NO_FATAL_FAILURE(optimize_from_start(text, s.payload, s.theta, scratch, &d));
     EXPECT_NEAR(d["payload_lb"].get<double>(), reference, 0.005 * reference) << s.theta;
   }
 }
@@ -154,14 +198,8 @@ TEST(Sec22StrapOnExample, OtherCrudeStartsConvergeWithinHalfAPercent) {
 // time adjusted) and argument of perigee 50 deg. The argument of perigee is deferred while the
 // other elements are outside their deadbands (docs/theory/optimizer.md); without the deferral
 // guidance ends kGuidanceDidNotConverge after 27 crashed runs.
-std::string five_element_deck() { return std::string(TOLIP_EXAMPLES_DIR) + "/strapon/five_elements.toml"; }
-
 const nlohmann::json& five_optimized() {
-  static const nlohmann::json document = [] {
-    const CommandResult run = run_tolip_executable({"optimize", five_element_deck(), "--json"});
-    EXPECT_EQ(run.exit_code, 0) << run.err;
-    return nlohmann::json::parse(run.out);
-  }();
+  static const nlohmann::json document = optimize_json(five_element_deck());
   return document;
 }
 
@@ -195,35 +233,15 @@ TEST(Sec6StrapOnFiveElements, TheLinearizedOptimumFlownBackBySimulateMeetsAllFiv
   const nlohmann::json& d = five_optimized();
   const nlohmann::json& linear = d["linearized"];
   ASSERT_EQ(linear["status"], "kOk");
-  std::string times = "0.0";
-  std::string thetas = "90.0";
-  for (const nlohmann::json& segment : linear["segments"]) {
-    times += ", " + exact(segment["start_time_s"].get<double>());
-    thetas += ", " + exact(segment["theta_deg"].get<double>());
-  }
-  times += ", " + exact(linear["end_time_s"].get<double>());
-  thetas += ", " + exact(linear["end_theta_deg"].get<double>());
-  ASSERT_LE(linear["segments"].size() + 2, 15u);
-  std::string text = read_text_file(five_element_deck());
-  const auto replace = [&text](const std::string& from, const std::string& to) {
-    const std::size_t at = text.find(from);
-    ASSERT_NE(at, std::string::npos) << from;
-    text.replace(at, from.size(), to);
-  };
-  replace("zero_alpha_window = true ", "zero_alpha_window = false ");
-  replace("payload_lb = 1000.0 ", "payload_lb = " + exact(linear["payoff"].get<double>()) + " ");
-  replace("azimuth_deg = 55.0 ", "azimuth_deg = " + exact(d["adjustable"][1]["value"].get<double>()) + " ");
-  replace("space_age_date_days = 2373.625",
-          "space_age_date_days = " + exact(2373.0 + d["adjustable"][0]["value"].get<double>() / 86400.0));
-  const std::size_t table = text.find("[pitch_program]");
-  ASSERT_NE(table, std::string::npos);
-  text = text.substr(0, table) + "[pitch_program]\ntime_s = [" + times + "]\ntheta_deg = [" + thetas + "]\n";
-  ScratchDirectory scratch("strapon_five_flown_back");
-  const std::string path = (scratch / "optimum.toml").string();
-  std::ofstream(path) << text;
-  const CommandResult run = run_tolip_executable({"simulate", path, "--json"});
-  ASSERT_EQ(run.exit_code, 0) << run.err;
-  const nlohmann::json flown = nlohmann::json::parse(run.out);
+  const Edits edits = {
+      {"zero_alpha_window = true ", "zero_alpha_window = false "},
+      {"payload_lb = 1000.0 ", "payload_lb = " + exact(linear["payoff"].get<double>()) + " "},
+      {"azimuth_deg = 55.0 ", "azimuth_deg = " + exact(d["adjustable"][1]["value"].get<double>()) + " "},
+      {"space_age_date_days = 2373.625",
+       "space_age_date_days = " + exact(2373.0 + d["adjustable"][0]["value"].get<double>() / 86400.0)}};
+  nlohmann::json flown;
+  ASSERT_NO_FATAL_FAILURE(
+      fly_back_linearized_optimum(five_element_deck(), d, edits, "strapon_five_flown_back", &flown));
   EXPECT_EQ(flown["status"], "kOk");
   ASSERT_EQ(flown["constraints"].size(), 5u);
   for (const nlohmann::json& c : flown["constraints"]) {
@@ -235,18 +253,13 @@ TEST(Sec6StrapOnFiveElements, TheLinearizedOptimumFlownBackBySimulateMeetsAllFiv
 // a payload within 0.5 % (measured 1526.44 lb against 1527.87, 0.09 %).
 TEST(Sec22StrapOnFiveElements, ASecondCrudeStartConvergesWithinHalfAPercent) {
   const double reference = five_optimized()["payload_lb"].get<double>();
-  std::string text = read_text_file(five_element_deck());
-  const std::string lines = "theta_deg = [90.0, 90.0, 84.0, 30.0, 0.0]";
-  ASSERT_NE(text.find(lines), std::string::npos);
-  ASSERT_NE(text.find("payload_lb = 1000.0 "), std::string::npos);
-  text.replace(text.find("payload_lb = 1000.0 "), 20, "payload_lb = 1300.0 ");
-  text.replace(text.find(lines), lines.size(), "theta_deg = [90.0, 90.0, 80.0, 35.0, -5.0]");
+  const std::string text = read_text_file(five_element_deck());
+  ASSERT_NE(text.find(kCrudePitchLines), std::string::npos);
+  ASSERT_NE(text.find(kCrudePayload), std::string::npos);
   ScratchDirectory scratch("strapon_five_start");
-  const std::string path = (scratch / "start.toml").string();
-  std::ofstream(path) << text;
-  const CommandResult run = run_tolip_executable({"optimize", path, "--json"});
-  ASSERT_EQ(run.exit_code, 0) << run.err;
-  const nlohmann::json d = nlohmann::json::parse(run.out);
+  nlohmann::json d;
+  ASSERT_NO_FATAL_FAILURE(optimize_from_start(text, "payload_lb = 1300.0 ",
+                                              "theta_deg = [90.0, 90.0, 80.0, 35.0, -5.0]", scratch, &d));
   EXPECT_EQ(d["converged"], true);
   for (const nlohmann::json& c : d["constraints"]) EXPECT_EQ(c["met"], true) << c["code"];
   EXPECT_NEAR(d["payload_lb"].get<double>(), reference, 0.005 * reference);

@@ -48,19 +48,10 @@ TEST(CoreNoHeap, AutopilotDesignAndScheduledExecutorAllocateNothing) {
   const Status loaded = service.load(image, sizeof image);
   GuidanceExecutor executor(service);
   double sum = 0.0;
-  int failures = 0;
-  int events = 1;
-  for (int k = 0; k <= 6500; ++k) {
-    const double t = k / 10.0;
-    while (events < 10 && test::kTestTimeline[events].start_s <= t) {
-      if (!ok(executor.stage_event(test::kTestTimeline[events].code, test::kTestTimeline[events].start_s)))
-        ++failures;
-      ++events;
-    }
-    GuidanceCommand command;
-    if (!ok(executor.step(t, &command))) ++failures;
+  const int failures = test::fly_test_timeline(executor, [&sum](const GuidanceCommand& command) {
     sum += command.k_theta + command.k_q_s;
-  }
+    return true;
+  });
   const auto allocations = scope.count();
 
   EXPECT_EQ(designed_status, Status::kOk) << stage;

@@ -3,6 +3,9 @@
 // (with heap, JSON) before the counting window.
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <initializer_list>
+
 #include "support/allocation_counter.hpp"
 #include "support/dispersion_sources.hpp"
 #include "support/reference_impact.hpp"
@@ -13,22 +16,47 @@
 namespace tolip {
 namespace {
 
+// Appends a source of each code with every scalar field set (each code reads the one its kind
+// names), stage 4 for the tip-off code 30, and `weight_lb` as the weight increment.
+void add_scalar_sources(std::initializer_list<int> codes, double weight_lb, DispersionData* data) {
+  for (int code : codes) {
+    DispersionSource& s = test::add_dispersion_source(data, code);
+    if (code == 30) s.stage = 4;  // tipoff of stage 4
+    s.weight_increment_lb = weight_lb;
+    s.drag_variation_fraction = 0.1;
+    s.deadband_rad = 0.01;
+    s.tipoff_rad = 0.03;
+    s.launch_change_rad = 0.005;
+  }
+}
+
+// The core's Monte Carlo path for one sample, as a run flies it: the nominal prepared and
+// recorded, then sample `sample_index` of seed 1 flown. Allocates nothing itself: the tests call
+// it inside their counting window.
+struct SampleStatuses {
+  Status nominal;
+  Status sample;
+};
+SampleStatuses fly_nominal_and_sample(const DispersionNominal& nominal, const DispersionData& data,
+                                      std::uint64_t sample_index, DispersionWorkspace* workspace,
+                                      DispersedTrajectory* nominal_values, DispersedTrajectory* sample) {
+  Status status = prepare_monte_carlo(nominal, workspace);
+  if (ok(status)) {
+    status = record_dispersed_trajectory(*nominal.mission, workspace->nominal_prepared, workspace->nominal,
+                                         workspace->nominal, nullptr, nominal_values);
+  }
+  const Status flown =
+      fly_monte_carlo_sample(nominal, data, 1, sample_index, *nominal_values, workspace, sample);
+  return {status, flown};
+}
+
 TEST(CoreNoHeap, DispersionAnalysisAllocatesNothing) {
   static Mission mission;
   static DispersionData data;
   static DispersionWorkspace workspace;
   static DispersionResult result;
   test::build_reference_mission(test::ReferenceProgram::kOptimum, &mission);
-  const int codes[] = {3, 11, 17, 26, 30, 33, 34, 36, 40};
-  for (int code : codes) {
-    DispersionSource& s = test::add_dispersion_source(&data, code);
-    if (code == 30) s.stage = 4;  // tipoff of stage 4
-    s.weight_increment_lb = 50.0;
-    s.drag_variation_fraction = 0.1;
-    s.deadband_rad = 0.01;
-    s.tipoff_rad = 0.03;
-    s.launch_change_rad = 0.005;
-  }
+  add_scalar_sources({3, 11, 17, 26, 30, 33, 34, 36, 40}, 50.0, &data);
   data.sources[0].vacuum_thrust_lbf = mission.vehicle.stages[1].vacuum_thrust_lbf;
   data.sources[0].consumable_weight_lb = mission.vehicle.stages[1].consumable_weight_lb;
   WindProfile& wind = data.sources[7].wind;
@@ -61,26 +89,12 @@ TEST(CoreNoHeap, MonteCarloSampleAllocatesNothing) {
   static DispersedTrajectory nominal_values;
   static DispersedTrajectory sample;
   test::build_reference_mission(test::ReferenceProgram::kOptimum, &mission);
-  const int codes[] = {9, 17, 24, 26, 30, 33, 34};
-  for (int code : codes) {
-    DispersionSource& s = test::add_dispersion_source(&data, code);
-    if (code == 30) s.stage = 4;  // tipoff of stage 4
-    s.weight_increment_lb = 150.0;
-    s.drag_variation_fraction = 0.1;
-    s.deadband_rad = 0.01;
-    s.tipoff_rad = 0.03;
-    s.launch_change_rad = 0.005;
-  }
+  add_scalar_sources({9, 17, 24, 26, 30, 33, 34}, 150.0, &data);
   DispersionNominal nominal;
   nominal.mission = &mission;
 
   test::AllocationScope scope;
-  Status status = prepare_monte_carlo(nominal, &workspace);
-  if (ok(status)) {
-    status = record_dispersed_trajectory(mission, workspace.nominal_prepared, workspace.nominal,
-                                         workspace.nominal, nullptr, &nominal_values);
-  }
-  const Status flown = fly_monte_carlo_sample(nominal, data, 1, 5, nominal_values, &workspace, &sample);
+  const auto [status, flown] = fly_nominal_and_sample(nominal, data, 5, &workspace, &nominal_values, &sample);
   const auto allocations = scope.count();
 
   EXPECT_EQ(status, Status::kOk);
@@ -114,12 +128,7 @@ TEST(CoreNoHeap, MonteCarloCasingImpactsAllocateNothing) {
   for (bool& stage : request.stages) stage = true;
 
   test::AllocationScope scope;
-  Status status = prepare_monte_carlo(nominal, &workspace);
-  if (ok(status)) {
-    status = record_dispersed_trajectory(mission, workspace.nominal_prepared, workspace.nominal,
-                                         workspace.nominal, nullptr, &nominal_values);
-  }
-  const Status flown = fly_monte_carlo_sample(nominal, data, 1, 3, nominal_values, &workspace, &sample);
+  const auto [status, flown] = fly_nominal_and_sample(nominal, data, 3, &workspace, &nominal_values, &sample);
   const Status casings = fly_monte_carlo_casings(nominal, request, workspace.mission, workspace.prepared,
                                                  workspace.dispersed, &impact_workspace, &impacts);
   const auto allocations = scope.count();
@@ -185,12 +194,7 @@ TEST(CoreNoHeap, MonteCarloTableSampleAllocatesNothing) {
   nominal.body_dynamics = true;
 
   test::AllocationScope scope;
-  Status status = prepare_monte_carlo(nominal, &workspace);
-  if (ok(status)) {
-    status = record_dispersed_trajectory(mission, workspace.nominal_prepared, workspace.nominal,
-                                         workspace.nominal, nullptr, &nominal_values);
-  }
-  const Status flown = fly_monte_carlo_sample(nominal, data, 1, 5, nominal_values, &workspace, &sample);
+  const auto [status, flown] = fly_nominal_and_sample(nominal, data, 5, &workspace, &nominal_values, &sample);
   const auto allocations = scope.count();
 
   EXPECT_EQ(status, Status::kOk);

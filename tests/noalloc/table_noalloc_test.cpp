@@ -38,22 +38,13 @@ TEST(CoreNoHeap, TableLoaderExecutorAndControlLawAllocateNothing) {
   const std::uint32_t crc = crc32(good, kOffsetCrc);
 
   GuidanceExecutor executor(service);
-  int events = 1;
-  int failures = 0;
   double theta_sum = 0.0;
-  for (int k = 0; k <= 6500; ++k) {
-    const double t = k / 10.0;
-    while (events < 10 && test::kTestTimeline[events].start_s <= t) {
-      if (!ok(executor.stage_event(test::kTestTimeline[events].code, test::kTestTimeline[events].start_s)))
-        ++failures;
-      ++events;
-    }
-    GuidanceCommand command;
-    if (!ok(executor.step(t, &command))) ++failures;
+  const int failures = test::fly_test_timeline(executor, [&theta_sum](const GuidanceCommand& command) {
     ControlDeflection deflection;
-    if (!ok(attitude_control_deflection(command, command.theta_rad + 0.01, 0.001, &deflection))) ++failures;
+    const Status law = attitude_control_deflection(command, command.theta_rad + 0.01, 0.001, &deflection);
     theta_sum += command.theta_rad + deflection.deflection_rad;
-  }
+    return ok(law);
+  });
   const auto allocations = scope.count();
 
   EXPECT_EQ(encode_a, Status::kOk);

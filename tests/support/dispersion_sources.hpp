@@ -6,6 +6,10 @@
 
 #include <gtest/gtest.h>
 
+#include <initializer_list>
+
+#include "support/reference_mission.hpp"
+#include "tolip/core/constants.hpp"
 #include "tolip/dispersion/dispersion.hpp"
 
 namespace tolip::test {
@@ -21,6 +25,53 @@ inline DispersionSource& add_dispersion_source(DispersionData* data, int code) {
   EXPECT_TRUE(dispersion_code_info(code, &info)) << "code " << code;
   s.stage = info.stage;
   return s;
+}
+
+// Appends, for each of `codes`, the scalar source of that code in the reference dispersion data at
+// `scale` of its size: weights of stages 1-4 (9, 11, 13, 15), drag (17), deadbands (24, 26, 27,
+// 29), the stage-4 pitch and yaw tip-off (30, 32) and the launch changes (33, 34). The tests pick
+// the codes they fly; a code not in that list fails the calling test.
+inline void add_reference_scalar_sources(DispersionData* data, double scale,
+                                         std::initializer_list<int> codes) {
+  const double deg = kPi / 180.0;
+  for (int code : codes) {
+    DispersionSource& s = add_dispersion_source(data, code);
+    switch (code) {
+      case 9: s.weight_increment_lb = 150.0 * scale; break;
+      case 11: s.weight_increment_lb = 50.0 * scale; break;
+      case 13: s.weight_increment_lb = 15.0 * scale; break;
+      case 15: s.weight_increment_lb = 5.0 * scale; break;
+      case 17: s.drag_variation_fraction = 0.1 * scale; break;
+      case 24:
+      case 26:
+      case 27:
+      case 29: s.deadband_rad = 0.5 * deg * scale; break;
+      case 30:
+      case 32:
+        s.stage = 4;
+        s.tipoff_rad = 2.0 * deg * scale;
+        break;
+      case 33: s.launch_change_rad = 0.5 * deg * scale; break;
+      case 34: s.launch_change_rad = 0.3 * deg * scale; break;
+      default: ADD_FAILURE() << "code " << code << " is not a reference scalar source";
+    }
+  }
+}
+
+// The reference mission (the oracle's optimum) with reference scalar sources, and the nominal a
+// run flies about it: the block 40 table, point mass.
+struct ReferenceDispersionCase {
+  Mission mission;
+  DispersionData data;
+  DispersionNominal nominal;
+};
+
+// Fills `c` with the reference mission and the reference scalar sources of `codes` at `scale`.
+inline void make_reference_dispersion_case(double scale, std::initializer_list<int> codes,
+                                           ReferenceDispersionCase* c) {
+  build_reference_mission(ReferenceProgram::kOptimum, &c->mission);
+  add_reference_scalar_sources(&c->data, scale, codes);
+  c->nominal.mission = &c->mission;
 }
 
 // The nominal of a dispersion run: `mission` flown with `program` (nullptr: the mission's own

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "tolip/core/constants.hpp"
+#include "tolip/table/guidance_executor.hpp"
 #include "tolip/table/table_image.hpp"
 
 namespace tolip::test {
@@ -70,5 +71,28 @@ struct TestStageStart {
 inline constexpr TestStageStart kTestTimeline[] = {{1, 0.0},   {6, 45.0},  {2, 50.0},  {7, 88.0},
                                                    {3, 94.0},  {8, 130.0}, {4, 550.0}, {9, 578.0},
                                                    {5, 600.0}, {10, 630.0}};
+
+// Flies `executor` over kTestTimeline at 10 Hz from lift-off to 650 s (past the last stage
+// start), each stage event delivered once its start has passed, and hands every step's command to
+// `use(command)`, which returns whether its own work succeeded. Returns the number of failed
+// calls (stage events, steps and uses). Allocates nothing itself: the no-heap tests call it
+// inside their counting window.
+template <typename UseCommand>
+int fly_test_timeline(GuidanceExecutor& executor, const UseCommand& use) {
+  const int stage_count = static_cast<int>(sizeof kTestTimeline / sizeof kTestTimeline[0]);
+  int failures = 0;
+  int events = 1;  // the first stage starts with the executor
+  for (int k = 0; k <= 6500; ++k) {
+    const double t = k / 10.0;
+    while (events < stage_count && kTestTimeline[events].start_s <= t) {
+      if (!ok(executor.stage_event(kTestTimeline[events].code, kTestTimeline[events].start_s))) ++failures;
+      ++events;
+    }
+    GuidanceCommand command;
+    if (!ok(executor.step(t, &command))) ++failures;
+    if (!use(command)) ++failures;
+  }
+  return failures;
+}
 
 }  // namespace tolip::test
