@@ -266,16 +266,15 @@ CLI::App* add_dispersions_command(CLI::App& app, DispersionsCommandOptions* opti
                   "without data block 46, or dispersion data the core cannot hold:\n"
                   "the message names the block, the code and the field).\n"
                   "Full reference: docs/cli.md, 'tolip dispersions'.");
-  add_deck_argument(*dispersions, &options->deck_path, kDeckOfCasesHelp);
-  add_csv_option(*dispersions, &options->csv_path,
-                 "Also write the analysis to FILE as CSV, the rows of\n"
-                 "'optimize --dispersions-csv' (FILE.caseN.csv per case of a\n"
-                 "several-case deck), atomically; on failure an existing FILE\n"
-                 "is left untouched");
-  add_json_flag(*dispersions, &options->json,
-                "Print JSON instead of the listing: per case (an array for\n"
-                "a deck of several) case, optimizer_status and the member\n"
-                "'dispersions' of 'optimize --json' (docs/cli.md)");
+  add_deck_csv_json(*dispersions, options,
+                    {kDeckOfCasesHelp,
+                     "Also write the analysis to FILE as CSV, the rows of\n"
+                     "'optimize --dispersions-csv' (FILE.caseN.csv per case of a\n"
+                     "several-case deck), atomically; on failure an existing FILE\n"
+                     "is left untouched",
+                     "Print JSON instead of the listing: per case (an array for\n"
+                     "a deck of several) case, optimizer_status and the member\n"
+                     "'dispersions' of 'optimize --json' (docs/cli.md)"});
   return dispersions;
 }
 
@@ -302,15 +301,14 @@ CLI::App* add_impact_command(CLI::App& app, ImpactCommandOptions* options) {
                                  "a deck without the data blocks 42-43, or an n of DA6D(17-19)\n"
                                  "past the end of its stage: the message names the block and word).\n"
                                  "Full reference: docs/cli.md, 'tolip impact'.");
-  add_deck_argument(*impact, &options->deck_path, kDeckOfCasesHelp);
-  add_csv_option(*impact, &options->csv_path,
-                 "Also write the locus to FILE as CSV, one row per case\n"
-                 "(FILE.caseN.csv per case of a several-case deck),\n"
-                 "atomically; on failure an existing FILE is left untouched");
-  add_json_flag(*impact, &options->json,
-                "Print one JSON document instead of the listing: the\n"
-                "simulate --json document of the nominal with the member\n"
-                "'impact' (docs/cli.md); 'tolip plot' draws its locus");
+  add_deck_csv_json(*impact, options,
+                    {kDeckOfCasesHelp,
+                     "Also write the locus to FILE as CSV, one row per case\n"
+                     "(FILE.caseN.csv per case of a several-case deck),\n"
+                     "atomically; on failure an existing FILE is left untouched",
+                     "Print one JSON document instead of the listing: the\n"
+                     "simulate --json document of the nominal with the member\n"
+                     "'impact' (docs/cli.md); 'tolip plot' draws its locus"});
   return impact;
 }
 
@@ -494,16 +492,14 @@ CLI::App* add_radar_command(CLI::App& app, RadarCommandOptions* options) {
                                 "are tracked and printed) or the CSV not written (nothing printed);\n"
                                 "2 bad command line or deck (also a deck without data block 41).\n"
                                 "Full reference: docs/cli.md, 'tolip radar'; docs/theory/radar.md.");
-  add_deck_argument(*radar, &options->deck_path,
-                    "TOML deck or card deck of one or more cases, with data\n"
-                    "block 41 (docs/deck-format.md)");
-  add_csv_option(*radar, &options->csv_path,
-                 "Also write one row per station and point (time, stage,\n"
-                 "range ft and yd, azimuth and elevation deg and mils) to\n"
-                 "FILE as CSV, atomically (FILE.caseN.csv per case)");
-  add_json_flag(*radar, &options->json,
-                "Print one JSON document instead of the listing: the\n"
-                "case's title, status and the member 'radar' (docs/cli.md)");
+  add_deck_csv_json(*radar, options,
+                    {"TOML deck or card deck of one or more cases, with data\n"
+                     "block 41 (docs/deck-format.md)",
+                     "Also write one row per station and point (time, stage,\n"
+                     "range ft and yd, azimuth and elevation deg and mils) to\n"
+                     "FILE as CSV, atomically (FILE.caseN.csv per case)",
+                     "Print one JSON document instead of the listing: the\n"
+                     "case's title, status and the member 'radar' (docs/cli.md)"});
   return radar;
 }
 
@@ -526,16 +522,14 @@ CLI::App* add_hardover_command(CLI::App& app, HardoverCommandOptions* options) {
                                    "deck without data blocks 44-45, or a bad word of them: the message\n"
                                    "names the block, word and stage).\n"
                                    "Full reference: docs/cli.md, 'tolip hardover'; docs/theory/hardover.md.");
-  add_deck_argument(*hardover, &options->deck_path,
-                    "TOML deck or card deck of one or more cases, with data\n"
-                    "blocks 44-45 and 33, 37 (docs/deck-format.md)");
-  add_csv_option(*hardover, &options->csv_path,
-                 "Also write one row per turn and output line (stage,\n"
-                 "mode, failure time, time, change in gamma, q-bar alpha,\n"
-                 "stop) to FILE as CSV, atomically (FILE.caseN.csv per case)");
-  add_json_flag(*hardover, &options->json,
-                "Print one JSON document instead of the listing: the\n"
-                "case's title, status and the member 'hardover' (docs/cli.md)");
+  add_deck_csv_json(*hardover, options,
+                    {"TOML deck or card deck of one or more cases, with data\n"
+                     "blocks 44-45 and 33, 37 (docs/deck-format.md)",
+                     "Also write one row per turn and output line (stage,\n"
+                     "mode, failure time, time, change in gamma, q-bar alpha,\n"
+                     "stop) to FILE as CSV, atomically (FILE.caseN.csv per case)",
+                     "Print one JSON document instead of the listing: the\n"
+                     "case's title, status and the member 'hardover' (docs/cli.md)"});
   return hardover;
 }
 

@@ -41,6 +41,22 @@ CLI::Option* add_csv_option(CLI::App& command, std::string* path, const std::str
 // --json: print a JSON document instead of the listing.
 CLI::Option* add_json_flag(CLI::App& command, bool* json, const std::string& help);
 
+// The help of each of the DECK / --csv / --json triplet of a deck analysis command.
+struct DeckCsvJsonHelp {
+  const char* deck;
+  const char* csv;
+  const char* json;
+};
+
+// DECK, --csv FILE and --json, in that order, into options->deck_path, csv_path and json: the
+// options every deck analysis command (dispersions, impact, radar, hardover) takes.
+template <typename Options>
+void add_deck_csv_json(CLI::App& command, Options* options, const DeckCsvJsonHelp& help) {
+  add_deck_argument(command, &options->deck_path, help.deck);
+  add_csv_option(command, &options->csv_path, help.csv);
+  add_json_flag(command, &options->json, help.json);
+}
+
 // --progress and --no-progress, excluding each other: the status line on stderr forced on or off
 // (*mode stays kAuto when neither is given).
 void add_progress_flags(CLI::App& command, ProgressMode* mode, const std::string& on_help,

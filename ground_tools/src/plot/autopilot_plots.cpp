@@ -9,13 +9,8 @@
 namespace tolip::ground {
 namespace {
 
-using json = nlohmann::json;
-
-using plot_json::fail;
-using plot_json::number_or_gap;
-using plot_json::optional_object;
-using plot_json::required;
-using plot_json::required_array;
+// The result-document accessors (json, fail, required, required_array, ...): plot_json.hpp.
+using namespace plot_json;
 
 }  // namespace
 
