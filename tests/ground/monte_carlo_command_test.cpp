@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <sstream>
@@ -288,6 +289,39 @@ TEST(MonteCarloCommand, PlotsAreDrawnIntoTheDirectory) {
       EXPECT_TRUE(std::filesystem::exists(file)) << file;
     }
   }
+}
+
+// The casing impact figures put downrange and crossrange, both n.mi., at equal axis scale (gnuplot
+// `set size ratio -1`), so that the 99.7 % ellipse is drawn with its true shape; the histograms
+// keep the terminal's shape. The script is caught by a stand-in gnuplot that copies it and fails.
+TEST(MonteCarloCommand, Sec17CasingImpactFiguresAreDrawnAtEqualAxisScale) {
+  ScratchDirectory scratch("montecarlo_equal_axes");
+  const std::filesystem::path caught = scratch / "caught.gp";
+  const std::string fake = (scratch / "fake_gnuplot.sh").string();
+  std::ofstream(fake) << "#!/bin/sh\ncp \"$1\" " << shell_quote(caught.string()) << "\nexit 3\n";
+  std::filesystem::permissions(fake, std::filesystem::perms::owner_all);
+  const CommandResult run =
+      run_tolip_executable({"montecarlo", mission_deck(), "--samples", "8", "--seed", "1", "--plots",
+                            (scratch / "plots").string(), "--gnuplot", fake});
+  EXPECT_EQ(run.exit_code, 1) << "the stand-in gnuplot fails: " << run.err;
+  const std::string script = read_text_file(caught);
+  // Each figure's commands run from its `set output` to the next `unset output`.
+  const auto commands_of = [&script](const std::string& output) {
+    const std::size_t from = script.find("set output \"" + output + "\"");
+    if (from == std::string::npos) return std::string();
+    return script.substr(from, script.find("unset output", from) - from);
+  };
+  for (const char* stage : {"1", "2", "3"}) {
+    for (const char* extension : {".png", ".svg"}) {
+      const std::string name = std::string("montecarlo_stage") + stage + "_casing_impacts" + extension;
+      const std::string commands = commands_of(name);
+      ASSERT_FALSE(commands.empty()) << name << " not in the script";
+      EXPECT_NE(commands.find("\nset size ratio -1\n"), std::string::npos) << name;
+    }
+  }
+  const std::string histogram = commands_of("montecarlo_burnout_altitude.png");
+  ASSERT_FALSE(histogram.empty());
+  EXPECT_EQ(histogram.find("set size ratio"), std::string::npos);
 }
 
 // Bad input: exit 2, the field named, nothing on stdout, no CSV and no plot directory.

@@ -583,6 +583,35 @@ TEST(PlotScript, MarkersCloseTogetherShareOneLabel) {
   EXPECT_EQ(outputs.size(), 2u);
 }
 
+// equal_axis_scale gives gnuplot's equal-unit shape (size ratio -1) and takes the place of any
+// height / width ratio; without it a finite aspect_ratio is written as that ratio.
+TEST(PlotScript, EqualAxisScaleIsSizeRatioMinusOne) {
+  ScratchDirectory scratch("plot_equal_axes");
+  ground::Figure figure;
+  figure.name = "scatter";
+  figure.title = "T";
+  ground::PlotSeries series;
+  series.x = {0.0, 10.0};
+  series.y = {0.0, 1.0};
+  figure.series.push_back(series);
+  figure.aspect_ratio = 0.5;
+  figure.equal_axis_scale = true;
+  ground::Figure map = figure;
+  map.name = "map";
+  map.equal_axis_scale = false;
+  std::vector<ground::PlotOutput> outputs;
+  const std::string script =
+      read_text_file(scratch / ground::write_gnuplot_files({figure, map}, scratch.path().string(), &outputs));
+  const std::size_t map_from = script.find("set output \"map.png\"");
+  ASSERT_NE(map_from, std::string::npos);
+  const std::string scatter_commands = script.substr(0, map_from);
+  const std::string map_commands = script.substr(map_from);
+  EXPECT_TRUE(contains(scatter_commands, "\nset size ratio -1\n"));
+  EXPECT_FALSE(contains(scatter_commands, "set size ratio 0.5"));
+  EXPECT_TRUE(contains(map_commands, "\nset size ratio 0.5\n"));
+  EXPECT_FALSE(contains(map_commands, "set size ratio -1"));
+}
+
 TEST(PlotCommand, MalformedJsonIsNamedAndNothingIsWritten) {
   ScratchDirectory scratch("plot_malformed");
   const fs::path out = scratch / "out";

@@ -96,7 +96,10 @@ struct Figure {
   bool y_log = false;
   bool y2_log = false;
   double aspect_ratio = std::numeric_limits<double>::quiet_NaN();  // plot height / width; NaN: the terminal's
-  double x_min = std::numeric_limits<double>::quiet_NaN();         // the ranges drawn; NaN: gnuplot's
+  // A unit as long on x as on y (gnuplot `set size ratio -1`; aspect_ratio then unused): for a
+  // scatter of positions in one unit, whose ellipses must not be drawn stretched.
+  bool equal_axis_scale = false;
+  double x_min = std::numeric_limits<double>::quiet_NaN();  // the ranges drawn; NaN: gnuplot's
   double x_max = std::numeric_limits<double>::quiet_NaN();
   double y_min = std::numeric_limits<double>::quiet_NaN();
   double y_max = std::numeric_limits<double>::quiet_NaN();

@@ -2,34 +2,25 @@
 // (manual Sec. 17) and report it (listing, CSV, JSON).
 #include <memory>
 #include <ostream>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "case_output.hpp"
+#include "deck_analysis.hpp"
 #include "tolip/core/status.hpp"
-#include "tolip_ground/atomic_file.hpp"
 #include "tolip_ground/card_deck.hpp"
 #include "tolip_ground/commands.hpp"
 #include "tolip_ground/impact_report.hpp"
 #include "tolip_ground/impact_run.hpp"
 #include "tolip_ground/report.hpp"
-#include "tolip_ground/unused_inputs.hpp"
 
 namespace tolip::ground {
 
 int run_impact_command(const ImpactCommandOptions& options, std::ostream& out, std::ostream& err) {
   Deck deck;
-  DeckError deck_error;
-  if (!load_deck(options.deck_path, &deck, &deck_error)) {
-    err << "tolip: " << deck_error.to_string() << '\n';
-    return kExitBadInput;
-  }
+  if (!load_deck_or_report(options.deck_path, &deck, err)) return kExitBadInput;
   const std::size_t cases = deck.cases.size();
-  if (std::string csv_error; !csv_spares_the_deck(options.csv_path, options.deck_path, cases, &csv_error)) {
-    err << "tolip: " << csv_error << '\n';
-    return kExitBadInput;
-  }
+  if (!csv_files_spare_the_deck({options.csv_path}, options.deck_path, cases, err)) return kExitBadInput;
   // Every case's data blocks 42-43 first: bad impact data stops the command with nothing written.
   // The command computes the locus whatever IP(23) says; it needs the data.
   std::vector<std::unique_ptr<ImpactLocusData>> data(cases);
@@ -49,14 +40,8 @@ int run_impact_command(const ImpactCommandOptions& options, std::ostream& out, s
       return kExitBadInput;
     }
   }
-  print_deck_input_warnings(err, options.deck_path, deck);
 
-  std::ostringstream listing;
-  nlohmann::ordered_json documents = nlohmann::ordered_json::array();
-  std::vector<std::string> failures;
-  for (std::size_t k = 0; k < cases; ++k) {
-    const DeckCase& deck_case = deck.cases[k];
-    const std::string prefix = case_message_prefix(deck_case.number, cases);
+  const auto run_case = [&](std::size_t k, const DeckCase& deck_case, CaseOutputs* outputs) {
     SimulatedCase run;
     simulate_case(*deck_case.mission, deck_case.extras.listing, options.deck_path, &run);
     ImpactStep step;
@@ -64,26 +49,24 @@ int run_impact_command(const ImpactCommandOptions& options, std::ostream& out, s
                      &step);
     if (step.outcome != StepOutcome::kRun) step.status = run.report.status;
 
-    if (!options.csv_path.empty() &&
-        !write_csv_or_report(case_file_path(options.csv_path, deck_case.number, cases), err,
-                             [&step](std::ostream& csv) { write_impact_csv(csv, step); })) {
-      return kExitFailure;
+    if (!outputs->write_csv(deck_case.number, [&step](std::ostream& csv) { write_impact_csv(csv, step); })) {
+      return false;
     }
-    if (options.json) {
+    if (outputs->json()) {
       nlohmann::ordered_json document = trajectory_json(run.report);
       add_impact_member(&document, step);
-      documents.push_back(std::move(document));
+      outputs->add_document(std::move(document));
     } else {
-      write_impact_listing(listing, &deck_case.extras.listing, step);
+      write_impact_listing(outputs->listing(), &deck_case.extras.listing, step);
     }
-    if (!ok(run.report.status) || !ok(step.status)) {
-      const Status status = ok(run.report.status) ? step.status : run.report.status;
-      failures.push_back("tolip: " + prefix + (ok(run.report.status) ? "impact locus: " : "") +
-                         status_name(status) + ": " + status_message(status) + "\n");
+    if (!ok(run.report.status)) {
+      outputs->add_failure(deck_case.number, "", run.report.status);
+    } else if (!ok(step.status)) {
+      outputs->add_failure(deck_case.number, "impact locus: ", step.status);
     }
-  }
-  write_case_outputs(out, err, options.json, documents, listing.str(), failures);
-  return failures.empty() ? kExitOk : kExitFailure;
+    return true;
+  };
+  return run_analysis_cases(deck, options.deck_path, options.csv_path, options.json, run_case, out, err);
 }
 
 }  // namespace tolip::ground

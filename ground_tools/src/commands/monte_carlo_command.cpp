@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "case_output.hpp"
+#include "cli_options.hpp"
 #include "tolip_ground/atomic_file.hpp"
 #include "tolip_ground/card_deck.hpp"
 #include "tolip_ground/commands.hpp"
@@ -145,12 +146,9 @@ int fail(std::ostream& err, int code, const std::string& message) {
 }  // namespace
 
 void add_monte_carlo_options(CLI::App& command, MonteCarloCommandOptions* options) {
-  command
-      .add_option("DECK", options->deck_path,
-                  "TOML deck or card deck of one case with data blocks\n"
-                  "46-55 ([[dispersion]]; docs/deck-format.md)")
-      ->required()
-      ->type_name("FILE");
+  add_deck_argument(command, &options->deck_path,
+                    "TOML deck or card deck of one case with data blocks\n"
+                    "46-55 ([[dispersion]]; docs/deck-format.md)");
   command
       .add_option("--samples", options->samples,
                   "Number of dispersed trajectories, 1 to " + std::to_string(kMaxMonteCarloSamples))
@@ -167,13 +165,11 @@ void add_monte_carlo_options(CLI::App& command, MonteCarloCommandOptions* option
                   "Threads that fly the samples, 1 to " + std::to_string(kMaxMonteCarloThreads) +
                       " (default: one per\nhardware thread); the results do not depend on it")
       ->type_name("K");
-  command.add_flag("--json", options->json, "Print one JSON document instead of the listing (docs/cli.md)");
-  command
-      .add_option("--csv", options->csv_path,
-                  "Also write one row per sample (status, staging-point values\n"
-                  "and dispersions, orbit elements, perigee and apogee, max\n"
-                  "q-bar alpha, casing impacts) to FILE as CSV, atomically")
-      ->type_name("FILE");
+  add_json_flag(command, &options->json, "Print one JSON document instead of the listing (docs/cli.md)");
+  add_csv_option(command, &options->csv_path,
+                 "Also write one row per sample (status, staging-point values\n"
+                 "and dispersions, orbit elements, perigee and apogee, max\n"
+                 "q-bar alpha, casing impacts) to FILE as CSV, atomically");
   command
       .add_option("--plots", options->plots_dir,
                   "Also draw the figures (burnout altitude, velocity and\n"
@@ -203,17 +199,14 @@ void add_monte_carlo_options(CLI::App& command, MonteCarloCommandOptions* option
       ->delimiter(',')
       ->type_name("LIST")
       ->excludes(impacts_off);
-  CLI::Option* on = command.add_flag_callback(
-      "--progress", [options] { options->progress = ProgressMode::kOn; },
-      "Show the progress line on stderr even when it is not a terminal");
-  CLI::Option* off = command.add_flag_callback(
-      "--no-progress", [options] { options->progress = ProgressMode::kOff; }, "Never show the progress line");
-  on->excludes(off);
+  add_progress_flags(command, &options->progress,
+                     "Show the progress line on stderr even when it is not a terminal",
+                     "Never show the progress line");
 }
 
 CLI::App* add_monte_carlo_command(CLI::App& app, MonteCarloCommandOptions* options) {
-  CLI::App* command = app.add_subcommand(
-      "montecarlo",
+  CLI::App* command = add_command(
+      app, "montecarlo",
       "Monte Carlo dispersions (beyond the manual): optimize the deck's\n"
       "case, take the final nominal the dispersion analysis takes\n"
       "(Sec. 15: the linearized program under IP(7) = 1, else the\n"
@@ -223,8 +216,7 @@ CLI::App* add_monte_carlo_command(CLI::App& app, MonteCarloCommandOptions* optio
       "points of every staging-point quantity and orbit element beside\n"
       "the manual's linear RSS three-sigma, the fraction reaching orbit\n"
       "and the 99.7 % ellipse of the burnout point; with --impacts (by\n"
-      "default under IP(23)) the 99.7 % ellipses of the casings' impacts.");
-  command->footer(
+      "default under IP(23)) the 99.7 % ellipses of the casings' impacts.",
       "Examples:\n"
       "  tolip montecarlo examples/scout/mission.toml --samples 1000 --seed 1\n"
       "  tolip montecarlo examples/scout/mission.toml --samples 1000 --seed 1 \\\n"

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "case_output.hpp"
+#include "deck_analysis.hpp"
 #include "tolip/core/status.hpp"
 #include "tolip/optimizer/exchange_ratios.hpp"
 #include "tolip/optimizer/steepest_descent.hpp"
@@ -37,10 +38,6 @@
 
 namespace tolip::ground {
 namespace {
-
-void print_status(std::ostream& err, Status status, const std::string& prefix = "") {
-  err << "tolip: " << prefix << status_name(status) << ": " << status_message(status) << '\n';
-}
 
 // Statuses with which optimize_trajectory rejects the case before flying anything: the deck asks
 // for an optimization the optimizer does not do (bad input, not a run-time failure).
@@ -151,7 +148,7 @@ int optimize_case(const Deck& deck, const DeckCase& deck_case, OptimizerObserver
   const OptimizerResult* const result = run.result.get();
   const Status optimizer_status = run.optimizer_status;
   if (!ok(optimizer_status) && result->forward_runs == 0 && rejects_problem(optimizer_status)) {
-    print_status(err, optimizer_status, output->prefix);
+    err << status_line(optimizer_status, output->prefix);
     output->stop = true;
     return kExitBadInput;
   }
@@ -346,18 +343,12 @@ int optimize_case(const Deck& deck, const DeckCase& deck_case, OptimizerObserver
 
 int run_optimize_command(const OptimizeCommandOptions& options, std::ostream& out, std::ostream& err) {
   Deck deck;
-  DeckError deck_error;
-  if (!load_deck(options.deck_path, &deck, &deck_error)) {  // TOML or card deck, every case checked
-    err << "tolip: " << deck_error.to_string() << '\n';
-    return kExitBadInput;
-  }
+  if (!load_deck_or_report(options.deck_path, &deck, err)) return kExitBadInput;
   const std::size_t cases = deck.cases.size();
-  for (const std::string& csv : {options.csv_path, options.dispersions_csv_path, options.impact_csv_path,
-                                 options.radar_csv_path, options.hardover_csv_path}) {
-    if (std::string csv_error; !csv_spares_the_deck(csv, options.deck_path, cases, &csv_error)) {
-      err << "tolip: " << csv_error << '\n';
-      return kExitBadInput;
-    }
+  if (!csv_files_spare_the_deck({options.csv_path, options.dispersions_csv_path, options.impact_csv_path,
+                                 options.radar_csv_path, options.hardover_csv_path},
+                                options.deck_path, cases, err)) {
+    return kExitBadInput;
   }
   // Inputs read but not acted on are named, never dropped (tolip_ground/unused_inputs.hpp).
   print_deck_input_warnings(err, options.deck_path, deck);
@@ -398,9 +389,7 @@ int run_optimize_command(const OptimizeCommandOptions& options, std::ostream& ou
     if (output.stop) return case_exit;
     if (options.json) documents.push_back(std::move(output.document));
     if (!ok(output.failure)) {
-      std::ostringstream line;
-      print_status(line, output.failure, output.prefix + output.failed_step + ": ");
-      failures.push_back(line.str());
+      failures.push_back(status_line(output.failure, output.prefix + output.failed_step + ": "));
     }
     exit_code = std::max(exit_code, case_exit);
   }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "case_output.hpp"
+#include "deck_analysis.hpp"
 #include "tolip/core/status.hpp"
 #include "tolip/orbit/orbit_elements.hpp"
 #include "tolip/trajectory/trajectory.hpp"
@@ -26,13 +27,6 @@
 #include "tolip_ground/unused_inputs.hpp"
 
 namespace tolip::ground {
-namespace {
-
-void print_status(std::ostream& err, Status status, const std::string& prefix) {
-  err << "tolip: " << prefix << status_name(status) << ": " << status_message(status) << '\n';
-}
-
-}  // namespace
 
 void simulate_case(const Mission& mission, const DeckListingOptions& listing, const std::string& deck_path,
                    SimulatedCase* run) {
@@ -71,17 +65,11 @@ void simulate_case(const Mission& mission, const DeckListingOptions& listing, co
 
 int run_simulate_command(const SimulateCommandOptions& options, std::ostream& out, std::ostream& err) {
   Deck deck;
-  DeckError deck_error;
-  if (!load_deck(options.deck_path, &deck, &deck_error)) {
-    err << "tolip: " << deck_error.to_string() << '\n';
-    return kExitBadInput;
-  }
+  if (!load_deck_or_report(options.deck_path, &deck, err)) return kExitBadInput;
   const std::size_t cases = deck.cases.size();
-  for (const std::string& csv : {options.csv_path, options.radar_csv_path, options.hardover_csv_path}) {
-    if (std::string csv_error; !csv_spares_the_deck(csv, options.deck_path, cases, &csv_error)) {
-      err << "tolip: " << csv_error << '\n';
-      return kExitBadInput;
-    }
+  if (!csv_files_spare_the_deck({options.csv_path, options.radar_csv_path, options.hardover_csv_path},
+                                options.deck_path, cases, err)) {
+    return kExitBadInput;
   }
   // Inputs read but not acted on are named, never dropped (tolip_ground/unused_inputs.hpp).
   print_deck_input_warnings(err, options.deck_path, deck);
@@ -186,21 +174,15 @@ int run_simulate_command(const SimulateCommandOptions& options, std::ostream& ou
       write_trajectory_listing(listing, run.report);
     }
     if (!ok(run.report.status)) {
-      std::ostringstream line;
-      print_status(line, run.report.status, case_message_prefix(deck_case.number, cases));
-      failures.push_back(line.str());
+      failures.push_back(status_line(run.report.status, case_message_prefix(deck_case.number, cases)));
     } else if (impact.outcome == StepOutcome::kRun && !ok(impact.status)) {
-      std::ostringstream line;
-      print_status(line, impact.status, case_message_prefix(deck_case.number, cases) + "impact locus: ");
-      failures.push_back(line.str());
+      failures.push_back(
+          status_line(impact.status, case_message_prefix(deck_case.number, cases) + "impact locus: "));
     } else if (hardover.outcome == StepOutcome::kRun && !ok(hardover.status)) {
-      std::ostringstream line;
-      print_status(line, hardover.status, case_message_prefix(deck_case.number, cases) + "hardover: ");
-      failures.push_back(line.str());
+      failures.push_back(
+          status_line(hardover.status, case_message_prefix(deck_case.number, cases) + "hardover: "));
     } else if (radar.outcome == StepOutcome::kRun && !ok(radar.status)) {
-      std::ostringstream line;
-      print_status(line, radar.status, case_message_prefix(deck_case.number, cases) + "radar: ");
-      failures.push_back(line.str());
+      failures.push_back(status_line(radar.status, case_message_prefix(deck_case.number, cases) + "radar: "));
     }
   }
 

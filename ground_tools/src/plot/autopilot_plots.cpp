@@ -9,20 +9,16 @@
 namespace tolip::ground {
 namespace {
 
-using json = nlohmann::json;
+// The result-document accessors (json, fail, required, required_array, ...): plot_json.hpp.
+using namespace plot_json;
 
-using plot_json::fail;
-using plot_json::number_or_gap;
-using plot_json::required;
 }  // namespace
 
 std::vector<Figure> autopilot_figures(const nlohmann::json& document) {
   std::vector<Figure> figures;
-  const auto autopilot = document.find("autopilot");
-  if (autopilot == document.end() || autopilot->is_null()) return figures;
-  if (!autopilot->is_object()) fail("autopilot", "an object", *autopilot);
-  const json& points = required(*autopilot, "points", "autopilot");
-  if (!points.is_array()) fail("autopilot.points", "an array", points);
+  const json* autopilot = optional_object(document, "autopilot");
+  if (autopilot == nullptr) return figures;
+  const json& points = required_array(*autopilot, "points", "autopilot");
   if (points.empty()) return figures;
   auto series = [](const char* title, bool second_axis) {
     PlotSeries s;

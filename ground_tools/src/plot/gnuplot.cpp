@@ -140,7 +140,11 @@ std::string figure_commands(const Figure& figure, const std::vector<std::string>
   }
   if (figure.y_log) script << "set logscale y\n";
   if (figure.y2_log) script << "set logscale y2\n";
-  if (std::isfinite(figure.aspect_ratio)) script << "set size ratio " << num(figure.aspect_ratio) << '\n';
+  if (figure.equal_axis_scale) {
+    script << "set size ratio -1\n";
+  } else if (std::isfinite(figure.aspect_ratio)) {
+    script << "set size ratio " << num(figure.aspect_ratio) << '\n';
+  }
   if (std::isfinite(figure.y_min) && std::isfinite(figure.y_max)) {
     script << "set yrange [" << num(figure.y_min) << ":" << num(figure.y_max) << "]\n";
   }

@@ -9,20 +9,16 @@
 namespace tolip::ground {
 namespace {
 
-using json = nlohmann::json;
+// The result-document accessors (json, fail, required, required_array, ...): plot_json.hpp.
+using namespace plot_json;
 
-using plot_json::fail;
-using plot_json::number_or_gap;
-using plot_json::required;
 }  // namespace
 
 std::vector<Figure> hardover_figures(const nlohmann::json& document) {
   std::vector<Figure> figures;
-  const auto hardover = document.find("hardover");
-  if (hardover == document.end() || hardover->is_null()) return figures;
-  if (!hardover->is_object()) fail("hardover", "an object", *hardover);
-  const json& turns = required(*hardover, "turns", "hardover");
-  if (!turns.is_array()) fail("hardover.turns", "an array", turns);
+  const json* hardover = optional_object(document, "hardover");
+  if (hardover == nullptr) return figures;
+  const json& turns = required_array(*hardover, "turns", "hardover");
   if (turns.empty()) return figures;
   Figure figure;
   figure.name = "hardover_gamma";
@@ -41,8 +37,7 @@ std::vector<Figure> hardover_figures(const nlohmann::json& document) {
       fail(field + ".mode", "0-3", mode);
     const json& stage = required(turn, "stage", field);
     if (!stage.is_number_integer()) fail(field + ".stage", "an integer", stage);
-    const json& samples = required(turn, "samples", field);
-    if (!samples.is_array()) fail(field + ".samples", "an array", samples);
+    const json& samples = required_array(turn, "samples", field);
     const int m = mode.get<int>();
     PlotSeries series;
     series.color = m + 1;

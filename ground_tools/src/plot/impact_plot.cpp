@@ -5,7 +5,9 @@
 #include <cmath>
 #include <limits>
 #include <string>
+
 #include "plot_json.hpp"
+#include "plot_map.hpp"
 
 namespace tolip::ground::plot_detail {
 namespace {
@@ -13,7 +15,6 @@ namespace {
 using json = nlohmann::json;
 
 constexpr double kGap = std::numeric_limits<double>::quiet_NaN();
-constexpr double kPi = 3.14159265358979323846;
 
 using plot_json::fail;
 // A number of an object; null (a non-finite value) gives a gap; anything else is malformed.
@@ -23,12 +24,6 @@ double number_at(const json& object, const char* key, const std::string& field) 
   if (it->is_null()) return kGap;
   if (!it->is_number()) fail(field + "." + key, "a number or null", *it);
   return it->get<double>();
-}
-
-std::string fixed(double value, int decimals) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
-  return buffer;
 }
 
 }  // namespace
@@ -99,51 +94,21 @@ std::optional<Figure> impact_locus_figure(const json& document) {
   }
 
   // The launch site, and a map of true shape around everything drawn.
-  double lon_low = HUGE_VAL, lon_high = -HUGE_VAL, lat_low = HUGE_VAL, lat_high = -HUGE_VAL;
-  const auto extend = [&](double lon, double lat) {
-    if (!(std::fabs(lon) <= 360.0) || !(std::fabs(lat) <= 90.0)) return;
-    lon_low = std::min(lon_low, lon);
-    lon_high = std::max(lon_high, lon);
-    lat_low = std::min(lat_low, lat);
-    lat_high = std::max(lat_high, lat);
-  };
+  plot_map::MapBounds bounds;
   const auto site = impact->find("launch_site");
   if (site != impact->end() && site->is_object()) {
     const double lat = number_at(*site, "geodetic_latitude_deg", "impact.launch_site");
     const double lon = number_at(*site, "longitude_deg", "impact.launch_site");
-    figure.points.push_back({lon, lat,
-                             "launch site " + fixed(std::fabs(lat), 2) + (lat < 0 ? " S, " : " N, ") +
-                                 fixed(std::fabs(lon), 2) + (lon < 0 ? " W" : " E"),
-                             0});
-    extend(lon, lat);
+    figure.points.push_back({lon, lat, "launch site " + plot_map::place_text(lat, lon), 0});
+    bounds.extend(lon, lat);
   }
   for (const auto& row : series) {
     for (const PlotSeries& s : row) {
-      for (std::size_t i = 0; i < s.x.size(); ++i) extend(s.x[i], s.y[i]);
+      for (std::size_t i = 0; i < s.x.size(); ++i) bounds.extend(s.x[i], s.y[i]);
     }
   }
   // The track only where it is near the impacts (an orbit's track would dwarf them).
-  if (lon_low <= lon_high) {
-    const double pad = std::max(1.0, 0.1 * std::max(lon_high - lon_low, lat_high - lat_low));
-    lon_low -= pad;
-    lon_high += pad;
-    lat_low -= pad;
-    lat_high += pad;
-    const double scale = std::max(0.2, std::cos(0.5 * (lat_low + lat_high) * kPi / 180.0));
-    const double wanted = 0.45 * (lon_high - lon_low) * scale;
-    if (lat_high - lat_low < wanted) {
-      const double grow = 0.5 * (wanted - (lat_high - lat_low));
-      lat_low -= grow;
-      lat_high += grow;
-    }
-    lat_low = std::max(lat_low, -90.0);
-    lat_high = std::min(lat_high, 90.0);
-    figure.x_min = lon_low;
-    figure.x_max = lon_high;
-    figure.y_min = lat_low;
-    figure.y_max = lat_high;
-    figure.aspect_ratio = (lat_high - lat_low) / ((lon_high - lon_low) * scale);
-  }
+  plot_map::frame_map(bounds, 0.1, &figure);
   if (!track.x.empty()) figure.series.push_back(std::move(track));
   for (auto& row : series) {
     for (PlotSeries& s : row) {

@@ -7,6 +7,7 @@
 
 #include "impact_plot.hpp"
 #include "plot_json.hpp"
+#include "plot_map.hpp"
 #include "tolip/optimizer/constraint_set.hpp"
 #include "tolip_ground/plot.hpp"
 
@@ -76,11 +77,7 @@ Figure make_figure(std::string name, std::string title, std::string x_label, std
 // Feet in a nautical mile (the international one, 1852 m): altitudes in n.mi.
 constexpr double kFeetPerNauticalMile = 1852.0 / 0.3048;
 
-std::string fixed(double value, int decimals) {
-  char text[48];
-  std::snprintf(text, sizeof text, "%.*f", decimals, value);
-  return text;
-}
+using plot_map::fixed;
 
 // A boolean member of a trajectory point.
 bool required_flag(const json& object, const char* key, const std::string& field) {
@@ -445,48 +442,16 @@ std::optional<Figure> ground_track(const json& document) {
     track.x.push_back(longitude[i]);
     track.y.push_back(latitude[i]);
   }
-  const auto place = [](double lat, double lon) {
-    return fixed(std::fabs(lat), 2) + (lat < 0 ? " S, " : " N, ") + fixed(std::fabs(lon), 2) +
-           (lon < 0 ? " W" : " E");
-  };
-  figure.points.push_back(
-      {longitude.front(), latitude.front(), "launch site " + place(latitude.front(), longitude.front()), 0});
-  figure.points.push_back(
-      {longitude.back(), latitude.back(),
-       "end " + fixed(flight->time.back(), 1) + " s " + place(latitude.back(), longitude.back()), 0});
-  // A map of true shape (a degree of longitude cos(latitude) as long as one of latitude), the
-  // ranges padded so that the track does not sit in a thin strip.
-  double lon_low = HUGE_VAL, lon_high = -HUGE_VAL, lat_low = HUGE_VAL, lat_high = -HUGE_VAL;
-  for (std::size_t i = 0; i < track.x.size(); ++i) {
-    if (!(std::fabs(track.x[i]) <= 360.0) || !(std::fabs(track.y[i]) <= 90.0)) continue;
-    lon_low = std::min(lon_low, track.x[i]);
-    lon_high = std::max(lon_high, track.x[i]);
-    lat_low = std::min(lat_low, track.y[i]);
-    lat_high = std::max(lat_high, track.y[i]);
-  }
-  if (lon_low <= lon_high) {
-    const double pad = std::max(1.0, 0.08 * std::max(lon_high - lon_low, lat_high - lat_low));
-    lon_low -= pad;
-    lon_high += pad;
-    lat_low -= pad;
-    lat_high += pad;
-    const double mid = 0.5 * (lat_low + lat_high) * 3.14159265358979323846 / 180.0;
-    const double scale = std::max(0.2, std::cos(mid));
-    // Height / width of the map at least 0.45: widen the latitudes around the track.
-    const double wanted = 0.45 * (lon_high - lon_low) * scale;
-    if (lat_high - lat_low < wanted) {
-      const double grow = 0.5 * (wanted - (lat_high - lat_low));
-      lat_low -= grow;
-      lat_high += grow;
-    }
-    lat_low = std::max(lat_low, -90.0);
-    lat_high = std::min(lat_high, 90.0);
-    figure.x_min = lon_low;
-    figure.x_max = lon_high;
-    figure.y_min = lat_low;
-    figure.y_max = lat_high;
-    figure.aspect_ratio = (lat_high - lat_low) / ((lon_high - lon_low) * scale);
-  }
+  figure.points.push_back({longitude.front(), latitude.front(),
+                           "launch site " + plot_map::place_text(latitude.front(), longitude.front()), 0});
+  figure.points.push_back({longitude.back(), latitude.back(),
+                           "end " + fixed(flight->time.back(), 1) + " s " +
+                               plot_map::place_text(latitude.back(), longitude.back()),
+                           0});
+  // A map of true shape around the track.
+  plot_map::MapBounds bounds;
+  for (std::size_t i = 0; i < track.x.size(); ++i) bounds.extend(track.x[i], track.y[i]);
+  plot_map::frame_map(bounds, 0.08, &figure);
   figure.series.push_back(std::move(track));
   return figure;
 }

@@ -33,4 +33,20 @@ inline double number_or_gap(const json& object, const char* key, const std::stri
   return value.get<double>();
 }
 
+// The member `key` of a result document that a figure family draws: nullptr when the document has
+// none (absent or null: no figure, not an error); else it must be an object.
+inline const json* optional_object(const json& document, const char* key) {
+  const auto it = document.find(key);
+  if (it == document.end() || it->is_null()) return nullptr;
+  if (!it->is_object()) fail(key, "an object", *it);
+  return &*it;
+}
+
+// The member `key` of `object` (at `field`), which must be present and an array.
+inline const json& required_array(const json& object, const char* key, const std::string& field) {
+  const json& value = required(object, key, field);
+  if (!value.is_array()) fail(field + "." + key, "an array", value);
+  return value;
+}
+
 }  // namespace tolip::ground::plot_json

@@ -11,13 +11,11 @@
 namespace tolip::ground {
 namespace {
 
-using json = nlohmann::json;
-
 constexpr double kGap = std::numeric_limits<double>::quiet_NaN();
 
-using plot_json::fail;
-using plot_json::number_or_gap;
-using plot_json::required;
+// The result-document accessors (json, fail, required, required_array, ...): plot_json.hpp.
+using namespace plot_json;
+
 std::string file_stem(const std::string& id) {
   std::string stem = "radar_";
   for (const char c : id) {
@@ -31,19 +29,16 @@ std::string file_stem(const std::string& id) {
 
 std::vector<Figure> radar_figures(const nlohmann::json& document) {
   std::vector<Figure> figures;
-  const auto radar = document.find("radar");
-  if (radar == document.end() || radar->is_null()) return figures;
-  if (!radar->is_object()) fail("radar", "an object", *radar);
-  const json& stations = required(*radar, "stations", "radar");
-  if (!stations.is_array()) fail("radar.stations", "an array", stations);
+  const json* radar = optional_object(document, "radar");
+  if (radar == nullptr) return figures;
+  const json& stations = required_array(*radar, "stations", "radar");
   for (std::size_t s = 0; s < stations.size(); ++s) {
     const std::string field = "radar.stations[" + std::to_string(s) + "]";
     const json& station = stations[s];
     if (!station.is_object()) fail(field, "an object", station);
     const json& id = required(station, "id", field);
     if (!id.is_string()) fail(field + ".id", "a string", id);
-    const json& points = required(station, "points", field);
-    if (!points.is_array()) fail(field + ".points", "an array", points);
+    const json& points = required_array(station, "points", field);
     if (points.empty()) continue;
 
     PlotSeries azimuth, above, below;

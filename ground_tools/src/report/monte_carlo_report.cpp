@@ -664,6 +664,8 @@ Figure casing_figure(const MonteCarloInputs& in, const CasingImpactStatistics& c
   f.x_label = "downrange (n.mi.)";
   f.y_label = "crossrange (n.mi., right of the nominal azimuth)";
   f.subtitle = subtitle;
+  // Downrange and crossrange both in n.mi.: at equal scale the 99.7 % ellipse shows its true shape.
+  f.equal_axis_scale = true;
   PlotSeries points;
   points.title = "samples (" + std::to_string(c.impacted) + " impacted)";
   points.style = SeriesStyle::kPoints;
