@@ -282,8 +282,9 @@ TEST(MonteCarloCommand, PlotsAreDrawnIntoTheDirectory) {
   ASSERT_EQ(run.exit_code, 0) << run.err;
   for (const char* name :
        {"montecarlo_burnout_altitude", "montecarlo_burnout_velocity", "montecarlo_burnout_flight_path_angle",
-        "montecarlo_perigee_apogee", "montecarlo_rss_comparison", "montecarlo_stage1_casing_impacts",
-        "montecarlo_stage2_casing_impacts", "montecarlo_stage3_casing_impacts"}) {
+        "montecarlo_perigee_apogee", "montecarlo_rss_comparison", "montecarlo_burnout_point",
+        "montecarlo_stage1_casing_impacts", "montecarlo_stage2_casing_impacts",
+        "montecarlo_stage3_casing_impacts"}) {
     for (const char* extension : {".png", ".svg"}) {
       const std::filesystem::path file = std::filesystem::path(dir) / (std::string(name) + extension);
       EXPECT_TRUE(std::filesystem::exists(file)) << file;
@@ -291,9 +292,9 @@ TEST(MonteCarloCommand, PlotsAreDrawnIntoTheDirectory) {
   }
 }
 
-// The casing impact figures put downrange and crossrange, both n.mi., at equal axis scale (gnuplot
-// `set size ratio -1`), so that the 99.7 % ellipse is drawn with its true shape; the histograms
-// keep the terminal's shape. The script is caught by a stand-in gnuplot that copies it and fails.
+// The casing impact and burnout point figures put downrange and crossrange, both n.mi., at equal axis scale
+// (gnuplot `set size ratio -1`), so that the 99.7 % ellipse is drawn with its true shape; the histograms keep
+// the terminal's shape. The script is caught by a stand-in gnuplot that copies it and fails.
 TEST(MonteCarloCommand, Sec17CasingImpactFiguresAreDrawnAtEqualAxisScale) {
   ScratchDirectory scratch("montecarlo_equal_axes");
   const std::filesystem::path caught = scratch / "caught.gp";
@@ -311,9 +312,10 @@ TEST(MonteCarloCommand, Sec17CasingImpactFiguresAreDrawnAtEqualAxisScale) {
     if (from == std::string::npos) return std::string();
     return script.substr(from, script.find("unset output", from) - from);
   };
-  for (const char* stage : {"1", "2", "3"}) {
+  for (const char* figure : {"montecarlo_stage1_casing_impacts", "montecarlo_stage2_casing_impacts",
+                             "montecarlo_stage3_casing_impacts", "montecarlo_burnout_point"}) {
     for (const char* extension : {".png", ".svg"}) {
-      const std::string name = std::string("montecarlo_stage") + stage + "_casing_impacts" + extension;
+      const std::string name = std::string(figure) + extension;
       const std::string commands = commands_of(name);
       ASSERT_FALSE(commands.empty()) << name << " not in the script";
       EXPECT_NE(commands.find("\nset size ratio -1\n"), std::string::npos) << name;

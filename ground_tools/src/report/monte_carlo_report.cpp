@@ -654,32 +654,21 @@ Figure histogram(const std::string& name, const std::string& title, const std::s
   return f;
 }
 
-// The impact points of one stage's casing (downrange, crossrange from the launch site, n.mi.), the
-// nominal impact and the 99.7 % ellipse about the mean.
-Figure casing_figure(const MonteCarloInputs& in, const CasingImpactStatistics& c,
-                     const std::vector<std::string>& subtitle) {
+// Points in a downrange-crossrange plane (n.mi.), the nominal point (x0, y0) and the 99.7 %
+// ellipse about the mean (its centre given relative to the nominal): the one drawing of every
+// Monte Carlo ellipse. Both axes are n.mi.: at equal scale the ellipse shows its true shape.
+Figure ellipse_scatter(const std::string& name, const std::string& title, const std::string& y_label,
+                       PlotSeries points, double x0, double y0, const DispersionEllipse& e,
+                       const std::vector<std::string>& subtitle) {
   Figure f;
-  f.name = "montecarlo_stage" + std::to_string(c.stage) + "_casing_impacts";
-  f.title = "Stage " + std::to_string(c.stage) + " expended casing impact points (Sec. 17, data block 43)";
+  f.name = name;
+  f.title = title;
   f.x_label = "downrange (n.mi.)";
-  f.y_label = "crossrange (n.mi., right of the nominal azimuth)";
+  f.y_label = y_label;
   f.subtitle = subtitle;
-  // Downrange and crossrange both in n.mi.: at equal scale the 99.7 % ellipse shows its true shape.
   f.equal_axis_scale = true;
-  PlotSeries points;
-  points.title = "samples (" + std::to_string(c.impacted) + " impacted)";
   points.style = SeriesStyle::kPoints;
-  for (std::size_t i = 0; i < in.samples->samples.size(); ++i) {
-    if (!ok(in.samples->samples[i].status)) continue;
-    const ImpactCase* casing = casing_of(in.samples->impacts[i], c.stage);
-    if (casing == nullptr || !ok(casing->status)) continue;
-    points.x.push_back(casing->downrange_rad * kNauticalMilesPerRadian);
-    points.y.push_back(casing->crossrange_rad * kNauticalMilesPerRadian);
-  }
   f.series.push_back(std::move(points));
-  const double x0 = c.nominal.downrange_rad * kNauticalMilesPerRadian;
-  const double y0 = c.nominal.crossrange_rad * kNauticalMilesPerRadian;
-  const DispersionEllipse& e = c.ellipse;
   if (std::isfinite(e.semi_major_nmi) && std::isfinite(e.semi_minor_nmi)) {
     PlotSeries outline;
     outline.title = "99.7 % ellipse";
@@ -695,6 +684,49 @@ Figure casing_figure(const MonteCarloInputs& in, const CasingImpactStatistics& c
   }
   f.points.push_back({x0, y0, "nominal", 0});
   return f;
+}
+
+// The impact points of one stage's casing (downrange, crossrange from the launch site, n.mi.), the
+// nominal impact and the 99.7 % ellipse about the mean.
+Figure casing_figure(const MonteCarloInputs& in, const CasingImpactStatistics& c,
+                     const std::vector<std::string>& subtitle) {
+  PlotSeries points;
+  points.title = "samples (" + std::to_string(c.impacted) + " impacted)";
+  for (std::size_t i = 0; i < in.samples->samples.size(); ++i) {
+    if (!ok(in.samples->samples[i].status)) continue;
+    const ImpactCase* casing = casing_of(in.samples->impacts[i], c.stage);
+    if (casing == nullptr || !ok(casing->status)) continue;
+    points.x.push_back(casing->downrange_rad * kNauticalMilesPerRadian);
+    points.y.push_back(casing->crossrange_rad * kNauticalMilesPerRadian);
+  }
+  return ellipse_scatter(
+      "montecarlo_stage" + std::to_string(c.stage) + "_casing_impacts",
+      "Stage " + std::to_string(c.stage) + " expended casing impact points (Sec. 17, data block 43)",
+      "crossrange (n.mi., right of the nominal azimuth)", std::move(points),
+      c.nominal.downrange_rad * kNauticalMilesPerRadian, c.nominal.crossrange_rad * kNauticalMilesPerRadian,
+      c.ellipse, subtitle);
+}
+
+// The final point of every flown sample (downrange and crossrange, Sec. 4's range equations, n.mi.),
+// the nominal's and the burnout ellipse of the JSON and the listing.
+Figure burnout_point_figure(const MonteCarloInputs& in, const MonteCarloSummary& s, int final,
+                            const std::vector<std::string>& subtitle) {
+  const int down = static_cast<int>(StagingVariable::kDownrange);
+  const int cross = static_cast<int>(StagingVariable::kCrossrange);
+  const DispersedTrajectory& nominal = in.samples->nominal;
+  PlotSeries points;
+  points.title = "samples (" + std::to_string(s.flown) + " flown)";
+  for (const DispersedTrajectory& t : in.samples->samples) {
+    if (!ok(t.status)) continue;
+    const double dx = t.dispersions[final][down];
+    const double dy = t.dispersions[final][cross];
+    if (!std::isfinite(dx) || !std::isfinite(dy)) continue;
+    points.x.push_back(nominal.values[final][down] + dx);
+    points.y.push_back(nominal.values[final][cross] + dy);
+  }
+  return ellipse_scatter("montecarlo_burnout_point", "Final burnout point (Sec. 4 downrange and crossrange)",
+                         "crossrange (n.mi.)", std::move(points), nominal.values[final][down],
+                         nominal.values[final][cross], s.burnout_ellipse, subtitle);
 }
 
 }  // namespace
@@ -784,6 +816,7 @@ std::vector<Figure> monte_carlo_figures(const MonteCarloInputs& in, const MonteC
   ratio.x_min = 0.5;
   ratio.x_max = static_cast<double>(s.columns.size()) + 0.5;
   figures.push_back(std::move(ratio));
+  figures.push_back(burnout_point_figure(in, s, final, subtitle));
   for (const CasingImpactStatistics& c : s.impact_ellipses) {
     if (!ok(c.nominal.status)) continue;
     figures.push_back(casing_figure(in, c, subtitle));
