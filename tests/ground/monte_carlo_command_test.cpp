@@ -295,7 +295,7 @@ TEST(MonteCarloCommand, PlotsAreDrawnIntoTheDirectory) {
 // The casing impact and burnout point figures put downrange and crossrange, both n.mi., at equal axis scale
 // (gnuplot `set size ratio -1`), so that the 99.7 % ellipse is drawn with its true shape; the histograms keep
 // the terminal's shape. The script is caught by a stand-in gnuplot that copies it and fails.
-TEST(MonteCarloCommand, Sec17CasingImpactFiguresAreDrawnAtEqualAxisScale) {
+TEST(MonteCarloCommand, Sec17CasingImpactAndBurnoutPointFiguresAreDrawnAtEqualAxisScale) {
   ScratchDirectory scratch("montecarlo_equal_axes");
   const std::filesystem::path caught = scratch / "caught.gp";
   const std::string fake = (scratch / "fake_gnuplot.sh").string();

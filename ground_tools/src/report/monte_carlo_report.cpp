@@ -141,9 +141,10 @@ QuantityStatistics quantity(const Quantity& q, const MonteCarloInputs& in, const
   return out;
 }
 
-DispersionEllipse burnout_ellipse(const MonteCarloSamples& samples, int final_column) {
-  std::vector<double> x;
-  std::vector<double> y;
+// The downrange and crossrange dispersions (n.mi.) at `final_column` of every flown sample with
+// both finite, in sample order: the burnout ellipse's points and its figure's.
+void burnout_dispersions(const MonteCarloSamples& samples, int final_column, std::vector<double>* x,
+                         std::vector<double>* y) {
   const int down = static_cast<int>(StagingVariable::kDownrange);
   const int cross = static_cast<int>(StagingVariable::kCrossrange);
   for (const DispersedTrajectory& t : samples.samples) {
@@ -151,10 +152,16 @@ DispersionEllipse burnout_ellipse(const MonteCarloSamples& samples, int final_co
     const double dx = t.dispersions[final_column][down];
     const double dy = t.dispersions[final_column][cross];
     if (std::isfinite(dx) && std::isfinite(dy)) {
-      x.push_back(dx);
-      y.push_back(dy);
+      x->push_back(dx);
+      y->push_back(dy);
     }
   }
+}
+
+DispersionEllipse burnout_ellipse(const MonteCarloSamples& samples, int final_column) {
+  std::vector<double> x;
+  std::vector<double> y;
+  burnout_dispersions(samples, final_column, &x, &y);
   return dispersion_ellipse(x, y);
 }
 
@@ -716,14 +723,9 @@ Figure burnout_point_figure(const MonteCarloInputs& in, const MonteCarloSummary&
   const DispersedTrajectory& nominal = in.samples->nominal;
   PlotSeries points;
   points.title = "samples (" + std::to_string(s.flown) + " flown)";
-  for (const DispersedTrajectory& t : in.samples->samples) {
-    if (!ok(t.status)) continue;
-    const double dx = t.dispersions[final][down];
-    const double dy = t.dispersions[final][cross];
-    if (!std::isfinite(dx) || !std::isfinite(dy)) continue;
-    points.x.push_back(nominal.values[final][down] + dx);
-    points.y.push_back(nominal.values[final][cross] + dy);
-  }
+  burnout_dispersions(*in.samples, final, &points.x, &points.y);
+  for (double& x : points.x) x += nominal.values[final][down];
+  for (double& y : points.y) y += nominal.values[final][cross];
   return ellipse_scatter("montecarlo_burnout_point", "Final burnout point (Sec. 4 downrange and crossrange)",
                          "crossrange (n.mi.)", std::move(points), nominal.values[final][down],
                          nominal.values[final][cross], s.burnout_ellipse, subtitle);
