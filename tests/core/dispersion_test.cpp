@@ -36,6 +36,24 @@ struct Fixture {
   PreparedCase hand_prepared;
 };
 
+// A case changed by hand flies with the analysis' own flight numerics (dispersion_flight_inputs:
+// the state's sines inside a step by the addition theorem), so the code's figures must equal it
+// bit for bit.
+Status fly_by_hand(const Mission& mission, const PreparedCase& prepared, FlightInputs inputs,
+                   Trajectory* out) {
+  inputs.sines_by_addition = true;
+  return fly_trajectory(mission, prepared, inputs, out);
+}
+Status fly_by_hand(const Mission& mission, const PreparedCase& prepared, const ControlProgram& program,
+                   Trajectory* out) {
+  FlightInputs inputs;
+  inputs.program = &program;
+  return fly_by_hand(mission, prepared, inputs, out);
+}
+Status fly_by_hand(const Mission& mission, const PreparedCase& prepared, Trajectory* out) {
+  return fly_by_hand(mission, prepared, FlightInputs{}, out);
+}
+
 // The reference mission and its block 40 program sampled at every point (as the optimizer keeps it).
 std::unique_ptr<Fixture> make_fixture() {
   auto f = std::make_unique<Fixture>();
@@ -151,7 +169,7 @@ TEST(Sec15Dispersions, ZeroPerturbationOfEveryKindReproducesTheNominalBitForBit)
 
   // The module's nominal is the program flown by hand.
   Trajectory& by_hand = f->hand;
-  ASSERT_EQ(fly_trajectory(f->mission, f->prepared, f->program, &by_hand), Status::kOk);
+  ASSERT_EQ(fly_by_hand(f->mission, f->prepared, f->program, &by_hand), Status::kOk);
   ASSERT_EQ(by_hand.point_count, f->workspace.nominal.point_count);
   for (int k = 0; k < by_hand.point_count; ++k) {
     ASSERT_EQ(by_hand.points[k].state, f->workspace.nominal.points[k].state) << k;
@@ -194,7 +212,7 @@ TEST(Sec15Dispersions, WeightDragAndAzimuthEqualTheCaseChangedByHand) {
     }
     if (which == 2) m.launch.azimuth_rad += 0.5 * kDeg;
     ASSERT_EQ(prepare_case(m, &f->hand_prepared), Status::kOk);
-    ASSERT_EQ(fly_trajectory(m, f->hand_prepared, f->program, &f->hand), Status::kOk);
+    ASSERT_EQ(fly_by_hand(m, f->hand_prepared, f->program, &f->hand), Status::kOk);
     const DispersedTrajectory& t = f->result.trajectories[which];
     ASSERT_EQ(t.status, Status::kOk);
     const TrajectoryPoint& end = f->hand.final_point();
@@ -225,7 +243,7 @@ TEST(Sec15Dispersions, SignsOfEveryFamilyOnTheReferenceData) {
     inputs.program = ws.program_mapped ? &ws.program : &f->program;
     inputs.body_dynamics = true;
     inputs.perturbation = &ws.perturbation;
-    ASSERT_EQ(fly_trajectory(ws.mission, ws.prepared, inputs, &f->hand), Status::kOk);
+    ASSERT_EQ(fly_by_hand(ws.mission, ws.prepared, inputs, &f->hand), Status::kOk);
     const int slot = 2 * (source.stage - 1);  // stages 1 6 2 7 3 8 4
     const double burnout_v = f->hand.points[f->hand.stages[slot].last_point].state[kStateV];
     const double nominal_v = ws.nominal.points[ws.nominal.stages[slot].last_point].state[kStateV];
@@ -463,7 +481,7 @@ TEST(Sec15Dispersions, StackedStage45TablesFlyAsTheirPerStageForm) {
   }
   ASSERT_EQ(hand.vehicle.stages[stage_index(9)].duration_s, 6.0);
   ASSERT_EQ(prepare_case(hand, &f->hand_prepared), Status::kOk);
-  ASSERT_EQ(fly_trajectory(hand, f->hand_prepared, &f->hand), Status::kOk);
+  ASSERT_EQ(fly_by_hand(hand, f->hand_prepared, &f->hand), Status::kOk);
   expect_final_equals(f->result.trajectories[0], 4, f->hand);
   // The coast between them flew its 6 s (flight order 1 6 2 7 3 8 4 9 5), stage 5 its table's time.
   const PreparedCase& flown = f->workspace.prepared;
@@ -519,7 +537,7 @@ TEST(Sec15Dispersions, ThrustTablesEqualTheCaseChangedByHand) {
     }
     FlightInputs inputs;
     inputs.perturbation = &clock;
-    ASSERT_EQ(fly_trajectory(m, f->hand_prepared, inputs, &f->hand), Status::kOk);
+    ASSERT_EQ(fly_by_hand(m, f->hand_prepared, inputs, &f->hand), Status::kOk);
     expect_final_equals(f->result.trajectories[0], f->result.staging_count - 1, f->hand);
   }
 }
@@ -613,7 +631,7 @@ TEST(Sec15Dispersions, DeadbandTipoffAndLaunchAttitudeEqualTheCaseChangedByHand)
       for (int k = 0; k < program->point_count; ++k) program->theta_rad[k] += attitude;
       m.misc.stage4_theta_rad += attitude;
     }
-    ASSERT_EQ(fly_trajectory(m, f->prepared, *program, &f->hand), Status::kOk);
+    ASSERT_EQ(fly_by_hand(m, f->prepared, *program, &f->hand), Status::kOk);
     expect_final_equals(f->result.trajectories[which], final_column, f->hand);
   }
 }
@@ -659,7 +677,7 @@ TEST(Sec15Dispersions, MisalignmentWindsAndYawDeadbandEqualTheFlightChangedByHan
     inputs.program = &f->program;
     inputs.body_dynamics = true;
     inputs.perturbation = &p;
-    ASSERT_EQ(fly_trajectory(f->mission, f->prepared, inputs, &f->hand), Status::kOk);
+    ASSERT_EQ(fly_by_hand(f->mission, f->prepared, inputs, &f->hand), Status::kOk);
     expect_final_equals(f->result.trajectories[which], final_column, f->hand);
   }
 }

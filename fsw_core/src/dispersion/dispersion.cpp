@@ -484,11 +484,18 @@ Status build_dispersed_case(const DispersionNominal& nominal, const PreparedCase
   return Status::kOk;
 }
 
+FlightInputs dispersion_flight_inputs(const DispersionNominal& nominal) {
+  FlightInputs inputs;
+  inputs.program = nominal.program;
+  inputs.body_dynamics = nominal.body_dynamics;
+  inputs.sines_by_addition = true;
+  return inputs;
+}
+
 Status fly_dispersed_case(const DispersionNominal& nominal, DispersionWorkspace* ws,
                           DispersedTrajectory* out) {
-  FlightInputs inputs;
-  inputs.program = ws->program_mapped ? &ws->program : nominal.program;
-  inputs.body_dynamics = nominal.body_dynamics;
+  FlightInputs inputs = dispersion_flight_inputs(nominal);
+  if (ws->program_mapped) inputs.program = &ws->program;
   inputs.perturbation = &ws->perturbation;
   // Only what the record reads (lean points, the air-relative alpha kept from the flight).
   inputs.lean_points = true;
@@ -659,10 +666,8 @@ Status run_dispersions(const DispersionNominal& nominal, const DispersionData& d
   // GIANT plane 40: the nominal, prepared and flown by the same rules as every dispersed case.
   status = prepare_case(*nominal.mission, &ws->nominal_prepared);
   if (!ok(status)) return result->status = status;
-  FlightInputs inputs;
-  inputs.program = nominal.program;
-  inputs.body_dynamics = nominal.body_dynamics;
-  status = fly_trajectory(*nominal.mission, ws->nominal_prepared, inputs, &ws->nominal);
+  status =
+      fly_trajectory(*nominal.mission, ws->nominal_prepared, dispersion_flight_inputs(nominal), &ws->nominal);
   if (ok(status)) {
     status = record_dispersed_trajectory(*nominal.mission, ws->nominal_prepared, ws->nominal, ws->nominal,
                                          nullptr, &result->nominal);

@@ -546,10 +546,8 @@ Status prepare_monte_carlo(const DispersionNominal& nominal, DispersionWorkspace
   ws->monte_carlo_edits.base = nullptr;  // the first sample copies the nominal's mission whole
   Status status = prepare_case(*nominal.mission, &ws->nominal_prepared);
   if (!ok(status)) return status;
-  FlightInputs inputs;
-  inputs.program = nominal.program;
-  inputs.body_dynamics = nominal.body_dynamics;
-  return fly_trajectory(*nominal.mission, ws->nominal_prepared, inputs, &ws->nominal);
+  return fly_trajectory(*nominal.mission, ws->nominal_prepared, dispersion_flight_inputs(nominal),
+                        &ws->nominal);
 }
 
 Status fly_monte_carlo_sample(const DispersionNominal& nominal, const DispersionData& data,

@@ -36,6 +36,52 @@ StateTrig::StateTrig(const StateVector& state)
       sin_lambda(std::sin(state[kStateLambda])), cos_lambda(std::cos(state[kStateLambda])),
       sin_tau(std::sin(state[kStateTau])), cos_tau(std::cos(state[kStateTau])) {}
 
+namespace {
+
+struct SineCosine {
+  double sin, cos;
+};
+
+// sin(a) and cos(a) from s0 = sin(a0), c0 = cos(a0) (StateTrig's addition-theorem constructor).
+inline SineCosine advanced_sine_cosine(double s0, double c0, double a0, double a) {
+  const double d = a - a0;
+  if (!(std::fabs(d) < kStateTrigAdditionLimitRad)) {  // a large step, or a NaN / infinite angle
+    return {std::sin(a), std::cos(a)};
+  }
+  // sin d = d (1 - d^2/6 (1 - d^2/20 (1 - d^2/42 (1 - d^2/72)))), 1 - cos d = d^2/2 (1 - d^2/12
+  // (1 - d^2/30 (1 - d^2/56 (1 - d^2/90)))): the Taylor series in nested (Horner) form; d = 0
+  // gives s0 and c0 exactly.
+  constexpr double k6 = 1.0 / 6.0, k20 = 1.0 / 20.0, k42 = 1.0 / 42.0, k72 = 1.0 / 72.0;
+  constexpr double k12 = 1.0 / 12.0, k30 = 1.0 / 30.0, k56 = 1.0 / 56.0, k90 = 1.0 / 90.0;
+  const double d2 = d * d;
+  const double sin_d = d * (1.0 - d2 * k6 * (1.0 - d2 * k20 * (1.0 - d2 * k42 * (1.0 - d2 * k72))));
+  const double one_minus_cos_d =
+      0.5 * d2 * (1.0 - d2 * k12 * (1.0 - d2 * k30 * (1.0 - d2 * k56 * (1.0 - d2 * k90))));
+  // The small corrections are added last, so the result keeps the accuracy of s0 and c0.
+  return {s0 + (c0 * sin_d - s0 * one_minus_cos_d), c0 - (s0 * sin_d + c0 * one_minus_cos_d)};
+}
+
+}  // namespace
+
+StateTrig::StateTrig(const StateTrig& base_trig, const StateVector& base, const StateVector& state) {
+  const SineCosine gamma =
+      advanced_sine_cosine(base_trig.sin_gamma, base_trig.cos_gamma, base[kStateGamma], state[kStateGamma]);
+  const SineCosine psi =
+      advanced_sine_cosine(base_trig.sin_psi, base_trig.cos_psi, base[kStatePsi], state[kStatePsi]);
+  const SineCosine lambda = advanced_sine_cosine(base_trig.sin_lambda, base_trig.cos_lambda,
+                                                 base[kStateLambda], state[kStateLambda]);
+  const SineCosine tau =
+      advanced_sine_cosine(base_trig.sin_tau, base_trig.cos_tau, base[kStateTau], state[kStateTau]);
+  sin_gamma = gamma.sin;
+  cos_gamma = gamma.cos;
+  sin_psi = psi.sin;
+  cos_psi = psi.cos;
+  sin_lambda = lambda.sin;
+  cos_lambda = lambda.cos;
+  sin_tau = tau.sin;
+  cos_tau = tau.cos;
+}
+
 Matrix3 inertial_to_local(const StateTrig& t) {
   // M = Rz(90 - psi) Ry(90 - lambda) Rz(tau); [A] = Rx(gamma) M.
   const double m00 = t.sin_psi * t.sin_lambda * t.cos_tau - t.cos_psi * t.sin_tau;

@@ -53,7 +53,7 @@ class Flight {
   };
   Status fly_step(StageFlight* flight, int i, StateVector* state);
   void integrate_step(const StageFlight& flight, const StepCommand& command, bool adams, double t,
-                      StateVector* state) const;
+                      const StateTrig& start_trig, StateVector* state) const;
   Status record_stage_end(StageFlight* flight, StageEvent* event, StateVector* state);
   void set_weights_after_jettison(int ended);
   void latch_segments(const StageContext& stage, double t, const StateVector& state);
@@ -368,7 +368,7 @@ Status Flight::fly_step(StageFlight* flight, int i, StateVector* state) {
   command.vertical_flight =
       !step.adams && !(mission_.launch.heading_hold_until_s > 0.0) && starts_near_vertical(*state);
   step.command = command;
-  integrate_step(*flight, command, step.adams, t, state);
+  integrate_step(*flight, command, step.adams, t, trig, state);
   flight->history.push(eval.derivative);
   if (!state->allFinite()) return Status::kNonFiniteState;
   return Status::kOk;
@@ -379,13 +379,18 @@ Status Flight::fly_step(StageFlight* flight, int i, StateVector* state) {
 // takes m RK4 substeps of step / m (the step's command, its linear theta_c over the whole step,
 // serves every substep; the vertical-flight choice and heading reference are the step's).
 void Flight::integrate_step(const StageFlight& flight, const StepCommand& command, bool adams, double t,
-                            StateVector* state) const {
+                            const StateTrig& start_trig, StateVector* state) const {
   const StageTimeline& line = *flight.line;
   const StateVector& start_derivative = flight.eval.derivative;
   const double heading_reference_rad = (*state)[kStatePsi];
+  // With sines_by_addition the step's evaluations take the state's sines and cosines from the step
+  // start's by the addition theorem (the angles move little within a step).
+  const StateVector start_state = *state;
+  const bool by_addition = inputs_.sines_by_addition;
   const auto derivative = [&](double time, const StateVector& x) {
     Evaluation e;
-    evaluate_flight(mission_, prepared_, flight.stage, command, time, x, 0.0, &e);
+    evaluate_flight(mission_, prepared_, flight.stage, command, time, x,
+                    by_addition ? StateTrig(start_trig, start_state, x) : StateTrig(x), 0.0, &e);
     return e.derivative;
   };
   const auto vertical = [&](double time, const StateVector& y) {

@@ -142,15 +142,14 @@ void run_impact_step(const Mission& mission, const OptimizationRun& run,
     return;
   }
   // Flown as run_dispersions() flies its nominal: the case prepared at its own payload, the
-  // per-point program, body dynamics in stage 1 when the 6D re-linearization ran.
+  // per-point program, body dynamics in stage 1 when the 6D re-linearization ran, the same flight
+  // numerics (dispersion_flight_inputs), so the Monte Carlo's casings start from the same points.
   step->prepared = std::make_unique<PreparedCase>();
   step->nominal = std::make_unique<Trajectory>();
   Status status = prepare_case(*nominal.mission, step->prepared.get());
   if (ok(status)) {
-    FlightInputs inputs;
-    inputs.program = nominal.program;
-    inputs.body_dynamics = nominal.body_dynamics;
-    status = fly_trajectory(*nominal.mission, *step->prepared, inputs, step->nominal.get());
+    status = fly_trajectory(*nominal.mission, *step->prepared, dispersion_flight_inputs(nominal),
+                            step->nominal.get());
   }
   if (!ok(status)) {
     step->data = std::move(data);

@@ -223,6 +223,11 @@ Status validate_dispersion_data(const DispersionData& data, int* fault_code);
 Status build_dispersed_case(const DispersionNominal& nominal, const PreparedCase& nominal_prepared,
                             const DispersionSource& source, DispersionWorkspace* workspace);
 
+// The flight inputs of every dispersion-analysis flight, nominal and dispersed: the nominal's
+// program and body dynamics, the state's sines inside a step by the addition theorem
+// (FlightInputs::sines_by_addition).
+FlightInputs dispersion_flight_inputs(const DispersionNominal& nominal);
+
 // Flies the case build_dispersed_case (or build_monte_carlo_case) left in the workspace about the
 // nominal, lean (only what the record reads, with the flight's air-relative alpha), and records
 // it into *out with record_dispersed_trajectory: the one flight of a dispersed trajectory, shared
