@@ -52,7 +52,15 @@ Status build_monte_carlo_case(const DispersionNominal& nominal, const PreparedCa
                               DispersionWorkspace* workspace);
 
 // Prepares and flies the nominal into workspace->nominal_prepared / ->nominal (once per workspace).
+// Without the data, every sample works out the half of its case its draws do not change itself.
 Status prepare_monte_carlo(const DispersionNominal& nominal, DispersionWorkspace* workspace);
+
+// The same, and that half of `data`'s samples once, for all of them (workspace->monte_carlo_plan,
+// MonteCarloPlan): build_monte_carlo_case() uses it for this nominal and this `data` object, bit for
+// bit the case it would build without it. Data changed in place needs prepare_monte_carlo() again
+// before its samples, as a changed nominal does.
+Status prepare_monte_carlo(const DispersionNominal& nominal, const DispersionData& data,
+                           DispersionWorkspace* workspace);
 
 // Builds and flies sample `sample`, recording it into *out (values and dispersions about
 // workspace->nominal, which prepare_monte_carlo() flew; `nominal_values` its record).
