@@ -208,7 +208,32 @@ struct ScaledWind {
   double scale = 0.0;
 };
 
-Status compose_wind(const ScaledWind* winds, int count, WindProfile* out) {
+// The c-independent part of two profiles' sum: the union grid and both profiles at its points.
+void plan_wind_blend(const WindProfile& a, const WindProfile& b, MonteCarloWindBlend* out) {
+  out->merged = false;
+  out->count = 0;
+  Grid<kMaxWindTablePoints> grid;
+  if (!merge_grid(&a.speed_ft_s, 1.0, &a.azimuth_rad, 1.0, &b.speed_ft_s, 1.0, &b.azimuth_rad, 1.0, &grid)) {
+    return;
+  }
+  const WindProfile* profiles[2] = {&a, &b};
+  for (int i = 0; i < grid.count; ++i) {
+    const double h = grid.x[i];
+    out->altitude_ft[i] = h;
+    for (int k = 0; k < 2; ++k) {
+      const WindProfile& w = *profiles[k];
+      out->speed_ft_s[k][i] = w.speed_ft_s(h);
+      const double azimuth = w.azimuth_rad(h);
+      out->cos_azimuth[k][i] = std::cos(azimuth);
+      out->sin_azimuth[k][i] = std::sin(azimuth);
+    }
+  }
+  out->count = grid.count;
+  out->merged = true;
+}
+
+// `pair`: the plan of winds[0] and winds[1] when count is 2.
+Status compose_wind(const ScaledWind* winds, int count, const MonteCarloWindBlend* pair, WindProfile* out) {
   out->speed_ft_s.clear();
   out->azimuth_rad.clear();
   if (count == 1) {
@@ -224,24 +249,16 @@ Status compose_wind(const ScaledWind* winds, int count, WindProfile* out) {
       if (!ok(status)) return status;
     }
   } else {
-    const WindProfile& a = *winds[0].profile;
-    const WindProfile& b = *winds[1].profile;
-    Grid<kMaxWindTablePoints> grid;
-    if (!merge_grid(&a.speed_ft_s, 1.0, &a.azimuth_rad, 1.0, &b.speed_ft_s, 1.0, &b.azimuth_rad, 1.0,
-                    &grid)) {
-      return Status::kTooManyTablePoints;
-    }
+    if (!pair->merged) return Status::kTooManyTablePoints;
     double previous = 0.0;
     bool have_previous = false;
-    for (int i = 0; i < grid.count; ++i) {
-      const double h = grid.x[i];
+    for (int i = 0; i < pair->count; ++i) {
+      const double h = pair->altitude_ft[i];
       double north = 0.0, east = 0.0;
       for (int k = 0; k < count; ++k) {
-        const WindProfile& w = *winds[k].profile;
-        const double speed = winds[k].scale * w.speed_ft_s(h);
-        const double azimuth = w.azimuth_rad(h);
-        north += speed * std::cos(azimuth);
-        east += speed * std::sin(azimuth);
+        const double speed = winds[k].scale * pair->speed_ft_s[k][i];
+        north += speed * pair->cos_azimuth[k][i];
+        east += speed * pair->sin_azimuth[k][i];
       }
       const double speed = std::hypot(north, east);
       double azimuth = (speed > 0.0) ? std::atan2(east, north) : previous;
@@ -329,6 +346,7 @@ void make_monte_carlo_plan(const DispersionNominal& nominal, const DispersionDat
   plan.data = nullptr;
   plan.thrust_count = 0;
   plan.moment_count = 0;
+  plan.wind_count = 0;
   for (int k = 0; k < data.count; ++k) {
     const DispersionSource& s = data.sources[k];
     MonteCarloPlan::Source& planned = plan.sources[k];
@@ -344,6 +362,7 @@ void make_monte_carlo_plan(const DispersionNominal& nominal, const DispersionDat
     planned.stage = dispersion_source_stage(s);
     if (!is_table_kind(info.kind)) continue;
     planned.partner = monte_carlo_low_partner(nominal, data, k);
+    if (info.kind == DispersionKind::kWind && plan.wind_count < 2) plan.wind_sources[plan.wind_count++] = k;
     for (int side = 0; side < (planned.partner >= 0 ? 2 : 1); ++side) {
       const DispersionSource& table = (side == 1) ? data.sources[planned.partner] : s;
       MonteCarloPlan::TableSide& t = planned.sides[side];
@@ -370,6 +389,18 @@ void make_monte_carlo_plan(const DispersionNominal& nominal, const DispersionDat
         t.blends[0] = plan.moment_count++;
         plan_moment_blend(nominal.mission->body_dynamics.pitching_moment_per_rad,
                           table.pitching_moment_per_rad, &plan.moment[t.blends[0]]);
+      }
+    }
+  }
+  // Two wind profiles: their sum for each table either may fly.
+  if (plan.wind_count == 2) {
+    const int k0 = plan.wind_sources[0];
+    const int k1 = plan.wind_sources[1];
+    for (int s0 = 0; s0 < (plan.sources[k0].partner >= 0 ? 2 : 1); ++s0) {
+      for (int s1 = 0; s1 < (plan.sources[k1].partner >= 0 ? 2 : 1); ++s1) {
+        const DispersionSource& a = data.sources[s0 == 1 ? plan.sources[k0].partner : k0];
+        const DispersionSource& b = data.sources[s1 == 1 ? plan.sources[k1].partner : k1];
+        plan_wind_blend(a.wind, b.wind, &plan.wind[s0][s1]);
       }
     }
   }
@@ -467,6 +498,7 @@ Status build_monte_carlo_case(const DispersionNominal& nominal, const PreparedCa
   bool thrust_changed = false;
   double drag_fraction = 0.0;
   ScaledWind winds[2];
+  int wind_sides[2] = {};
   int wind_count = 0;
   for (int k = 0; k < data.count; ++k) {
     const DispersionSource& s = data.sources[k];
@@ -546,6 +578,7 @@ Status build_monte_carlo_case(const DispersionNominal& nominal, const PreparedCa
                                  &m.body_dynamics.pitching_moment_per_rad);
           if (!ok(status)) return status;
         } else if (wind_count < 2) {
+          wind_sides[wind_count] = low ? 1 : 0;
           winds[wind_count++] = ScaledWind{&table.wind, c};
         }
         break;
@@ -554,7 +587,8 @@ Status build_monte_carlo_case(const DispersionNominal& nominal, const PreparedCa
     }
   }
   if (wind_count > 0) {
-    const Status status = compose_wind(winds, wind_count, &ws->wind);
+    const Status status =
+        compose_wind(winds, wind_count, &plan.wind[wind_sides[0]][wind_sides[1]], &ws->wind);
     if (!ok(status)) return status;
     p.wind = &ws->wind;
   }

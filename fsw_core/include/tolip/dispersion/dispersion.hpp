@@ -180,6 +180,17 @@ struct MonteCarloMomentBlend {
   double source_per_rad[kMaxAeroTablePoints] = {};
 };
 
+// Two wind profiles of a sample (the first two drawn of codes 36-38) summed as vectors: the
+// union altitude grid, each profile's speed and the cosine and sine of its azimuth at its points.
+struct MonteCarloWindBlend {
+  bool merged = false;
+  int count = 0;
+  double altitude_ft[kMaxWindTablePoints] = {};
+  double speed_ft_s[2][kMaxWindTablePoints] = {};
+  double cos_azimuth[2][kMaxWindTablePoints] = {};
+  double sin_azimuth[2][kMaxWindTablePoints] = {};
+};
+
 struct MonteCarloPlan {
   // What the plan was made for; null data: made for one build_monte_carlo_case only.
   const Mission* mission = nullptr;
@@ -207,6 +218,9 @@ struct MonteCarloPlan {
   MonteCarloThrustBlend thrust[kMaxMonteCarloThrustBlends];
   int moment_count = 0;
   MonteCarloMomentBlend moment[kMaxMonteCarloMomentBlends];
+  int wind_count = 0;  // drawn wind sources, at most the two a sample sums
+  int wind_sources[2] = {-1, -1};
+  MonteCarloWindBlend wind[2][2];        // by the side (own or low table) of each
   MonteCarloThrustBlend thrust_scratch;  // a blend worked out per sample
   MonteCarloMomentBlend moment_scratch;
 };
