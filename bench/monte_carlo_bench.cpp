@@ -73,7 +73,7 @@ BENCHMARK(BM_MonteCarloSamples)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->
 void BM_MonteCarloOneSample(benchmark::State& state) {
   const Prepared& p = prepared();
   auto ws = std::make_unique<tolip::DispersionWorkspace>();
-  if (!tolip::ok(tolip::prepare_monte_carlo(p.nominal, ws.get()))) std::exit(1);
+  if (!tolip::ok(tolip::prepare_monte_carlo(p.nominal, *p.data, ws.get()))) std::exit(1);
   tolip::DispersedTrajectory nominal_values;
   tolip::record_dispersed_trajectory(*p.nominal.mission, ws->nominal_prepared, ws->nominal, ws->nominal,
                                      nullptr, &nominal_values);
@@ -100,7 +100,7 @@ void BM_MonteCarloOneSampleWithImpacts(benchmark::State& state) {
   const Prepared& p = prepared();
   auto ws = std::make_unique<tolip::DispersionWorkspace>();
   auto impact_ws = std::make_unique<tolip::ImpactWorkspace>();
-  if (!tolip::ok(tolip::prepare_monte_carlo(p.nominal, ws.get()))) std::exit(1);
+  if (!tolip::ok(tolip::prepare_monte_carlo(p.nominal, *p.data, ws.get()))) std::exit(1);
   tolip::DispersedTrajectory nominal_values;
   tolip::record_dispersed_trajectory(*p.nominal.mission, ws->nominal_prepared, ws->nominal, ws->nominal,
                                      nullptr, &nominal_values);
@@ -143,7 +143,7 @@ BENCHMARK(BM_MonteCarloSamplesWithImpacts)->Arg(1)->Arg(2)->Unit(benchmark::kMil
 void BM_MonteCarloSampleCase(benchmark::State& state) {
   const Prepared& p = prepared();
   auto ws = std::make_unique<tolip::DispersionWorkspace>();
-  if (!tolip::ok(tolip::prepare_monte_carlo(p.nominal, ws.get()))) std::exit(1);
+  if (!tolip::ok(tolip::prepare_monte_carlo(p.nominal, *p.data, ws.get()))) std::exit(1);
   std::uint64_t sample = 0;
   for (auto _ : state) {
     const tolip::Status status = tolip::build_monte_carlo_case(p.nominal, ws->nominal_prepared, *p.data, 1,
@@ -156,7 +156,7 @@ BENCHMARK(BM_MonteCarloSampleCase)->Unit(benchmark::kMicrosecond);
 void BM_MonteCarloSampleFlight(benchmark::State& state) {
   const Prepared& p = prepared();
   auto ws = std::make_unique<tolip::DispersionWorkspace>();
-  if (!tolip::ok(tolip::prepare_monte_carlo(p.nominal, ws.get()))) std::exit(1);
+  if (!tolip::ok(tolip::prepare_monte_carlo(p.nominal, *p.data, ws.get()))) std::exit(1);
   if (!tolip::ok(tolip::build_monte_carlo_case(p.nominal, ws->nominal_prepared, *p.data, 1, 0, ws.get())))
     std::exit(1);
   tolip::FlightInputs inputs;

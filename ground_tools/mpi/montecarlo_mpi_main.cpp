@@ -128,7 +128,7 @@ bool fly_on_ranks(const MonteCarloJob& job, MonteCarloSamples* samples) {
   const int count = job.count;
   auto ws = std::make_unique<DispersionWorkspace>();
   DispersedTrajectory nominal_values;
-  Status status = prepare_monte_carlo(*job.nominal, ws.get());
+  Status status = prepare_monte_carlo(*job.nominal, *job.data, ws.get());
   if (ok(status)) {
     status = record_dispersed_trajectory(*job.nominal->mission, ws->nominal_prepared, ws->nominal,
                                          ws->nominal, nullptr, &nominal_values);

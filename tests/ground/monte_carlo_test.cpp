@@ -5,6 +5,7 @@
 // the same sources (Sec. 15 three-sigma / 3). Nominal: the reference mission (tests/reference).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -261,6 +262,109 @@ TEST(MonteCarlo, TableSourcesSigmaAgreesWithTheRssSigmaInTheLinearRegime) {
         << i;
     EXPECT_EQ(std::memcmp(one.samples[i].values, mc.samples[i].values, sizeof one.samples[i].values), 0) << i;
   }
+}
+
+// The Monte Carlo plan (prepare_monte_carlo with the data, MonteCarloPlan): samples built and
+// flown with it are bit for bit those of a workspace without one, every table and weight of the
+// case and every recorded value; low partners (a negative draw flies the low table) included. Data
+// changed in place and prepared again are planned again; another data object is not flown with
+// the plan of the first.
+TEST(MonteCarlo, PlannedSamplesEqualUnplannedSamplesBitForBit) {
+  auto c = make_table_case();
+  // Low partners of the stage 2 thrust and of C_M_alpha: their high tables scaled back.
+  DispersionSource& low_thrust = add_dispersion_source(&c->data, 4);
+  const StageData& n2 = c->mission.vehicle.stages[stage_index(2)];
+  for (int i = 0; i < n2.vacuum_thrust_lbf.size(); ++i) {
+    ASSERT_EQ(low_thrust.vacuum_thrust_lbf.append(n2.vacuum_thrust_lbf.x(i) * 1.002,
+                                                  n2.vacuum_thrust_lbf.y(i) / 1.002),
+              Status::kOk);
+    ASSERT_EQ(low_thrust.consumable_weight_lb.append(n2.consumable_weight_lb.x(i) * 1.002,
+                                                     n2.consumable_weight_lb.y(i)),
+              Status::kOk);
+  }
+  ASSERT_EQ(low_thrust.vacuum_thrust_lbf.finalize(), Status::kOk);
+  ASSERT_EQ(low_thrust.consumable_weight_lb.finalize(), Status::kOk);
+  DispersionSource& low_moment = add_dispersion_source(&c->data, 20);
+  const AeroTable& cm_n = c->mission.body_dynamics.pitching_moment_per_rad;
+  for (int i = 0; i < cm_n.size(); ++i)
+    ASSERT_EQ(low_moment.pitching_moment_per_rad.append(cm_n.x(i), cm_n.y(i) * 0.99), Status::kOk);
+  ASSERT_EQ(low_moment.pitching_moment_per_rad.finalize(), Status::kOk);
+  // add_dispersion_source appends: back into increasing code order.
+  std::sort(c->data.sources, c->data.sources + c->data.count,
+            [](const DispersionSource& a, const DispersionSource& b) { return a.code < b.code; });
+  const auto source_of = [&](int code) -> DispersionSource& {
+    int k = 0;
+    while (k + 1 < c->data.count && c->data.sources[k].code != code) ++k;
+    return c->data.sources[k];
+  };
+  ASSERT_EQ(source_of(4).code, 4);
+  ASSERT_EQ(c->data.sources[c->data.count - 1].code, 38);
+  auto planned = std::make_unique<DispersionWorkspace>();
+  auto plain = std::make_unique<DispersionWorkspace>();
+  ASSERT_EQ(prepare_monte_carlo(c->nominal, c->data, planned.get()), Status::kOk);
+  ASSERT_EQ(prepare_monte_carlo(c->nominal, plain.get()), Status::kOk);
+  auto nominal_values = std::make_unique<DispersedTrajectory>();
+  ASSERT_EQ(record_dispersed_trajectory(c->mission, plain->nominal_prepared, plain->nominal, plain->nominal,
+                                        nullptr, nominal_values.get()),
+            Status::kOk);
+  auto a = std::make_unique<DispersedTrajectory>();
+  auto b = std::make_unique<DispersedTrajectory>();
+  const auto same_samples = [&](std::uint64_t seed) {
+    int low_draws = 0;
+    for (std::uint64_t sample = 0; sample < 8; ++sample) {
+      SCOPED_TRACE(sample);
+      ASSERT_EQ(
+          fly_monte_carlo_sample(c->nominal, c->data, seed, sample, *nominal_values, planned.get(), a.get()),
+          Status::kOk);
+      ASSERT_EQ(
+          fly_monte_carlo_sample(c->nominal, c->data, seed, sample, *nominal_values, plain.get(), b.get()),
+          Status::kOk);
+      EXPECT_EQ(std::memcmp(a->values, b->values, sizeof a->values), 0);
+      EXPECT_EQ(std::memcmp(a->orbit, b->orbit, sizeof a->orbit), 0);
+      EXPECT_EQ(a->max_qbar_alpha_lbf_rad_ft2, b->max_qbar_alpha_lbf_rad_ft2);
+      for (int k = 0; k < kMaxStages; ++k) {
+        const StageData& x = planned->mission.vehicle.stages[k];
+        const StageData& y = plain->mission.vehicle.stages[k];
+        EXPECT_EQ(x.duration_s, y.duration_s) << k;
+        ASSERT_EQ(x.vacuum_thrust_lbf.size(), y.vacuum_thrust_lbf.size()) << k;
+        for (int i = 0; i < x.vacuum_thrust_lbf.size(); ++i) {
+          EXPECT_EQ(x.vacuum_thrust_lbf.x(i), y.vacuum_thrust_lbf.x(i)) << k << " " << i;
+          EXPECT_EQ(x.vacuum_thrust_lbf.y(i), y.vacuum_thrust_lbf.y(i)) << k << " " << i;
+          EXPECT_EQ(x.consumable_weight_lb.y(i), y.consumable_weight_lb.y(i)) << k << " " << i;
+        }
+      }
+      const AeroTable& x = planned->mission.body_dynamics.pitching_moment_per_rad;
+      const AeroTable& y = plain->mission.body_dynamics.pitching_moment_per_rad;
+      ASSERT_EQ(x.size(), y.size());
+      for (int i = 0; i < x.size(); ++i) EXPECT_EQ(x.y(i), y.y(i)) << i;
+      ASSERT_NE(planned->perturbation.wind, nullptr);
+      const WindProfile& wx = *planned->perturbation.wind;
+      const WindProfile& wy = *plain->perturbation.wind;
+      ASSERT_EQ(wx.speed_ft_s.size(), wy.speed_ft_s.size());
+      for (int i = 0; i < wx.speed_ft_s.size(); ++i) {
+        EXPECT_EQ(wx.speed_ft_s.y(i), wy.speed_ft_s.y(i)) << i;
+        EXPECT_EQ(wx.azimuth_rad.y(i), wy.azimuth_rad.y(i)) << i;
+      }
+      low_draws += counter_normal(seed, sample, 3u) < 0.0 ? 1 : 0;
+    }
+    EXPECT_GT(low_draws, 0);  // the low partner flew
+    EXPECT_LT(low_draws, 8);
+  };
+  same_samples(99);
+  // The low stage-2 table changed in place, planned again.
+  ThrustTable& low_table = source_of(4).vacuum_thrust_lbf;
+  for (int i = 0; i < low_table.size(); ++i) low_table.set_y(i, low_table.y(i) * 0.999);
+  ASSERT_EQ(low_table.finalize(), Status::kOk);
+  ASSERT_EQ(prepare_monte_carlo(c->nominal, c->data, planned.get()), Status::kOk);
+  same_samples(99);
+  // Another data object: its own case, not the plan's.
+  DispersionData wind_only;
+  wind_only.count = 1;
+  wind_only.sources[0] = c->data.sources[c->data.count - 1];  // code 38
+  ASSERT_EQ(build_monte_carlo_case(c->nominal, planned->nominal_prepared, wind_only, 5, 1, planned.get()),
+            Status::kOk);
+  EXPECT_EQ(planned->mission.vehicle.stages[stage_index(2)].duration_s, n2.duration_s);
+  EXPECT_EQ(planned->mission.body_dynamics.pitching_moment_per_rad.y(0), cm_n.y(0));
 }
 
 }  // namespace

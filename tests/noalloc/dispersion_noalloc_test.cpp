@@ -40,7 +40,7 @@ struct SampleStatuses {
 SampleStatuses fly_nominal_and_sample(const DispersionNominal& nominal, const DispersionData& data,
                                       std::uint64_t sample_index, DispersionWorkspace* workspace,
                                       DispersedTrajectory* nominal_values, DispersedTrajectory* sample) {
-  Status status = prepare_monte_carlo(nominal, workspace);
+  Status status = prepare_monte_carlo(nominal, data, workspace);
   if (ok(status)) {
     status = record_dispersed_trajectory(*nominal.mission, workspace->nominal_prepared, workspace->nominal,
                                          workspace->nominal, nullptr, nominal_values);

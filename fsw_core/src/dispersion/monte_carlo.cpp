@@ -102,27 +102,51 @@ bool merge_grid(const A* a, double sa, const B* b, double sb, const C* c, double
 // Codes 1-8: the stage's thrust and consumable-weight tables and burn time blended between the
 // nominal's (c = 0) and the source's (c = 1) in normalized stage time tau = t / burn time:
 // b = b_n + c (b_s - b_n), T(tau b) = T_n(tau b_n) + c (T_s(tau b_s) - T_n(tau b_n)), W alike, on
-// the union of both grids (exactly the source's tables at c = 1, linear in c).
-Status blend_thrust(const StageData& nominal, const ThrustTable& source_thrust,
-                    const WeightTable& source_weight, double c, StageData* out) {
+// the union of both grids (exactly the source's tables at c = 1, linear in c). The union grid and
+// the four tables at its points do not depend on c: plan_thrust_blend() works them out once per
+// Monte Carlo (MonteCarloPlan), apply_thrust_blend() blends them with a sample's c.
+void plan_thrust_blend(const StageData& nominal, const ThrustTable& source_thrust,
+                       const WeightTable& source_weight, int slot, MonteCarloThrustBlend* out) {
   const double bn = nominal.duration_s;
   const double bs = source_thrust.last_x();
-  const double b = bn + c * (bs - bn);
-  if (!(bn > 0.0) || !(bs > 0.0) || !(b > 0.0)) return Status::kMonteCarloBurnTimeNotPositive;
+  out->slot = slot;
+  out->nominal_burn_s = bn;
+  out->source_burn_s = bs;
+  out->merged = false;
+  out->count = 0;
+  if (!(bn > 0.0) || !(bs > 0.0)) return;  // every c fails on the burn time first
   Grid<kMaxThrustPoints> grid;
   if (!merge_grid(&nominal.vacuum_thrust_lbf, bn, &nominal.consumable_weight_lb, bn, &source_thrust, bs,
                   &source_weight, bs, &grid)) {
-    return Status::kTooManyTablePoints;
+    return;
   }
-  out->vacuum_thrust_lbf.clear();
-  out->consumable_weight_lb.clear();
   int hint_tn = -1, hint_ts = -1, hint_wn = -1, hint_ws = -1;  // tau increases: hinted look-ups
   for (int i = 0; i < grid.count; ++i) {
     const double tau = grid.x[i];
-    const double tn = nominal.vacuum_thrust_lbf(tau * bn, &hint_tn);
-    const double ts = source_thrust(tau * bs, &hint_ts);
-    const double wn = nominal.consumable_weight_lb(tau * bn, &hint_wn);
-    const double ws = source_weight(tau * bs, &hint_ws);
+    out->tau[i] = tau;
+    out->nominal_thrust_lbf[i] = nominal.vacuum_thrust_lbf(tau * bn, &hint_tn);
+    out->source_thrust_lbf[i] = source_thrust(tau * bs, &hint_ts);
+    out->nominal_weight_lb[i] = nominal.consumable_weight_lb(tau * bn, &hint_wn);
+    out->source_weight_lb[i] = source_weight(tau * bs, &hint_ws);
+  }
+  out->count = grid.count;
+  out->merged = true;
+}
+
+Status apply_thrust_blend(const MonteCarloThrustBlend& blend, double c, StageData* out) {
+  const double bn = blend.nominal_burn_s;
+  const double bs = blend.source_burn_s;
+  const double b = bn + c * (bs - bn);
+  if (!(bn > 0.0) || !(bs > 0.0) || !(b > 0.0)) return Status::kMonteCarloBurnTimeNotPositive;
+  if (!blend.merged) return Status::kTooManyTablePoints;
+  out->vacuum_thrust_lbf.clear();
+  out->consumable_weight_lb.clear();
+  for (int i = 0; i < blend.count; ++i) {
+    const double tau = blend.tau[i];
+    const double tn = blend.nominal_thrust_lbf[i];
+    const double ts = blend.source_thrust_lbf[i];
+    const double wn = blend.nominal_weight_lb[i];
+    const double ws = blend.source_weight_lb[i];
     const double thrust = tn + c * (ts - tn);
     const double weight = wn + c * (ws - wn);
     if (!(thrust >= 0.0)) return Status::kMonteCarloThrustNegative;
@@ -140,18 +164,32 @@ Status blend_thrust(const StageData& nominal, const ThrustTable& source_thrust,
   return Status::kOk;
 }
 
-// Codes 19-20: C_M_alpha(M) = C_n(M) + c (C_s(M) - C_n(M)) on the union of the Mach grids.
-Status blend_pitching_moment(const AeroTable& nominal, const AeroTable& source, double c, AeroTable* out) {
+// Codes 19-20: C_M_alpha(M) = C_n(M) + c (C_s(M) - C_n(M)) on the union of the Mach grids (the
+// grid and both tables at it once per Monte Carlo, as the thrust).
+void plan_moment_blend(const AeroTable& nominal, const AeroTable& source, MonteCarloMomentBlend* out) {
+  out->merged = false;
+  out->count = 0;
   Grid<kMaxAeroTablePoints> grid;
   if (!merge_grid(&nominal, 1.0, &source, 1.0, static_cast<const AeroTable*>(nullptr), 1.0,
                   static_cast<const AeroTable*>(nullptr), 1.0, &grid)) {
-    return Status::kTooManyTablePoints;
+    return;
   }
-  AeroTable blended;
   for (int i = 0; i < grid.count; ++i) {
     const double mach = grid.x[i];
-    const double n = nominal.empty() ? 0.0 : nominal(mach);
-    const Status status = blended.append(mach, n + c * (source(mach) - n));
+    out->mach[i] = mach;
+    out->nominal_per_rad[i] = nominal.empty() ? 0.0 : nominal(mach);
+    out->source_per_rad[i] = source(mach);
+  }
+  out->count = grid.count;
+  out->merged = true;
+}
+
+Status apply_moment_blend(const MonteCarloMomentBlend& blend, double c, AeroTable* out) {
+  if (!blend.merged) return Status::kTooManyTablePoints;
+  AeroTable blended;
+  for (int i = 0; i < blend.count; ++i) {
+    const double n = blend.nominal_per_rad[i];
+    const Status status = blended.append(blend.mach[i], n + c * (blend.source_per_rad[i] - n));
     if (!ok(status)) return status;
   }
   const Status status = blended.finalize();
@@ -170,7 +208,32 @@ struct ScaledWind {
   double scale = 0.0;
 };
 
-Status compose_wind(const ScaledWind* winds, int count, WindProfile* out) {
+// The c-independent part of two profiles' sum: the union grid and both profiles at its points.
+void plan_wind_blend(const WindProfile& a, const WindProfile& b, MonteCarloWindBlend* out) {
+  out->merged = false;
+  out->count = 0;
+  Grid<kMaxWindTablePoints> grid;
+  if (!merge_grid(&a.speed_ft_s, 1.0, &a.azimuth_rad, 1.0, &b.speed_ft_s, 1.0, &b.azimuth_rad, 1.0, &grid)) {
+    return;
+  }
+  const WindProfile* profiles[2] = {&a, &b};
+  for (int i = 0; i < grid.count; ++i) {
+    const double h = grid.x[i];
+    out->altitude_ft[i] = h;
+    for (int k = 0; k < 2; ++k) {
+      const WindProfile& w = *profiles[k];
+      out->speed_ft_s[k][i] = w.speed_ft_s(h);
+      const double azimuth = w.azimuth_rad(h);
+      out->cos_azimuth[k][i] = std::cos(azimuth);
+      out->sin_azimuth[k][i] = std::sin(azimuth);
+    }
+  }
+  out->count = grid.count;
+  out->merged = true;
+}
+
+// `pair`: the plan of winds[0] and winds[1] when count is 2.
+Status compose_wind(const ScaledWind* winds, int count, const MonteCarloWindBlend* pair, WindProfile* out) {
   out->speed_ft_s.clear();
   out->azimuth_rad.clear();
   if (count == 1) {
@@ -186,24 +249,16 @@ Status compose_wind(const ScaledWind* winds, int count, WindProfile* out) {
       if (!ok(status)) return status;
     }
   } else {
-    const WindProfile& a = *winds[0].profile;
-    const WindProfile& b = *winds[1].profile;
-    Grid<kMaxWindTablePoints> grid;
-    if (!merge_grid(&a.speed_ft_s, 1.0, &a.azimuth_rad, 1.0, &b.speed_ft_s, 1.0, &b.azimuth_rad, 1.0,
-                    &grid)) {
-      return Status::kTooManyTablePoints;
-    }
+    if (!pair->merged) return Status::kTooManyTablePoints;
     double previous = 0.0;
     bool have_previous = false;
-    for (int i = 0; i < grid.count; ++i) {
-      const double h = grid.x[i];
+    for (int i = 0; i < pair->count; ++i) {
+      const double h = pair->altitude_ft[i];
       double north = 0.0, east = 0.0;
       for (int k = 0; k < count; ++k) {
-        const WindProfile& w = *winds[k].profile;
-        const double speed = winds[k].scale * w.speed_ft_s(h);
-        const double azimuth = w.azimuth_rad(h);
-        north += speed * std::cos(azimuth);
-        east += speed * std::sin(azimuth);
+        const double speed = winds[k].scale * pair->speed_ft_s[k][i];
+        north += speed * pair->cos_azimuth[k][i];
+        east += speed * pair->sin_azimuth[k][i];
       }
       const double speed = std::hypot(north, east);
       double azimuth = (speed > 0.0) ? std::atan2(east, north) : previous;
@@ -280,6 +335,109 @@ double counter_normal(std::uint64_t seed, std::uint64_t sample, std::uint32_t st
 
 namespace {
 
+// The plan of `data` about the nominal (MonteCarloPlan) into ws->monte_carlo_plan, keyed by
+// nothing (the caller keys it). ws->unstacked is its scratch.
+void make_monte_carlo_plan(const DispersionNominal& nominal, const DispersionData& data,
+                           DispersionWorkspace* ws) {
+  MonteCarloPlan& plan = ws->monte_carlo_plan;
+  plan.mission = nominal.mission;
+  plan.program = nominal.program;
+  plan.body_dynamics = nominal.body_dynamics;
+  plan.data = nullptr;
+  plan.thrust_count = 0;
+  plan.moment_count = 0;
+  plan.wind_count = 0;
+  for (int k = 0; k < data.count; ++k) {
+    const DispersionSource& s = data.sources[k];
+    MonteCarloPlan::Source& planned = plan.sources[k];
+    planned = MonteCarloPlan::Source{};
+    DispersionCodeInfo info;
+    planned.known = dispersion_code_info(s.code, &info);
+    if (!planned.known) continue;
+    planned.drawn = monte_carlo_draws_source(nominal, data, k);
+    if (!planned.drawn) continue;
+    planned.kind = info.kind;
+    planned.yaw = info.plane == DispersionPlane::kYaw;
+    planned.leader = family_leader(s.code);
+    planned.stage = dispersion_source_stage(s);
+    if (!is_table_kind(info.kind)) continue;
+    planned.partner = monte_carlo_low_partner(nominal, data, k);
+    if (info.kind == DispersionKind::kWind && plan.wind_count < 2) plan.wind_sources[plan.wind_count++] = k;
+    for (int side = 0; side < (planned.partner >= 0 ? 2 : 1); ++side) {
+      const DispersionSource& table = (side == 1) ? data.sources[planned.partner] : s;
+      MonteCarloPlan::TableSide& t = planned.sides[side];
+      if (info.kind == DispersionKind::kVacuumThrust) {
+        // The stage's own tables, or stages 4 and 5 of stacked tables (page 22-30).
+        t.stacked = table.stacked_stage4_5_tables;
+        if (t.stacked) {
+          t.status = unstack_stage4_5_tables(table, &ws->unstacked[0], &ws->unstacked[1]);
+          if (!ok(t.status)) continue;
+        }
+        t.parts = t.stacked ? 2 : 1;
+        for (int part = 0; part < t.parts; ++part) {
+          t.slots[part] = stage_index(t.stacked ? 4 + part : dispersion_source_stage(table));
+          if (plan.thrust_count >= kMaxMonteCarloThrustBlends) continue;  // per sample (blends[part] = -1)
+          t.blends[part] = plan.thrust_count++;
+          plan_thrust_blend(nominal.mission->vehicle.stages[t.slots[part]],
+                            t.stacked ? ws->unstacked[part].vacuum_thrust_lbf : table.vacuum_thrust_lbf,
+                            t.stacked ? ws->unstacked[part].consumable_weight_lb : table.consumable_weight_lb,
+                            t.slots[part], &plan.thrust[t.blends[part]]);
+        }
+      } else if (info.kind == DispersionKind::kPitchingMoment) {
+        t.parts = 1;
+        if (plan.moment_count >= kMaxMonteCarloMomentBlends) continue;
+        t.blends[0] = plan.moment_count++;
+        plan_moment_blend(nominal.mission->body_dynamics.pitching_moment_per_rad,
+                          table.pitching_moment_per_rad, &plan.moment[t.blends[0]]);
+      }
+    }
+  }
+  // Two wind profiles: their sum for each table either may fly.
+  if (plan.wind_count == 2) {
+    const int k0 = plan.wind_sources[0];
+    const int k1 = plan.wind_sources[1];
+    for (int s0 = 0; s0 < (plan.sources[k0].partner >= 0 ? 2 : 1); ++s0) {
+      for (int s1 = 0; s1 < (plan.sources[k1].partner >= 0 ? 2 : 1); ++s1) {
+        const DispersionSource& a = data.sources[s0 == 1 ? plan.sources[k0].partner : k0];
+        const DispersionSource& b = data.sources[s1 == 1 ? plan.sources[k1].partner : k1];
+        plan_wind_blend(a.wind, b.wind, &plan.wind[s0][s1]);
+      }
+    }
+  }
+}
+
+// The plan of this sample: the workspace's when it was made for this nominal and data, else one
+// made now for this sample alone.
+const MonteCarloPlan& plan_of(const DispersionNominal& nominal, const DispersionData& data,
+                              DispersionWorkspace* ws) {
+  const MonteCarloPlan& plan = ws->monte_carlo_plan;
+  if (plan.data == &data && plan.mission == nominal.mission && plan.program == nominal.program &&
+      plan.body_dynamics == nominal.body_dynamics) {
+    return plan;
+  }
+  make_monte_carlo_plan(nominal, data, ws);
+  return plan;
+}
+
+// Part `part` of a thrust table side blended with c into the sample's mission: the plan's blend,
+// or (repeated codes beyond the plan's blends) one worked out now.
+Status blend_thrust_part(const DispersionNominal& nominal, const DispersionSource& table,
+                         const MonteCarloPlan::TableSide& side, int part, double c, DispersionWorkspace* ws) {
+  MonteCarloPlan& plan = ws->monte_carlo_plan;
+  const int slot = side.slots[part];
+  StageData* out = &ws->mission.vehicle.stages[slot];
+  if (side.blends[part] >= 0) return apply_thrust_blend(plan.thrust[side.blends[part]], c, out);
+  if (side.stacked) {
+    const Status status = unstack_stage4_5_tables(table, &ws->unstacked[0], &ws->unstacked[1]);
+    if (!ok(status)) return status;
+  }
+  plan_thrust_blend(nominal.mission->vehicle.stages[slot],
+                    side.stacked ? ws->unstacked[part].vacuum_thrust_lbf : table.vacuum_thrust_lbf,
+                    side.stacked ? ws->unstacked[part].consumable_weight_lb : table.consumable_weight_lb,
+                    slot, &plan.thrust_scratch);
+  return apply_thrust_blend(plan.thrust_scratch, c, out);
+}
+
 // The sample's mission starts as the nominal: copied whole when the workspace holds no copy of this
 // nominal (DispersionWorkspace::MonteCarloEdits), else only the stage weights and the azimuth are
 // reset here; the tables the last sample changed are rebuilt by this one's draws or restored by
@@ -327,6 +485,7 @@ void restore_unchanged_tables(const Mission& nominal, const bool* thrust_drawn, 
 Status build_monte_carlo_case(const DispersionNominal& nominal, const PreparedCase& nominal_prepared,
                               const DispersionData& data, std::uint64_t seed, std::uint64_t sample,
                               DispersionWorkspace* ws) {
+  const MonteCarloPlan& plan = plan_of(nominal, data, ws);
   begin_sample_mission(*nominal.mission, ws);
   DispersionWorkspace::MonteCarloEdits& edits = ws->monte_carlo_edits;
   bool thrust_drawn[kMaxStages] = {};
@@ -339,18 +498,18 @@ Status build_monte_carlo_case(const DispersionNominal& nominal, const PreparedCa
   bool thrust_changed = false;
   double drag_fraction = 0.0;
   ScaledWind winds[2];
+  int wind_sides[2] = {};
   int wind_count = 0;
   for (int k = 0; k < data.count; ++k) {
     const DispersionSource& s = data.sources[k];
-    DispersionCodeInfo info;
-    if (!dispersion_code_info(s.code, &info)) return Status::kDispersionCodeInvalid;
-    if (!monte_carlo_draws_source(nominal, data, k)) continue;
-    const int leader = family_leader(s.code);
+    const MonteCarloPlan::Source& planned = plan.sources[k];
+    if (!planned.known) return Status::kDispersionCodeInvalid;
+    if (!planned.drawn) continue;
     const double z =
-        counter_normal(seed, sample, static_cast<std::uint32_t>(leader)) / 3.0;  // 3 sigma -> 1 sigma
-    const int stage = dispersion_source_stage(s);
-    const bool yaw = info.plane == DispersionPlane::kYaw;
-    switch (info.kind) {
+        counter_normal(seed, sample, static_cast<std::uint32_t>(planned.leader)) / 3.0;  // 3 sigma -> 1 sigma
+    const int stage = planned.stage;
+    const bool yaw = planned.yaw;
+    switch (planned.kind) {
       case DispersionKind::kWeightIncrement:
         m.vehicle.stages[stage_index(stage)].jettison_weight_lb += z * s.weight_increment_lb;
         prepares = true;
@@ -385,26 +544,20 @@ Status build_monte_carlo_case(const DispersionNominal& nominal, const PreparedCa
       case DispersionKind::kWind: {
         // A table source: the high table for a positive draw, the pair's low table (when given)
         // for a negative one, else the same table mirrored (a negative scale).
-        const int partner = monte_carlo_low_partner(nominal, data, k);
-        const DispersionSource& table = (partner >= 0 && z < 0.0) ? data.sources[partner] : s;
-        const double c = (partner >= 0 && z < 0.0) ? -z : z;
-        if (info.kind == DispersionKind::kVacuumThrust) {
+        const int partner = planned.partner;
+        const bool low = partner >= 0 && z < 0.0;
+        const DispersionSource& table = low ? data.sources[partner] : s;
+        const double c = low ? -z : z;
+        const MonteCarloPlan::TableSide& side = planned.sides[low ? 1 : 0];
+        if (planned.kind == DispersionKind::kVacuumThrust) {
           // The stage's own tables, or stages 4 and 5 of stacked tables (page 22-30), each blended
           // with the same draw.
-          const bool stacked = table.stacked_stage4_5_tables;
-          if (stacked) {
-            const Status status = unstack_stage4_5_tables(table, &ws->unstacked[0], &ws->unstacked[1]);
-            if (!ok(status)) return status;
-          }
-          for (int part = 0; part < (stacked ? 2 : 1); ++part) {
-            const int slot = stage_index(stacked ? 4 + part : dispersion_source_stage(table));
+          if (!ok(side.status)) return side.status;
+          for (int part = 0; part < side.parts; ++part) {
+            const int slot = side.slots[part];
             edits.thrust_blended[slot] = true;  // before the blend: a failed one leaves it changed
             thrust_drawn[slot] = true;
-            const Status status =
-                blend_thrust(nominal.mission->vehicle.stages[slot],
-                             stacked ? ws->unstacked[part].vacuum_thrust_lbf : table.vacuum_thrust_lbf,
-                             stacked ? ws->unstacked[part].consumable_weight_lb : table.consumable_weight_lb,
-                             c, &m.vehicle.stages[slot]);
+            const Status status = blend_thrust_part(nominal, table, side, part, c, ws);
             if (!ok(status)) return status;
             if (slot == 0 && !(m.vehicle.stages[0].duration_s > m.launch.liftoff_duration_s)) {
               return Status::kLiftoffLongerThanStage1;
@@ -412,14 +565,20 @@ Status build_monte_carlo_case(const DispersionNominal& nominal, const PreparedCa
           }
           prepares = true;
           thrust_changed = true;
-        } else if (info.kind == DispersionKind::kPitchingMoment) {
+        } else if (planned.kind == DispersionKind::kPitchingMoment) {
           edits.pitching_moment_blended = true;
           pitching_moment_drawn = true;
-          const Status status = blend_pitching_moment(nominal.mission->body_dynamics.pitching_moment_per_rad,
-                                                      table.pitching_moment_per_rad, c,
-                                                      &m.body_dynamics.pitching_moment_per_rad);
+          MonteCarloPlan& mutable_plan = ws->monte_carlo_plan;
+          if (side.blends[0] < 0) {
+            plan_moment_blend(nominal.mission->body_dynamics.pitching_moment_per_rad,
+                              table.pitching_moment_per_rad, &mutable_plan.moment_scratch);
+          }
+          const Status status =
+              apply_moment_blend(side.blends[0] >= 0 ? plan.moment[side.blends[0]] : plan.moment_scratch, c,
+                                 &m.body_dynamics.pitching_moment_per_rad);
           if (!ok(status)) return status;
         } else if (wind_count < 2) {
+          wind_sides[wind_count] = low ? 1 : 0;
           winds[wind_count++] = ScaledWind{&table.wind, c};
         }
         break;
@@ -428,7 +587,8 @@ Status build_monte_carlo_case(const DispersionNominal& nominal, const PreparedCa
     }
   }
   if (wind_count > 0) {
-    const Status status = compose_wind(winds, wind_count, &ws->wind);
+    const Status status =
+        compose_wind(winds, wind_count, &plan.wind[wind_sides[0]][wind_sides[1]], &ws->wind);
     if (!ok(status)) return status;
     p.wind = &ws->wind;
   }
@@ -544,10 +704,20 @@ Status check_monte_carlo_data(const DispersionNominal& nominal, const Dispersion
 Status prepare_monte_carlo(const DispersionNominal& nominal, DispersionWorkspace* ws) {
   if (nominal.mission == nullptr) return Status::kDispersionNominalNotPrepared;
   ws->monte_carlo_edits.base = nullptr;  // the first sample copies the nominal's mission whole
+  ws->monte_carlo_plan.data = nullptr;   // no plan: each sample makes its own
   Status status = prepare_case(*nominal.mission, &ws->nominal_prepared);
   if (!ok(status)) return status;
   return fly_trajectory(*nominal.mission, ws->nominal_prepared, dispersion_flight_inputs(nominal),
                         &ws->nominal);
+}
+
+Status prepare_monte_carlo(const DispersionNominal& nominal, const DispersionData& data,
+                           DispersionWorkspace* ws) {
+  const Status status = prepare_monte_carlo(nominal, ws);
+  if (!ok(status)) return status;
+  make_monte_carlo_plan(nominal, data, ws);
+  ws->monte_carlo_plan.data = &data;
+  return Status::kOk;
 }
 
 Status fly_monte_carlo_sample(const DispersionNominal& nominal, const DispersionData& data,

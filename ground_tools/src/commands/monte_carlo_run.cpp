@@ -24,7 +24,7 @@ Status run_monte_carlo(const DispersionNominal& nominal, const DispersionData& d
   for (int t = 0; t < workers; ++t) {
     workspaces.push_back(std::make_unique<DispersionWorkspace>());
     impact_workspaces.push_back(std::make_unique<ImpactWorkspace>());
-    const Status status = prepare_monte_carlo(nominal, workspaces.back().get());
+    const Status status = prepare_monte_carlo(nominal, data, workspaces.back().get());
     if (!ok(status)) return out->status = status;
   }
   DispersionWorkspace& first = *workspaces.front();

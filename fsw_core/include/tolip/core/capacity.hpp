@@ -59,5 +59,13 @@ inline constexpr int kMaxModifiedThrustPoints = kMaxPoweredSteps + 2;
 inline constexpr int kGainScheduleStages = 3;
 inline constexpr int kMaxGainSchedulePointsPerStage = 8;
 inline constexpr int kMaxGainSchedulePoints = kGainScheduleStages * kMaxGainSchedulePointsPerStage;
+// The Monte Carlo plan (dispersion.hpp, MonteCarloPlan): the thrust blends a sample can fly, once
+// per Monte Carlo. Codes 1-8 are four high/low families (stages 1-3 and 4 or 5), each with its high
+// and its low table, each table one stage or, stacked (block 55), stages 4 and 5; the pitching
+// moment (19-20) is one family with two tables. Data with more (repeated codes) blend the rest per
+// sample.
+inline constexpr int kMonteCarloThrustFamilies = 4;
+inline constexpr int kMaxMonteCarloThrustBlends = kMonteCarloThrustFamilies * 2 * 2;
+inline constexpr int kMaxMonteCarloMomentBlends = 2;
 
 }  // namespace tolip

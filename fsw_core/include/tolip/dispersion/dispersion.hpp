@@ -153,6 +153,78 @@ struct DispersionResult {
   ThreeSigmaSummary three_sigma;
 };
 
+// The half of a Monte Carlo sample's case that does not depend on its draws, worked out once per
+// Monte Carlo (prepare_monte_carlo with the data; build_monte_carlo_case): per source the code
+// table's entry, whether it is drawn, its leader, stage and low partner; per thrust table (codes
+// 1-8) and C_M_alpha table (19-20) the union grid with the nominal's and the table's values at its
+// points, so a sample only blends them with its c, in the same operations as before. The statuses
+// a sample would meet before its first c-dependent step are kept and returned where it meets them.
+struct MonteCarloThrustBlend {  // one table blended into one stage
+  int slot = 0;                 // the stage's index
+  double nominal_burn_s = 0.0;  // the nominal's burn time; the table's is its last time
+  double source_burn_s = 0.0;
+  bool merged = false;  // the union grid fits the table (else kTooManyTablePoints)
+  int count = 0;        // normalized times tau of the union grid, and the four tables at them
+  double tau[kMaxThrustPoints] = {};
+  double nominal_thrust_lbf[kMaxThrustPoints] = {};
+  double source_thrust_lbf[kMaxThrustPoints] = {};
+  double nominal_weight_lb[kMaxThrustPoints] = {};
+  double source_weight_lb[kMaxThrustPoints] = {};
+};
+
+struct MonteCarloMomentBlend {
+  bool merged = false;
+  int count = 0;
+  double mach[kMaxAeroTablePoints] = {};
+  double nominal_per_rad[kMaxAeroTablePoints] = {};
+  double source_per_rad[kMaxAeroTablePoints] = {};
+};
+
+// Two wind profiles of a sample (the first two drawn of codes 36-38) summed as vectors: the
+// union altitude grid, each profile's speed and the cosine and sine of its azimuth at its points.
+struct MonteCarloWindBlend {
+  bool merged = false;
+  int count = 0;
+  double altitude_ft[kMaxWindTablePoints] = {};
+  double speed_ft_s[2][kMaxWindTablePoints] = {};
+  double cos_azimuth[2][kMaxWindTablePoints] = {};
+  double sin_azimuth[2][kMaxWindTablePoints] = {};
+};
+
+struct MonteCarloPlan {
+  // What the plan was made for; null data: made for one build_monte_carlo_case only.
+  const Mission* mission = nullptr;
+  const ControlProgram* program = nullptr;
+  bool body_dynamics = false;
+  const DispersionData* data = nullptr;
+  struct TableSide {              // a table source's own table (0) or its low partner's (1)
+    Status status = Status::kOk;  // stacked tables that do not unstack
+    bool stacked = false;
+    int parts = 0;             // stages blended: 1, or 2 (stacked: stages 4 and 5)
+    int slots[2] = {};         // their indices
+    int blends[2] = {-1, -1};  // into thrust / moment; -1: worked out per sample (repeated codes)
+  };
+  struct Source {
+    bool known = false;  // dispersion_code_info() knows the code
+    bool drawn = false;  // monte_carlo_draws_source()
+    DispersionKind kind = DispersionKind::kNominal;
+    bool yaw = false;
+    int leader = 0;    // the code whose draw it takes
+    int stage = 0;     // dispersion_source_stage()
+    int partner = -1;  // monte_carlo_low_partner() of a table source
+    TableSide sides[2];
+  } sources[kMaxDispersionSources];
+  int thrust_count = 0;
+  MonteCarloThrustBlend thrust[kMaxMonteCarloThrustBlends];
+  int moment_count = 0;
+  MonteCarloMomentBlend moment[kMaxMonteCarloMomentBlends];
+  int wind_count = 0;  // drawn wind sources, at most the two a sample sums
+  int wind_sources[2] = {-1, -1};
+  MonteCarloWindBlend wind[2][2];        // by the side (own or low table) of each
+  MonteCarloThrustBlend thrust_scratch;  // a blend worked out per sample
+  MonteCarloMomentBlend moment_scratch;
+};
+
 // Scratch of the analysis (large: keep it static or on the heap).
 struct DispersionWorkspace {
   PreparedCase nominal_prepared;
@@ -179,6 +251,8 @@ struct DispersionWorkspace {
     bool drag_scaled = false;              // every stage's drag table (17-18)
     bool pitching_moment_blended = false;  // C_M_alpha (19-20)
   } monte_carlo_edits;
+  // The Monte Carlo's plan (MonteCarloPlan), made by prepare_monte_carlo() with the data.
+  MonteCarloPlan monte_carlo_plan;
 };
 
 // Where stacked stage-4/5 tables (codes 7-8 with block 55) split: entries [0, stage4_last] are

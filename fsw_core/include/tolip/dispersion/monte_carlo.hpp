@@ -46,13 +46,23 @@ Status check_monte_carlo_data(const DispersionNominal& nominal, const Dispersion
 // (monte_carlo_low_partner) or the mirror. `nominal_prepared` is the nominal's prepare_case().
 // The workspace keeps its copy of the nominal's mission from one sample to the next and resets only
 // what a sample changes (DispersionWorkspace::MonteCarloEdits): a nominal mission changed in place
-// needs prepare_monte_carlo() again before its samples.
+// needs prepare_monte_carlo() again before its samples. What the case takes from `data` but not from
+// the draws comes from workspace->monte_carlo_plan when prepare_monte_carlo() made it for this
+// nominal and this `data` object, else it is worked out for this call (the same case, bit for bit).
 Status build_monte_carlo_case(const DispersionNominal& nominal, const PreparedCase& nominal_prepared,
                               const DispersionData& data, std::uint64_t seed, std::uint64_t sample,
                               DispersionWorkspace* workspace);
 
 // Prepares and flies the nominal into workspace->nominal_prepared / ->nominal (once per workspace).
+// Without the data, every sample works out the half of its case its draws do not change itself.
 Status prepare_monte_carlo(const DispersionNominal& nominal, DispersionWorkspace* workspace);
+
+// The same, and that half of `data`'s samples once, for all of them (workspace->monte_carlo_plan,
+// MonteCarloPlan): build_monte_carlo_case() uses it for this nominal and this `data` object, bit for
+// bit the case it would build without it. Data changed in place needs prepare_monte_carlo() again
+// before its samples, as a changed nominal does.
+Status prepare_monte_carlo(const DispersionNominal& nominal, const DispersionData& data,
+                           DispersionWorkspace* workspace);
 
 // Builds and flies sample `sample`, recording it into *out (values and dispersions about
 // workspace->nominal, which prepare_monte_carlo() flew; `nominal_values` its record).
