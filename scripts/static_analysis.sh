@@ -34,6 +34,11 @@ mapfile -t files < <(find "$sources" -name '*.cpp' | sort)
 [[ ${#files[@]} -gt 0 ]] || { echo "static_analysis.sh: no source under $sources" >&2; exit 2; }
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
+# clang-tidy reads the compile database without GCC's link-time optimization flags (the fat LTO
+# objects of a host Release build, CMakeLists.txt TOLIP_LTO): clang 14 rejects -ffat-lto-objects.
+mkdir -p "$scratch/db"
+sed -E 's/ -flto(=[a-z0-9]+)?//g; s/ -f(no-)?fat-lto-objects//g' "$build/compile_commands.json" \
+  > "$scratch/db/compile_commands.json"
 tidy_count=0
 cppcheck_count=0
 
@@ -42,7 +47,7 @@ if [[ "$only" != cppcheck ]]; then
   # gets the flags of the nearest file in it).
   printf '%s\n' "${files[@]}" | xargs -P 2 -I{} sh -c \
     '"$1" -p "$2" --quiet --config-file="$3/.clang-tidy" "$4" 2>/dev/null' \
-    _ "$tidy" "$build" "$root" {} > "$scratch/tidy.txt" || true
+    _ "$tidy" "$scratch/db" "$root" {} > "$scratch/tidy.txt" || true
   grep -E '^[^ ]+:[0-9]+:[0-9]+: (warning|error): ' "$scratch/tidy.txt" \
     | sed -E "s#^$root/##; s#^([^:]+:[0-9]+):[0-9]+: (warning|error): (.*) \[([^],]+)[^]]*\]\$#\1: clang-tidy: \4: \3#" \
     | sort -u > "$scratch/tidy-findings.txt" || true

@@ -245,6 +245,36 @@ TEST(Sec19Integration, StateTrigByAdditionAgreesWithLongDoubleWithinTwoUlps) {
   RecordProperty("worst_library_ulps", std::to_string(worst_library_ulps));
 }
 
+// Along a flight the anchor's values never drift: 20,000 small steps move every angle by several
+// radians (re-anchoring many times), and each value stays within 2 ulps of sinl/cosl, because each
+// is one addition from a library value, not a chain of them.
+TEST(Sec19Integration, StateTrigAnchorDoesNotAccumulateErrorAlongAFlight) {
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const int angles[4] = {kStateGamma, kStatePsi, kStateLambda, kStateTau};
+  StateTrigAnchor anchor;
+  StateVector x = random_state(rng);
+  const double rates[4] = {3e-3, -2e-3, 1e-3, 4e-3};  // rad per step (tau: 80 rad in all), jittered
+  double worst_ulps = 0.0, worst_abs = 0.0;
+  for (int step = 0; step < 20000; ++step) {
+    for (int k = 0; k < 4; ++k) x[angles[k]] += rates[k] * (1.0 + 0.5 * unit(rng));
+    const StateTrig t = anchor.at(x);
+    const double values[8] = {t.sin_gamma,  t.cos_gamma,  t.sin_psi, t.cos_psi,
+                              t.sin_lambda, t.cos_lambda, t.sin_tau, t.cos_tau};
+    for (int k = 0; k < 8; ++k) {
+      const long double a = static_cast<long double>(x[angles[k / 2]]);
+      const long double reference = (k % 2 == 0) ? sinl(a) : cosl(a);
+      worst_abs = std::max(worst_abs,
+                           static_cast<double>(std::fabs(static_cast<long double>(values[k]) - reference)));
+      if (std::fabs(reference) >= 1.0L / 16.0L)
+        worst_ulps = std::max(worst_ulps, ulps_from(reference, values[k]));
+    }
+  }
+  EXPECT_LT(worst_ulps, 2.0);
+  EXPECT_LT(worst_abs, 1.2e-16);
+  RecordProperty("worst_ulps", std::to_string(worst_ulps));
+}
+
 // A step at or beyond the limit, and an angle that is not finite, are the library's values exactly.
 TEST(Sec19Integration, StateTrigByAdditionFallsBackToTheLibraryForLargeStepsAndNaN) {
   std::mt19937 rng(12);

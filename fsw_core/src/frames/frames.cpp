@@ -38,40 +38,82 @@ StateTrig::StateTrig(const StateVector& state)
 
 namespace {
 
-struct SineCosine {
-  double sin, cos;
+// sin d and 1 - cos d for |d| < kStateTrigAdditionLimitRad: sin d = d (1 - d^2/6 (1 - d^2/20 (1 -
+// d^2/42 (1 - d^2/72)))), 1 - cos d = d^2/2 (1 - d^2/12 (1 - d^2/30 (1 - d^2/56 (1 - d^2/90)))), the
+// Taylor series in nested (Horner) form; d = 0 gives 0 and 0. Inline, so that StateTrig's four
+// angles below are one loop the compiler can run two at a time (the same operations on each
+// angle either way: the values do not depend on it).
+struct SmallAngle {
+  double sin_d, one_minus_cos_d;
 };
-
-// sin(a) and cos(a) from s0 = sin(a0), c0 = cos(a0) (StateTrig's addition-theorem constructor).
-inline SineCosine advanced_sine_cosine(double s0, double c0, double a0, double a) {
-  const double d = a - a0;
-  if (!(std::fabs(d) < kStateTrigAdditionLimitRad)) {  // a large step, or a NaN / infinite angle
-    return {std::sin(a), std::cos(a)};
-  }
-  // sin d = d (1 - d^2/6 (1 - d^2/20 (1 - d^2/42 (1 - d^2/72)))), 1 - cos d = d^2/2 (1 - d^2/12
-  // (1 - d^2/30 (1 - d^2/56 (1 - d^2/90)))): the Taylor series in nested (Horner) form; d = 0
-  // gives s0 and c0 exactly.
+inline SmallAngle small_angle(double d) {
   constexpr double k6 = 1.0 / 6.0, k20 = 1.0 / 20.0, k42 = 1.0 / 42.0, k72 = 1.0 / 72.0;
   constexpr double k12 = 1.0 / 12.0, k30 = 1.0 / 30.0, k56 = 1.0 / 56.0, k90 = 1.0 / 90.0;
   const double d2 = d * d;
-  const double sin_d = d * (1.0 - d2 * k6 * (1.0 - d2 * k20 * (1.0 - d2 * k42 * (1.0 - d2 * k72))));
-  const double one_minus_cos_d =
-      0.5 * d2 * (1.0 - d2 * k12 * (1.0 - d2 * k30 * (1.0 - d2 * k56 * (1.0 - d2 * k90))));
-  // The small corrections are added last, so the result keeps the accuracy of s0 and c0.
-  return {s0 + (c0 * sin_d - s0 * one_minus_cos_d), c0 - (s0 * sin_d + c0 * one_minus_cos_d)};
+  return {d * (1.0 - d2 * k6 * (1.0 - d2 * k20 * (1.0 - d2 * k42 * (1.0 - d2 * k72)))),
+          0.5 * d2 * (1.0 - d2 * k12 * (1.0 - d2 * k30 * (1.0 - d2 * k56 * (1.0 - d2 * k90))))};
+}
+
+constexpr int kStateAngles[4] = {kStateGamma, kStatePsi, kStateLambda, kStateTau};
+
+// StateTrig at `state` from `base`'s by the addition theorem, every angle within the limit of
+// base's (the callers check it). The small corrections are added last, so the result keeps the
+// accuracy of the base's sines and cosines.
+StateTrig added_state_trig(const StateTrig& b, const StateVector& base, const StateVector& state) {
+  const double s0[4] = {b.sin_gamma, b.sin_psi, b.sin_lambda, b.sin_tau};
+  const double c0[4] = {b.cos_gamma, b.cos_psi, b.cos_lambda, b.cos_tau};
+  double s[4];
+  double c[4];
+  for (int k = 0; k < 4; ++k) {
+    const SmallAngle d = small_angle(state[kStateAngles[k]] - base[kStateAngles[k]]);
+    s[k] = s0[k] + (c0[k] * d.sin_d - s0[k] * d.one_minus_cos_d);
+    c[k] = c0[k] - (s0[k] * d.sin_d + c0[k] * d.one_minus_cos_d);
+  }
+  StateTrig t = b;
+  t.sin_gamma = s[0];
+  t.cos_gamma = c[0];
+  t.sin_psi = s[1];
+  t.cos_psi = c[1];
+  t.sin_lambda = s[2];
+  t.cos_lambda = c[2];
+  t.sin_tau = s[3];
+  t.cos_tau = c[3];
+  return t;
+}
+
+bool angles_within_limit(const StateVector& base, const StateVector& state) {
+  bool near = true;
+  for (int i : kStateAngles) near = near && std::fabs(state[i] - base[i]) < kStateTrigAdditionLimitRad;
+  return near;  // false for a NaN or infinite angle too
 }
 
 }  // namespace
 
-StateTrig::StateTrig(const StateTrig& base_trig, const StateVector& base, const StateVector& state) {
-  const SineCosine gamma =
-      advanced_sine_cosine(base_trig.sin_gamma, base_trig.cos_gamma, base[kStateGamma], state[kStateGamma]);
+SineCosine sine_cosine_by_addition(double s0, double c0, double a0, double a) {
+  const double d = a - a0;
+  if (!(std::fabs(d) < kStateTrigAdditionLimitRad)) {  // a large step, or a NaN / infinite angle
+    return {std::sin(a), std::cos(a)};
+  }
+  const SmallAngle small = small_angle(d);
+  return {s0 + (c0 * small.sin_d - s0 * small.one_minus_cos_d),
+          c0 - (s0 * small.sin_d + c0 * small.one_minus_cos_d)};
+}
+
+StateTrig::StateTrig(const StateTrig& base_trig, const StateVector& base, const StateVector& state)
+    : StateTrig(base_trig) {
+  if (angles_within_limit(base, state)) {
+    *this = added_state_trig(base_trig, base, state);
+    return;
+  }
+  // Some angle moved too far: each angle by itself (the library's where it did).
+  const SineCosine gamma = sine_cosine_by_addition(base_trig.sin_gamma, base_trig.cos_gamma,
+                                                   base[kStateGamma], state[kStateGamma]);
   const SineCosine psi =
-      advanced_sine_cosine(base_trig.sin_psi, base_trig.cos_psi, base[kStatePsi], state[kStatePsi]);
-  const SineCosine lambda = advanced_sine_cosine(base_trig.sin_lambda, base_trig.cos_lambda,
-                                                 base[kStateLambda], state[kStateLambda]);
+      sine_cosine_by_addition(base_trig.sin_psi, base_trig.cos_psi, base[kStatePsi], state[kStatePsi]);
+  const SineCosine lambda = sine_cosine_by_addition(base_trig.sin_lambda, base_trig.cos_lambda,
+                                                    base[kStateLambda], state[kStateLambda]);
   const SineCosine tau =
-      advanced_sine_cosine(base_trig.sin_tau, base_trig.cos_tau, base[kStateTau], state[kStateTau]);
+      sine_cosine_by_addition(base_trig.sin_tau, base_trig.cos_tau, base[kStateTau], state[kStateTau]);
   sin_gamma = gamma.sin;
   cos_gamma = gamma.cos;
   sin_psi = psi.sin;
@@ -80,6 +122,14 @@ StateTrig::StateTrig(const StateTrig& base_trig, const StateVector& base, const 
   cos_lambda = lambda.cos;
   sin_tau = tau.sin;
   cos_tau = tau.cos;
+}
+
+StateTrig StateTrigAnchor::at(const StateVector& state) {
+  if (anchored_ && angles_within_limit(anchor_, state)) return added_state_trig(anchor_trig_, anchor_, state);
+  anchored_ = true;
+  anchor_ = state;
+  anchor_trig_ = StateTrig(state);
+  return anchor_trig_;
 }
 
 Matrix3 inertial_to_local(const StateTrig& t) {

@@ -199,8 +199,22 @@ void thrust_axis_with_kept_sines(EvaluationScratch* scratch, const Matrix3& plat
   if (!scratch->has_theta || !(scratch->theta_rad == out->theta_rad)) {
     scratch->has_theta = true;
     scratch->theta_rad = out->theta_rad;
-    scratch->cos_theta = std::cos(out->theta_rad);
-    scratch->sin_theta = std::sin(out->theta_rad);
+    if (scratch->sines_by_addition) {
+      if (!scratch->has_theta_anchor ||
+          !(std::fabs(out->theta_rad - scratch->theta_anchor_rad) < kStateTrigAdditionLimitRad)) {
+        scratch->has_theta_anchor = true;
+        scratch->theta_anchor_rad = out->theta_rad;
+        scratch->sin_theta_anchor = std::sin(out->theta_rad);
+        scratch->cos_theta_anchor = std::cos(out->theta_rad);
+      }
+      const SineCosine theta = sine_cosine_by_addition(scratch->sin_theta_anchor, scratch->cos_theta_anchor,
+                                                       scratch->theta_anchor_rad, out->theta_rad);
+      scratch->sin_theta = theta.sin;
+      scratch->cos_theta = theta.cos;
+    } else {
+      scratch->cos_theta = std::cos(out->theta_rad);
+      scratch->sin_theta = std::sin(out->theta_rad);
+    }
   }
   if (out->chi_rad == 0.0) {
     out->thrust_axis_local = platform_to_local * Vector3(0.0, scratch->cos_theta, scratch->sin_theta);

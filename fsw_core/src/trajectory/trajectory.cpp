@@ -50,10 +50,13 @@ class Flight {
     double last_theta_step_rad = 0.0;  // theta_end - theta_start of the last step flown
     DerivativeHistory<StateVector> history;
     Evaluation eval;
+    StateTrigAnchor trig_anchor;  // with FlightInputs::sines_by_addition: the stage's anchor
   };
   Status fly_step(StageFlight* flight, int i, StateVector* state);
-  void integrate_step(const StageFlight& flight, const StepCommand& command, bool adams, double t,
-                      const StateTrig& start_trig, StateVector* state) const;
+  // StateTrig(state), or with sines_by_addition from the stage's anchor.
+  StateTrig state_trig(StageFlight* flight, const StateVector& state) const;
+  void integrate_step(StageFlight* flight, const StepCommand& command, bool adams, double t,
+                      StateVector* state) const;
   Status record_stage_end(StageFlight* flight, StageEvent* event, StateVector* state);
   void set_weights_after_jettison(int ended);
   void latch_segments(const StageContext& stage, double t, const StateVector& state);
@@ -190,7 +193,7 @@ void Flight::perturb_command(const StageContext& stage, double t, StepCommand* c
   command->chi_rad += perturbation->chi_offset_rad[slot];
 }
 
-// `trig` is StateTrig(state), shared with the point's evaluation.
+// `trig` is the point's evaluation's StateTrig (StateTrig(state) unless sines_by_addition).
 Status Flight::record(const StageContext& stage, double t, const StateVector& state, const StateTrig& trig,
                       const StepCommand& command, const Evaluation& eval) {
   if (trajectory_->point_count >= kMaxTrajectoryPoints) return Status::kTrajectoryStorageFull;
@@ -238,11 +241,14 @@ Status Flight::record(const StageContext& stage, double t, const StateVector& st
           ? stagnation_heating_rate(mission_.misc.nose_radius_ft, eval.density_slug_ft3,
                                     mission_.atmosphere.base_density_slug_ft3[0], state[kStateV])
           : 0.0;
+  // What a point stores is of its state alone: with sines_by_addition (which lean points skip) the
+  // library's sines of the state, as record_dispersed_trajectory() recomputes the downrange.
+  const StateTrig point_trig = inputs_.sines_by_addition ? StateTrig(state) : trig;
   p.downrange_rad =
-      downrange_angle_rad(sin_launch_latitude_, cos_launch_latitude_, trig.sin_lambda, trig.cos_lambda,
-                          p.earth_longitude_rad - mission_.launch.longitude_rad);
-  p.inertial = inertial_velocity(constants, state, trig.sin_gamma, trig.cos_gamma, trig.sin_psi, trig.cos_psi,
-                                 trig.cos_lambda);
+      downrange_angle_rad(sin_launch_latitude_, cos_launch_latitude_, point_trig.sin_lambda,
+                          point_trig.cos_lambda, p.earth_longitude_rad - mission_.launch.longitude_rad);
+  p.inertial = inertial_velocity(constants, state, point_trig.sin_gamma, point_trig.cos_gamma,
+                                 point_trig.sin_psi, point_trig.cos_psi, point_trig.cos_lambda);
   // The heating integral by the trapezoidal rule over the stored points.
   if (trajectory_->point_count > 0) {
     const TrajectoryPoint& previous = trajectory_->points[trajectory_->point_count - 1];
@@ -320,6 +326,7 @@ Status Flight::fly_stage(int slot, StateVector* state) {
   flight.stage = make_stage_context(mission_, prepared_, line);
   flight.stage.perturbation = inputs_.perturbation;
   EvaluationScratch scratch;
+  scratch.sines_by_addition = inputs_.sines_by_addition;
   flight.stage.scratch = &scratch;
   // Body dynamics act in stage 1 and the coast after it only (Sec. 11).
   flight.body_dynamics = inputs_.body_dynamics && (line.code == 1 || line.code == 6);
@@ -348,7 +355,7 @@ Status Flight::fly_step(StageFlight* flight, int i, StateVector* state) {
   StepCommand command = command_at(stage, point, t, line.step_s, *state);
   perturb_command(stage, t, &command);
   command.body_dynamics = flight->body_dynamics;
-  const StateTrig trig(*state);
+  const StateTrig trig = state_trig(flight, *state);
   evaluate_flight(mission_, prepared_, stage, command, t, *state, trig, 0.0, &eval);
   if (!eval.derivative.allFinite()) return Status::kNonFiniteState;  // nothing NaN is stored
   const Status status = record(stage, t, *state, trig, command, eval);
@@ -368,7 +375,7 @@ Status Flight::fly_step(StageFlight* flight, int i, StateVector* state) {
   command.vertical_flight =
       !step.adams && !(mission_.launch.heading_hold_until_s > 0.0) && starts_near_vertical(*state);
   step.command = command;
-  integrate_step(*flight, command, step.adams, t, trig, state);
+  integrate_step(flight, command, step.adams, t, state);
   flight->history.push(eval.derivative);
   if (!state->allFinite()) return Status::kNonFiniteState;
   return Status::kOk;
@@ -378,19 +385,20 @@ Status Flight::fly_step(StageFlight* flight, int i, StateVector* state) {
 // Adams-Bashforth from the derivative history. A 6D forward trajectory with DA6D(12-15) = m > 1
 // takes m RK4 substeps of step / m (the step's command, its linear theta_c over the whole step,
 // serves every substep; the vertical-flight choice and heading reference are the step's).
-void Flight::integrate_step(const StageFlight& flight, const StepCommand& command, bool adams, double t,
-                            const StateTrig& start_trig, StateVector* state) const {
+StateTrig Flight::state_trig(StageFlight* flight, const StateVector& state) const {
+  return inputs_.sines_by_addition ? flight->trig_anchor.at(state) : StateTrig(state);
+}
+
+void Flight::integrate_step(StageFlight* stage_flight, const StepCommand& command, bool adams, double t,
+                            StateVector* state) const {
+  const StageFlight& flight = *stage_flight;
   const StageTimeline& line = *flight.line;
   const StateVector& start_derivative = flight.eval.derivative;
   const double heading_reference_rad = (*state)[kStatePsi];
-  // With sines_by_addition the step's evaluations take the state's sines and cosines from the step
-  // start's by the addition theorem (the angles move little within a step).
-  const StateVector start_state = *state;
-  const bool by_addition = inputs_.sines_by_addition;
   const auto derivative = [&](double time, const StateVector& x) {
     Evaluation e;
-    evaluate_flight(mission_, prepared_, flight.stage, command, time, x,
-                    by_addition ? StateTrig(start_trig, start_state, x) : StateTrig(x), 0.0, &e);
+    evaluate_flight(mission_, prepared_, flight.stage, command, time, x, state_trig(stage_flight, x), 0.0,
+                    &e);
     return e.derivative;
   };
   const auto vertical = [&](double time, const StateVector& y) {
@@ -439,7 +447,7 @@ Status Flight::record_stage_end(StageFlight* flight, StageEvent* event, StateVec
                                                   : command.theta_start_rad;
   }
   command.body_dynamics = flight->body_dynamics;
-  const StateTrig trig(*state);
+  const StateTrig trig = state_trig(flight, *state);
   evaluate_flight(mission_, prepared_, stage, command, t_end, *state, trig, 0.0, &eval);
   if (!eval.derivative.allFinite()) return Status::kNonFiniteState;
   const Status status = record(stage, t_end, *state, trig, command, eval);

@@ -23,8 +23,8 @@ Matrix3 frame_rotation_z(double angle_rad);
 struct StateTrig {
   double sin_gamma, cos_gamma, sin_psi, cos_psi, sin_lambda, cos_lambda, sin_tau, cos_tau;
   explicit StateTrig(const StateVector& state);
-  // The same at `state` from the sines and cosines at a nearby `base` state (an RK4 step's start,
-  // whose StateTrig is `base_trig`), by the addition theorem: sin(a0 + d) = sin a0 + (cos a0 sin d -
+  // The same at `state` from the sines and cosines at a nearby `base` state (whose StateTrig is
+  // `base_trig`), by the addition theorem: sin(a0 + d) = sin a0 + (cos a0 sin d -
   // sin a0 (1 - cos d)) with d = a - a0 and sin d, 1 - cos d from their Taylor series, which for
   // |d| < kStateTrigAdditionLimitRad costs a few multiplications instead of a sincos call and
   // agrees with it within 2 ulps (docs/theory/trajectory.md). An angle that moved by more, or is
@@ -35,6 +35,31 @@ struct StateTrig {
 // The largest angle step the addition-theorem form takes: there the truncated series (d^9 for the
 // sine, d^10 for 1 - cos) err by below 1e-19 relative.
 inline constexpr double kStateTrigAdditionLimitRad = 1.0 / 16.0;
+
+struct SineCosine {
+  double sin, cos;
+};
+
+// sin(a) and cos(a) from s0 = sin(a0), c0 = cos(a0) by the addition theorem (as StateTrig's
+// second constructor forms each angle's); the library's when |a - a0| >= kStateTrigAdditionLimitRad
+// or a is not finite.
+SineCosine sine_cosine_by_addition(double s0, double c0, double a0, double a);
+
+// The state's sines and cosines along a flight by the addition theorem from an anchor, a state
+// whose StateTrig the library evaluated. Every value is one addition from the anchor's, so no error
+// accumulates (each is within 2 ulps of the library's); the anchor moves to the state itself,
+// evaluated by the library, whenever one of its angles is kStateTrigAdditionLimitRad or more from
+// the anchor's, or is not finite. A dispersion flight keeps one per stage
+// (FlightInputs::sines_by_addition; docs/theory/trajectory.md).
+class StateTrigAnchor {
+ public:
+  StateTrig at(const StateVector& state);
+
+ private:
+  bool anchored_ = false;
+  StateVector anchor_ = StateVector::Zero();
+  StateTrig anchor_trig_ = StateTrig(StateVector::Zero());
+};
 
 // [A]: inertial -> local at the state's gamma, psi, lambda and inertial longitude tau.
 Matrix3 inertial_to_local(const StateVector& state);
