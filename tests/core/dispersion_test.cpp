@@ -41,7 +41,7 @@ struct Fixture {
 // bit for bit.
 Status fly_by_hand(const Mission& mission, const PreparedCase& prepared, FlightInputs inputs,
                    Trajectory* out) {
-  inputs.sines_by_addition = true;
+  inputs.trig_by_series = true;
   return fly_trajectory(mission, prepared, inputs, out);
 }
 Status fly_by_hand(const Mission& mission, const PreparedCase& prepared, const ControlProgram& program,

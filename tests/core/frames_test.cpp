@@ -275,6 +275,59 @@ TEST(Sec19Integration, StateTrigAnchorDoesNotAccumulateErrorAlongAFlight) {
   RecordProperty("worst_ulps", std::to_string(worst_ulps));
 }
 
+// atan2_by_series (a dispersion flight's small angles of attack) against atan2l in long double over
+// random small angles of every size up to the limit: within 1.5 ulps (the quotient's rounding and
+// the sum's); beyond the limit, for x <= 0 and for NaN it is the library's atan2 exactly.
+TEST(Sec19Integration, Atan2BySeriesAgreesWithLongDoubleForSmallAnglesAndFallsBack) {
+  std::mt19937 rng(14);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  double worst_ulps = 0.0, worst_library_ulps = 0.0;
+  for (int trial = 0; trial < 100000; ++trial) {
+    const double x = 1e-3 + 1e3 * std::fabs(unit(rng));
+    const double y = x / 16.0 * unit(rng) * std::pow(10.0, -6.0 * std::fabs(unit(rng)));
+    const long double reference = atan2l(static_cast<long double>(y), static_cast<long double>(x));
+    worst_ulps = std::max(worst_ulps, ulps_from(reference, atan2_by_series(y, x)));
+    worst_library_ulps = std::max(worst_library_ulps, ulps_from(reference, std::atan2(y, x)));
+  }
+  EXPECT_LT(worst_ulps, 1.5) << "library: " << worst_library_ulps;
+  RecordProperty("worst_ulps", std::to_string(worst_ulps));
+  for (const double y : {1.0 / 16.0, -0.5, 3.0}) EXPECT_EQ(atan2_by_series(y, 1.0), std::atan2(y, 1.0));
+  EXPECT_EQ(atan2_by_series(0.01, -1.0), std::atan2(0.01, -1.0));
+  EXPECT_EQ(atan2_by_series(0.0, 0.0), std::atan2(0.0, 0.0));
+  EXPECT_TRUE(std::isnan(atan2_by_series(std::nan(""), 1.0)));
+  EXPECT_TRUE(std::isnan(atan2_by_series(0.01, std::nan(""))));
+  EXPECT_EQ(atan2_by_series(0.0, 2.0), 0.0);
+  EXPECT_TRUE(std::signbit(atan2_by_series(-0.0, 2.0)));
+}
+
+// The four angles taken at once (two at a time, StateTrig's array form) are bit for bit the one-angle
+// form, sine_cosine_by_addition, of each.
+TEST(Sec19Integration, StateTrigByAdditionOfFourAnglesAtOnceEqualsEachAngleAlone) {
+  std::mt19937 rng(15);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (int trial = 0; trial < 10000; ++trial) {
+    const StateVector base = random_state(rng);
+    StateVector x = base;
+    for (int i : {kStateGamma, kStatePsi, kStateLambda, kStateTau})
+      x[i] += kStateTrigAdditionLimitRad * unit(rng);
+    const StateTrig b(base);
+    const StateTrig four(b, base, x);
+    const SineCosine g = sine_cosine_by_addition(b.sin_gamma, b.cos_gamma, base[kStateGamma], x[kStateGamma]);
+    const SineCosine p = sine_cosine_by_addition(b.sin_psi, b.cos_psi, base[kStatePsi], x[kStatePsi]);
+    const SineCosine l =
+        sine_cosine_by_addition(b.sin_lambda, b.cos_lambda, base[kStateLambda], x[kStateLambda]);
+    const SineCosine t = sine_cosine_by_addition(b.sin_tau, b.cos_tau, base[kStateTau], x[kStateTau]);
+    ASSERT_EQ(four.sin_gamma, g.sin);
+    ASSERT_EQ(four.cos_gamma, g.cos);
+    ASSERT_EQ(four.sin_psi, p.sin);
+    ASSERT_EQ(four.cos_psi, p.cos);
+    ASSERT_EQ(four.sin_lambda, l.sin);
+    ASSERT_EQ(four.cos_lambda, l.cos);
+    ASSERT_EQ(four.sin_tau, t.sin);
+    ASSERT_EQ(four.cos_tau, t.cos);
+  }
+}
+
 // A step at or beyond the limit, and an angle that is not finite, are the library's values exactly.
 TEST(Sec19Integration, StateTrigByAdditionFallsBackToTheLibraryForLargeStepsAndNaN) {
   std::mt19937 rng(12);

@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include "tolip/frames/frames.hpp"
+
 namespace tolip {
 namespace {
 
@@ -85,15 +87,39 @@ UnitMoments unit_moments(const BodyDynamicsBlocks& data, const MomentConditions&
   return m;
 }
 
-PlatformVelocityAngles platform_velocity_angles(const Matrix3& platform_to_local) {
+namespace {
+
+// atan2 of an angle that is small in flight: by series when asked (BodyDynamicsInputs).
+double small_angle_atan2(double y, double x, bool by_series) {
+  return by_series ? atan2_by_series(y, x) : std::atan2(y, x);
+}
+
+PlatformVelocityAngles velocity_angles(const Matrix3& platform_to_local, bool by_series) {
   // Row 2 of [C] is the second column of C^-1 = C^T: the unit velocity in P.
   const double vx = platform_to_local(1, 0);
   const double vy = platform_to_local(1, 1);
   const double vz = platform_to_local(1, 2);
   PlatformVelocityAngles out;
   out.gamma_w_rad = std::atan2(vz, std::sqrt(vx * vx + vy * vy));
-  out.azimuth_w_rad = std::atan2(vx, vy);
+  out.azimuth_w_rad = small_angle_atan2(vx, vy, by_series);
   return out;
+}
+
+BodyAngles angles_of_attack(const MissileAxes& axes, const Matrix3& platform_to_local, bool by_series) {
+  const Vector3 v = platform_to_local.row(1).transpose();  // unit V in P (C^T i_y)
+  const double v_mx = axes.x.dot(v);
+  const double v_my = axes.y.dot(v);
+  const double v_mz = axes.z.dot(v);
+  BodyAngles angles;
+  angles.alpha_rad = small_angle_atan2(-v_mz, v_my, by_series);
+  angles.beta_rad = small_angle_atan2(-v_mx, v_my, by_series);
+  return angles;
+}
+
+}  // namespace
+
+PlatformVelocityAngles platform_velocity_angles(const Matrix3& platform_to_local) {
+  return velocity_angles(platform_to_local, false);
 }
 
 Status steady_state_attitude(const AutopilotGains& gains, const UnitMoments& moments,
@@ -151,14 +177,7 @@ BodyAngles body_angles_of_attack(double theta_rad, double chi_rad, const Matrix3
 }
 
 BodyAngles body_angles_of_attack(const MissileAxes& axes, const Matrix3& platform_to_local) {
-  const Vector3 v = platform_to_local.row(1).transpose();  // unit V in P (C^T i_y)
-  const double v_mx = axes.x.dot(v);
-  const double v_my = axes.y.dot(v);
-  const double v_mz = axes.z.dot(v);
-  BodyAngles angles;
-  angles.alpha_rad = std::atan2(-v_mz, v_my);
-  angles.beta_rad = std::atan2(-v_mx, v_my);
-  return angles;
+  return angles_of_attack(axes, platform_to_local, false);
 }
 
 BodyForces body_forces(const UnitMoments& moments, const BodyAngles& angles, double normal_force_lbf_per_rad,
@@ -187,7 +206,7 @@ Status evaluate_body_dynamics(const BodyDynamicsBlocks& data, const BodyDynamics
                               BodyDynamicsResult* out) {
   const int k = clamp_stage(in.conditions.stage) - 1;
   out->moments = unit_moments(data, in.conditions, in.hints);
-  out->velocity = platform_velocity_angles(in.platform_to_local);
+  out->velocity = velocity_angles(in.platform_to_local, in.small_angles_by_series);
   AutopilotGains gains;
   gains.position_gain = data.position_gain[k];
   gains.rate_gain_s = data.rate_gain_s[k];
@@ -207,7 +226,7 @@ Status evaluate_body_dynamics(const BodyDynamicsBlocks& data, const BodyDynamics
       (in.air_platform_to_local != nullptr) ? *in.air_platform_to_local : in.platform_to_local;
   // The attitude's sines and cosines once, for the angles, the forces and the caller's thrust axis.
   out->axes = missile_axes_platform(out->attitude.theta_rad, out->attitude.chi_rad);
-  out->angles = body_angles_of_attack(out->axes, angle_frame);
+  out->angles = angles_of_attack(out->axes, angle_frame, in.small_angles_by_series);
   out->forces =
       body_forces(out->moments, out->angles, in.normal_force_lbf_per_rad, out->axes, in.platform_to_local);
   if (misaligned && std::fabs(out->moments.control_lever_ft) >= kMinimumLeverFt) {

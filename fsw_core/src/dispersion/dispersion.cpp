@@ -488,7 +488,7 @@ FlightInputs dispersion_flight_inputs(const DispersionNominal& nominal) {
   FlightInputs inputs;
   inputs.program = nominal.program;
   inputs.body_dynamics = nominal.body_dynamics;
-  inputs.sines_by_addition = true;
+  inputs.trig_by_series = true;
   return inputs;
 }
 

@@ -38,37 +38,42 @@ StateTrig::StateTrig(const StateVector& state)
 
 namespace {
 
-// sin d and 1 - cos d for |d| < kStateTrigAdditionLimitRad: sin d = d (1 - d^2/6 (1 - d^2/20 (1 -
-// d^2/42 (1 - d^2/72)))), 1 - cos d = d^2/2 (1 - d^2/12 (1 - d^2/30 (1 - d^2/56 (1 - d^2/90)))), the
-// Taylor series in nested (Horner) form; d = 0 gives 0 and 0. Inline, so that StateTrig's four
-// angles below are one loop the compiler can run two at a time (the same operations on each
-// angle either way: the values do not depend on it).
-struct SmallAngle {
-  double sin_d, one_minus_cos_d;
-};
-inline SmallAngle small_angle(double d) {
+// sin(a0 + d) and cos(a0 + d) from s0 = sin a0, c0 = cos a0 for |d| < kStateTrigAdditionLimitRad:
+// sin d = d (1 - d^2/6 (1 - d^2/20 (1 - d^2/42 (1 - d^2/72)))) and 1 - cos d = d^2/2 (1 - d^2/12
+// (1 - d^2/30 (1 - d^2/56 (1 - d^2/90)))), the Taylor series in nested (Horner) form, with the small
+// corrections added last so that the result keeps the accuracy of s0 and c0 (d = 0 gives s0 and
+// c0). One formula for one angle (T = double) and for the state's four at once (T = Eigen::Array4d,
+// two at a time): the same IEEE operations on each angle, so the values do not depend on which.
+template <typename T>
+void add_small_angle(const T& s0, const T& c0, const T& d, T* s, T* c) {
   constexpr double k6 = 1.0 / 6.0, k20 = 1.0 / 20.0, k42 = 1.0 / 42.0, k72 = 1.0 / 72.0;
   constexpr double k12 = 1.0 / 12.0, k30 = 1.0 / 30.0, k56 = 1.0 / 56.0, k90 = 1.0 / 90.0;
-  const double d2 = d * d;
-  return {d * (1.0 - d2 * k6 * (1.0 - d2 * k20 * (1.0 - d2 * k42 * (1.0 - d2 * k72)))),
-          0.5 * d2 * (1.0 - d2 * k12 * (1.0 - d2 * k30 * (1.0 - d2 * k56 * (1.0 - d2 * k90))))};
+  const T d2 = d * d;
+  const T sin_d = d * (1.0 - d2 * k6 * (1.0 - d2 * k20 * (1.0 - d2 * k42 * (1.0 - d2 * k72))));
+  const T one_minus_cos_d =
+      0.5 * d2 * (1.0 - d2 * k12 * (1.0 - d2 * k30 * (1.0 - d2 * k56 * (1.0 - d2 * k90))));
+  *s = s0 + (c0 * sin_d - s0 * one_minus_cos_d);
+  *c = c0 - (s0 * sin_d + c0 * one_minus_cos_d);
 }
 
-constexpr int kStateAngles[4] = {kStateGamma, kStatePsi, kStateLambda, kStateTau};
+// The four angles' steps from a base state, as one Eigen array.
+using AngleSteps = Eigen::Array4d;
+AngleSteps angle_steps(const StateVector& base, const StateVector& state) {
+  return AngleSteps(state[kStateGamma] - base[kStateGamma], state[kStatePsi] - base[kStatePsi],
+                    state[kStateLambda] - base[kStateLambda], state[kStateTau] - base[kStateTau]);
+}
 
-// StateTrig at `state` from `base`'s by the addition theorem, every angle within the limit of
-// base's (the callers check it). The small corrections are added last, so the result keeps the
-// accuracy of the base's sines and cosines.
-StateTrig added_state_trig(const StateTrig& b, const StateVector& base, const StateVector& state) {
-  const double s0[4] = {b.sin_gamma, b.sin_psi, b.sin_lambda, b.sin_tau};
-  const double c0[4] = {b.cos_gamma, b.cos_psi, b.cos_lambda, b.cos_tau};
-  double s[4];
-  double c[4];
-  for (int k = 0; k < 4; ++k) {
-    const SmallAngle d = small_angle(state[kStateAngles[k]] - base[kStateAngles[k]]);
-    s[k] = s0[k] + (c0[k] * d.sin_d - s0[k] * d.one_minus_cos_d);
-    c[k] = c0[k] - (s0[k] * d.sin_d + c0[k] * d.one_minus_cos_d);
-  }
+bool within_limit(const AngleSteps& d) {
+  return (d.abs() < kStateTrigAdditionLimitRad).all();  // false for a NaN or infinite angle too
+}
+
+// StateTrig from `b` by the addition theorem, every step d within the limit (the callers check it).
+StateTrig added_state_trig(const StateTrig& b, const AngleSteps& d) {
+  const AngleSteps s0(b.sin_gamma, b.sin_psi, b.sin_lambda, b.sin_tau);
+  const AngleSteps c0(b.cos_gamma, b.cos_psi, b.cos_lambda, b.cos_tau);
+  AngleSteps s;
+  AngleSteps c;
+  add_small_angle(s0, c0, d, &s, &c);
   StateTrig t = b;
   t.sin_gamma = s[0];
   t.cos_gamma = c[0];
@@ -81,12 +86,6 @@ StateTrig added_state_trig(const StateTrig& b, const StateVector& base, const St
   return t;
 }
 
-bool angles_within_limit(const StateVector& base, const StateVector& state) {
-  bool near = true;
-  for (int i : kStateAngles) near = near && std::fabs(state[i] - base[i]) < kStateTrigAdditionLimitRad;
-  return near;  // false for a NaN or infinite angle too
-}
-
 }  // namespace
 
 SineCosine sine_cosine_by_addition(double s0, double c0, double a0, double a) {
@@ -94,15 +93,16 @@ SineCosine sine_cosine_by_addition(double s0, double c0, double a0, double a) {
   if (!(std::fabs(d) < kStateTrigAdditionLimitRad)) {  // a large step, or a NaN / infinite angle
     return {std::sin(a), std::cos(a)};
   }
-  const SmallAngle small = small_angle(d);
-  return {s0 + (c0 * small.sin_d - s0 * small.one_minus_cos_d),
-          c0 - (s0 * small.sin_d + c0 * small.one_minus_cos_d)};
+  SineCosine out;
+  add_small_angle(s0, c0, d, &out.sin, &out.cos);
+  return out;
 }
 
 StateTrig::StateTrig(const StateTrig& base_trig, const StateVector& base, const StateVector& state)
     : StateTrig(base_trig) {
-  if (angles_within_limit(base, state)) {
-    *this = added_state_trig(base_trig, base, state);
+  const AngleSteps d = angle_steps(base, state);
+  if (within_limit(d)) {
+    *this = added_state_trig(base_trig, d);
     return;
   }
   // Some angle moved too far: each angle by itself (the library's where it did).
@@ -124,8 +124,32 @@ StateTrig::StateTrig(const StateTrig& base_trig, const StateVector& base, const 
   cos_tau = tau.cos;
 }
 
+SineCosine SineCosineAnchor::at(double angle_rad) {
+  if (anchored_ && std::fabs(angle_rad - anchor_rad_) < kStateTrigAdditionLimitRad) {
+    return sine_cosine_by_addition(anchor_.sin, anchor_.cos, anchor_rad_, angle_rad);
+  }
+  anchored_ = true;
+  anchor_rad_ = angle_rad;
+  anchor_ = {std::sin(angle_rad), std::cos(angle_rad)};
+  return anchor_;
+}
+
+double atan2_by_series(double y, double x) {
+  // Also NaN and infinities, and y = +-0 (whose sign the sum below would lose).
+  if (!(x > 0.0) || !(std::fabs(y) * 16.0 < x) || y == 0.0) return std::atan2(y, x);
+  constexpr double k3 = 1.0 / 3.0, k5 = 1.0 / 5.0, k7 = 1.0 / 7.0, k9 = 1.0 / 9.0, k11 = 1.0 / 11.0,
+                   k13 = 1.0 / 13.0;
+  const double z = y / x;
+  const double z2 = z * z;
+  // atan z = z - z^3/3 + z^5/5 - ... + z^13/13; the small correction added last.
+  return z + z * z2 * (-k3 + z2 * (k5 + z2 * (-k7 + z2 * (k9 + z2 * (-k11 + z2 * k13)))));
+}
+
 StateTrig StateTrigAnchor::at(const StateVector& state) {
-  if (anchored_ && angles_within_limit(anchor_, state)) return added_state_trig(anchor_trig_, anchor_, state);
+  if (anchored_) {
+    const AngleSteps d = angle_steps(anchor_, state);
+    if (within_limit(d)) return added_state_trig(anchor_trig_, d);
+  }
   anchored_ = true;
   anchor_ = state;
   anchor_trig_ = StateTrig(state);

@@ -178,7 +178,10 @@ Vector3 body_dynamics_attitude(const Mission& mission, const StageContext& stage
     body.thrust_station_ft = perturbation->thrust_station_ft;
     body.net_thrust_lbf = out->net_thrust_lbf;
   }
-  if (scratch != nullptr) body.hints = &scratch->body_hints;
+  if (scratch != nullptr) {
+    body.hints = &scratch->body_hints;
+    body.small_angles_by_series = scratch->trig_by_series;
+  }
   BodyDynamicsResult result;
   out->body_status = evaluate_body_dynamics(mission.body_dynamics, body, &result);
   out->theta_rad = result.attitude.theta_rad;
@@ -199,16 +202,8 @@ void thrust_axis_with_kept_sines(EvaluationScratch* scratch, const Matrix3& plat
   if (!scratch->has_theta || !(scratch->theta_rad == out->theta_rad)) {
     scratch->has_theta = true;
     scratch->theta_rad = out->theta_rad;
-    if (scratch->sines_by_addition) {
-      if (!scratch->has_theta_anchor ||
-          !(std::fabs(out->theta_rad - scratch->theta_anchor_rad) < kStateTrigAdditionLimitRad)) {
-        scratch->has_theta_anchor = true;
-        scratch->theta_anchor_rad = out->theta_rad;
-        scratch->sin_theta_anchor = std::sin(out->theta_rad);
-        scratch->cos_theta_anchor = std::cos(out->theta_rad);
-      }
-      const SineCosine theta = sine_cosine_by_addition(scratch->sin_theta_anchor, scratch->cos_theta_anchor,
-                                                       scratch->theta_anchor_rad, out->theta_rad);
+    if (scratch->trig_by_series) {
+      const SineCosine theta = scratch->theta_anchor.at(out->theta_rad);
       scratch->sin_theta = theta.sin;
       scratch->cos_theta = theta.cos;
     } else {
@@ -248,8 +243,15 @@ Vector3 drag_and_lift(const Mission& mission, const StageContext& stage, const S
   }
   if (!command.body_dynamics && data.uses_lift_table && !mission.vehicle.lift_curve_slope_per_rad.empty()) {
     // Alpha (an atan2) is needed on the integration path only where there is lift.
-    const double alpha = flow.windy ? air_angle_of_attack_rad(flow.local_to_air, out->thrust_axis_local)
-                                    : angle_of_attack_rad(out->thrust_axis_local);
+    double alpha = 0.0;
+    if (scratch != nullptr && scratch->trig_by_series) {
+      const Vector3 axis =
+          flow.windy ? Vector3(flow.local_to_air * out->thrust_axis_local) : out->thrust_axis_local;
+      alpha = atan2_by_series(axis.z(), axis.y());  // angle_of_attack_rad's atan2, by series
+    } else {
+      alpha = flow.windy ? air_angle_of_attack_rad(flow.local_to_air, out->thrust_axis_local)
+                         : angle_of_attack_rad(out->thrust_axis_local);
+    }
     const AeroTable& slope = mission.vehicle.lift_curve_slope_per_rad;
     out->lift_lbf =
         q_s * ((scratch != nullptr) ? slope(out->mach, &scratch->lift_hint) : slope(out->mach)) * alpha;

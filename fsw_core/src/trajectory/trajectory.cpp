@@ -50,10 +50,10 @@ class Flight {
     double last_theta_step_rad = 0.0;  // theta_end - theta_start of the last step flown
     DerivativeHistory<StateVector> history;
     Evaluation eval;
-    StateTrigAnchor trig_anchor;  // with FlightInputs::sines_by_addition: the stage's anchor
+    StateTrigAnchor trig_anchor;  // with FlightInputs::trig_by_series: the stage's anchor
   };
   Status fly_step(StageFlight* flight, int i, StateVector* state);
-  // StateTrig(state), or with sines_by_addition from the stage's anchor.
+  // StateTrig(state), or with trig_by_series from the stage's anchor.
   StateTrig state_trig(StageFlight* flight, const StateVector& state) const;
   void integrate_step(StageFlight* flight, const StepCommand& command, bool adams, double t,
                       StateVector* state) const;
@@ -193,7 +193,7 @@ void Flight::perturb_command(const StageContext& stage, double t, StepCommand* c
   command->chi_rad += perturbation->chi_offset_rad[slot];
 }
 
-// `trig` is the point's evaluation's StateTrig (StateTrig(state) unless sines_by_addition).
+// `trig` is the point's evaluation's StateTrig (StateTrig(state) unless trig_by_series).
 Status Flight::record(const StageContext& stage, double t, const StateVector& state, const StateTrig& trig,
                       const StepCommand& command, const Evaluation& eval) {
   if (trajectory_->point_count >= kMaxTrajectoryPoints) return Status::kTrajectoryStorageFull;
@@ -241,9 +241,9 @@ Status Flight::record(const StageContext& stage, double t, const StateVector& st
           ? stagnation_heating_rate(mission_.misc.nose_radius_ft, eval.density_slug_ft3,
                                     mission_.atmosphere.base_density_slug_ft3[0], state[kStateV])
           : 0.0;
-  // What a point stores is of its state alone: with sines_by_addition (which lean points skip) the
+  // What a point stores is of its state alone: with trig_by_series (which lean points skip) the
   // library's sines of the state, as record_dispersed_trajectory() recomputes the downrange.
-  const StateTrig point_trig = inputs_.sines_by_addition ? StateTrig(state) : trig;
+  const StateTrig point_trig = inputs_.trig_by_series ? StateTrig(state) : trig;
   p.downrange_rad =
       downrange_angle_rad(sin_launch_latitude_, cos_launch_latitude_, point_trig.sin_lambda,
                           point_trig.cos_lambda, p.earth_longitude_rad - mission_.launch.longitude_rad);
@@ -326,7 +326,7 @@ Status Flight::fly_stage(int slot, StateVector* state) {
   flight.stage = make_stage_context(mission_, prepared_, line);
   flight.stage.perturbation = inputs_.perturbation;
   EvaluationScratch scratch;
-  scratch.sines_by_addition = inputs_.sines_by_addition;
+  scratch.trig_by_series = inputs_.trig_by_series;
   flight.stage.scratch = &scratch;
   // Body dynamics act in stage 1 and the coast after it only (Sec. 11).
   flight.body_dynamics = inputs_.body_dynamics && (line.code == 1 || line.code == 6);
@@ -386,7 +386,7 @@ Status Flight::fly_step(StageFlight* flight, int i, StateVector* state) {
 // takes m RK4 substeps of step / m (the step's command, its linear theta_c over the whole step,
 // serves every substep; the vertical-flight choice and heading reference are the step's).
 StateTrig Flight::state_trig(StageFlight* flight, const StateVector& state) const {
-  return inputs_.sines_by_addition ? flight->trig_anchor.at(state) : StateTrig(state);
+  return inputs_.trig_by_series ? flight->trig_anchor.at(state) : StateTrig(state);
 }
 
 void Flight::integrate_step(StageFlight* stage_flight, const StepCommand& command, bool adams, double t,

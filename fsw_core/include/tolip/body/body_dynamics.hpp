@@ -174,6 +174,9 @@ struct BodyDynamicsInputs {
   double thrust_station_ft = 0.0;
   double net_thrust_lbf = 0.0;
   BodyDynamicsHints* hints = nullptr;  // the unit moments' look-up hints (null: none)
+  // A dispersion flight's (FlightInputs::trig_by_series): the small angles (alpha, beta and the
+  // velocity azimuth psi_w) by atan2_by_series (frames.hpp), the library's where they are not small.
+  bool small_angles_by_series = false;
 };
 
 struct BodyDynamicsResult {

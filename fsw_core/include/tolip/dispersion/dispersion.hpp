@@ -299,7 +299,7 @@ Status build_dispersed_case(const DispersionNominal& nominal, const PreparedCase
 
 // The flight inputs of every dispersion-analysis flight, nominal and dispersed: the nominal's
 // program and body dynamics, the state's sines inside a step by the addition theorem
-// (FlightInputs::sines_by_addition).
+// (FlightInputs::trig_by_series).
 FlightInputs dispersion_flight_inputs(const DispersionNominal& nominal);
 
 // Flies the case build_dispersed_case (or build_monte_carlo_case) left in the workspace about the

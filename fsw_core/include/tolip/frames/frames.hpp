@@ -45,12 +45,30 @@ struct SineCosine {
 // or a is not finite.
 SineCosine sine_cosine_by_addition(double s0, double c0, double a0, double a);
 
+// One angle's sine and cosine along a flight by the addition theorem from an anchor the library
+// evaluated, as StateTrigAnchor below does for the state's four: moved to the angle itself when it
+// is kStateTrigAdditionLimitRad or more from the anchor (or not finite).
+class SineCosineAnchor {
+ public:
+  SineCosine at(double angle_rad);
+
+ private:
+  bool anchored_ = false;
+  double anchor_rad_ = 0.0;
+  SineCosine anchor_ = {0.0, 1.0};
+};
+
+// atan2(y, x) of a small angle, x > 0 and |y| < x / 16 (3.6 deg), by the Taylor series of atan(y / x)
+// to (y / x)^13 (truncation below 1e-18 relative); the library's atan2 otherwise (and for NaN and
+// y = +-0).
+double atan2_by_series(double y, double x);
+
 // The state's sines and cosines along a flight by the addition theorem from an anchor, a state
 // whose StateTrig the library evaluated. Every value is one addition from the anchor's, so no error
 // accumulates (each is within 2 ulps of the library's); the anchor moves to the state itself,
 // evaluated by the library, whenever one of its angles is kStateTrigAdditionLimitRad or more from
 // the anchor's, or is not finite. A dispersion flight keeps one per stage
-// (FlightInputs::sines_by_addition; docs/theory/trajectory.md).
+// (FlightInputs::trig_by_series; docs/theory/trajectory.md).
 class StateTrigAnchor {
  public:
   StateTrig at(const StateVector& state);

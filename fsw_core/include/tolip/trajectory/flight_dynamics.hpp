@@ -62,13 +62,11 @@ struct EvaluationScratch {
   double chi_rad = 0.0;
   double sin_chi = 0.0;
   double cos_chi = 0.0;
-  // A dispersion flight's (FlightInputs::sines_by_addition): theta's sine and cosine by the addition
-  // theorem from an anchor the library evaluated, moved when theta is 1/16 rad or more from it.
-  bool sines_by_addition = false;
-  bool has_theta_anchor = false;
-  double theta_anchor_rad = 0.0;
-  double sin_theta_anchor = 0.0;
-  double cos_theta_anchor = 0.0;
+  // A dispersion flight's (FlightInputs::trig_by_series): theta's sine and cosine by the addition
+  // theorem from an anchor the library evaluated, moved when theta is 1/16 rad or more from it;
+  // the angles of attack and the body dynamics' small angles by atan2_by_series.
+  bool trig_by_series = false;
+  SineCosineAnchor theta_anchor;
 };
 
 // The stage being flown.

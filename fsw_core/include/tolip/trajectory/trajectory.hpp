@@ -137,12 +137,14 @@ struct FlightInputs {
   // there): what record_dispersed_trajectory() does not read. The flight and every other member are
   // the full run's, bit for bit.
   bool lean_points = false;
-  // The state's sines and cosines at an RK4 step's inner evaluations from the step start's by the
-  // addition theorem (StateTrig's second constructor: within 2 ulps of the library's, at a fraction
-  // of the cost), for the dispersion analyses' flights, where the per-sample cost counts. Off, every
-  // evaluation calls the library, as the optimizer's runs do: their hard cases are sensitive to
-  // the last bit (docs/theory/trajectory.md).
-  bool sines_by_addition = false;
+  // The model evaluations' trigonometry by series (frames.hpp): the state's and theta's sines and
+  // cosines by the addition theorem from a per-stage anchor (StateTrigAnchor), the small angles of
+  // attack, sideslip and velocity azimuth by the series of atan (atan2_by_series); each within 2
+  // ulps of the library's, at a fraction of the cost. The dispersion analyses' flights set it
+  // (dispersion_flight_inputs), where the per-sample cost counts. Off, every evaluation calls the
+  // library, as the optimizer's runs do: their hard cases are sensitive to the last bit
+  // (docs/theory/trajectory.md). The points stored are the same functions of their states either way.
+  bool trig_by_series = false;
   // Optional output, kMaxTrajectoryPoints values of the caller's: at every point the angle of
   // attack against the air mass where the evaluation there was windy (Evaluation::windy), else
   // the point's alpha_rad; what record_dispersed_trajectory() would recompute from the point. Not
