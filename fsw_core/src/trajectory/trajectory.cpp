@@ -241,8 +241,9 @@ Status Flight::record(const StageContext& stage, double t, const StateVector& st
           ? stagnation_heating_rate(mission_.misc.nose_radius_ft, eval.density_slug_ft3,
                                     mission_.atmosphere.base_density_slug_ft3[0], state[kStateV])
           : 0.0;
-  // What a point stores is of its state alone: with trig_by_series (which lean points skip) the
-  // library's sines of the state, as record_dispersed_trajectory() recomputes the downrange.
+  // A point's downrange and inertial velocity are of its state alone: with trig_by_series (which
+  // lean points skip) from the library's sines of the state, as record_dispersed_trajectory()
+  // recomputes the downrange.
   const StateTrig point_trig = inputs_.trig_by_series ? StateTrig(state) : trig;
   p.downrange_rad =
       downrange_angle_rad(sin_launch_latitude_, cos_launch_latitude_, point_trig.sin_lambda,
@@ -381,14 +382,14 @@ Status Flight::fly_step(StageFlight* flight, int i, StateVector* state) {
   return Status::kOk;
 }
 
-// RK4 (in vertical-flight coordinates near the vertical) or, in coasts after the start steps,
-// Adams-Bashforth from the derivative history. A 6D forward trajectory with DA6D(12-15) = m > 1
-// takes m RK4 substeps of step / m (the step's command, its linear theta_c over the whole step,
-// serves every substep; the vertical-flight choice and heading reference are the step's).
 StateTrig Flight::state_trig(StageFlight* flight, const StateVector& state) const {
   return inputs_.trig_by_series ? flight->trig_anchor.at(state) : StateTrig(state);
 }
 
+// RK4 (in vertical-flight coordinates near the vertical) or, in coasts after the start steps,
+// Adams-Bashforth from the derivative history. A 6D forward trajectory with DA6D(12-15) = m > 1
+// takes m RK4 substeps of step / m (the step's command, its linear theta_c over the whole step,
+// serves every substep; the vertical-flight choice and heading reference are the step's).
 void Flight::integrate_step(StageFlight* stage_flight, const StepCommand& command, bool adams, double t,
                             StateVector* state) const {
   const StageFlight& flight = *stage_flight;

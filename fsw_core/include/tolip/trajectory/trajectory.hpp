@@ -143,7 +143,8 @@ struct FlightInputs {
   // ulps of the library's, at a fraction of the cost. The dispersion analyses' flights set it
   // (dispersion_flight_inputs), where the per-sample cost counts. Off, every evaluation calls the
   // library, as the optimizer's runs do: their hard cases are sensitive to the last bit
-  // (docs/theory/trajectory.md). The points stored are the same functions of their states either way.
+  // (docs/theory/trajectory.md). A point's downrange and inertial velocity are the library's
+  // functions of its state either way; what the evaluation there gives (alpha, q-bar) is the flight's.
   bool trig_by_series = false;
   // Optional output, kMaxTrajectoryPoints values of the caller's: at every point the angle of
   // attack against the air mass where the evaluation there was windy (Evaluation::windy), else
