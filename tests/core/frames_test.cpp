@@ -206,10 +206,10 @@ double ulps_from(long double reference, double value) {
   return static_cast<double>(std::fabs(static_cast<long double>(value) - reference)) / ulp;
 }
 
-// The addition-theorem StateTrig that RK4's inner evaluations use in dispersed flights
-// (docs/theory/trajectory.md), against sinl/cosl in long double (an independent reference), over random
-// states and angle steps up to the limit: within 2 ulps (the rounded sine and cosine of the step start carry
-// into the sum; the library itself is within 0.52 ulp at the same points).
+// The addition-theorem StateTrig that the dispersion flights use (StateTrigAnchor, anchored at
+// `base`; docs/theory/trajectory.md), against sinl/cosl in long double (an independent reference),
+// over random states and angle steps up to the limit: within 2 ulps (the rounded sine and cosine of
+// the anchor carry into the sum; the library itself is within 0.52 ulp at the same points).
 TEST(Sec19Integration, StateTrigByAdditionAgreesWithLongDoubleWithinTwoUlps) {
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
@@ -221,7 +221,9 @@ TEST(Sec19Integration, StateTrigByAdditionAgreesWithLongDoubleWithinTwoUlps) {
     // Steps of every size up to the limit, most of them as small as an RK4 stage's.
     const double scale = kStateTrigAdditionLimitRad * std::pow(10.0, -5.0 * std::fabs(unit(rng)));
     for (int i : angles) x[i] += scale * unit(rng);
-    const StateTrig added(StateTrig(base), base, x);
+    StateTrigAnchor anchor;
+    anchor.at(base);
+    const StateTrig added = anchor.at(x);
     const StateTrig library(x);
     const double values[8] = {added.sin_gamma,  added.cos_gamma,  added.sin_psi, added.cos_psi,
                               added.sin_lambda, added.cos_lambda, added.sin_tau, added.cos_tau};
@@ -300,8 +302,8 @@ TEST(Sec19Integration, Atan2BySeriesAgreesWithLongDoubleForSmallAnglesAndFallsBa
   EXPECT_TRUE(std::signbit(atan2_by_series(-0.0, 2.0)));
 }
 
-// The four angles taken at once (two at a time, StateTrig's array form) are bit for bit the one-angle
-// form, sine_cosine_by_addition, of each.
+// The four angles taken at once (two at a time, StateTrigAnchor's array form) are bit for bit the
+// one-angle form, sine_cosine_by_addition, of each.
 TEST(Sec19Integration, StateTrigByAdditionOfFourAnglesAtOnceEqualsEachAngleAlone) {
   std::mt19937 rng(15);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
@@ -311,7 +313,9 @@ TEST(Sec19Integration, StateTrigByAdditionOfFourAnglesAtOnceEqualsEachAngleAlone
     for (int i : {kStateGamma, kStatePsi, kStateLambda, kStateTau})
       x[i] += kStateTrigAdditionLimitRad * unit(rng);
     const StateTrig b(base);
-    const StateTrig four(b, base, x);
+    StateTrigAnchor anchor;
+    anchor.at(base);
+    const StateTrig four = anchor.at(x);
     const SineCosine g = sine_cosine_by_addition(b.sin_gamma, b.cos_gamma, base[kStateGamma], x[kStateGamma]);
     const SineCosine p = sine_cosine_by_addition(b.sin_psi, b.cos_psi, base[kStatePsi], x[kStatePsi]);
     const SineCosine l =
@@ -328,7 +332,8 @@ TEST(Sec19Integration, StateTrigByAdditionOfFourAnglesAtOnceEqualsEachAngleAlone
   }
 }
 
-// A step at or beyond the limit, and an angle that is not finite, are the library's values exactly.
+// A step at or beyond the limit, and an angle that is not finite, re-anchor: the library's values
+// exactly. No step: the anchor's values exactly.
 TEST(Sec19Integration, StateTrigByAdditionFallsBackToTheLibraryForLargeStepsAndNaN) {
   std::mt19937 rng(12);
   const StateVector base = random_state(rng);
@@ -337,7 +342,9 @@ TEST(Sec19Integration, StateTrigByAdditionFallsBackToTheLibraryForLargeStepsAndN
   x[kStatePsi] -= 0.5;
   x[kStateLambda] = std::nan("");
   x[kStateTau] = INFINITY;
-  const StateTrig added(StateTrig(base), base, x);
+  StateTrigAnchor anchor;
+  anchor.at(base);
+  const StateTrig added = anchor.at(x);  // re-anchored: the library's at x
   const StateTrig library(x);
   EXPECT_EQ(added.sin_gamma, library.sin_gamma);
   EXPECT_EQ(added.cos_gamma, library.cos_gamma);
@@ -346,7 +353,9 @@ TEST(Sec19Integration, StateTrigByAdditionFallsBackToTheLibraryForLargeStepsAndN
   EXPECT_TRUE(std::isnan(added.sin_lambda) && std::isnan(added.cos_lambda));
   EXPECT_TRUE(std::isnan(added.sin_tau) && std::isnan(added.cos_tau));
   // No step: the base's values exactly.
-  const StateTrig same(StateTrig(base), base, base);
+  StateTrigAnchor still;
+  still.at(base);
+  const StateTrig same = still.at(base);
   const StateTrig base_trig(base);
   EXPECT_EQ(same.sin_tau, base_trig.sin_tau);
   EXPECT_EQ(same.cos_gamma, base_trig.cos_gamma);

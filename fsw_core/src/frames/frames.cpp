@@ -98,32 +98,6 @@ SineCosine sine_cosine_by_addition(double s0, double c0, double a0, double a) {
   return out;
 }
 
-StateTrig::StateTrig(const StateTrig& base_trig, const StateVector& base, const StateVector& state)
-    : StateTrig(base_trig) {
-  const AngleSteps d = angle_steps(base, state);
-  if (within_limit(d)) {
-    *this = added_state_trig(base_trig, d);
-    return;
-  }
-  // Some angle moved too far: each angle by itself (the library's where it did).
-  const SineCosine gamma = sine_cosine_by_addition(base_trig.sin_gamma, base_trig.cos_gamma,
-                                                   base[kStateGamma], state[kStateGamma]);
-  const SineCosine psi =
-      sine_cosine_by_addition(base_trig.sin_psi, base_trig.cos_psi, base[kStatePsi], state[kStatePsi]);
-  const SineCosine lambda = sine_cosine_by_addition(base_trig.sin_lambda, base_trig.cos_lambda,
-                                                    base[kStateLambda], state[kStateLambda]);
-  const SineCosine tau =
-      sine_cosine_by_addition(base_trig.sin_tau, base_trig.cos_tau, base[kStateTau], state[kStateTau]);
-  sin_gamma = gamma.sin;
-  cos_gamma = gamma.cos;
-  sin_psi = psi.sin;
-  cos_psi = psi.cos;
-  sin_lambda = lambda.sin;
-  cos_lambda = lambda.cos;
-  sin_tau = tau.sin;
-  cos_tau = tau.cos;
-}
-
 SineCosine SineCosineAnchor::at(double angle_rad) {
   if (anchored_ && std::fabs(angle_rad - anchor_rad_) < kStateTrigAdditionLimitRad) {
     return sine_cosine_by_addition(anchor_.sin, anchor_.cos, anchor_rad_, angle_rad);

@@ -243,15 +243,11 @@ Vector3 drag_and_lift(const Mission& mission, const StageContext& stage, const S
   }
   if (!command.body_dynamics && data.uses_lift_table && !mission.vehicle.lift_curve_slope_per_rad.empty()) {
     // Alpha (an atan2) is needed on the integration path only where there is lift.
-    double alpha = 0.0;
-    if (scratch != nullptr && scratch->trig_by_series) {
-      const Vector3 axis =
-          flow.windy ? Vector3(flow.local_to_air * out->thrust_axis_local) : out->thrust_axis_local;
-      alpha = atan2_by_series(axis.z(), axis.y());  // angle_of_attack_rad's atan2, by series
-    } else {
-      alpha = flow.windy ? air_angle_of_attack_rad(flow.local_to_air, out->thrust_axis_local)
-                         : angle_of_attack_rad(out->thrust_axis_local);
-    }
+    // Under a wind against the air (air_angle_of_attack_rad's axis); by series in dispersion flights.
+    const Vector3 axis =
+        flow.windy ? Vector3(flow.local_to_air * out->thrust_axis_local) : out->thrust_axis_local;
+    const double alpha = (scratch != nullptr && scratch->trig_by_series) ? atan2_by_series(axis.z(), axis.y())
+                                                                         : angle_of_attack_rad(axis);
     const AeroTable& slope = mission.vehicle.lift_curve_slope_per_rad;
     out->lift_lbf =
         q_s * ((scratch != nullptr) ? slope(out->mach, &scratch->lift_hint) : slope(out->mach)) * alpha;

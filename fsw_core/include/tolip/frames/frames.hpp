@@ -23,13 +23,6 @@ Matrix3 frame_rotation_z(double angle_rad);
 struct StateTrig {
   double sin_gamma, cos_gamma, sin_psi, cos_psi, sin_lambda, cos_lambda, sin_tau, cos_tau;
   explicit StateTrig(const StateVector& state);
-  // The same at `state` from the sines and cosines at a nearby `base` state (whose StateTrig is
-  // `base_trig`), by the addition theorem: sin(a0 + d) = sin a0 + (cos a0 sin d -
-  // sin a0 (1 - cos d)) with d = a - a0 and sin d, 1 - cos d from their Taylor series, which for
-  // |d| < kStateTrigAdditionLimitRad costs a few multiplications instead of a sincos call and
-  // agrees with it within 2 ulps (docs/theory/trajectory.md). An angle that moved by more, or is
-  // not finite, is evaluated by the library as the other constructor does.
-  StateTrig(const StateTrig& base_trig, const StateVector& base, const StateVector& state);
 };
 
 // The largest angle step the addition-theorem form takes: there the truncated series (d^9 for the
@@ -40,9 +33,10 @@ struct SineCosine {
   double sin, cos;
 };
 
-// sin(a) and cos(a) from s0 = sin(a0), c0 = cos(a0) by the addition theorem (as StateTrig's
-// second constructor forms each angle's); the library's when |a - a0| >= kStateTrigAdditionLimitRad
-// or a is not finite.
+// sin(a) and cos(a) from s0 = sin(a0), c0 = cos(a0) by the addition theorem, sin(a0 + d) = sin a0 +
+// (cos a0 sin d - sin a0 (1 - cos d)) with d = a - a0 and sin d, 1 - cos d from their Taylor series
+// (StateTrigAnchor forms each of the state's angles so); the library's when
+// |a - a0| >= kStateTrigAdditionLimitRad or a is not finite.
 SineCosine sine_cosine_by_addition(double s0, double c0, double a0, double a);
 
 // One angle's sine and cosine along a flight by the addition theorem from an anchor the library
