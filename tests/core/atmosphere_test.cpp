@@ -249,5 +249,36 @@ TEST(Sec19Atmosphere, ValidatesTheTable) {
   EXPECT_EQ(validate_atmosphere_table(t), Status::kValueNotFinite);
 }
 
+// A flight's evaluation without the derivatives gives the same values, bit for bit, in every layer
+// and its extensions, with and without curvature, and the same refusals.
+TEST(Sec19Atmosphere, ValuesWithoutDerivativesAreTheFullEvaluationsBitForBit) {
+  const Constants constants;
+  const AtmosphereTable table;
+  for (const double radius_ft : {kNoCurvatureRadiusFt, constants.earth_equatorial_radius_ft}) {
+    for (double h = -5000.0; h <= 700000.0; h += 997.0) {
+      AtmosphereSample full;
+      AtmosphereSample lean;
+      ASSERT_EQ(evaluate_atmosphere(table, constants, h, radius_ft, &full), Status::kOk) << h;
+      ASSERT_EQ(evaluate_atmosphere_without_derivatives(table, constants, h, radius_ft, &lean), Status::kOk)
+          << h;
+      ASSERT_EQ(lean.geopotential_altitude_ft, full.geopotential_altitude_ft) << h;
+      ASSERT_EQ(lean.density_slug_ft3, full.density_slug_ft3) << h;
+      ASSERT_EQ(lean.pressure_lbf_ft2, full.pressure_lbf_ft2) << h;
+      ASSERT_EQ(lean.speed_of_sound_ft_s, full.speed_of_sound_ft_s) << h;
+      ASSERT_EQ(lean.temperature_R, full.temperature_R) << h;
+      ASSERT_EQ(lean.ddensity_dh, 0.0);
+      ASSERT_EQ(lean.dpressure_dh, 0.0);
+      ASSERT_EQ(lean.dspeed_of_sound_dh, 0.0);
+    }
+  }
+  AtmosphereSample lean;
+  EXPECT_EQ(evaluate_atmosphere_without_derivatives(table, constants, std::nan(""), 2e7, &lean),
+            Status::kValueNotFinite);
+  EXPECT_EQ(evaluate_atmosphere_without_derivatives(table, constants, -3e7, 2e7, &lean),
+            Status::kAtmosphereRadiusNotPositive);
+  EXPECT_EQ(evaluate_atmosphere_without_derivatives(table, constants, 0.0, 2e7, nullptr),
+            Status::kOutputPointerNull);
+}
+
 }  // namespace
 }  // namespace tolip

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <random>
 #include <string>
 
@@ -359,6 +360,38 @@ TEST(Sec19Integration, StateTrigByAdditionFallsBackToTheLibraryForLargeStepsAndN
   const StateTrig base_trig(base);
   EXPECT_EQ(same.sin_tau, base_trig.sin_tau);
   EXPECT_EQ(same.cos_gamma, base_trig.cos_gamma);
+}
+
+// wrap_angle_rad skips the library only where std::remainder(angle, 2 pi) is the angle itself:
+// bit for bit the library's everywhere, at +-pi, beyond it, for -0 and for NaN.
+TEST(Sec4Frames, WrapAngleIsTheLibraryRemainderBitForBit) {
+  std::mt19937 rng(16);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const auto same = [](double angle) {
+    const double wrapped = wrap_angle_rad(angle);
+    const double library = std::remainder(angle, 2.0 * kPi);
+    return (std::isnan(wrapped) && std::isnan(library)) ||
+           (wrapped == library && std::signbit(wrapped) == std::signbit(library));
+  };
+  for (int trial = 0; trial < 100000; ++trial) {
+    const double angle = 20.0 * unit(rng);
+    ASSERT_TRUE(same(angle)) << angle;
+  }
+  for (const double angle :
+       {kPi, -kPi, std::nextafter(kPi, 4.0), std::nextafter(-kPi, -4.0), 2.0 * kPi, 3.0 * kPi, -0.0, 0.0,
+        1e300, std::nan(""), std::numeric_limits<double>::infinity()}) {
+    EXPECT_TRUE(same(angle)) << angle;
+  }
+}
+
+// The angle of attack by series is atan2_by_series of the same components (the library's atan2
+// where the angle is not small).
+TEST(Sec19Integration, AngleOfAttackBySeriesIsTheSeriesAtan2OfTheAxis) {
+  const Vector3 small(0.2, 0.99, 0.03);
+  EXPECT_EQ(angle_of_attack_by_series_rad(small), atan2_by_series(small.z(), small.y()));
+  EXPECT_NEAR(angle_of_attack_by_series_rad(small), angle_of_attack_rad(small), 1e-16);
+  const Vector3 large(0.0, 0.5, 0.8);
+  EXPECT_EQ(angle_of_attack_by_series_rad(large), angle_of_attack_rad(large));
 }
 
 }  // namespace

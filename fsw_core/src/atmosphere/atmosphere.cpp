@@ -17,17 +17,19 @@ int layer_index(const AtmosphereTable& table, double geopotential_altitude_ft) {
   return index;
 }
 
-bool all_finite(const AtmosphereSample& s) {
-  return std::isfinite(s.geopotential_altitude_ft) && std::isfinite(s.density_slug_ft3) &&
-         std::isfinite(s.pressure_lbf_ft2) && std::isfinite(s.speed_of_sound_ft_s) &&
-         std::isfinite(s.temperature_R) && std::isfinite(s.ddensity_dh) && std::isfinite(s.dpressure_dh) &&
-         std::isfinite(s.dspeed_of_sound_dh);
+bool all_finite(const AtmosphereSample& s, bool with_derivatives) {
+  const bool values = std::isfinite(s.geopotential_altitude_ft) && std::isfinite(s.density_slug_ft3) &&
+                      std::isfinite(s.pressure_lbf_ft2) && std::isfinite(s.speed_of_sound_ft_s) &&
+                      std::isfinite(s.temperature_R);
+  return values && (!with_derivatives || (std::isfinite(s.ddensity_dh) && std::isfinite(s.dpressure_dh) &&
+                                          std::isfinite(s.dspeed_of_sound_dh)));
 }
 
-}  // namespace
-
-Status evaluate_atmosphere(const AtmosphereTable& table, const Constants& constants, double altitude_ft,
-                           double earth_radius_ft, AtmosphereSample* out) {
+// The one evaluation; the derivatives (the optimizer's adjoint needs them, a flight does not) only
+// when asked for.
+template <bool kWithDerivatives>
+Status evaluate(const AtmosphereTable& table, const Constants& constants, double altitude_ft,
+                double earth_radius_ft, AtmosphereSample* out) {
   if (out == nullptr) return Status::kOutputPointerNull;
   if (!std::isfinite(altitude_ft) || !std::isfinite(earth_radius_ft)) return Status::kValueNotFinite;
   const double radius_sum_ft = earth_radius_ft + altitude_ft;
@@ -53,9 +55,11 @@ Status evaluate_atmosphere(const AtmosphereTable& table, const Constants& consta
     s.density_slug_ft3 = base_density * std::exp(-g0 * above_base_ft / (r_gas * base_temperature_R));
     s.pressure_lbf_ft2 = s.density_slug_ft3 * r_gas * base_temperature_R;
     s.speed_of_sound_ft_s = std::sqrt(1.4 * r_gas * base_temperature_R);
-    s.ddensity_dh = -s.density_slug_ft3 * g0 / (r_gas * base_temperature_R);
-    s.dpressure_dh = r_gas * base_temperature_R * s.ddensity_dh;
-    s.dspeed_of_sound_dh = 0.0;
+    if (kWithDerivatives) {
+      s.ddensity_dh = -s.density_slug_ft3 * g0 / (r_gas * base_temperature_R);
+      s.dpressure_dh = r_gas * base_temperature_R * s.ddensity_dh;
+      s.dspeed_of_sound_dh = 0.0;
+    }
   } else {
     // Type II: linear T_M. The scanned density formula lost its exponent; the hydrostatic
     // equation with p = rho R* T_M gives rho = rho_b X^-(1 + g0 / (R* L)), X = T_M / T_b.
@@ -67,15 +71,30 @@ Status evaluate_atmosphere(const AtmosphereTable& table, const Constants& consta
     s.density_slug_ft3 = base_density * std::pow(temperature_ratio, -exponent);
     s.pressure_lbf_ft2 = s.density_slug_ft3 * r_gas * s.temperature_R;
     s.speed_of_sound_ft_s = std::sqrt(1.4 * r_gas * s.temperature_R);
-    s.ddensity_dh =
-        -s.density_slug_ft3 * exponent * (lapse_R_per_ft / base_temperature_R) / temperature_ratio;
-    s.dpressure_dh = r_gas * (s.temperature_R * s.ddensity_dh + s.density_slug_ft3 * lapse_R_per_ft);
-    s.dspeed_of_sound_dh = 0.7 * r_gas * lapse_R_per_ft / s.speed_of_sound_ft_s;
+    if (kWithDerivatives) {
+      s.ddensity_dh =
+          -s.density_slug_ft3 * exponent * (lapse_R_per_ft / base_temperature_R) / temperature_ratio;
+      s.dpressure_dh = r_gas * (s.temperature_R * s.ddensity_dh + s.density_slug_ft3 * lapse_R_per_ft);
+      s.dspeed_of_sound_dh = 0.7 * r_gas * lapse_R_per_ft / s.speed_of_sound_ft_s;
+    }
   }
 
-  if (!all_finite(s)) return Status::kValueNotFinite;
+  if (!all_finite(s, kWithDerivatives)) return Status::kValueNotFinite;
   *out = s;
   return Status::kOk;
+}
+
+}  // namespace
+
+Status evaluate_atmosphere(const AtmosphereTable& table, const Constants& constants, double altitude_ft,
+                           double earth_radius_ft, AtmosphereSample* out) {
+  return evaluate<true>(table, constants, altitude_ft, earth_radius_ft, out);
+}
+
+Status evaluate_atmosphere_without_derivatives(const AtmosphereTable& table, const Constants& constants,
+                                               double altitude_ft, double earth_radius_ft,
+                                               AtmosphereSample* out) {
+  return evaluate<false>(table, constants, altitude_ft, earth_radius_ft, out);
 }
 
 Status validate_atmosphere_table(const AtmosphereTable& table) {

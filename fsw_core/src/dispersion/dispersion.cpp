@@ -81,8 +81,6 @@ bool same_grid(const StageTimeline& a, const StageTimeline& b) {
          a.first_step_stage_time_s == b.first_step_stage_time_s;
 }
 
-double wrap_angle_rad(double angle) { return std::remainder(angle, 2.0 * kPi); }
-
 void copy_title(const char* from, char* to) {
   int i = 0;
   for (; i < 12 && from[i] != '\0'; ++i) to[i] = from[i];

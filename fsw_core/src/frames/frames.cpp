@@ -186,6 +186,10 @@ double angle_of_attack_rad(const Vector3& thrust_axis_local) {
   return std::atan2(thrust_axis_local.z(), thrust_axis_local.y());
 }
 
+double angle_of_attack_by_series_rad(const Vector3& thrust_axis_local) {
+  return atan2_by_series(thrust_axis_local.z(), thrust_axis_local.y());
+}
+
 double theta_for_zero_alpha_rad(const Matrix3& platform_to_local, double chi_rad) {
   const Matrix3& c = platform_to_local;
   // u_Lz = cos(theta) a + sin(theta) b = 0 with a = C31 sin chi + C32 cos chi, b = C33.

@@ -58,8 +58,8 @@ AirAtPoint air_at(const Mission& mission, double altitude_ft, double surface_rad
   AirAtPoint out;
   if (altitude_ft <= mission.constants.haero_ft) {
     AtmosphereSample air;
-    if (ok(evaluate_atmosphere(mission.atmosphere, mission.constants, altitude_ft, surface_radius_ft,
-                               &air))) {
+    if (ok(evaluate_atmosphere_without_derivatives(mission.atmosphere, mission.constants, altitude_ft,
+                                                   surface_radius_ft, &air))) {
       out.pressure_lbf_ft2 = air.pressure_lbf_ft2;
       out.density_slug_ft3 = air.density_slug_ft3;
       out.speed_of_sound_ft_s = air.speed_of_sound_ft_s;
@@ -126,7 +126,12 @@ AirRelativeFlow air_relative_flow(const StageContext& stage, const StateVector& 
       const double wind_azimuth = (scratch != nullptr)
                                       ? wind.azimuth_rad(altitude_ft, &scratch->wind_azimuth_hint)
                                       : wind.azimuth_rad(altitude_ft);
-      const Vector3 air = air_relative_velocity_local(state, trig, wind_speed, wind_azimuth);
+      // In a dispersion flight psi_w - psi's sine and cosine by addition from an anchor.
+      const Vector3 air =
+          (scratch != nullptr && scratch->trig_by_series)
+              ? air_relative_velocity_local(state, trig, wind_speed,
+                                            scratch->wind_azimuth_anchor.at(wind_azimuth - state[kStatePsi]))
+              : air_relative_velocity_local(state, trig, wind_speed, wind_azimuth);
       flow.air_speed_ft_s = air.norm();
       flow.windy = flow.air_speed_ft_s > 0.0;
       if (flow.windy) flow.local_to_air = local_to_air_frame(air, flow.air_speed_ft_s);
@@ -245,8 +250,8 @@ Vector3 drag_and_lift(const Mission& mission, const StageContext& stage, const S
     // Alpha (an atan2) is needed on the integration path only where there is lift.
     // Under a wind against the air (air_angle_of_attack_rad's axis); by series in dispersion flights.
     const Vector3 axis =
-        flow.windy ? Vector3(flow.local_to_air * out->thrust_axis_local) : out->thrust_axis_local;
-    const double alpha = (scratch != nullptr && scratch->trig_by_series) ? atan2_by_series(axis.z(), axis.y())
+        flow.windy ? thrust_axis_air(flow.local_to_air, out->thrust_axis_local) : out->thrust_axis_local;
+    const double alpha = (scratch != nullptr && scratch->trig_by_series) ? angle_of_attack_by_series_rad(axis)
                                                                          : angle_of_attack_rad(axis);
     const AeroTable& slope = mission.vehicle.lift_curve_slope_per_rad;
     out->lift_lbf =

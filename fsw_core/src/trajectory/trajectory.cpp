@@ -50,11 +50,19 @@ class Flight {
     double last_theta_step_rad = 0.0;  // theta_end - theta_start of the last step flown
     DerivativeHistory<StateVector> history;
     Evaluation eval;
+    // The evaluations inside a step, of which only the derivative is read (evaluate_flight() sets
+    // it every time): one kept for the stage, since building an Evaluation costs ~2 % of a flight.
+    Evaluation step_eval;
     StateTrigAnchor trig_anchor;  // with FlightInputs::trig_by_series: the stage's anchor
   };
   Status fly_step(StageFlight* flight, int i, StateVector* state);
   // StateTrig(state), or with trig_by_series from the stage's anchor.
   StateTrig state_trig(StageFlight* flight, const StateVector& state) const;
+  // The angle of the thrust axis (local or air frame): with trig_by_series by series, as flown.
+  double alpha_rad(const Vector3& thrust_axis) const {
+    return inputs_.trig_by_series ? angle_of_attack_by_series_rad(thrust_axis)
+                                  : angle_of_attack_rad(thrust_axis);
+  }
   void integrate_step(StageFlight* flight, const StepCommand& command, bool adams, double t,
                       StateVector* state) const;
   Status record_stage_end(StageFlight* flight, StageEvent* event, StateVector* state);
@@ -205,8 +213,7 @@ Status Flight::record(const StageContext& stage, double t, const StateVector& st
   p.stage_time_s = t - stage.start_s;
   p.state = state;
   p.altitude_ft = eval.altitude_ft;
-  p.earth_longitude_rad =
-      std::remainder(state[kStateTau] - constants.earth_rotation_rate_rad_s * t, 2.0 * kPi);
+  p.earth_longitude_rad = wrap_angle_rad(state[kStateTau] - constants.earth_rotation_rate_rad_s * t);
   p.weight_lb = eval.weight_lb;
   p.vacuum_thrust_lbf = eval.vacuum_thrust_lbf;
   p.net_thrust_lbf = eval.net_thrust_lbf;
@@ -214,7 +221,7 @@ Status Flight::record(const StageContext& stage, double t, const StateVector& st
   p.mach = eval.mach;
   // A lean point whose air-relative alpha is kept needs no still-air alpha (FlightInputs::lean_points).
   const bool air_alpha_only = inputs_.lean_points && inputs_.air_alpha_rad != nullptr && eval.windy;
-  p.alpha_rad = air_alpha_only ? 0.0 : angle_of_attack_rad(eval.thrust_axis_local);
+  p.alpha_rad = air_alpha_only ? 0.0 : alpha_rad(eval.thrust_axis_local);
   p.theta_rad = eval.theta_rad;
   p.chi_rad = eval.chi_rad;
   p.drag_lbf = eval.drag_lbf;
@@ -225,7 +232,7 @@ Status Flight::record(const StageContext& stage, double t, const StateVector& st
   p.control_deflection_rad = static_cast<float>(eval.control_deflection_rad);
   if (inputs_.air_alpha_rad != nullptr) {
     inputs_.air_alpha_rad[trajectory_->point_count] =
-        eval.windy ? air_angle_of_attack_rad(eval.local_to_air, eval.thrust_axis_local) : p.alpha_rad;
+        eval.windy ? alpha_rad(thrust_axis_air(eval.local_to_air, eval.thrust_axis_local)) : p.alpha_rad;
   }
   if (inputs_.lean_points) {
     p.geodetic_latitude_rad = 0.0;
@@ -397,7 +404,7 @@ void Flight::integrate_step(StageFlight* stage_flight, const StepCommand& comman
   const StateVector& start_derivative = flight.eval.derivative;
   const double heading_reference_rad = (*state)[kStatePsi];
   const auto derivative = [&](double time, const StateVector& x) {
-    Evaluation e;
+    Evaluation& e = stage_flight->step_eval;
     evaluate_flight(mission_, prepared_, flight.stage, command, time, x, state_trig(stage_flight, x), 0.0,
                     &e);
     return e.derivative;

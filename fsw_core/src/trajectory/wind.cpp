@@ -8,8 +8,14 @@ namespace tolip {
 Vector3 air_relative_velocity_local(const StateVector& state, const StateTrig& trig, double wind_speed_ft_s,
                                     double wind_azimuth_rad) {
   const double relative_azimuth = wind_azimuth_rad - state[kStatePsi];
-  const double along = wind_speed_ft_s * std::cos(relative_azimuth);
-  return Vector3(-wind_speed_ft_s * std::sin(relative_azimuth), state[kStateV] - along * trig.cos_gamma,
+  return air_relative_velocity_local(state, trig, wind_speed_ft_s,
+                                     SineCosine{std::sin(relative_azimuth), std::cos(relative_azimuth)});
+}
+
+Vector3 air_relative_velocity_local(const StateVector& state, const StateTrig& trig, double wind_speed_ft_s,
+                                    const SineCosine& relative_azimuth) {
+  const double along = wind_speed_ft_s * relative_azimuth.cos;
+  return Vector3(-wind_speed_ft_s * relative_azimuth.sin, state[kStateV] - along * trig.cos_gamma,
                  along * trig.sin_gamma);
 }
 
@@ -32,7 +38,11 @@ Matrix3 local_to_air_frame(const Vector3& air_velocity_local, double air_speed_f
 }
 
 double air_angle_of_attack_rad(const Matrix3& local_to_air, const Vector3& thrust_axis_local) {
-  return angle_of_attack_rad(local_to_air * thrust_axis_local);
+  return angle_of_attack_rad(thrust_axis_air(local_to_air, thrust_axis_local));
+}
+
+Vector3 thrust_axis_air(const Matrix3& local_to_air, const Vector3& thrust_axis_local) {
+  return local_to_air * thrust_axis_local;
 }
 
 }  // namespace tolip

@@ -29,6 +29,10 @@ struct AtmosphereSample {
 // where a layer's temperature falls to zero, kOutputPointerNull for a null `out`.
 Status evaluate_atmosphere(const AtmosphereTable& table, const Constants& constants, double altitude_ft,
                            double earth_radius_ft, AtmosphereSample* out);
+// The same values (bit for bit) with the three derivatives left 0: what a flight needs.
+Status evaluate_atmosphere_without_derivatives(const AtmosphereTable& table, const Constants& constants,
+                                               double altitude_ft, double earth_radius_ft,
+                                               AtmosphereSample* out);
 
 // Checks a (possibly user-overridden) table: increasing base altitudes, positive temperatures
 // and densities, finite values, no layer whose temperature reaches zero before the next base.

@@ -9,6 +9,9 @@
 // t = 0 with the launch latitude, azimuth and longitude.
 #pragma once
 
+#include <cmath>
+
+#include "tolip/core/constants.hpp"
 #include "tolip/core/state.hpp"
 
 namespace tolip {
@@ -52,6 +55,12 @@ class SineCosineAnchor {
   SineCosine anchor_ = {0.0, 1.0};
 };
 
+// The angle's remainder about a turn, in [-pi, pi]: std::remainder(angle, 2 pi), which is the angle
+// itself (bit for bit) when |angle| <= pi, its nearest quotient being 0; that case skips the library.
+inline double wrap_angle_rad(double angle) {
+  return (std::fabs(angle) <= kPi) ? angle : std::remainder(angle, 2.0 * kPi);
+}
+
 // atan2(y, x) of a small angle, x > 0 and |y| < x / 16 (3.6 deg), by the Taylor series of atan(y / x)
 // to (y / x)^13 (truncation below 1e-18 relative); the library's atan2 otherwise (and for NaN and
 // y = +-0).
@@ -89,6 +98,8 @@ Vector3 thrust_axis_platform(double theta_rad, double chi_rad);
 
 // In-plane angle of attack: the angle from i_y (along V) to the thrust axis in the i_y-i_z plane.
 double angle_of_attack_rad(const Vector3& thrust_axis_local);
+// The same angle by atan2_by_series (a dispersion flight's, FlightInputs::trig_by_series).
+double angle_of_attack_by_series_rad(const Vector3& thrust_axis_local);
 
 // Pitch attitude theta that puts the thrust axis along V in the vertical plane (alpha = 0) for yaw
 // chi, given [C]: solves C31 cos(theta) sin(chi) + C32 cos(theta) cos(chi) + C33 sin(theta) = 0 on

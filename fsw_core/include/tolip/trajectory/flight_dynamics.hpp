@@ -64,9 +64,11 @@ struct EvaluationScratch {
   double cos_chi = 0.0;
   // A dispersion flight's (FlightInputs::trig_by_series): theta's sine and cosine by the addition
   // theorem from an anchor the library evaluated, moved when theta is 1/16 rad or more from it;
-  // the angles of attack and the body dynamics' small angles by atan2_by_series.
+  // the angles of attack and the body dynamics' small angles by atan2_by_series; the wind's
+  // azimuth relative to psi (psi_w - psi) by the addition theorem from an anchor of its own.
   bool trig_by_series = false;
   SineCosineAnchor theta_anchor;
+  SineCosineAnchor wind_azimuth_anchor;
 };
 
 // The stage being flown.

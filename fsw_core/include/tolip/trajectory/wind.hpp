@@ -26,6 +26,9 @@ struct WindProfile {
 // (the horizontal wind resolved on i_x, i_y, i_z and subtracted from V i_y).
 Vector3 air_relative_velocity_local(const StateVector& state, const StateTrig& trig, double wind_speed_ft_s,
                                     double wind_azimuth_rad);
+// The same with sin and cos of psi_w - psi given (a dispersion flight's, by the addition theorem).
+Vector3 air_relative_velocity_local(const StateVector& state, const StateTrig& trig, double wind_speed_ft_s,
+                                    const SineCosine& relative_azimuth);
 
 // The air-relative frame expressed in L, as the rows of the returned matrix (L -> air frame):
 // a_y along the air-relative velocity, a_z the part of i_z normal to a_y (the "up" of the
@@ -38,5 +41,7 @@ Matrix3 local_to_air_frame(const Vector3& air_velocity_local, double air_speed_f
 // In-plane angle of attack against the air mass: the angle from a_y to the thrust axis in the
 // a_y-a_z plane (angle_of_attack_rad() of the thrust axis resolved in the air frame).
 double air_angle_of_attack_rad(const Matrix3& local_to_air, const Vector3& thrust_axis_local);
+// The thrust axis resolved in the air frame, whose angle_of_attack_rad() that is.
+Vector3 thrust_axis_air(const Matrix3& local_to_air, const Vector3& thrust_axis_local);
 
 }  // namespace tolip
