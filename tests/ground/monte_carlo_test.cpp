@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <vector>
 
 #include "support/dispersion_sources.hpp"
 #include "support/reference_data.hpp"
@@ -365,6 +366,52 @@ TEST(MonteCarlo, PlannedSamplesEqualUnplannedSamplesBitForBit) {
             Status::kOk);
   EXPECT_EQ(planned->mission.vehicle.stages[stage_index(2)].duration_s, n2.duration_s);
   EXPECT_EQ(planned->mission.body_dynamics.pitching_moment_per_rad.y(0), cm_n.y(0));
+}
+
+// The threads take the next sample not yet flown, so a workspace flies samples in no fixed order:
+// a sample must not depend on what its workspace flew before it. Every sample of the table case
+// (thrust, C_M_alpha and wind tables edited in the workspace's mission and restored between
+// samples) flown by one workspace in a scrambled order equals, bit for bit, the same sample flown
+// by a workspace of its own.
+TEST(MonteCarlo, ASampleIsTheSameWhateverItsWorkspaceFlewBeforeIt) {
+  auto c = make_table_case();
+  constexpr std::uint64_t kSeed = 31;
+  constexpr int kSamples = 8;
+  auto shared = std::make_unique<DispersionWorkspace>();
+  ASSERT_EQ(prepare_monte_carlo(c->nominal, c->data, shared.get()), Status::kOk);
+  auto nominal_values = std::make_unique<DispersedTrajectory>();
+  ASSERT_EQ(record_dispersed_trajectory(c->mission, shared->nominal_prepared, shared->nominal,
+                                        shared->nominal, nullptr, nominal_values.get()),
+            Status::kOk);
+  std::vector<std::unique_ptr<DispersedTrajectory>> alone(kSamples);
+  for (int i = 0; i < kSamples; ++i) {
+    auto own = std::make_unique<DispersionWorkspace>();
+    ASSERT_EQ(prepare_monte_carlo(c->nominal, c->data, own.get()), Status::kOk);
+    alone[i] = std::make_unique<DispersedTrajectory>();
+    ASSERT_EQ(fly_monte_carlo_sample(c->nominal, c->data, kSeed, static_cast<std::uint64_t>(i),
+                                     *nominal_values, own.get(), alone[i].get()),
+              Status::kOk)
+        << i;
+  }
+  auto flown = std::make_unique<DispersedTrajectory>();
+  int differing_neighbours = 0;
+  const int order[kSamples] = {7, 0, 5, 2, 6, 1, 4, 3};
+  for (int k = 0; k < kSamples; ++k) {
+    const int i = order[k];
+    ASSERT_EQ(fly_monte_carlo_sample(c->nominal, c->data, kSeed, static_cast<std::uint64_t>(i),
+                                     *nominal_values, shared.get(), flown.get()),
+              Status::kOk)
+        << i;
+    const DispersedTrajectory& a = *alone[i];
+    EXPECT_EQ(std::memcmp(a.values, flown->values, sizeof a.values), 0) << "sample " << i;
+    EXPECT_EQ(std::memcmp(a.orbit, flown->orbit, sizeof a.orbit), 0) << "sample " << i;
+    EXPECT_EQ(a.max_qbar_alpha_lbf_rad_ft2, flown->max_qbar_alpha_lbf_rad_ft2) << "sample " << i;
+    if (k > 0) {
+      const DispersedTrajectory& before = *alone[order[k - 1]];
+      differing_neighbours += (before.values[kFinal][0] != a.values[kFinal][0]) ? 1 : 0;
+    }
+  }
+  EXPECT_EQ(differing_neighbours, kSamples - 1);  // every sample followed one that flew otherwise
 }
 
 }  // namespace

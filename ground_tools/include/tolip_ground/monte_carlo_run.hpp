@@ -1,8 +1,8 @@
 // Monte Carlo dispersions on threads (issue 11 "Beyond the manual", in part): the core flies each
 // sample (tolip/dispersion/monte_carlo.hpp); here the samples are spread over threads, each with
-// its own workspace, and the statistics are formed in sample order, so the result is bit for bit
-// the same for any thread count. The command and its reports: monte_carlo_command.hpp,
-// monte_carlo_report.hpp.
+// its own workspace and taking the next sample not yet flown, and the statistics are formed in
+// sample order, so the result is bit for bit the same for any thread count. The command and its reports:
+// monte_carlo_command.hpp, monte_carlo_report.hpp.
 #pragma once
 
 #include <cstdint>

@@ -19,36 +19,50 @@ Status run_monte_carlo(const DispersionNominal& nominal, const DispersionData& d
   out->nominal_impacts = MonteCarloImpacts{};
   out->impacts.assign(with_impacts ? static_cast<std::size_t>(std::max(count, 0)) : 0u, MonteCarloImpacts{});
   const int workers = std::max(1, std::min(threads, std::max(count, 1)));
-  std::vector<std::unique_ptr<DispersionWorkspace>> workspaces;
-  std::vector<std::unique_ptr<ImpactWorkspace>> impact_workspaces;
-  for (int t = 0; t < workers; ++t) {
-    workspaces.push_back(std::make_unique<DispersionWorkspace>());
-    impact_workspaces.push_back(std::make_unique<ImpactWorkspace>());
-    const Status status = prepare_monte_carlo(nominal, data, workspaces.back().get());
-    if (!ok(status)) return out->status = status;
-  }
+  // Worker 0's workspaces are made here: the nominal's record, which every sample's dispersions are
+  // taken against, comes from them. The other workers make and prepare their own on their threads
+  // (about 2 ms each, most of it the workspaces' first touch), while worker 0 already flies.
+  std::vector<std::unique_ptr<DispersionWorkspace>> workspaces(static_cast<std::size_t>(workers));
+  std::vector<std::unique_ptr<ImpactWorkspace>> impact_workspaces(static_cast<std::size_t>(workers));
+  std::vector<Status> prepared(static_cast<std::size_t>(workers), Status::kOk);
+  const auto make_workspaces = [&](int worker) {
+    const std::size_t w = static_cast<std::size_t>(worker);
+    workspaces[w] = std::make_unique<DispersionWorkspace>();
+    impact_workspaces[w] = std::make_unique<ImpactWorkspace>();
+    prepared[w] = prepare_monte_carlo(nominal, data, workspaces[w].get());
+    return prepared[w];
+  };
+  Status status = make_workspaces(0);
+  if (!ok(status)) return out->status = status;
   DispersionWorkspace& first = *workspaces.front();
   out->nominal = DispersedTrajectory{};
-  Status status = record_dispersed_trajectory(*nominal.mission, first.nominal_prepared, first.nominal,
-                                              first.nominal, nullptr, &out->nominal);
+  status = record_dispersed_trajectory(*nominal.mission, first.nominal_prepared, first.nominal, first.nominal,
+                                       nullptr, &out->nominal);
   out->nominal.status = status;
   if (!ok(status)) return out->status = status;
   if (with_impacts) {
     (void)fly_monte_carlo_casings(nominal, impacts, *nominal.mission, first.nominal_prepared, first.nominal,
                                   impact_workspaces.front().get(), &out->nominal_impacts);
   }
-  // Sample i on worker i mod K: which worker flies a sample does not change it (counter draws).
+  // Each worker takes the next sample not yet taken, so that a worker on a slower or busier core
+  // flies fewer samples instead of holding up the rest (a fixed split, sample i on worker i mod K,
+  // waits for the slowest core). Which worker flies a sample does not change it: its draws are
+  // counter-based and its workspace's earlier samples leave nothing it reads
+  // (MonteCarlo.ASampleIsTheSameWhateverItsWorkspaceFlewBeforeIt).
+  std::atomic<int> next{0};
   std::atomic<int> flown{0};
   const auto work = [&](int worker) {
-    DispersionWorkspace* ws = workspaces[static_cast<std::size_t>(worker)].get();
-    for (int i = worker; i < count; i += workers) {
+    const std::size_t w = static_cast<std::size_t>(worker);
+    if (worker > 0 && !ok(make_workspaces(worker))) return;  // reported after the join
+    DispersionWorkspace* ws = workspaces[w].get();
+    for (int i = next.fetch_add(1, std::memory_order_relaxed); i < count;
+         i = next.fetch_add(1, std::memory_order_relaxed)) {
       const std::size_t at = static_cast<std::size_t>(i);
       const Status sample = fly_monte_carlo_sample(nominal, data, seed, static_cast<std::uint64_t>(i),
                                                    out->nominal, ws, &out->samples[at]);
       if (with_impacts && ok(sample)) {
         (void)fly_monte_carlo_casings(nominal, impacts, ws->mission, ws->prepared, ws->dispersed,
-                                      impact_workspaces[static_cast<std::size_t>(worker)].get(),
-                                      &out->impacts[at]);
+                                      impact_workspaces[w].get(), &out->impacts[at]);
       }
       flown.fetch_add(1, std::memory_order_relaxed);
     }
@@ -56,6 +70,8 @@ Status run_monte_carlo(const DispersionNominal& nominal, const DispersionData& d
   std::vector<std::thread> pool;
   for (int t = progress ? 0 : 1; t < workers; ++t) pool.emplace_back(work, t);
   if (progress) {
+    // Worker 0's workspaces are prepared, so it flies whatever the others do not take: the count
+    // is reached even when another worker could not prepare.
     while (flown.load(std::memory_order_relaxed) < count) {
       progress(flown.load(std::memory_order_relaxed), count);
       std::this_thread::sleep_for(std::chrono::milliseconds(50));
@@ -64,6 +80,11 @@ Status run_monte_carlo(const DispersionNominal& nominal, const DispersionData& d
     work(0);
   }
   for (std::thread& thread : pool) thread.join();
+  // The same preparation as worker 0's cannot fail otherwise; if it did, it is said.
+  for (int t = 1; t < workers; ++t) {
+    if (!ok(prepared[static_cast<std::size_t>(t)]))
+      return out->status = prepared[static_cast<std::size_t>(t)];
+  }
   if (progress) progress(count, count);
   return out->status = Status::kOk;
 }
