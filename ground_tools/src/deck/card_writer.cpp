@@ -433,7 +433,9 @@ class Punch {
   }
 
   std::string header(int block, int first, int last, int stage, const std::string& note) {
-    char buffer[16];
+    // Room for three ints of any value (11 characters each): the check below keeps them to 3
+    // columns, but GCC's -Wformat-truncation at -O2 (RelWithDebInfo) does not follow it.
+    char buffer[36];
     for (int value : {block, first, last, stage}) {
       if (value < -99 || value > 999)
         fail(block, stage, 0, "a header field does not fit its 3 columns: " + str(value));
