@@ -25,8 +25,8 @@ bool all_finite(const AtmosphereSample& s, bool with_derivatives) {
                                           std::isfinite(s.dspeed_of_sound_dh)));
 }
 
-// The one evaluation; the derivatives (the optimizer's adjoint needs them, a flight does not) only
-// when asked for.
+// The one evaluation; the derivatives (the q-bar and heating constraints' partials need them, a
+// flight does not) only when asked for.
 template <bool kWithDerivatives>
 Status evaluate(const AtmosphereTable& table, const Constants& constants, double altitude_ft,
                 double earth_radius_ft, AtmosphereSample* out) {

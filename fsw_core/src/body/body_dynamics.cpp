@@ -89,11 +89,6 @@ UnitMoments unit_moments(const BodyDynamicsBlocks& data, const MomentConditions&
 
 namespace {
 
-// atan2 of an angle that is small in flight: by series when asked (BodyDynamicsInputs).
-double small_angle_atan2(double y, double x, bool by_series) {
-  return by_series ? atan2_by_series(y, x) : std::atan2(y, x);
-}
-
 PlatformVelocityAngles velocity_angles(const Matrix3& platform_to_local, bool by_series) {
   // Row 2 of [C] is the second column of C^-1 = C^T: the unit velocity in P.
   const double vx = platform_to_local(1, 0);

@@ -186,8 +186,8 @@ double angle_of_attack_rad(const Vector3& thrust_axis_local) {
   return std::atan2(thrust_axis_local.z(), thrust_axis_local.y());
 }
 
-double angle_of_attack_by_series_rad(const Vector3& thrust_axis_local) {
-  return atan2_by_series(thrust_axis_local.z(), thrust_axis_local.y());
+double angle_of_attack_rad(const Vector3& thrust_axis_local, bool by_series) {
+  return small_angle_atan2(thrust_axis_local.z(), thrust_axis_local.y(), by_series);
 }
 
 double theta_for_zero_alpha_rad(const Matrix3& platform_to_local, double chi_rad) {

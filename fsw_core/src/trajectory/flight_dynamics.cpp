@@ -251,8 +251,7 @@ Vector3 drag_and_lift(const Mission& mission, const StageContext& stage, const S
     // Under a wind against the air (air_angle_of_attack_rad's axis); by series in dispersion flights.
     const Vector3 axis =
         flow.windy ? thrust_axis_air(flow.local_to_air, out->thrust_axis_local) : out->thrust_axis_local;
-    const double alpha = (scratch != nullptr && scratch->trig_by_series) ? angle_of_attack_by_series_rad(axis)
-                                                                         : angle_of_attack_rad(axis);
+    const double alpha = angle_of_attack_rad(axis, scratch != nullptr && scratch->trig_by_series);
     const AeroTable& slope = mission.vehicle.lift_curve_slope_per_rad;
     out->lift_lbf =
         q_s * ((scratch != nullptr) ? slope(out->mach, &scratch->lift_hint) : slope(out->mach)) * alpha;

@@ -60,8 +60,7 @@ class Flight {
   StateTrig state_trig(StageFlight* flight, const StateVector& state) const;
   // The angle of the thrust axis (local or air frame): with trig_by_series by series, as flown.
   double alpha_rad(const Vector3& thrust_axis) const {
-    return inputs_.trig_by_series ? angle_of_attack_by_series_rad(thrust_axis)
-                                  : angle_of_attack_rad(thrust_axis);
+    return angle_of_attack_rad(thrust_axis, inputs_.trig_by_series);
   }
   void integrate_step(StageFlight* flight, const StepCommand& command, bool adams, double t,
                       StateVector* state) const;

@@ -65,6 +65,11 @@ inline double wrap_angle_rad(double angle) {
 // to (y / x)^13 (truncation below 1e-18 relative); the library's atan2 otherwise (and for NaN and
 // y = +-0).
 double atan2_by_series(double y, double x);
+// atan2 of an angle that is small in flight: atan2_by_series when `by_series` (a dispersion flight's,
+// FlightInputs::trig_by_series), the library's otherwise. The one place that choice is made.
+inline double small_angle_atan2(double y, double x, bool by_series) {
+  return by_series ? atan2_by_series(y, x) : std::atan2(y, x);
+}
 
 // The state's sines and cosines along a flight by the addition theorem from an anchor, a state
 // whose StateTrig the library evaluated. Every value is one addition from the anchor's, so no error
@@ -98,8 +103,8 @@ Vector3 thrust_axis_platform(double theta_rad, double chi_rad);
 
 // In-plane angle of attack: the angle from i_y (along V) to the thrust axis in the i_y-i_z plane.
 double angle_of_attack_rad(const Vector3& thrust_axis_local);
-// The same angle by atan2_by_series (a dispersion flight's, FlightInputs::trig_by_series).
-double angle_of_attack_by_series_rad(const Vector3& thrust_axis_local);
+// The same angle by small_angle_atan2 (by series in a dispersion flight).
+double angle_of_attack_rad(const Vector3& thrust_axis_local, bool by_series);
 
 // Pitch attitude theta that puts the thrust axis along V in the vertical plane (alpha = 0) for yaw
 // chi, given [C]: solves C31 cos(theta) sin(chi) + C32 cos(theta) cos(chi) + C33 sin(theta) = 0 on
