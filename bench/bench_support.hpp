@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "support/repository_paths.hpp"
 #include "tolip_ground/card_deck.hpp"
 #include "tolip_ground/optimization_run.hpp"
 
@@ -31,7 +32,8 @@ struct OptimizedExample {
 // Loads the deck into `made` and optimizes its first case.
 inline void load_and_optimize_example(OptimizedExample* made) {
   ground::DeckError error;
-  if (!ground::load_deck(std::string(TOLIP_EXAMPLES_DIR) + "/scout/mission.toml", &made->deck, &error)) {
+  if (!ground::load_deck(std::string(tolip::repository_paths::examples_dir()) + "/scout/mission.toml",
+                         &made->deck, &error)) {
     stop_setup(error.to_string());
   }
   ground::run_optimization(*made->example().mission, nullptr, &made->run);

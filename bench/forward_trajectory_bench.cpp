@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <memory>
 
+#include "support/repository_paths.hpp"
 #include "tolip/trajectory/trajectory.hpp"
 #include "tolip_ground/deck.hpp"
 
@@ -21,7 +22,8 @@ Case& reference_case() {
   static Case c = [] {
     Case loaded;
     tolip::ground::DeckError error;
-    const char* path = TOLIP_EXAMPLES_DIR "/scout/reference_optimum.toml";
+    const std::string path =
+        std::string(tolip::repository_paths::examples_dir()) + "/scout/reference_optimum.toml";
     if (!tolip::ground::load_toml_deck(path, loaded.mission.get(), &error)) {
       std::fprintf(stderr, "%s\n", error.to_string().c_str());
       std::exit(1);

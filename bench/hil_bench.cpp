@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "support/repository_paths.hpp"
 #include "tolip/table/table_image.hpp"
 #include "tolip_ground/card_deck.hpp"
 #include "tolip_ground/guidance_table.hpp"
@@ -45,7 +46,8 @@ const Prepared& prepared() {
   static Prepared* p = [] {
     auto* made = new Prepared;
     tolip::ground::DeckError error;
-    const std::string deck = std::string(TOLIP_EXAMPLES_DIR) + "/scout/reference_optimum.toml";
+    const std::string deck =
+        std::string(tolip::repository_paths::examples_dir()) + "/scout/reference_optimum.toml";
     if (!tolip::ground::load_deck(deck, &made->deck, &error)) {
       std::fprintf(stderr, "%s\n", error.to_string().c_str());
       std::exit(1);
@@ -108,8 +110,9 @@ BENCHMARK(BM_HilNominalAscent50Hz)->Unit(benchmark::kMillisecond)->UseRealTime()
 // The processor-in-the-loop image, or "" when it is not built.
 std::string pil_image() {
   const char* named = std::getenv("TOLIP_PIL_IMAGE");
-  const std::string image =
-      named != nullptr && *named != '\0' ? std::string(named) : std::string(TOLIP_PIL_IMAGE);
+  const std::string image = named != nullptr && *named != '\0'
+                                ? std::string(named)
+                                : std::string(tolip::repository_paths::pil_image());
   return ::access(image.c_str(), R_OK) == 0 ? image : std::string();
 }
 
@@ -129,7 +132,7 @@ bool qemu_on_path() {
 void BM_HilQemuLockStep50Hz(benchmark::State& state) {
   const std::string image = pil_image();
   if (image.empty()) {
-    state.SkipWithError(("skipped: no PIL image (" + std::string(TOLIP_PIL_IMAGE) +
+    state.SkipWithError(("skipped: no PIL image (" + std::string(tolip::repository_paths::pil_image()) +
                          "; build the cortex-m7 preset or set TOLIP_PIL_IMAGE)")
                             .c_str());
     return;

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <memory>
 
+#include "support/repository_paths.hpp"
 #include "tolip/optimizer/steepest_descent.hpp"
 #include "tolip_ground/deck.hpp"
 
@@ -26,7 +27,7 @@ tolip::Mission& load(const char* name) {
   if (!missions[slot]) {
     missions[slot] = tolip::ground::make_mission();
     tolip::ground::DeckError error;
-    const std::string path = std::string(TOLIP_EXAMPLES_DIR) + "/" + name;
+    const std::string path = std::string(tolip::repository_paths::examples_dir()) + "/" + name;
     if (!tolip::ground::load_toml_deck(path, missions[slot].get(), &error)) {
       std::fprintf(stderr, "%s\n", error.to_string().c_str());
       std::exit(1);

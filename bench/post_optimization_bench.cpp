@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <memory>
 
+#include "support/repository_paths.hpp"
 #include "tolip/optimizer/exchange_ratios.hpp"
 #include "tolip/optimizer/linearization.hpp"
 #include "tolip/optimizer/steepest_descent.hpp"
@@ -29,7 +30,7 @@ const Optimum& optimum() {
   static Optimum* o = [] {
     auto* made = new Optimum;
     tolip::ground::DeckError error;
-    const std::string path = std::string(TOLIP_EXAMPLES_DIR) + "/scout/mission.toml";
+    const std::string path = std::string(tolip::repository_paths::examples_dir()) + "/scout/mission.toml";
     if (!tolip::ground::load_toml_deck(path, made->mission.get(), &error)) {
       std::fprintf(stderr, "%s\n", error.to_string().c_str());
       std::exit(1);

@@ -36,6 +36,9 @@ TOLIP_DEBIAN_PACKAGES=(
   clang-tidy cppcheck
   gcovr
   clang-14 libclang-rt-14-dev
+  # The compiler cache of tolip_configure_and_build (below): the clean-clone check's second build
+  # of the project is served from it.
+  ccache
 )
 
 # True when the package is fully installed ("install ok installed"; a removed package whose
@@ -79,13 +82,26 @@ tolip_ensure_packages() {
 
 # Configures (Release) and builds the project into the given build directory with two jobs:
 # every target, or only the targets named after the two folders (setup.sh builds just `tolip`).
+#
+# The compiler cache: a new build directory compiles through ccache (installed above) unless
+# CMAKE_CXX_COMPILER_LAUNCHER in the environment names another launcher; an existing build
+# directory keeps what it was configured with. CCACHE_BASEDIR is the source folder, so ccache hashes
+# the project's paths relative to it and a copy of the repository elsewhere with the same build
+# folder (the clean-clone check's copy, tests/scripts/check_clean_clone.sh) is served from the
+# cache: CI then compiles the project once, not twice. A hit still needs every header the compile
+# reads to exist with the same contents, so a copy that lacked one would fail as before.
 tolip_configure_and_build() {
   local source_dir=$1 build_dir=$2
   shift 2
-  cmake -S "$source_dir" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release
+  local launcher=()
+  if [[ ! -f "$build_dir/CMakeCache.txt" && -z "${CMAKE_CXX_COMPILER_LAUNCHER:-}" ]] &&
+     command -v ccache >/dev/null 2>&1; then
+    launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+  fi
+  cmake -S "$source_dir" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release "${launcher[@]}"
   if [[ $# -gt 0 ]]; then
-    cmake --build "$build_dir" -j2 --target "$@"
+    CCACHE_BASEDIR="$source_dir" cmake --build "$build_dir" -j2 --target "$@"
   else
-    cmake --build "$build_dir" -j2
+    CCACHE_BASEDIR="$source_dir" cmake --build "$build_dir" -j2
   fi
 }

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "support/guidance_table_fixture.hpp"
+#include "support/repository_paths.hpp"
 #include "tolip/table/crc32.hpp"
 #include "tolip/table/table_image.hpp"
 
@@ -363,7 +364,8 @@ TEST(Status, EveryTableStatusHasANameAndAMessage) {
 // format change (the 812-byte version-2 image did so: every execution stopped at the size check)
 // would let the campaign's executions count without reaching the field checks; this fails first.
 TEST(TableImage, FuzzSeedsAreImagesOfTheCurrentFormatBehindTheirModeByte) {
-  const std::filesystem::path seeds = std::filesystem::path(TOLIP_SOURCE_DIR) / "fuzz/corpus/table_image";
+  const std::filesystem::path seeds =
+      std::filesystem::path(tolip::repository_paths::source_dir()) / "fuzz/corpus/table_image";
   int decoded = 0;
   for (const auto& entry : std::filesystem::directory_iterator(seeds)) {
     std::ifstream in(entry.path(), std::ios::binary);

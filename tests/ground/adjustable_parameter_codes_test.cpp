@@ -14,6 +14,7 @@
 #include <string>
 
 #include "cli_runner.hpp"
+#include "support/repository_paths.hpp"
 
 namespace tolip::test {
 namespace {
@@ -73,7 +74,8 @@ TEST(Sec9AdjustableCodes, StageFourYawAndTheCoastsAfterStagesOneAndTwoInAWholeOp
 // the case converges as without it.
 TEST(Sec9AdjustableCodes, CoastAfterStageFiveInTheEscapeOptimization) {
   ScratchDirectory scratch("adjustable_code_11");
-  std::string text = read_text_file(std::string(TOLIP_EXAMPLES_DIR) + "/escape/mission.toml");
+  std::string text =
+      read_text_file(std::string(tolip::repository_paths::examples_dir()) + "/escape/mission.toml");
   const std::size_t at = text.find("[linearization]");
   ASSERT_NE(at, std::string::npos);
   text.insert(at, "[[adjustable_parameter]]  # coast 10\ncode = 11\nweight = 0.0001\n\n");

@@ -1,5 +1,5 @@
-// Runs the built `tolip` program (TOLIP_EXECUTABLE) in a shell and captures its exit code,
-// stdout and stderr, for the command-line tests.
+// Runs the built `tolip` program (repository_paths::tolip_executable()) in a shell and captures its exit
+// code, stdout and stderr, for the command-line tests.
 #pragma once
 
 #include <sys/wait.h>
@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "support/reference_data.hpp"
+#include "support/repository_paths.hpp"
 #include "support/text_match.hpp"
 
 namespace tolip::test {
@@ -113,10 +114,10 @@ inline std::filesystem::path stderr_path(const char* prefix) {
           std::to_string(++counter));
 }
 
-// Runs TOLIP_EXECUTABLE with the arguments; stderr is captured through a scratch file.
+// Runs the tolip program with the arguments; stderr is captured through a scratch file.
 inline CommandResult run_tolip_executable(std::initializer_list<std::string> arguments) {
   const std::filesystem::path err_path = stderr_path("tolip_test_stderr_");
-  std::string command = shell_quote(TOLIP_EXECUTABLE);
+  std::string command = shell_quote(tolip::repository_paths::tolip_executable());
   for (const std::string& argument : arguments) command += " " + shell_quote(argument);
   command += " 2>" + shell_quote(err_path.string());
   return run_capturing(command, err_path);
@@ -132,13 +133,13 @@ inline constexpr const char* kBoundedMemoryPrefix =
 inline constexpr const char* kBoundedMemoryPrefix = "ulimit -v 1048576; ";
 #endif
 
-// Runs TOLIP_EXECUTABLE like run_tolip_executable, but with at most 1 GiB of memory and 60 s: for
+// Runs the tolip program like run_tolip_executable, but with at most 1 GiB of memory and 60 s: for
 // hostile inputs, so that a regression (an endless read) fails the test instead of taking the
 // machine down.
 inline CommandResult run_tolip_bounded(const std::vector<std::string>& arguments) {
   const std::filesystem::path err_path = stderr_path("tolip_hostile_stderr_");
-  std::string command =
-      std::string(kBoundedMemoryPrefix) + "exec timeout -s KILL 60 " + shell_quote(TOLIP_EXECUTABLE);
+  std::string command = std::string(kBoundedMemoryPrefix) + "exec timeout -s KILL 60 " +
+                        shell_quote(tolip::repository_paths::tolip_executable());
   for (const std::string& argument : arguments) command += " " + shell_quote(argument);
   command += " 2>" + shell_quote(err_path.string());
   return run_capturing("sh -c " + shell_quote(command), err_path);
@@ -160,7 +161,8 @@ inline std::string without_input_warnings(const std::string& err) {
 // must occur; a missing one fails the calling test), written as `name` into the scratch folder.
 inline std::string edited_example_deck(const ScratchDirectory& scratch, const std::string& name,
                                        const std::vector<std::pair<std::string, std::string>>& edits) {
-  std::string text = read_text_file(std::string(TOLIP_EXAMPLES_DIR) + "/scout/mission.toml");
+  std::string text =
+      read_text_file(std::string(tolip::repository_paths::examples_dir()) + "/scout/mission.toml");
   for (const auto& [from, to] : edits) {
     const std::size_t at = text.find(from);
     EXPECT_NE(at, std::string::npos) << from;

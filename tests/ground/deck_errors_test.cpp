@@ -7,6 +7,7 @@
 #include <string>
 
 #include "deck_test_support.hpp"
+#include "support/repository_paths.hpp"
 #include "tolip/mission/mission.hpp"
 
 namespace tolip::test {
@@ -517,7 +518,7 @@ TEST(Sec22Deck, RejectsMissingFileNamingIt) {
 }
 
 TEST(Sec22Deck, LoadErrorsNameTheFileOnDisk) {
-  const std::string path = std::string(TOLIP_BINARY_DIR) + "/deck_errors_test_bad.toml";
+  const std::string path = std::string(tolip::repository_paths::binary_dir()) + "/deck_errors_test_bad.toml";
   {
     std::ofstream out(path, std::ios::binary);
     out << replaced(scout_mission_text(), "jettison_weight_lb = 125.0", "jettison_weight_lb = -125.0");

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "deck_test_support.hpp"
+#include "support/repository_paths.hpp"
 #include "tolip/core/constants.hpp"
 #include "tolip/mission/mission.hpp"
 
@@ -314,10 +315,11 @@ TEST(Sec22Deck, ExampleExtrasCarryTheOptionalComputationData) {
 // The committed decks are what the generator writes from the reference (no hand edits).
 TEST(Sec22Deck, ExamplesMatchTheirGenerator) {
   if (std::system("python3 -c 'import json' > /dev/null 2>&1") != 0) GTEST_SKIP() << "python3 not available";
-  const std::string out = std::string(TOLIP_BINARY_DIR) + "/generated_scout_examples";
-  const std::string command =
-      "python3 '" + std::string(TOLIP_SOURCE_DIR) + "/scripts/make_scout_examples.py'" + " --reference '" +
-      std::string(TOLIP_REFERENCE_DIR) + "/scout_reference.json'" + " --out '" + out + "' > /dev/null";
+  const std::string out = std::string(tolip::repository_paths::binary_dir()) + "/generated_scout_examples";
+  const std::string command = "python3 '" + std::string(tolip::repository_paths::source_dir()) +
+                              "/scripts/make_scout_examples.py'" + " --reference '" +
+                              std::string(tolip::repository_paths::reference_dir()) +
+                              "/scout_reference.json'" + " --out '" + out + "' > /dev/null";
   ASSERT_EQ(std::system(command.c_str()), 0) << command;
   for (const char* name :
        {"mission.toml", "reference_optimum.toml", "mission_qalpha.toml", "mission.dat", "cases.dat"}) {

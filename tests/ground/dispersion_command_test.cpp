@@ -14,11 +14,14 @@
 
 #include "cli_runner.hpp"
 #include "support/pinned_figures.hpp"
+#include "support/repository_paths.hpp"
 
 namespace tolip::test {
 namespace {
 
-std::string mission_deck() { return std::string(TOLIP_EXAMPLES_DIR) + "/scout/mission.toml"; }
+std::string mission_deck() {
+  return std::string(tolip::repository_paths::examples_dir()) + "/scout/mission.toml";
+}
 
 struct Runs {
   ScratchDirectory scratch{"dispersions"};
@@ -400,7 +403,8 @@ TEST(Sec15DispersionsCommand, DeckWithoutBlock46IsBadInputNamingTheBlock) {
   ScratchDirectory scratch("dispersions_none");
   const std::string csv = (scratch / "none.csv").string();
   const CommandResult run = run_tolip_executable(
-      {"dispersions", std::string(TOLIP_EXAMPLES_DIR) + "/strapon/mission.toml", "--csv", csv});
+      {"dispersions", std::string(tolip::repository_paths::examples_dir()) + "/strapon/mission.toml", "--csv",
+       csv});
   EXPECT_EQ(run.exit_code, 2) << run.err;
   EXPECT_TRUE(run.out.empty());
   EXPECT_NE(run.err.find("data block 46 (dispersion)"), std::string::npos) << run.err;

@@ -15,6 +15,7 @@
 
 #include "cli_runner.hpp"
 #include "support/cartesian_model.hpp"
+#include "support/repository_paths.hpp"
 #include "tolip/optimizer/constraint_set.hpp"
 #include "tolip/optimizer/steepest_descent.hpp"
 #include "tolip_ground/deck.hpp"
@@ -22,7 +23,9 @@
 namespace tolip::test {
 namespace {
 
-std::string escape_deck() { return std::string(TOLIP_EXAMPLES_DIR) + "/escape/mission.toml"; }
+std::string escape_deck() {
+  return std::string(tolip::repository_paths::examples_dir()) + "/escape/mission.toml";
+}
 
 struct Escape {
   std::unique_ptr<Mission> mission = ground::make_mission();
@@ -148,8 +151,8 @@ TEST(AddendumHEscapeExample, SpunStageFiveHoldsItsOwnOptimizedAttitudes) {
 // The deck is the generator's output: re-running scripts/make_escape_example.py reproduces it.
 TEST(AddendumHEscapeExample, DeckIsTheGeneratorsOutput) {
   if (std::system("python3 -c 'import json' > /dev/null 2>&1") != 0) GTEST_SKIP() << "python3 not available";
-  const std::string out = std::string(TOLIP_BINARY_DIR) + "/generated_escape_example";
-  const std::string command = "python3 '" + std::string(TOLIP_SOURCE_DIR) +
+  const std::string out = std::string(tolip::repository_paths::binary_dir()) + "/generated_escape_example";
+  const std::string command = "python3 '" + std::string(tolip::repository_paths::source_dir()) +
                               "/scripts/make_escape_example.py' --out '" + out + "' > /dev/null";
   ASSERT_EQ(std::system(command.c_str()), 0) << command;
   EXPECT_EQ(read_text_file(out + "/mission.toml"), read_text_file(escape_deck()))

@@ -14,13 +14,14 @@
 #include <toml++/toml.h>
 
 #include "deck_test_support.hpp"
+#include "support/repository_paths.hpp"
 #include "tolip/mission/mission.hpp"
 #include "tolip_ground/card_deck.hpp"
 
 namespace tolip::test {
 namespace {
 
-const std::string kCorpus = std::string(TOLIP_SOURCE_DIR) + "/fuzz/corpus";
+const std::string kCorpus = std::string(tolip::repository_paths::source_dir()) + "/fuzz/corpus";
 
 // Every key path of a TOML document, array-of-tables entries by index ("dispersion.3.code"); the
 // elements of value arrays are not paths (the tables are thinned, their keys are not).
@@ -122,8 +123,8 @@ TEST(FuzzSeeds, CompactDeckSeedsParseAndValidateAndMatchTheirGenerator) {
   if (std::system("python3 -c 'import tomllib' > /dev/null 2>&1") != 0) {
     GTEST_SKIP() << "python3 with tomllib (3.11) not available";
   }
-  const std::string out = std::string(TOLIP_BINARY_DIR) + "/generated_fuzz_seeds";
-  const std::string command = "python3 '" + std::string(TOLIP_SOURCE_DIR) +
+  const std::string out = std::string(tolip::repository_paths::binary_dir()) + "/generated_fuzz_seeds";
+  const std::string command = "python3 '" + std::string(tolip::repository_paths::source_dir()) +
                               "/scripts/make_fuzz_seeds.py' --out '" + out + "' > /dev/null";
   ASSERT_EQ(std::system(command.c_str()), 0) << command;
   for (const Seed& s : kTomlSeeds) {

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "cli_runner.hpp"
+#include "support/repository_paths.hpp"
 
 namespace tolip::test {
 namespace {
@@ -70,8 +71,8 @@ TEST(Sec5WeakDirections, InclinationAtTheLaunchLatitudeIsHeldByItsDeadbandAndThe
 
 // The bundled example's constraints are all steerable: nothing is held, nothing fails.
 TEST(Sec5WeakDirections, TheExampleHoldsNothing) {
-  const CommandResult run =
-      run_tolip_executable({"optimize", std::string(TOLIP_EXAMPLES_DIR) + "/scout/mission.toml", "--json"});
+  const CommandResult run = run_tolip_executable(
+      {"optimize", std::string(tolip::repository_paths::examples_dir()) + "/scout/mission.toml", "--json"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const nlohmann::json d = nlohmann::json::parse(run.out);
   for (const nlohmann::json& h : d["held_constraints"]) EXPECT_EQ(h["held_runs"].get<int>(), 0) << h["code"];

@@ -38,6 +38,7 @@
 #include "../../ground_tools/src/deck/field_description.hpp"
 #include "../../ground_tools/src/deck/toml_reader.hpp"
 #include "cli_runner.hpp"
+#include "support/repository_paths.hpp"
 #include "tolip_ground/card_deck.hpp"
 #include "tolip_ground/commands.hpp"
 
@@ -204,7 +205,8 @@ Verdict combine(const std::vector<Verdict>& verdicts) {
 // The Scout example, except IP(17) off: the input echo prints every input, so with it on every
 // key would "act" on the listing by being printed. print_input itself is walked (on: the echo).
 std::string base_deck_text() {
-  toml::table root = toml::parse(read_text_file(std::string(TOLIP_EXAMPLES_DIR) + "/scout/mission.toml"));
+  toml::table root = toml::parse(
+      read_text_file(std::string(tolip::repository_paths::examples_dir()) + "/scout/mission.toml"));
   root["options"].as_table()->insert_or_assign("print_input", false);
   std::ostringstream text;
   text << root;
@@ -777,7 +779,8 @@ TEST(InputWalker, EveryTomlKeyAndEveryCardWordActsIsRejectedOrWarns) {
   }
 
   // The card deck of the same case: every punched word.
-  const std::string deck = read_text_file(std::string(TOLIP_EXAMPLES_DIR) + "/scout/mission.dat");
+  const std::string deck =
+      read_text_file(std::string(tolip::repository_paths::examples_dir()) + "/scout/mission.dat");
   ground::Deck base;
   ground::DeckError error;
   ASSERT_TRUE(ground::parse_deck(deck, "walked.dat", &base, &error)) << error.to_string();

@@ -21,6 +21,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.hpp"
+#include "support/repository_paths.hpp"
 
 namespace tolip::test {
 namespace {
@@ -99,7 +100,7 @@ const Runs& example_runs() {
   static Runs* runs = nullptr;
   if (runs == nullptr) {
     runs = new Runs;
-    const std::string deck = std::string(TOLIP_EXAMPLES_DIR) + "/scout/mission.toml";
+    const std::string deck = std::string(tolip::repository_paths::examples_dir()) + "/scout/mission.toml";
     runs->final_level = run_tolip_executable({"optimize", deck, "--no-progress", "--listing-level", "final"});
     runs->default_level = run_tolip_executable({"optimize", deck, "--no-progress"});
     runs->full_level = run_tolip_executable({"optimize", deck, "--no-progress", "--listing-level", "full"});
@@ -119,7 +120,8 @@ TEST(ListingLevel, Sec22_DefaultIsTheFinalLevelAndTheJsonIgnoresTheLevel) {
   EXPECT_EQ(r.final_level.out.find("BETA6D"), std::string::npos);
   EXPECT_NE(r.full_level.out.find("BETA6D"), std::string::npos);
   const CommandResult bad = run_tolip_executable(
-      {"optimize", std::string(TOLIP_EXAMPLES_DIR) + "/scout/mission.toml", "--listing-level", "all"});
+      {"optimize", std::string(tolip::repository_paths::examples_dir()) + "/scout/mission.toml",
+       "--listing-level", "all"});
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_TRUE(contains(bad.err, "--listing-level")) << bad.err;
 }

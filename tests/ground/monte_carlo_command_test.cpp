@@ -16,11 +16,14 @@
 #include <string>
 
 #include "cli_runner.hpp"
+#include "support/repository_paths.hpp"
 
 namespace tolip::test {
 namespace {
 
-std::string mission_deck() { return std::string(TOLIP_EXAMPLES_DIR) + "/scout/mission.toml"; }
+std::string mission_deck() {
+  return std::string(tolip::repository_paths::examples_dir()) + "/scout/mission.toml";
+}
 
 TEST(MonteCarloCommand, SameSeedGivesTheSameJsonAndCsvOnOneTwoAndThreeThreads) {
   ScratchDirectory scratch("montecarlo_threads");
@@ -332,7 +335,7 @@ void expect_bad_input(const ScratchDirectory& scratch, std::vector<std::string> 
   const std::string csv = (scratch / "never.csv").string();
   const std::string plots = (scratch / "never_plots").string();
   arguments.insert(arguments.end(), {"--csv", csv, "--plots", plots});
-  std::string command = shell_quote(TOLIP_EXECUTABLE);
+  std::string command = shell_quote(tolip::repository_paths::tolip_executable());
   for (const std::string& argument : arguments) command += " " + shell_quote(argument);
   const std::filesystem::path err_path = stderr_path("tolip_mc_stderr_");
   const CommandResult run = run_capturing(command + " 2>" + shell_quote(err_path.string()), err_path);

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "cli_runner.hpp"
+#include "support/repository_paths.hpp"
 
 namespace tolip::test {
 namespace {
@@ -31,7 +32,8 @@ struct DeckParts {
 };
 
 DeckParts mission_parts() {
-  std::istringstream in(read_text_file(std::string(TOLIP_EXAMPLES_DIR) + "/scout/mission.dat"));
+  std::istringstream in(
+      read_text_file(std::string(tolip::repository_paths::examples_dir()) + "/scout/mission.dat"));
   DeckParts parts;
   std::string line;
   bool in_groups = false;
@@ -90,8 +92,8 @@ TEST(OptimizeCases, EveryCaseRunsInOrder) {
 }
 
 TEST(OptimizeCases, OneCaseDeckStillPrintsOneObject) {
-  const CommandResult run =
-      run_tolip_executable({"optimize", std::string(TOLIP_EXAMPLES_DIR) + "/scout/mission.dat", "--json"});
+  const CommandResult run = run_tolip_executable(
+      {"optimize", std::string(tolip::repository_paths::examples_dir()) + "/scout/mission.dat", "--json"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_TRUE(nlohmann::json::parse(run.out).is_object());
 }

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "cli_runner.hpp"
+#include "support/repository_paths.hpp"
 #include "tolip_ground/plot.hpp"
 
 namespace tolip::test {
@@ -477,8 +478,10 @@ TEST(PlotCatalogue, MalformedFieldsAreNamed) {
 TEST(PlotCommand, HelpAndDocsNameEveryFigure) {
   const CommandResult help = run_tolip_executable({"plot", "--help"});
   ASSERT_EQ(help.exit_code, 0);
-  const std::string docs = read_text_file(std::string(TOLIP_SOURCE_DIR) + "/docs/cli.md");
-  const std::string guide = read_text_file(std::string(TOLIP_SOURCE_DIR) + "/docs/user-guide.md");
+  const std::string docs =
+      read_text_file(std::string(tolip::repository_paths::source_dir()) + "/docs/cli.md");
+  const std::string guide =
+      read_text_file(std::string(tolip::repository_paths::source_dir()) + "/docs/user-guide.md");
   for (const ground::PlotKind& kind : ground::plot_catalogue()) {
     EXPECT_TRUE(contains(help.out, kind.name)) << kind.name;
     EXPECT_TRUE(contains(docs, std::string("| `") + kind.name + "` |")) << "docs/cli.md lacks " << kind.name;
@@ -491,8 +494,8 @@ TEST(PlotCommand, HelpAndDocsNameEveryFigure) {
 TEST(PlotCommand, SimulateResultGivesEveryFigureAsPngAndSvg) {
   REQUIRE_GNUPLOT();
   ScratchDirectory scratch("plot_simulate");
-  const CommandResult simulate =
-      run_tolip_executable({"simulate", std::string(TOLIP_EXAMPLES_DIR) + "/scout/mission.toml", "--json"});
+  const CommandResult simulate = run_tolip_executable(
+      {"simulate", std::string(tolip::repository_paths::examples_dir()) + "/scout/mission.toml", "--json"});
   ASSERT_EQ(simulate.exit_code, 0) << simulate.err;
   const std::string result = write_file(scratch, "result.json", simulate.out);
   const fs::path out = scratch / "figures";  // made by the command

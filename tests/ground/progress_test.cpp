@@ -8,6 +8,7 @@
 #include <string>
 
 #include "cli_runner.hpp"
+#include "support/repository_paths.hpp"
 #include "tolip_ground/commands.hpp"
 #include "tolip_ground/deck.hpp"
 #include "tolip_ground/progress.hpp"
@@ -126,7 +127,7 @@ TEST(Progress, OptimizerObserverReportsEachForwardRun) {
 }
 
 TEST(Progress, ForcedOnThroughTheOptimizeCommand) {
-  const std::string deck = std::string(TOLIP_EXAMPLES_DIR) + "/scout/mission.toml";
+  const std::string deck = std::string(tolip::repository_paths::examples_dir()) + "/scout/mission.toml";
   ground::OptimizeCommandOptions options;
   options.deck_path = deck;
   options.json = true;
@@ -144,7 +145,7 @@ TEST(Progress, ForcedOnThroughTheOptimizeCommand) {
 
 TEST(Progress, OptimizeIsSilentWhenStderrIsNotATerminal) {
   // Under CTest stderr is a file: the default (auto) shows nothing, and --no-progress never does.
-  const std::string deck = std::string(TOLIP_EXAMPLES_DIR) + "/scout/mission.toml";
+  const std::string deck = std::string(tolip::repository_paths::examples_dir()) + "/scout/mission.toml";
   for (const char* flag : {"--json", "--no-progress"}) {
     const CommandResult result = run_tolip_executable({"optimize", deck, "--json", flag});
     EXPECT_EQ(result.exit_code, 0) << result.err;

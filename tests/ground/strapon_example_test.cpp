@@ -16,13 +16,18 @@
 #include <vector>
 
 #include "cli_runner.hpp"
+#include "support/repository_paths.hpp"
 
 namespace tolip::test {
 namespace {
 
-std::string strapon_deck() { return std::string(TOLIP_EXAMPLES_DIR) + "/strapon/mission.toml"; }
+std::string strapon_deck() {
+  return std::string(tolip::repository_paths::examples_dir()) + "/strapon/mission.toml";
+}
 
-std::string five_element_deck() { return std::string(TOLIP_EXAMPLES_DIR) + "/strapon/five_elements.toml"; }
+std::string five_element_deck() {
+  return std::string(tolip::repository_paths::examples_dir()) + "/strapon/five_elements.toml";
+}
 
 // `tolip COMMAND DECK --json` run to a clean exit and its output parsed into `document`; a fatal
 // failure otherwise (the caller stops under ASSERT_NO_FATAL_FAILURE).
@@ -268,8 +273,8 @@ TEST(Sec22StrapOnFiveElements, ASecondCrudeStartConvergesWithinHalfAPercent) {
 // The committed deck is what its generator writes (no hand edits).
 TEST(Sec22StrapOnExample, TheDeckMatchesItsGenerator) {
   if (std::system("python3 -c 'import json' > /dev/null 2>&1") != 0) GTEST_SKIP() << "python3 not available";
-  const std::string out = std::string(TOLIP_BINARY_DIR) + "/generated_strapon_example";
-  const std::string command = "python3 '" + std::string(TOLIP_SOURCE_DIR) +
+  const std::string out = std::string(tolip::repository_paths::binary_dir()) + "/generated_strapon_example";
+  const std::string command = "python3 '" + std::string(tolip::repository_paths::source_dir()) +
                               "/scripts/make_strapon_example.py' --out '" + out + "' > /dev/null";
   ASSERT_EQ(std::system(command.c_str()), 0) << command;
   EXPECT_EQ(read_text_file(out + "/mission.toml"), read_text_file(strapon_deck()))

@@ -21,6 +21,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.hpp"
+#include "support/repository_paths.hpp"
 #include "tolip/table/guidance_executor.hpp"
 #include "tolip/table/table_image.hpp"
 #include "tolip/table/table_service.hpp"
@@ -583,7 +584,7 @@ TEST(ExportCli, HelpAndDocsNameTheMacrosTheHeaderDefines) {
             0);
   const std::string default_text = read_text_file(default_header);
   for (const char* doc : {"docs/cli.md", "docs/table-format.md"}) {
-    const std::string page = read_text_file(std::string(TOLIP_SOURCE_DIR) + "/" + doc);
+    const std::string page = read_text_file(std::string(tolip::repository_paths::source_dir()) + "/" + doc);
     const std::regex spelled(R"(TOLIP_TABLE_IMAGE_TOLIP_PITCH_TABLE_H_(SIZE|CRC32))");
     int found = 0;
     for (std::sregex_iterator it(page.begin(), page.end(), spelled), end; it != end; ++it, ++found) {

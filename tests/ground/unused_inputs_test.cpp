@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cli_runner.hpp"
+#include "support/repository_paths.hpp"
 
 namespace tolip::test {
 namespace {
@@ -28,8 +29,8 @@ int warning_count(const std::string& err) {
 // itself succeeds.
 TEST(UnusedInputs, TheExampleNamesEveryInputItDoesNotActOn) {
   for (const char* deck : {"scout/mission.toml", "scout/mission.dat"}) {
-    const CommandResult run =
-        run_tolip_executable({"simulate", std::string(TOLIP_EXAMPLES_DIR) + "/" + deck, "--json"});
+    const CommandResult run = run_tolip_executable(
+        {"simulate", std::string(tolip::repository_paths::examples_dir()) + "/" + deck, "--json"});
     EXPECT_EQ(run.exit_code, 0) << run.err;
     for (const char* named : {"data block 4, IP(21) (options.dispersions)",
                               "data block 17, DA2(8) (misc.gyro_uncage_s_before_launch)",

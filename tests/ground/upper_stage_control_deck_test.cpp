@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "cli_runner.hpp"
+#include "support/repository_paths.hpp"
 #include "tolip/table/table_image.hpp"
 #include "tolip_ground/deck.hpp"
 #include "tolip_ground/unused_inputs.hpp"
@@ -51,8 +52,8 @@ const Runs& runs() {
   static const std::unique_ptr<Runs> r = [] {
     auto runs = std::make_unique<Runs>();
     runs->deck = edited_example_deck(runs->scratch, "stage4_continuous.toml", kStage4Continuous);
-    runs->spun =
-        run_tolip_executable({"optimize", std::string(TOLIP_EXAMPLES_DIR) + "/scout/mission.toml", "--json"});
+    runs->spun = run_tolip_executable(
+        {"optimize", std::string(tolip::repository_paths::examples_dir()) + "/scout/mission.toml", "--json"});
     runs->continuous = run_tolip_executable({"optimize", runs->deck, "--json"});
     const std::string image = (runs->scratch / "table.bin").string();
     runs->exported = run_tolip_executable({"export", runs->deck, "--out", image, "--created-unix-s", "0"});

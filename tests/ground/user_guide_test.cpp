@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "cli_runner.hpp"
+#include "support/repository_paths.hpp"
 
 namespace tolip::test {
 namespace {
@@ -67,14 +68,15 @@ std::vector<std::string> guide_commands(const std::string& guide) {
 }
 
 TEST(UserGuide, EveryCommandRunsFromAClone) {
-  const std::string guide = read_text_file(std::string(TOLIP_SOURCE_DIR) + "/docs/user-guide.md");
+  const std::string guide =
+      read_text_file(std::string(tolip::repository_paths::source_dir()) + "/docs/user-guide.md");
   const std::vector<std::string> commands = guide_commands(guide);
   ASSERT_GE(commands.size(), 15u) << "the guide's commands were not found";
   const bool gnuplot = std::system("command -v gnuplot >/dev/null 2>&1") == 0;
 
   ScratchDirectory scratch("user_guide");
-  fs::create_directory_symlink(TOLIP_EXAMPLES_DIR, scratch / "examples");
-  const std::string path = fs::path(TOLIP_EXECUTABLE).parent_path().string();
+  fs::create_directory_symlink(tolip::repository_paths::examples_dir(), scratch / "examples");
+  const std::string path = fs::path(tolip::repository_paths::tolip_executable()).parent_path().string();
   for (const std::string& command : commands) {
     if (!gnuplot && command.find("plot") != std::string::npos) continue;
     const std::string shell = "cd " + shell_quote(scratch.path().string()) + " && PATH=" + shell_quote(path) +

@@ -11,6 +11,9 @@
 # would hold, so uncommitted work is checked too), made a git repository of its own as a user's
 # clone is. The nested run sets TOLIP_IN_CLEAN_CLONE=1, which leaves this test out of its suite.
 # The temporary folder is removed afterwards unless TOLIP_KEEP_CLEAN_CLONE=1.
+# The copy's build compiles through ccache with the copy as its base folder (scripts/lib/deps.sh),
+# so the sources the first build compiled come from the cache; a hit still needs every file the
+# compile reads, at its path inside the copy, so a file missing from the copy still fails here.
 set -euo pipefail
 
 root=$(cd "${1:?usage: check_clean_clone.sh REPOSITORY_ROOT}" && pwd)

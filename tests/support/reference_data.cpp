@@ -1,4 +1,5 @@
 #include "support/reference_data.hpp"
+#include "support/repository_paths.hpp"
 
 #include <fstream>
 #include <stdexcept>
@@ -6,7 +7,7 @@
 namespace tolip::test {
 namespace {
 nlohmann::json load(const std::string& name) {
-  const std::string path = std::string(TOLIP_REFERENCE_DIR) + "/" + name;
+  const std::string path = std::string(tolip::repository_paths::reference_dir()) + "/" + name;
   std::ifstream in(path);
   if (!in) throw std::runtime_error("cannot open reference file " + path);
   return nlohmann::json::parse(in);
@@ -24,7 +25,7 @@ const nlohmann::json& oracle_test_vectors() {
 }
 
 std::string example_path(const std::string& relative) {
-  return std::string(TOLIP_EXAMPLES_DIR) + "/" + relative;
+  return std::string(tolip::repository_paths::examples_dir()) + "/" + relative;
 }
 
 }  // namespace tolip::test
