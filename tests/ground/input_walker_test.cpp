@@ -734,6 +734,20 @@ const std::map<std::string, const char*>& conditional_inputs() {
   return inputs;
 }
 
+// Under the sanitizers (CI's second step, scripts/sanitizers.sh) every command of the walk runs
+// about 24 times slower: this test took 722 s of that step's 822 s on CI. There it walks every
+// fourth TOML key and no card word (a card word's verdict is its key's, and most keys are not
+// walked there): what the sanitizer build adds is that the commands run free of memory errors and
+// undefined behaviour on a quarter of the perturbed decks. The Release suite (scripts/test.sh)
+// walks every key and every word and is the proof of their verdicts.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr std::size_t kTomlKeyStride = 4;
+constexpr bool kWalkCardWords = false;
+#else
+constexpr std::size_t kTomlKeyStride = 1;
+constexpr bool kWalkCardWords = true;
+#endif
+
 // One test, the TOML walk and then the card walk, because a card word is judged by the TOML key it
 // reaches.
 TEST(InputWalker, EveryTomlKeyAndEveryCardWordActsIsRejectedOrWarns) {
@@ -745,16 +759,18 @@ TEST(InputWalker, EveryTomlKeyAndEveryCardWordActsIsRejectedOrWarns) {
   const std::vector<AcceptedKey> keys = walker.keys();
   // Two workers (the VM's two cores), each with its own deck file and base observation; the
   // commands hold no shared state.
-  std::vector<KeyVerdict> walked(keys.size());
-  run_on_workers(keys.size(), [&](int worker, const std::function<bool(std::size_t*)>& next) {
+  std::vector<std::size_t> chosen;  // the keys walked: all of them, but under the sanitizers
+  for (std::size_t i = 0; i < keys.size(); i += kTomlKeyStride) chosen.push_back(i);
+  std::vector<KeyVerdict> walked(chosen.size());
+  run_on_workers(chosen.size(), [&](int worker, const std::function<bool(std::size_t*)>& next) {
     ScratchDirectory own("input_walker_toml_" + std::to_string(worker));
     TomlWalker mine(own);
-    for (std::size_t i = 0; next(&i);) walked[i] = mine.walk(keys[i]);
+    for (std::size_t j = 0; next(&j);) walked[j] = mine.walk(keys[chosen[j]]);
   });
   std::map<Outcome, int> counts;
-  for (std::size_t i = 0; i < keys.size(); ++i) {
-    const AcceptedKey& key = keys[i];
-    KeyVerdict verdict = std::move(walked[i]);
+  for (std::size_t j = 0; j < chosen.size(); ++j) {
+    const AcceptedKey& key = keys[chosen[j]];
+    KeyVerdict verdict = std::move(walked[j]);
     ++counts[verdict.verdict.outcome];
     if (const auto it = conditional_inputs().find(key.path); it != conditional_inputs().end()) {
       EXPECT_EQ(verdict.verdict.outcome, Outcome::kSilent)
@@ -770,14 +786,18 @@ TEST(InputWalker, EveryTomlKeyAndEveryCardWordActsIsRejectedOrWarns) {
     toml_verdicts[key.path] = std::move(verdict);
   }
   EXPECT_GE(keys.size(), 300u);
-  std::printf("[ walker  ] %zu TOML keys: %d act, %d warn, %d rejected, %d silent\n", keys.size(),
-              counts[Outcome::kActs], counts[Outcome::kWarns], counts[Outcome::kRejected],
-              counts[Outcome::kSilent]);
+  std::printf("[ walker  ] %zu of %zu TOML keys walked: %d act, %d warn, %d rejected, %d silent\n",
+              chosen.size(), keys.size(), counts[Outcome::kActs], counts[Outcome::kWarns],
+              counts[Outcome::kRejected], counts[Outcome::kSilent]);
   for (const auto& [path, verdict] : toml_verdicts) {
     if (verdict.verdict.outcome != Outcome::kActs)
       std::printf("[ walker  ]   %s: %s\n", path.c_str(), outcome_name(verdict.verdict.outcome));
   }
 
+  if (!kWalkCardWords) {
+    std::printf("[ walker  ] card words not walked under the sanitizers (the Release suite walks them)\n");
+    return;
+  }
   // The card deck of the same case: every punched word.
   const std::string deck =
       read_text_file(std::string(tolip::repository_paths::examples_dir()) + "/scout/mission.dat");
