@@ -58,3 +58,50 @@ void BM_PrepareCase(benchmark::State& state) {
 BENCHMARK(BM_PrepareCase)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
+
+namespace {
+
+// How much of an evaluation's time is latency: K independent Euler chains through evaluate_flight
+// (the reference case in stage 1 at about 40 s, in the atmosphere), interleaved evaluation by
+// evaluation. Each chain's next state needs its last derivative, as inside an RK4 step, so with
+// K = 1 the core waits on the evaluation's dependent chain (square roots, divisions, pow); with
+// K = 2 the second chain's work can fill those waits. The time per evaluation at K = 2 against
+// K = 1 bounds what interleaving samples (docs/performance.md, "Seventh pass") could gain.
+void BM_EvaluationChains(benchmark::State& state) {
+  Case& c = reference_case();
+  if (!ok(tolip::fly_trajectory(*c.mission, *c.prepared, c.trajectory.get()))) std::exit(1);
+  int start = 0;
+  while (start + 1 < c.trajectory->point_count && c.trajectory->points[start].time_s < 40.0) ++start;
+  const tolip::TrajectoryPoint& point = c.trajectory->points[start];
+  const tolip::StageContext stage =
+      tolip::make_stage_context(*c.mission, *c.prepared, c.prepared->timeline[0]);
+  tolip::StepCommand command;
+  command.mode = tolip::AttitudeMode::kHeld;
+  command.theta_start_rad = point.theta_command_rad;
+  constexpr int kMaxChains = 4;
+  constexpr int kEvaluations = 200;
+  constexpr double kStepS = 1e-3;
+  const int chains = static_cast<int>(state.range(0));
+  tolip::Evaluation eval[kMaxChains];
+  for (auto _ : state) {
+    tolip::StateVector x[kMaxChains];
+    for (int k = 0; k < chains; ++k) {  // chains a few feet apart: the same work, different numbers
+      x[k] = point.state;
+      x[k][tolip::kStateR] += 3.0 * k;
+    }
+    double t = point.time_s;
+    for (int n = 0; n < kEvaluations; ++n) {
+      for (int k = 0; k < chains; ++k) {
+        tolip::evaluate_flight(*c.mission, *c.prepared, stage, command, t, x[k], 0.0, &eval[k]);
+        x[k] += kStepS * eval[k].derivative;
+      }
+      t += kStepS;
+    }
+    for (int k = 0; k < chains; ++k) benchmark::DoNotOptimize(x[k]);
+  }
+  state.SetItemsProcessed(state.iterations() * chains * kEvaluations);
+  state.counters["altitude_ft"] = eval[0].altitude_ft;
+}
+BENCHMARK(BM_EvaluationChains)->Arg(1)->Arg(2)->Arg(4)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
