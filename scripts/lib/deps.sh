@@ -36,10 +36,12 @@ TOLIP_DEBIAN_PACKAGES=(
   clang-tidy cppcheck
   gcovr
   clang-14 libclang-rt-14-dev
-  # The compiler cache of tolip_configure_and_build (below): the clean-clone check's second build
-  # of the project is served from it.
-  ccache
 )
+
+# Wanted, not needed: the compiler cache of tolip_configure_and_build (below), which serves the
+# clean-clone check's second build of the project. When it cannot be installed (no network, say)
+# the scripts warn and build without it.
+TOLIP_OPTIONAL_DEBIAN_PACKAGES=(ccache)
 
 # True when the package is fully installed ("install ok installed"; a removed package whose
 # configuration files remain is reported by dpkg -s but is not usable).
@@ -71,13 +73,26 @@ tolip_ensure_packages() {
   for pkg in "${TOLIP_DEBIAN_PACKAGES[@]}"; do
     tolip_package_installed "$pkg" || missing+=("$pkg")
   done
-  if [[ ${#missing[@]} -eq 0 ]]; then
+  local optional=()
+  for pkg in "${TOLIP_OPTIONAL_DEBIAN_PACKAGES[@]}"; do
+    tolip_package_installed "$pkg" || optional+=("$pkg")
+  done
+  if [[ ${#missing[@]} -eq 0 && ${#optional[@]} -eq 0 ]]; then
     echo "-- all required Debian packages are installed"
     return 0
   fi
-  echo "-- installing missing Debian packages: ${missing[*]}"
-  tolip_as_root env DEBIAN_FRONTEND=noninteractive apt-get update
-  tolip_as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends "${missing[@]}"
+  if [[ ${#missing[@]} -gt 0 ]]; then
+    echo "-- installing missing Debian packages: ${missing[*]}"
+    tolip_as_root env DEBIAN_FRONTEND=noninteractive apt-get update
+    tolip_as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends "${missing[@]}"
+  fi
+  if [[ ${#optional[@]} -gt 0 ]]; then
+    echo "-- installing optional Debian packages: ${optional[*]}"
+    if ! { [[ ${#missing[@]} -gt 0 ]] || tolip_as_root env DEBIAN_FRONTEND=noninteractive apt-get update; } ||
+       ! tolip_as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends "${optional[@]}"; then
+      echo "warning: could not install ${optional[*]}; building without them (slower, same results)" >&2
+    fi
+  fi
 }
 
 # Configures (Release) and builds the project into the given build directory with two jobs:
