@@ -98,9 +98,9 @@ tolip_ensure_packages() {
 # Configures (Release) and builds the project into the given build directory with two jobs:
 # every target, or only the targets named after the two folders (setup.sh builds just `tolip`).
 #
-# The compiler cache: a new build directory compiles through ccache (installed above) unless
-# CMAKE_CXX_COMPILER_LAUNCHER in the environment names another launcher; an existing build
-# directory keeps what it was configured with. CCACHE_BASEDIR is the source folder, so ccache hashes
+# The compiler cache: a new build directory compiles through ccache when the optional package above
+# is installed, unless CMAKE_CXX_COMPILER_LAUNCHER in the environment names another launcher; an
+# existing build directory keeps what it was configured with. CCACHE_BASEDIR is the source folder, so ccache hashes
 # the project's paths relative to it and a copy of the repository elsewhere with the same build
 # folder (the clean-clone check's copy, tests/scripts/check_clean_clone.sh) is served from the
 # cache: CI then compiles the project once, not twice. A hit still needs every header the compile
