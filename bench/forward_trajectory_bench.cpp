@@ -57,16 +57,12 @@ void BM_PrepareCase(benchmark::State& state) {
 }
 BENCHMARK(BM_PrepareCase)->Unit(benchmark::kMicrosecond);
 
-}  // namespace
-
-namespace {
-
 // How much of an evaluation's time is latency: K independent Euler chains through evaluate_flight
 // (the reference case in stage 1 at about 40 s, in the atmosphere), interleaved evaluation by
 // evaluation. Each chain's next state needs its last derivative, as inside an RK4 step, so with
-// K = 1 the core waits on the evaluation's dependent chain (square roots, divisions, pow); with
-// K = 2 the second chain's work can fill those waits. The time per evaluation at K = 2 against
-// K = 1 bounds what interleaving samples (docs/performance.md, "Seventh pass") could gain.
+// K = 1 any wait on the evaluation's dependent chain (square roots, divisions, pow) is lost; with
+// K = 2 the second chain's work can fill it. The time per evaluation at K = 2 against K = 1 bounds
+// what interleaving samples could gain (docs/performance.md, "Seventh pass": about 5 %).
 void BM_EvaluationChains(benchmark::State& state) {
   Case& c = reference_case();
   if (!ok(tolip::fly_trajectory(*c.mission, *c.prepared, c.trajectory.get()))) std::exit(1);

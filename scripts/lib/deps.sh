@@ -88,10 +88,10 @@ tolip_ensure_packages() {
   fi
   if [[ ${#optional[@]} -gt 0 ]]; then
     echo "-- installing optional Debian packages: ${optional[*]}"
-    if ! { [[ ${#missing[@]} -gt 0 ]] || tolip_as_root env DEBIAN_FRONTEND=noninteractive apt-get update; } ||
-       ! tolip_as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends "${optional[@]}"; then
+    # The package lists are fresh when the required packages were just installed.
+    [[ ${#missing[@]} -gt 0 ]] || tolip_as_root env DEBIAN_FRONTEND=noninteractive apt-get update || true
+    tolip_as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends "${optional[@]}" ||
       echo "warning: could not install ${optional[*]}; building without them (slower, same results)" >&2
-    fi
   fi
 }
 
