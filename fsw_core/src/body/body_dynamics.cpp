@@ -89,13 +89,17 @@ UnitMoments unit_moments(const BodyDynamicsBlocks& data, const MomentConditions&
 
 namespace {
 
-PlatformVelocityAngles velocity_angles(const Matrix3& platform_to_local, bool by_series) {
+// `gamma_w_anchor`: null but in a dispersion flight with hints (by_series).
+PlatformVelocityAngles velocity_angles(const Matrix3& platform_to_local, bool by_series,
+                                       Atan2Anchor* gamma_w_anchor) {
   // Row 2 of [C] is the second column of C^-1 = C^T: the unit velocity in P.
   const double vx = platform_to_local(1, 0);
   const double vy = platform_to_local(1, 1);
   const double vz = platform_to_local(1, 2);
+  const double horizontal = std::sqrt(vx * vx + vy * vy);
   PlatformVelocityAngles out;
-  out.gamma_w_rad = std::atan2(vz, std::sqrt(vx * vx + vy * vy));
+  out.gamma_w_rad =
+      (gamma_w_anchor != nullptr) ? gamma_w_anchor->at(vz, horizontal) : std::atan2(vz, horizontal);
   out.azimuth_w_rad = small_angle_atan2(vx, vy, by_series);
   return out;
 }
@@ -114,7 +118,7 @@ BodyAngles angles_of_attack(const MissileAxes& axes, const Matrix3& platform_to_
 }  // namespace
 
 PlatformVelocityAngles platform_velocity_angles(const Matrix3& platform_to_local) {
-  return velocity_angles(platform_to_local, false);
+  return velocity_angles(platform_to_local, false, nullptr);
 }
 
 Status steady_state_attitude(const AutopilotGains& gains, const UnitMoments& moments,
@@ -201,7 +205,9 @@ Status evaluate_body_dynamics(const BodyDynamicsBlocks& data, const BodyDynamics
                               BodyDynamicsResult* out) {
   const int k = clamp_stage(in.conditions.stage) - 1;
   out->moments = unit_moments(data, in.conditions, in.hints);
-  out->velocity = velocity_angles(in.platform_to_local, in.small_angles_by_series);
+  Atan2Anchor* gamma_w_anchor =
+      (in.small_angles_by_series && in.hints != nullptr) ? &in.hints->gamma_w_anchor : nullptr;
+  out->velocity = velocity_angles(in.platform_to_local, in.small_angles_by_series, gamma_w_anchor);
   AutopilotGains gains;
   gains.position_gain = data.position_gain[k];
   gains.rate_gain_s = data.rate_gain_s[k];

@@ -119,6 +119,18 @@ double atan2_by_series(double y, double x) {
   return z + z * z2 * (-k3 + z2 * (k5 + z2 * (-k7 + z2 * (k9 + z2 * (-k11 + z2 * k13)))));
 }
 
+double Atan2Anchor::at(double y, double x) {
+  if (anchored_) {
+    const double along = x * anchor_.cos + y * anchor_.sin;
+    const double across = y * anchor_.cos - x * anchor_.sin;
+    if (along > 0.0 && std::fabs(across) * 16.0 < along) return anchor_rad_ + atan2_by_series(across, along);
+  }
+  anchored_ = true;
+  anchor_rad_ = std::atan2(y, x);
+  anchor_ = {std::sin(anchor_rad_), std::cos(anchor_rad_)};
+  return anchor_rad_;
+}
+
 StateTrig StateTrigAnchor::at(const StateVector& state) {
   if (anchored_) {
     const AngleSteps d = angle_steps(anchor_, state);
@@ -146,6 +158,19 @@ Matrix3 inertial_to_local(const StateTrig& t) {
   a << m00, m01, m02, cg * m10 + sg * m20, cg * m11 + sg * m21, cg * m12 + sg * m22, -sg * m10 + cg * m20,
       -sg * m11 + cg * m21, -sg * m12 + cg * m22;
   return a;
+}
+
+Vector3 inertial_to_local_times(const StateTrig& t, const Vector3& v) {
+  // Each frame rotation by angle a turns the two components it acts on by (c, s) = (cos a, sin a);
+  // 90 - lambda and 90 - psi swap their sines and cosines.
+  const double x1 = t.cos_tau * v.x() + t.sin_tau * v.y();  // Rz(tau)
+  const double y1 = -t.sin_tau * v.x() + t.cos_tau * v.y();
+  const double x2 = t.sin_lambda * x1 - t.cos_lambda * v.z();  // Ry(90 - lambda)
+  const double z2 = t.cos_lambda * x1 + t.sin_lambda * v.z();
+  const double x3 = t.sin_psi * x2 + t.cos_psi * y1;  // Rz(90 - psi)
+  const double y3 = -t.cos_psi * x2 + t.sin_psi * y1;
+  return Vector3(x3, t.cos_gamma * y3 + t.sin_gamma * z2,  // Rx(gamma)
+                 -t.sin_gamma * y3 + t.cos_gamma * z2);
 }
 
 // The definition as a product of frame rotations; kept as the readable form and tested against

@@ -202,33 +202,28 @@ Vector3 body_dynamics_attitude(const Mission& mission, const StageContext& stage
 
 // thrust_axis_platform(theta, chi) with theta's (and chi's) sine and cosine kept from the last
 // evaluation that flew the same angle (RK4's midpoints, held attitudes, a stage's constant chi).
-void thrust_axis_with_kept_sines(EvaluationScratch* scratch, const Matrix3& platform_to_local,
-                                 Evaluation* out) {
-  if (!scratch->has_theta || !(scratch->theta_rad == out->theta_rad)) {
+Vector3 thrust_axis_platform_with_kept_sines(EvaluationScratch* scratch, const Evaluation& out) {
+  if (!scratch->has_theta || !(scratch->theta_rad == out.theta_rad)) {
     scratch->has_theta = true;
-    scratch->theta_rad = out->theta_rad;
+    scratch->theta_rad = out.theta_rad;
     if (scratch->trig_by_series) {
-      const SineCosine theta = scratch->theta_anchor.at(out->theta_rad);
+      const SineCosine theta = scratch->theta_anchor.at(out.theta_rad);
       scratch->sin_theta = theta.sin;
       scratch->cos_theta = theta.cos;
     } else {
-      scratch->cos_theta = std::cos(out->theta_rad);
-      scratch->sin_theta = std::sin(out->theta_rad);
+      scratch->cos_theta = std::cos(out.theta_rad);
+      scratch->sin_theta = std::sin(out.theta_rad);
     }
   }
-  if (out->chi_rad == 0.0) {
-    out->thrust_axis_local = platform_to_local * Vector3(0.0, scratch->cos_theta, scratch->sin_theta);
-    return;
-  }
-  if (!scratch->has_chi || !(scratch->chi_rad == out->chi_rad)) {
+  if (out.chi_rad == 0.0) return Vector3(0.0, scratch->cos_theta, scratch->sin_theta);
+  if (!scratch->has_chi || !(scratch->chi_rad == out.chi_rad)) {
     scratch->has_chi = true;
-    scratch->chi_rad = out->chi_rad;
-    scratch->cos_chi = std::cos(out->chi_rad);
-    scratch->sin_chi = std::sin(out->chi_rad);
+    scratch->chi_rad = out.chi_rad;
+    scratch->cos_chi = std::cos(out.chi_rad);
+    scratch->sin_chi = std::sin(out.chi_rad);
   }
   const double ct = scratch->cos_theta;
-  out->thrust_axis_local =
-      platform_to_local * Vector3(ct * scratch->sin_chi, ct * scratch->cos_chi, scratch->sin_theta);
+  return Vector3(ct * scratch->sin_chi, ct * scratch->cos_chi, scratch->sin_theta);
 }
 
 // Drag (block 31) and the point-mass lift (block 32); under a wind, their local force components
@@ -302,7 +297,13 @@ void evaluate_flight(const Mission& mission, const PreparedCase& prepared, const
   const AirAtPoint air = air_at(mission, out->altitude_ft, surface_radius);
   weight_and_thrust(stage, stage_time, air.pressure_lbf_ft2, weight_offset_lb, out);
 
-  const Matrix3 platform_to_local = inertial_to_local(trig) * prepared.platform_to_inertial;
+  // A dispersion flight's point-mass thrust axis is turned from the platform into the local frame
+  // rotation by rotation (inertial_to_local_times); the other evaluations form [C] = [A][B][B'].
+  const EvaluationScratch* scratch = stage.scratch;
+  const bool axis_by_rotations = scratch != nullptr && scratch->trig_by_series && !command.body_dynamics &&
+                                 command.mode != AttitudeMode::kZeroAlpha;
+  Matrix3 platform_to_local;
+  if (!axis_by_rotations) platform_to_local = inertial_to_local(trig) * prepared.platform_to_inertial;
   commanded_attitude(command, t, platform_to_local, out);
 
   const AirRelativeFlow flow = air_relative_flow(stage, state, trig, out->altitude_ft, air.density_slug_ft3);
@@ -318,8 +319,12 @@ void evaluate_flight(const Mission& mission, const PreparedCase& prepared, const
   if (command.body_dynamics) {
     body_force_local = body_dynamics_attitude(mission, stage, command, stage_time, air.density_slug_ft3,
                                               platform_to_local, flow, out);
+  } else if (axis_by_rotations) {
+    const Vector3 axis_inertial =
+        prepared.platform_to_inertial * thrust_axis_platform_with_kept_sines(stage.scratch, *out);
+    out->thrust_axis_local = inertial_to_local_times(trig, axis_inertial);
   } else if (stage.scratch != nullptr) {
-    thrust_axis_with_kept_sines(stage.scratch, platform_to_local, out);
+    out->thrust_axis_local = platform_to_local * thrust_axis_platform_with_kept_sines(stage.scratch, *out);
   } else {
     out->thrust_axis_local = platform_to_local * thrust_axis_platform(out->theta_rad, out->chi_rad);
   }

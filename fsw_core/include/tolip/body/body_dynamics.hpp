@@ -16,6 +16,7 @@
 
 #include "tolip/core/state.hpp"
 #include "tolip/core/status.hpp"
+#include "tolip/frames/frames.hpp"
 #include "tolip/mission/mission.hpp"
 
 namespace tolip {
@@ -51,6 +52,8 @@ struct BodyDynamicsHints {
   int pitching_moment_hint = -1;
   int fin_pitching_moment_hint = -1;
   int fin_normal_force_hint = -1;
+  // A dispersion flight's gamma_w (BodyDynamicsInputs::small_angles_by_series).
+  Atan2Anchor gamma_w_anchor;
 };
 // The same with hints (null: every look-up searched).
 UnitMoments unit_moments(const BodyDynamicsBlocks& data, const MomentConditions& conditions,
@@ -175,7 +178,8 @@ struct BodyDynamicsInputs {
   double net_thrust_lbf = 0.0;
   BodyDynamicsHints* hints = nullptr;  // the unit moments' look-up hints (null: none)
   // A dispersion flight's (FlightInputs::trig_by_series): the small angles (alpha, beta and the
-  // velocity azimuth psi_w) by atan2_by_series (frames.hpp), the library's where they are not small.
+  // velocity azimuth psi_w) by atan2_by_series (frames.hpp), the library's where they are not small,
+  // and with hints the velocity's elevation gamma_w from their Atan2Anchor.
   bool small_angles_by_series = false;
 };
 
