@@ -133,10 +133,27 @@ Gravity j2_gravity(const Constants& constants, double radius_ft, double geocentr
 }
 
 double oblate_radius_ft(const Constants& constants, double sin_latitude, double cos_latitude) {
+  return oblate_radius_ft(oblate_figure(constants), sin_latitude, cos_latitude);
+}
+
+OblateFigure oblate_figure(const Constants& constants) {
+  OblateFigure figure;
   const double a = constants.earth_equatorial_radius_ft;
-  if (is_spherical_earth(constants)) return a;
-  const double b = a * (constants.inverse_flattening - 1.0) / constants.inverse_flattening;
-  return a * b / std::sqrt(b * b * cos_latitude * cos_latitude + a * a * sin_latitude * sin_latitude);
+  figure.spherical = is_spherical_earth(constants);
+  figure.equatorial_radius_ft = a;
+  const double b =
+      figure.spherical ? a : a * (constants.inverse_flattening - 1.0) / constants.inverse_flattening;
+  figure.ab_ft2 = a * b;
+  figure.b_squared_ft2 = b * b;
+  figure.a_squared_ft2 = a * a;
+  return figure;
+}
+
+double oblate_radius_ft(const OblateFigure& figure, double sin_latitude, double cos_latitude) {
+  if (figure.spherical) return figure.equatorial_radius_ft;
+  // a b / sqrt(b^2 cos^2 + a^2 sin^2), evaluated in the order the products were written before.
+  return figure.ab_ft2 / std::sqrt(figure.b_squared_ft2 * cos_latitude * cos_latitude +
+                                   figure.a_squared_ft2 * sin_latitude * sin_latitude);
 }
 
 Gravity j2_gravity(const Constants& constants, double radius_ft, double sin_lat, double cos_lat) {

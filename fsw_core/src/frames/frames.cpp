@@ -31,10 +31,10 @@ Matrix3 frame_rotation_z(double angle_rad) {
 }
 
 StateTrig::StateTrig(const StateVector& state)
-    : sin_gamma(std::sin(state[kStateGamma])), cos_gamma(std::cos(state[kStateGamma])),
-      sin_psi(std::sin(state[kStatePsi])), cos_psi(std::cos(state[kStatePsi])),
-      sin_lambda(std::sin(state[kStateLambda])), cos_lambda(std::cos(state[kStateLambda])),
-      sin_tau(std::sin(state[kStateTau])), cos_tau(std::cos(state[kStateTau])) {}
+    : sin_gamma(std::sin(state[kStateGamma])), sin_psi(std::sin(state[kStatePsi])),
+      sin_lambda(std::sin(state[kStateLambda])), sin_tau(std::sin(state[kStateTau])),
+      cos_gamma(std::cos(state[kStateGamma])), cos_psi(std::cos(state[kStatePsi])),
+      cos_lambda(std::cos(state[kStateLambda])), cos_tau(std::cos(state[kStateTau])) {}
 
 namespace {
 
@@ -76,12 +76,12 @@ StateTrig added_state_trig(const StateTrig& b, const AngleSteps& d) {
   add_small_angle(s0, c0, d, &s, &c);
   StateTrig t = b;
   t.sin_gamma = s[0];
-  t.cos_gamma = c[0];
   t.sin_psi = s[1];
-  t.cos_psi = c[1];
   t.sin_lambda = s[2];
-  t.cos_lambda = c[2];
   t.sin_tau = s[3];
+  t.cos_gamma = c[0];
+  t.cos_psi = c[1];
+  t.cos_lambda = c[2];
   t.cos_tau = c[3];
   return t;
 }

@@ -292,7 +292,7 @@ void evaluate_flight(const Mission& mission, const PreparedCase& prepared, const
                      const StepCommand& command, double t, const StateVector& state, const StateTrig& trig,
                      double weight_offset_lb, Evaluation* out) {
   const double stage_time = t - stage.start_s;
-  const double surface_radius = oblate_radius_ft(mission.constants, trig.sin_lambda, trig.cos_lambda);
+  const double surface_radius = oblate_radius_ft(prepared.oblate_figure, trig.sin_lambda, trig.cos_lambda);
   out->altitude_ft = state[kStateR] - surface_radius;
   const AirAtPoint air = air_at(mission, out->altitude_ft, surface_radius);
   weight_and_thrust(stage, stage_time, air.pressure_lbf_ft2, weight_offset_lb, out);

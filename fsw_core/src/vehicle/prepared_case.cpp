@@ -161,6 +161,7 @@ void prepare_launch_geometry(const Mission& mission, PreparedCase* prepared) {
   const Constants& constants = mission.constants;
   const LaunchConditions& launch = mission.launch;
   const double latitude = launch.geocentric_latitude_rad;
+  prepared->oblate_figure = oblate_figure(constants);
   prepared->pad_radius_ft = oblate_radius_ft(constants, latitude) + launch.altitude_ft;
   prepared->delta_lambda_rad = delta_lambda_rad(constants, latitude, prepared->pad_radius_ft);
   prepared->geocentric_to_inertial =

@@ -36,6 +36,19 @@ double oblate_radius_ft(const Constants& constants, double geocentric_latitude_r
 // exactly; used on the integration path where the sine and cosine are already at hand.
 double oblate_radius_ft(const Constants& constants, double sin_latitude, double cos_latitude);
 
+// The polar form's constant products, formed once per case (PreparedCase::oblate_figure) so that
+// a model evaluation pays no division for b: the same radius bit for bit. A default (unprepared)
+// figure gives NaN, never a plausible radius.
+struct OblateFigure {
+  bool spherical = false;
+  double equatorial_radius_ft = 0.0;  // a
+  double ab_ft2 = 0.0;                // a b
+  double b_squared_ft2 = 0.0;
+  double a_squared_ft2 = 0.0;
+};
+OblateFigure oblate_figure(const Constants& constants);
+double oblate_radius_ft(const OblateFigure& figure, double sin_latitude, double cos_latitude);
+
 // Altitude above the oblate surface, h = r - R_OBL(lambda).
 double oblate_altitude_ft(const Constants& constants, double radius_ft, double geocentric_latitude_rad);
 

@@ -24,7 +24,10 @@ Matrix3 frame_rotation_z(double angle_rad);
 // Sines and cosines of the state's angles, computed once per derivative evaluation and shared by
 // [A], the equations of motion, gravity and the oblate radius.
 struct StateTrig {
-  double sin_gamma, cos_gamma, sin_psi, cos_psi, sin_lambda, cos_lambda, sin_tau, cos_tau;
+  // The sines, then the cosines, each in the state's order: the addition-theorem form (StateTrigAnchor)
+  // reads and writes them four at a time.
+  double sin_gamma, sin_psi, sin_lambda, sin_tau;
+  double cos_gamma, cos_psi, cos_lambda, cos_tau;
   explicit StateTrig(const StateVector& state);
 };
 

@@ -6,6 +6,7 @@
 #include "tolip/core/capacity.hpp"
 #include "tolip/core/state.hpp"
 #include "tolip/core/status.hpp"
+#include "tolip/earth/earth_model.hpp"
 #include "tolip/math/table.hpp"
 #include "tolip/mission/mission.hpp"
 
@@ -42,6 +43,7 @@ struct PreparedCase {
   Matrix3 platform_to_geocentric;  // [B'] at t = 0
   Matrix3 platform_to_inertial;    // [B][B']
   StateVector pad_state;           // X at t = 0
+  OblateFigure oblate_figure;      // of the mission's constants, for every model evaluation
 };
 
 // Builds the timeline (durations and steps of data block 16, coasts included), the modified thrust
