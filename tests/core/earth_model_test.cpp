@@ -52,6 +52,24 @@ TEST(Sec4OblateEarth, RadiusIsThePolarFormOfTheEllipse) {
   EXPECT_NEAR(oblate_altitude_ft(constants, a + 1000.0, 0.0), 1000.0, 1e-8);
 }
 
+// The model evaluation's radius from the case's OblateFigure is the atan form of Sec. 4 (the
+// figure's products are the polar form's), the sphere's is R_eq exactly, and a figure no case
+// prepared gives NaN rather than a plausible radius (the flight then stops, never flies on it).
+TEST(Sec4OblateEarth, TheCaseFigureGivesTheSec4RadiusAndAnUnpreparedOneGivesNaN) {
+  const Constants constants;
+  const OblateFigure figure = oblate_figure(constants);
+  for (double deg = -90.0; deg <= 90.0; deg += 7.5) {
+    const double phi = deg * kDegToRad;
+    EXPECT_NEAR(oblate_radius_ft(figure, std::sin(phi), std::cos(phi)), oblate_radius_ft(constants, phi),
+                1e-7)
+        << deg;
+  }
+  Constants sphere;
+  sphere.inverse_flattening = 0.0;
+  EXPECT_EQ(oblate_radius_ft(oblate_figure(sphere), 0.6, 0.8), sphere.earth_equatorial_radius_ft);
+  EXPECT_TRUE(std::isnan(oblate_radius_ft(OblateFigure{}, 0.6, 0.8)));
+}
+
 // Purcell-Cowan is a series for the surface ellipsoid: tan(phi_d) = (f / (f - 1))^2 tan(phi_c).
 // The series' first coefficient (3.372672e-3) is not the ellipsoid's (k-1)/(k+1) = 3.3573e-3, so
 // they differ by up to 0.0013 deg (4.7 arcsec) near 60 deg, 0.0005 deg at Wallops (the reference
