@@ -110,7 +110,7 @@ SineCosine SineCosineAnchor::at(double angle_rad) {
 
 double atan2_by_series(double y, double x) {
   // Also NaN and infinities, and y = +-0 (whose sign the sum below would lose).
-  if (!(x > 0.0) || !(std::fabs(y) * 16.0 < x) || y == 0.0) return std::atan2(y, x);
+  if (!in_atan2_series_domain(y, x) || y == 0.0) return std::atan2(y, x);
   constexpr double k3 = 1.0 / 3.0, k5 = 1.0 / 5.0, k7 = 1.0 / 7.0, k9 = 1.0 / 9.0, k11 = 1.0 / 11.0,
                    k13 = 1.0 / 13.0;
   const double z = y / x;
@@ -123,7 +123,7 @@ double Atan2Anchor::at(double y, double x) {
   if (anchored_) {
     const double along = x * anchor_.cos + y * anchor_.sin;
     const double across = y * anchor_.cos - x * anchor_.sin;
-    if (along > 0.0 && std::fabs(across) * 16.0 < along) return anchor_rad_ + atan2_by_series(across, along);
+    if (in_atan2_series_domain(across, along)) return anchor_rad_ + atan2_by_series(across, along);
   }
   anchored_ = true;
   anchor_rad_ = std::atan2(y, x);

@@ -299,7 +299,7 @@ void evaluate_flight(const Mission& mission, const PreparedCase& prepared, const
 
   // A dispersion flight's point-mass thrust axis is turned from the platform into the local frame
   // rotation by rotation (inertial_to_local_times); the other evaluations form [C] = [A][B][B'].
-  const EvaluationScratch* scratch = stage.scratch;
+  EvaluationScratch* scratch = stage.scratch;
   const bool axis_by_rotations = scratch != nullptr && scratch->trig_by_series && !command.body_dynamics &&
                                  command.mode != AttitudeMode::kZeroAlpha;
   Matrix3 platform_to_local;
@@ -321,10 +321,10 @@ void evaluate_flight(const Mission& mission, const PreparedCase& prepared, const
                                               platform_to_local, flow, out);
   } else if (axis_by_rotations) {
     const Vector3 axis_inertial =
-        prepared.platform_to_inertial * thrust_axis_platform_with_kept_sines(stage.scratch, *out);
+        prepared.platform_to_inertial * thrust_axis_platform_with_kept_sines(scratch, *out);
     out->thrust_axis_local = inertial_to_local_times(trig, axis_inertial);
-  } else if (stage.scratch != nullptr) {
-    out->thrust_axis_local = platform_to_local * thrust_axis_platform_with_kept_sines(stage.scratch, *out);
+  } else if (scratch != nullptr) {
+    out->thrust_axis_local = platform_to_local * thrust_axis_platform_with_kept_sines(scratch, *out);
   } else {
     out->thrust_axis_local = platform_to_local * thrust_axis_platform(out->theta_rad, out->chi_rad);
   }

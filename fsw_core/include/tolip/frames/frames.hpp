@@ -68,6 +68,8 @@ inline double wrap_angle_rad(double angle) {
 // to (y / x)^13 (truncation below 1e-18 relative); the library's atan2 otherwise (and for NaN and
 // y = +-0).
 double atan2_by_series(double y, double x);
+// That series' domain, x > 0 and |y| < x / 16 (false for NaN): the one place the limit is written.
+inline bool in_atan2_series_domain(double y, double x) { return x > 0.0 && std::fabs(y) * 16.0 < x; }
 // atan2 of an angle that is small in flight: atan2_by_series when `by_series` (a dispersion flight's,
 // FlightInputs::trig_by_series), the library's otherwise. The one place that choice is made.
 inline double small_angle_atan2(double y, double x, bool by_series) {
