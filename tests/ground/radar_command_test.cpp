@@ -9,6 +9,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "cli_runner.hpp"
 #include "support/reference_data.hpp"
@@ -40,6 +41,31 @@ TEST(Sec18RadarCommand, ListsAPagePerStationInYardsDegreesDegreesMinutesAndMils)
   EXPECT_TRUE(contains(result.out, "IBM OCTAL COLUMNS ARE LEFT OUT"));
   EXPECT_FALSE(contains(without_input_warnings(result.err), "tolip:")) << result.err;
   EXPECT_FALSE(contains(result.err, "IP(24)")) << "radar is computed: no unused-input warning";
+}
+
+// docs/cli.md: every case document opens with the same members, in the same order (one place
+// writes them: report_detail::case_document), whichever command printed it.
+TEST(Sec18RadarCommand, RadarHardoverAndSimulateDocumentsOpenWithTheSameCaseMembers) {
+  const char* const kHead[] = {"program", "title", "case_heading", "date", "status", "status_message"};
+  const std::vector<std::string> expected = {"program",      "version", "deck",   "title",
+                                             "case_heading", "date",    "status", "status_message"};
+  nlohmann::ordered_json first;
+  for (const char* command : {"radar", "hardover", "simulate"}) {
+    const CommandResult result = run_tolip_executable({command, reference_deck(), "--json"});
+    ASSERT_EQ(result.exit_code, 0) << command << ": " << result.err;
+    const nlohmann::ordered_json document = nlohmann::ordered_json::parse(result.out);
+    std::vector<std::string> keys;
+    for (auto it = document.begin(); it != document.end() && keys.size() < expected.size(); ++it) {
+      keys.push_back(it.key());
+    }
+    EXPECT_EQ(keys, expected) << command;
+    EXPECT_EQ(document["date"], "1966-07-01") << command << ": data block 3 of the reference deck";
+    if (first.is_null()) {
+      first = document;
+      continue;
+    }
+    for (const char* key : kHead) EXPECT_EQ(document[key], first[key]) << command << " " << key;
+  }
 }
 
 TEST(Sec18RadarCommand, JsonUnitsAreConsistentAndSimulateCarriesTheSameTracking) {

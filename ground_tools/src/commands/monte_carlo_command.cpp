@@ -11,6 +11,7 @@
 
 #include "case_output.hpp"
 #include "cli_options.hpp"
+#include "tolip/core/constants.hpp"
 #include "tolip_ground/atomic_file.hpp"
 #include "tolip_ground/card_deck.hpp"
 #include "tolip_ground/commands.hpp"
@@ -23,7 +24,6 @@
 namespace tolip::ground {
 namespace {
 
-constexpr double kRadToDeg = 180.0 / kPi;
 constexpr double kMaxOrbitPerigee_nmi = 100000.0;
 
 // The data block and TOML key of a scalar dispersion source's value, in deck units; false for a

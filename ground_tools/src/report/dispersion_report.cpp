@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <string>
 
+#include "dispersion_quantities.hpp"
 #include "listing_pager.hpp"
 #include "number_format.hpp"
 #include "tolip/core/constants.hpp"
@@ -14,39 +15,11 @@ namespace {
 
 using json = nlohmann::ordered_json;
 using report_detail::fixed_cell;
+using report_detail::kOrbitQuantities;
+using report_detail::kStagingQuantities;
 using report_detail::round_trip;
 
-constexpr double kRadToDeg = 180.0 / kPi;
-
 json number(double value) { return std::isfinite(value) ? json(value) : json(nullptr); }
-
-// The staging variables in listing units (angles in degrees), with their names.
-struct VariableText {
-  const char* label;  // listing
-  const char* key;    // JSON / CSV
-  double scale;       // core unit -> listed unit
-  int decimals;
-};
-constexpr VariableText kVariables[kStagingVariables] = {
-    {"ALTITUDE FT", "altitude_ft", 1.0, 1},
-    {"VELOCITY FT/S", "velocity_ft_s", 1.0, 2},
-    {"GAMMA DEG", "flight_path_angle_deg", kRadToDeg, 4},
-    {"DOWNRANGE NMI", "downrange_nmi", 1.0, 3},
-    {"CROSSRANGE NMI", "crossrange_nmi", 1.0, 3},
-};
-struct OrbitText {
-  const char* label;
-  const char* key;
-  double scale;
-};
-constexpr OrbitText kOrbit[kOrbitDispersionElements] = {
-    {"TWOE FT2/S2", "twoe_ft2_s2", 1.0},
-    {"EH FT2/S", "eh_ft2_s", 1.0},
-    {"RP FT", "rp_ft", 1.0},
-    {"EYE DEG", "eye_deg", kRadToDeg},
-    {"BETAP DEG", "betap_deg", kRadToDeg},
-    {"OMEGAE DEG", "omegae_deg", kRadToDeg},
-};
 
 std::string right(const std::string& text, int width) {
   return (static_cast<int>(text.size()) >= width)
@@ -96,11 +69,12 @@ void write_trajectory_block(report_detail::Pager& pager, const DispersionResult&
   for (int j = 0; j < columns; ++j) columns_line += right(staging_point_name(r.staging_stage_code[j]), 18);
   pager.emit(columns_line);
   for (int i = 0; i < kStagingVariables; ++i) {
-    std::string line = "   " + left(kVariables[i].label, 19);
+    std::string line = "   " + left(kStagingQuantities[i].label, 19);
     std::string disp = "     " + left("DISPERSION", 17);
     for (int j = 0; j < columns; ++j) {
-      line += fixed_cell(t.values[j][i] * kVariables[i].scale, kVariables[i].decimals, 18);
-      disp += fixed_cell(t.dispersions[j][i] * kVariables[i].scale, kVariables[i].decimals, 18);
+      line += fixed_cell(t.values[j][i] * kStagingQuantities[i].scale, kStagingQuantities[i].decimals, 18);
+      disp +=
+          fixed_cell(t.dispersions[j][i] * kStagingQuantities[i].scale, kStagingQuantities[i].decimals, 18);
     }
     pager.emit(line);
     if (!nominal) pager.emit(disp);
@@ -109,9 +83,9 @@ void write_trajectory_block(report_detail::Pager& pager, const DispersionResult&
   std::string values = left("     VALUE", 22);
   std::string disps = left("     DISPERSION", 22);
   for (int i = 0; i < kOrbitDispersionElements; ++i) {
-    names += right(kOrbit[i].label, 16);
-    values += e_cell(t.orbit[i] * kOrbit[i].scale, 16);
-    disps += e_cell(t.orbit_dispersions[i] * kOrbit[i].scale, 16);
+    names += right(kOrbitQuantities[i].label, 16);
+    values += e_cell(t.orbit[i] * kOrbitQuantities[i].scale, 16);
+    disps += e_cell(t.orbit_dispersions[i] * kOrbitQuantities[i].scale, 16);
   }
   pager.emit(names);
   pager.emit(values);
@@ -135,11 +109,11 @@ void write_group(report_detail::Pager& pager, const DispersionResult& r, const T
   for (int j = 0; j < columns; ++j) columns_line += right(staging_point_name(r.staging_stage_code[j]), 18);
   pager.emit(columns_line);
   for (int i = 0; i < kStagingVariables; ++i) {
-    std::string sum = "   " + left(kVariables[i].label, 13) + left(" SUM", 6);
+    std::string sum = "   " + left(kStagingQuantities[i].label, 13) + left(" SUM", 6);
     std::string rss = "   " + left("", 13) + left(" RSS", 6);
     for (int j = 0; j < columns; ++j) {
-      sum += fixed_cell(g.sum[j][i] * kVariables[i].scale, kVariables[i].decimals, 18);
-      rss += fixed_cell(g.rss[j][i] * kVariables[i].scale, kVariables[i].decimals, 18);
+      sum += fixed_cell(g.sum[j][i] * kStagingQuantities[i].scale, kStagingQuantities[i].decimals, 18);
+      rss += fixed_cell(g.rss[j][i] * kStagingQuantities[i].scale, kStagingQuantities[i].decimals, 18);
     }
     pager.emit(sum);
     pager.emit(rss);
@@ -152,7 +126,7 @@ json matrix_json(const double (&m)[kMaxStagingPoints][kStagingVariables], int co
   for (int j = 0; j < columns; ++j) {
     json row = json::object();
     for (int i = 0; i < kStagingVariables; ++i)
-      row[kVariables[i].key] = number(m[j][i] * kVariables[i].scale);
+      row[kStagingQuantities[i].key] = number(m[j][i] * kStagingQuantities[i].scale);
     rows.push_back(std::move(row));
   }
   return rows;
@@ -174,8 +148,8 @@ json trajectory_json(const DispersionResult& r, const DispersedTrajectory& t, bo
   json orbit = json::object();
   json orbit_d = json::object();
   for (int i = 0; i < kOrbitDispersionElements; ++i) {
-    orbit[kOrbit[i].key] = number(t.orbit[i] * kOrbit[i].scale);
-    orbit_d[kOrbit[i].key] = number(t.orbit_dispersions[i] * kOrbit[i].scale);
+    orbit[kOrbitQuantities[i].key] = number(t.orbit[i] * kOrbitQuantities[i].scale);
+    orbit_d[kOrbitQuantities[i].key] = number(t.orbit_dispersions[i] * kOrbitQuantities[i].scale);
   }
   out["orbit_elements"] = std::move(orbit);
   if (!nominal) out["orbit_element_dispersions"] = std::move(orbit_d);
@@ -249,7 +223,8 @@ void write_dispersion_pages(Pager& pager, const DispersionStep& step) {
       continue;
     }
     for (int i = 0; i < kStagingVariables; ++i) {
-      line += fixed_cell(t.dispersions[final_column][i] * kVariables[i].scale, kVariables[i].decimals, 15);
+      line += fixed_cell(t.dispersions[final_column][i] * kStagingQuantities[i].scale,
+                         kStagingQuantities[i].decimals, 15);
     }
     line += fixed_cell(t.orbit_dispersions[2], 0, 10) +
             fixed_cell(t.max_qbar_alpha_lbf_rad_ft2 * kLbDegPerLbRad, 0, 12);
@@ -314,10 +289,10 @@ json dispersion_json(const DispersionStep& step) {
 
 void write_dispersion_csv(std::ostream& out, const DispersionStep& step) {
   out << "code,title,status,staging_point";
-  for (const VariableText& v : kVariables) out << ',' << v.key;
-  for (const VariableText& v : kVariables) out << ",d_" << v.key;
-  for (const OrbitText& o : kOrbit) out << ',' << o.key;
-  for (const OrbitText& o : kOrbit) out << ",d_" << o.key;
+  for (const report_detail::DispersionQuantity& v : kStagingQuantities) out << ',' << v.key;
+  for (const report_detail::DispersionQuantity& v : kStagingQuantities) out << ",d_" << v.key;
+  for (const report_detail::DispersionQuantity& o : kOrbitQuantities) out << ',' << o.key;
+  for (const report_detail::DispersionQuantity& o : kOrbitQuantities) out << ",d_" << o.key;
   out << ",max_qbar_alpha_lb_deg_ft2,max_qbar_alpha_time_s\n";
   if (step.outcome != StepOutcome::kRun || step.result == nullptr || !ok(step.status)) return;
   const DispersionResult& r = *step.result;
@@ -335,13 +310,13 @@ void write_dispersion_csv(std::ostream& out, const DispersionStep& step) {
       out << t.code << ',' << title << ',' << status_name(t.status) << ','
           << staging_point_key(r.staging_stage_code[j]);
       for (int i = 0; i < kStagingVariables; ++i)
-        out << ',' << round_trip(t.values[j][i] * kVariables[i].scale);
+        out << ',' << round_trip(t.values[j][i] * kStagingQuantities[i].scale);
       for (int i = 0; i < kStagingVariables; ++i)
-        out << ',' << round_trip(t.dispersions[j][i] * kVariables[i].scale);
+        out << ',' << round_trip(t.dispersions[j][i] * kStagingQuantities[i].scale);
       for (int i = 0; i < kOrbitDispersionElements; ++i)
-        out << ',' << (final_row ? round_trip(t.orbit[i] * kOrbit[i].scale) : "");
+        out << ',' << (final_row ? round_trip(t.orbit[i] * kOrbitQuantities[i].scale) : "");
       for (int i = 0; i < kOrbitDispersionElements; ++i) {
-        out << ',' << (final_row ? round_trip(t.orbit_dispersions[i] * kOrbit[i].scale) : "");
+        out << ',' << (final_row ? round_trip(t.orbit_dispersions[i] * kOrbitQuantities[i].scale) : "");
       }
       out << ',' << (final_row ? round_trip(t.max_qbar_alpha_lbf_rad_ft2 * kLbDegPerLbRad) : "") << ','
           << (final_row ? round_trip(t.max_qbar_alpha_time_s) : "") << '\n';

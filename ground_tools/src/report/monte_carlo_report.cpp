@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "dispersion_quantities.hpp"
 #include "number_format.hpp"
 #include "tolip/orbit/orbit_elements.hpp"
 #include "tolip_ground/dispersion_report.hpp"
@@ -16,36 +17,16 @@ namespace {
 
 using json = nlohmann::ordered_json;
 using report_detail::fixed_cell;
+using report_detail::kOrbitQuantities;
+using report_detail::kStagingQuantities;
 using report_detail::round_trip;
 
-constexpr double kRadToDeg = 180.0 / kPi;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 json number(double value) { return std::isfinite(value) ? json(value) : json(nullptr); }
 
-// The staging variables and orbit elements in report units, the keys of `tolip optimize`'s
-// dispersion member (dispersion_report.cpp).
-struct Quantity {
-  const char* label;
-  const char* key;
-  double scale;  // core unit -> reported unit
-  int decimals;
-};
-constexpr Quantity kVariables[kStagingVariables] = {
-    {"ALTITUDE FT", "altitude_ft", 1.0, 1},
-    {"VELOCITY FT/S", "velocity_ft_s", 1.0, 2},
-    {"GAMMA DEG", "flight_path_angle_deg", kRadToDeg, 4},
-    {"DOWNRANGE NMI", "downrange_nmi", 1.0, 3},
-    {"CROSSRANGE NMI", "crossrange_nmi", 1.0, 3},
-};
-constexpr Quantity kOrbit[kOrbitDispersionElements] = {
-    {"TWOE FT2/S2", "twoe_ft2_s2", 1.0, 0},
-    {"EH FT2/S", "eh_ft2_s", 1.0, 0},
-    {"RP FT", "rp_ft", 1.0, 1},
-    {"EYE DEG", "eye_deg", kRadToDeg, 4},
-    {"BETAP DEG", "betap_deg", kRadToDeg, 4},
-    {"OMEGAE DEG", "omegae_deg", kRadToDeg, 4},
-};
+// The Monte Carlo's own quantities, beside the Sec. 15 ones of dispersion_quantities.hpp.
+using Quantity = report_detail::DispersionQuantity;
 constexpr Quantity kPerigee = {"PERIGEE ALT NMI", "perigee_altitude_nmi", 1.0, 3};
 constexpr Quantity kApogee = {"APOGEE ALT NMI", "apogee_altitude_nmi", 1.0, 3};
 constexpr Quantity kQbarAlpha = {"MAX QBAR*ALPHA LB DEG/FT2", "max_qbar_alpha_lb_deg_ft2", kRadToDeg, 1};
@@ -363,16 +344,17 @@ MonteCarloSummary summarize_monte_carlo(const MonteCarloInputs& in) {
     column.stage_code = in.linear->staging_stage_code[j];
     for (int v = 0; v < kStagingVariables; ++v) {
       column.quantities.push_back(
-          quantity(kVariables[v], in, s, [j, v](const DispersedTrajectory& t, int, bool dispersion) {
+          quantity(kStagingQuantities[v], in, s, [j, v](const DispersedTrajectory& t, int, bool dispersion) {
             return dispersion ? t.dispersions[j][v] : t.values[j][v];
           }));
     }
     s.columns.push_back(std::move(column));
   }
   for (int e = 0; e < kOrbitDispersionElements; ++e) {
-    s.orbit.push_back(quantity(kOrbit[e], in, s, [e](const DispersedTrajectory& t, int, bool dispersion) {
-      return dispersion ? t.orbit_dispersions[e] : t.orbit[e];
-    }));
+    s.orbit.push_back(
+        quantity(kOrbitQuantities[e], in, s, [e](const DispersedTrajectory& t, int, bool dispersion) {
+          return dispersion ? t.orbit_dispersions[e] : t.orbit[e];
+        }));
   }
   double nominal_perigee = kNaN, nominal_apogee = kNaN;
   orbit_altitudes(*in.constants, samples.nominal, &nominal_perigee, &nominal_apogee);
@@ -486,12 +468,12 @@ void write_monte_carlo_listing(std::ostream& out, const MonteCarloInputs& in, co
   for (const StagingColumnStatistics& column : s.columns) {
     header(staging_point_name(column.stage_code));
     for (int v = 0; v < kStagingVariables; ++v)
-      row(column.quantities[static_cast<std::size_t>(v)], kVariables[v].decimals);
+      row(column.quantities[static_cast<std::size_t>(v)], kStagingQuantities[v].decimals);
     out << '\n';
   }
   header("ORBIT ELEMENTS AT THE FINAL POINT");
   for (std::size_t e = 0; e < s.orbit.size(); ++e) {
-    row(s.orbit[e], e < kOrbitDispersionElements ? kOrbit[e].decimals : 3);
+    row(s.orbit[e], e < kOrbitDispersionElements ? kOrbitQuantities[e].decimals : 3);
   }
   row(s.max_qbar_alpha[0], kQbarAlpha.decimals);
   row(s.max_qbar_alpha[1], kQbarAlphaTime.decimals);
@@ -542,11 +524,11 @@ void write_monte_carlo_csv(std::ostream& out, const MonteCarloInputs& in, const 
   out << "sample,status";
   for (int j = 0; j < r.staging_count; ++j) {
     const std::string point = staging_point_key(r.staging_stage_code[j]);
-    for (const Quantity& v : kVariables) out << ',' << point << '_' << v.key;
-    for (const Quantity& v : kVariables) out << ",d_" << point << '_' << v.key;
+    for (const Quantity& v : kStagingQuantities) out << ',' << point << '_' << v.key;
+    for (const Quantity& v : kStagingQuantities) out << ",d_" << point << '_' << v.key;
   }
-  for (const Quantity& o : kOrbit) out << ',' << o.key;
-  for (const Quantity& o : kOrbit) out << ",d_" << o.key;
+  for (const Quantity& o : kOrbitQuantities) out << ',' << o.key;
+  for (const Quantity& o : kOrbitQuantities) out << ",d_" << o.key;
   out << ",perigee_altitude_nmi,apogee_altitude_nmi,reaches_orbit,max_qbar_alpha_lb_deg_ft2,"
          "max_qbar_alpha_time_s";
   for (const CasingImpactStatistics& c : s.impact_ellipses) {
@@ -560,14 +542,14 @@ void write_monte_carlo_csv(std::ostream& out, const MonteCarloInputs& in, const 
     if (ok(t.status)) {
       for (int j = 0; j < r.staging_count; ++j) {
         for (int v = 0; v < kStagingVariables; ++v)
-          out << ',' << round_trip(t.values[j][v] * kVariables[v].scale);
+          out << ',' << round_trip(t.values[j][v] * kStagingQuantities[v].scale);
         for (int v = 0; v < kStagingVariables; ++v)
-          out << ',' << round_trip(t.dispersions[j][v] * kVariables[v].scale);
+          out << ',' << round_trip(t.dispersions[j][v] * kStagingQuantities[v].scale);
       }
       for (int e = 0; e < kOrbitDispersionElements; ++e)
-        out << ',' << round_trip(t.orbit[e] * kOrbit[e].scale);
+        out << ',' << round_trip(t.orbit[e] * kOrbitQuantities[e].scale);
       for (int e = 0; e < kOrbitDispersionElements; ++e)
-        out << ',' << round_trip(t.orbit_dispersions[e] * kOrbit[e].scale);
+        out << ',' << round_trip(t.orbit_dispersions[e] * kOrbitQuantities[e].scale);
       out << ',' << round_trip(s.perigee_altitude_nmi[i]) << ',' << round_trip(s.apogee_altitude_nmi[i])
           << ',' << (s.reaches_orbit[i] ? 1 : 0) << ','
           << round_trip(t.max_qbar_alpha_lbf_rad_ft2 * kRadToDeg) << ','
@@ -753,11 +735,11 @@ std::vector<Figure> monte_carlo_figures(const MonteCarloInputs& in, const MonteC
   for (const Histogram& h : histograms) {
     std::vector<double> values;
     for (const DispersedTrajectory& t : in.samples->samples) {
-      if (ok(t.status)) values.push_back(t.values[final][h.variable] * kVariables[h.variable].scale);
+      if (ok(t.status)) values.push_back(t.values[final][h.variable] * kStagingQuantities[h.variable].scale);
     }
-    figures.push_back(histogram(h.name, h.title, h.x_label, values,
-                                in.samples->nominal.values[final][h.variable] * kVariables[h.variable].scale,
-                                subtitle));
+    figures.push_back(histogram(
+        h.name, h.title, h.x_label, values,
+        in.samples->nominal.values[final][h.variable] * kStagingQuantities[h.variable].scale, subtitle));
   }
 
   Figure scatter;
@@ -804,7 +786,7 @@ std::vector<Figure> monte_carlo_figures(const MonteCarloInputs& in, const MonteC
   ratio.subtitle = subtitle;
   for (int v = 0; v < kStagingVariables; ++v) {
     PlotSeries series;
-    series.title = kVariables[v].key;
+    series.title = kStagingQuantities[v].key;
     series.style = SeriesStyle::kLinesPoints;
     for (std::size_t j = 0; j < s.columns.size(); ++j) {
       const QuantityStatistics& q = s.columns[j].quantities[static_cast<std::size_t>(v)];

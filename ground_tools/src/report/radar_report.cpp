@@ -6,10 +6,10 @@
 #include <cstdio>
 #include <string>
 
+#include "case_document.hpp"
 #include "listing_pager.hpp"
 #include "number_format.hpp"
 #include "tolip/core/constants.hpp"
-#include "tolip_ground/version.hpp"
 
 namespace tolip::ground {
 namespace {
@@ -147,14 +147,7 @@ void write_radar_listing(std::ostream& out, const DeckListingOptions* listing, c
 
 json radar_document(const DeckListingOptions& listing, const std::string& deck_path, Status trajectory_status,
                     const RadarStep& step) {
-  json document = json::object();
-  document["program"] = "tolip";
-  document["version"] = version_string();
-  document["deck"] = deck_path;
-  document["title"] = report_detail::card_text(listing.title);
-  document["case_heading"] = report_detail::card_text(listing.case_heading);
-  document["status"] = status_name(trajectory_status);
-  document["status_message"] = status_message(trajectory_status);
+  json document = report_detail::case_document(deck_path, listing, trajectory_status);
   document["radar"] = radar_json(step);
   return document;
 }

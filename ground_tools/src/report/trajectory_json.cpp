@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "case_document.hpp"
 #include "number_format.hpp"
 #include "tolip/core/constants.hpp"
 #include "tolip/core/state.hpp"
@@ -9,7 +10,6 @@
 #include "tolip_ground/hardover_report.hpp"
 #include "tolip_ground/radar_report.hpp"
 #include "tolip_ground/report.hpp"
-#include "tolip_ground/version.hpp"
 
 namespace tolip::ground {
 namespace {
@@ -168,17 +168,9 @@ json trajectory_json(const SimulationReport& report) {
   const Trajectory& trajectory = *report.trajectory;
   const int count = stored_point_count(trajectory);
 
-  json document = json::object();
-  document["program"] = "tolip";
-  document["version"] = version_string();
-  document["deck"] = report.deck_path;
   static const DeckListingOptions kNoListing;  // blank titles
-  const DeckListingOptions& listing = report.listing != nullptr ? *report.listing : kNoListing;
-  document["title"] = report_detail::card_text(listing.title);
-  document["case_heading"] = report_detail::card_text(listing.case_heading);
-  document["date"] = report_detail::card_text(listing.date);
-  document["status"] = status_name(report.status);
-  document["status_message"] = status_message(report.status);
+  json document = report_detail::case_document(
+      report.deck_path, report.listing != nullptr ? *report.listing : kNoListing, report.status);
   document["launch_space_age_date_days"] = number(mission.launch.launch_space_age_date_days);
   document["point_count"] = count;
   document["heat_integral_btu_ft2"] = number(trajectory.heat_integral_btu_ft2);
