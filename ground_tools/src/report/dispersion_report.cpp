@@ -15,27 +15,18 @@ namespace {
 
 using json = nlohmann::ordered_json;
 using report_detail::fixed_cell;
+using report_detail::json_number;
 using report_detail::kOrbitQuantities;
 using report_detail::kStagingQuantities;
+using report_detail::left_aligned;
+using report_detail::right_aligned;
 using report_detail::round_trip;
 
-json number(double value) { return std::isfinite(value) ? json(value) : json(nullptr); }
-
-std::string right(const std::string& text, int width) {
-  return (static_cast<int>(text.size()) >= width)
-             ? text
-             : std::string(static_cast<std::size_t>(width) - text.size(), ' ') + text;
-}
-std::string left(const std::string& text, int width) {
-  return (static_cast<int>(text.size()) >= width)
-             ? text
-             : text + std::string(static_cast<std::size_t>(width) - text.size(), ' ');
-}
 std::string e_cell(double value, int width) {
-  if (!std::isfinite(value)) return right("-", width);
+  if (!std::isfinite(value)) return right_aligned("-", width);
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.6E", value);
-  return right(buffer, width);
+  return right_aligned(buffer, width);
 }
 
 const char* code_name(int code) {
@@ -57,20 +48,21 @@ void write_trajectory_block(report_detail::Pager& pager, const DispersionResult&
   const int columns = r.staging_count;
   pager.reserve(6 + 2 * kStagingVariables + 5);
   std::string head = nominal ? " NOMINAL TRAJECTORY (GIANT PLANE 40)"
-                             : " DISPERSED TRAJECTORY  CODE " + right(std::to_string(t.code), 2) + "  " +
-                                   left(t.title, 12) + "  (" + code_name(t.code) + ")";
+                             : " DISPERSED TRAJECTORY  CODE " + right_aligned(std::to_string(t.code), 2) +
+                                   "  " + left_aligned(t.title, 12) + "  (" + code_name(t.code) + ")";
   pager.emit(head);
   if (!ok(t.status)) {
     pager.emit(std::string("   NOT COMPUTED: ") + status_name(t.status) + ": " + status_message(t.status));
     pager.emit("");
     return;
   }
-  std::string columns_line = left("", 22);
-  for (int j = 0; j < columns; ++j) columns_line += right(staging_point_name(r.staging_stage_code[j]), 18);
+  std::string columns_line = left_aligned("", 22);
+  for (int j = 0; j < columns; ++j)
+    columns_line += right_aligned(staging_point_name(r.staging_stage_code[j]), 18);
   pager.emit(columns_line);
   for (int i = 0; i < kStagingVariables; ++i) {
-    std::string line = "   " + left(kStagingQuantities[i].label, 19);
-    std::string disp = "     " + left("DISPERSION", 17);
+    std::string line = "   " + left_aligned(kStagingQuantities[i].label, 19);
+    std::string disp = "     " + left_aligned("DISPERSION", 17);
     for (int j = 0; j < columns; ++j) {
       line += fixed_cell(t.values[j][i] * kStagingQuantities[i].scale, kStagingQuantities[i].decimals, 18);
       disp +=
@@ -79,11 +71,11 @@ void write_trajectory_block(report_detail::Pager& pager, const DispersionResult&
     pager.emit(line);
     if (!nominal) pager.emit(disp);
   }
-  std::string names = left("   ORBIT ELEMENTS", 22);
-  std::string values = left("     VALUE", 22);
-  std::string disps = left("     DISPERSION", 22);
+  std::string names = left_aligned("   ORBIT ELEMENTS", 22);
+  std::string values = left_aligned("     VALUE", 22);
+  std::string disps = left_aligned("     DISPERSION", 22);
   for (int i = 0; i < kOrbitDispersionElements; ++i) {
-    names += right(kOrbitQuantities[i].label, 16);
+    names += right_aligned(kOrbitQuantities[i].label, 16);
     values += e_cell(t.orbit[i] * kOrbitQuantities[i].scale, 16);
     disps += e_cell(t.orbit_dispersions[i] * kOrbitQuantities[i].scale, 16);
   }
@@ -105,12 +97,13 @@ void write_group(report_detail::Pager& pager, const DispersionResult& r, const T
     members += std::to_string(g.members[k]);
   }
   pager.emit(std::string(" ") + title + "  CODES: " + (members.empty() ? "(none)" : members));
-  std::string columns_line = left("", 22);
-  for (int j = 0; j < columns; ++j) columns_line += right(staging_point_name(r.staging_stage_code[j]), 18);
+  std::string columns_line = left_aligned("", 22);
+  for (int j = 0; j < columns; ++j)
+    columns_line += right_aligned(staging_point_name(r.staging_stage_code[j]), 18);
   pager.emit(columns_line);
   for (int i = 0; i < kStagingVariables; ++i) {
-    std::string sum = "   " + left(kStagingQuantities[i].label, 13) + left(" SUM", 6);
-    std::string rss = "   " + left("", 13) + left(" RSS", 6);
+    std::string sum = "   " + left_aligned(kStagingQuantities[i].label, 13) + left_aligned(" SUM", 6);
+    std::string rss = "   " + left_aligned("", 13) + left_aligned(" RSS", 6);
     for (int j = 0; j < columns; ++j) {
       sum += fixed_cell(g.sum[j][i] * kStagingQuantities[i].scale, kStagingQuantities[i].decimals, 18);
       rss += fixed_cell(g.rss[j][i] * kStagingQuantities[i].scale, kStagingQuantities[i].decimals, 18);
@@ -126,7 +119,7 @@ json matrix_json(const double (&m)[kMaxStagingPoints][kStagingVariables], int co
   for (int j = 0; j < columns; ++j) {
     json row = json::object();
     for (int i = 0; i < kStagingVariables; ++i)
-      row[kStagingQuantities[i].key] = number(m[j][i] * kStagingQuantities[i].scale);
+      row[kStagingQuantities[i].key] = json_number(m[j][i] * kStagingQuantities[i].scale);
     rows.push_back(std::move(row));
   }
   return rows;
@@ -148,13 +141,13 @@ json trajectory_json(const DispersionResult& r, const DispersedTrajectory& t, bo
   json orbit = json::object();
   json orbit_d = json::object();
   for (int i = 0; i < kOrbitDispersionElements; ++i) {
-    orbit[kOrbitQuantities[i].key] = number(t.orbit[i] * kOrbitQuantities[i].scale);
-    orbit_d[kOrbitQuantities[i].key] = number(t.orbit_dispersions[i] * kOrbitQuantities[i].scale);
+    orbit[kOrbitQuantities[i].key] = json_number(t.orbit[i] * kOrbitQuantities[i].scale);
+    orbit_d[kOrbitQuantities[i].key] = json_number(t.orbit_dispersions[i] * kOrbitQuantities[i].scale);
   }
   out["orbit_elements"] = std::move(orbit);
   if (!nominal) out["orbit_element_dispersions"] = std::move(orbit_d);
-  out["max_qbar_alpha_lb_deg_ft2"] = number(t.max_qbar_alpha_lbf_rad_ft2 * kLbDegPerLbRad);
-  out["max_qbar_alpha_time_s"] = number(t.max_qbar_alpha_time_s);
+  out["max_qbar_alpha_lb_deg_ft2"] = json_number(t.max_qbar_alpha_lbf_rad_ft2 * kLbDegPerLbRad);
+  out["max_qbar_alpha_time_s"] = json_number(t.max_qbar_alpha_time_s);
   return out;
 }
 
@@ -216,8 +209,8 @@ void write_dispersion_pages(Pager& pager, const DispersionStep& step) {
       "     RP FT  QBAR*ALPHA");
   for (int k = 0; k < r.count; ++k) {
     const DispersedTrajectory& t = r.trajectories[k];
-    std::string line =
-        right(std::to_string(t.code), 7) + "  " + left(t.title, 12) + "  " + left(plane_name(t.code), 9);
+    std::string line = right_aligned(std::to_string(t.code), 7) + "  " + left_aligned(t.title, 12) + "  " +
+                       left_aligned(plane_name(t.code), 9);
     if (!ok(t.status)) {
       pager.emit(line + "  NOT COMPUTED: " + status_name(t.status));
       continue;

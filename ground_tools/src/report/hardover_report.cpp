@@ -15,8 +15,7 @@ namespace tolip::ground {
 namespace {
 
 using json = nlohmann::ordered_json;
-
-json number(double value) { return std::isfinite(value) ? json(value) : json(nullptr); }
+using report_detail::json_number;
 
 const char* mode_name(HardoverMode mode) {
   switch (mode) {
@@ -128,19 +127,19 @@ json hardover_json(const HardoverStep& step) {
       t["stage"] = turn.stage;
       t["mode"] = static_cast<int>(turn.mode);
       t["mode_name"] = mode_key(turn.mode);
-      t["failure_time_s"] = number(turn.failure_time_s);
+      t["failure_time_s"] = json_number(turn.failure_time_s);
       t["nominal_point"] = turn.nominal_point;
       t["stop"] = stop_key(turn.stop);
       t["steps"] = turn.steps;
-      t["duration_s"] = number(turn.last().time_s);
-      t["change_in_gamma_deg"] = number(turn.last().change_in_gamma_rad * kRadToDeg);
+      t["duration_s"] = json_number(turn.last().time_s);
+      t["change_in_gamma_deg"] = json_number(turn.last().change_in_gamma_rad * kRadToDeg);
       json samples = json::array();
       for (int i = 0; i < turn.sample_count; ++i) {
         const HardoverSample& s = turn.samples[i];
-        samples.push_back({{"time_s", number(s.time_s)},
-                           {"change_in_gamma_deg", number(s.change_in_gamma_rad * kRadToDeg)},
-                           {"qbar_alpha_lbf_deg_ft2", number(s.qbar_alpha_lbf_rad_ft2 * kRadToDeg)},
-                           {"attitude_change_deg", number(s.attitude_change_rad * kRadToDeg)}});
+        samples.push_back({{"time_s", json_number(s.time_s)},
+                           {"change_in_gamma_deg", json_number(s.change_in_gamma_rad * kRadToDeg)},
+                           {"qbar_alpha_lbf_deg_ft2", json_number(s.qbar_alpha_lbf_rad_ft2 * kRadToDeg)},
+                           {"attitude_change_deg", json_number(s.attitude_change_rad * kRadToDeg)}});
       }
       t["samples"] = std::move(samples);
       turns.push_back(std::move(t));

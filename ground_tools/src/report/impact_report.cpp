@@ -15,20 +15,10 @@ namespace {
 
 using json = nlohmann::ordered_json;
 using report_detail::fixed_cell;
+using report_detail::json_number;
+using report_detail::left_aligned;
+using report_detail::right_aligned;
 using report_detail::round_trip;
-
-json number(double value) { return std::isfinite(value) ? json(value) : json(nullptr); }
-
-std::string right(const std::string& text, int width) {
-  return (static_cast<int>(text.size()) >= width)
-             ? text
-             : std::string(static_cast<std::size_t>(width) - text.size(), ' ') + text;
-}
-std::string left(const std::string& text, int width) {
-  return (static_cast<int>(text.size()) >= width)
-             ? text
-             : text + std::string(static_cast<std::size_t>(width) - text.size(), ' ');
-}
 
 const char* outcome_name(StepOutcome outcome) {
   return outcome == StepOutcome::kRun       ? "run"
@@ -98,9 +88,10 @@ void write_impact_pages(Pager& pager, const ImpactStep& step) {
       pager.emit("");
       previous = c.kind;
     }
-    std::string line = right(std::to_string(c.stage), 7) + "  " +
-                       left(c.kind == ImpactKind::kThrustFailure ? "THRUST FAILURE" : "EXPENDED CASING", 16) +
-                       fixed_cell(c.failure_time_s, 3, 11);
+    std::string line =
+        right_aligned(std::to_string(c.stage), 7) + "  " +
+        left_aligned(c.kind == ImpactKind::kThrustFailure ? "THRUST FAILURE" : "EXPENDED CASING", 16) +
+        fixed_cell(c.failure_time_s, 3, 11);
     if (!ok(c.status)) {
       pager.emit(line + "   NOT COMPUTED: " + status_name(c.status) + ": " + status_message(c.status));
       continue;
@@ -140,12 +131,12 @@ json impact_json(const ImpactStep& step) {
   if (!has_locus(step)) return out;
   const Mission& m = *step.mission;
   const ImpactLocusData& d = *step.data;
-  out["launch_site"] =
-      json{{"geodetic_latitude_deg",
-            number(geodetic_from_geocentric_rad(m.constants, m.launch.geocentric_latitude_rad) * kRadToDeg)},
-           {"geocentric_latitude_deg", number(m.launch.geocentric_latitude_rad * kRadToDeg)},
-           {"longitude_deg", number(m.launch.longitude_rad * kRadToDeg)},
-           {"azimuth_deg", number(m.launch.azimuth_rad * kRadToDeg)}};
+  out["launch_site"] = json{
+      {"geodetic_latitude_deg",
+       json_number(geodetic_from_geocentric_rad(m.constants, m.launch.geocentric_latitude_rad) * kRadToDeg)},
+      {"geocentric_latitude_deg", json_number(m.launch.geocentric_latitude_rad * kRadToDeg)},
+      {"longitude_deg", json_number(m.launch.longitude_rad * kRadToDeg)},
+      {"azimuth_deg", json_number(m.launch.azimuth_rad * kRadToDeg)}};
   out["every_nth_point"] = json::array({d.every_nth_point[0], d.every_nth_point[1], d.every_nth_point[2]});
   out["step_sizes_s"] = json{{"in_atmosphere", d.steps.in_atmosphere_s},
                              {"out_of_atmosphere", d.steps.out_of_atmosphere_s},
@@ -159,18 +150,18 @@ json impact_json(const ImpactStep& step) {
     row["kind"] = impact_kind_key(c.kind);
     row["stage"] = c.stage;
     row["status"] = status_name(c.status);
-    row["failure_time_s"] = number(c.failure_time_s);
-    row["weight_lb"] = number(c.weight_lb);
+    row["failure_time_s"] = json_number(c.failure_time_s);
+    row["weight_lb"] = json_number(c.weight_lb);
     if (ok(c.status)) {
-      row["impact_time_s"] = number(c.impact_time_s);
-      row["geodetic_latitude_deg"] = number(c.geodetic_latitude_rad * kRadToDeg);
-      row["geocentric_latitude_deg"] = number(c.geocentric_latitude_rad * kRadToDeg);
-      row["longitude_deg"] = number(c.longitude_rad * kRadToDeg);
-      row["downrange_nmi"] = number(c.downrange_rad * kNauticalMilesPerRadian);
-      row["crossrange_nmi"] = number(c.crossrange_rad * kNauticalMilesPerRadian);
-      row["impact_velocity_ft_s"] = number(c.impact_velocity_ft_s);
-      row["impact_flight_path_angle_deg"] = number(c.impact_flight_path_angle_rad * kRadToDeg);
-      row["max_altitude_ft"] = number(c.max_altitude_ft);
+      row["impact_time_s"] = json_number(c.impact_time_s);
+      row["geodetic_latitude_deg"] = json_number(c.geodetic_latitude_rad * kRadToDeg);
+      row["geocentric_latitude_deg"] = json_number(c.geocentric_latitude_rad * kRadToDeg);
+      row["longitude_deg"] = json_number(c.longitude_rad * kRadToDeg);
+      row["downrange_nmi"] = json_number(c.downrange_rad * kNauticalMilesPerRadian);
+      row["crossrange_nmi"] = json_number(c.crossrange_rad * kNauticalMilesPerRadian);
+      row["impact_velocity_ft_s"] = json_number(c.impact_velocity_ft_s);
+      row["impact_flight_path_angle_deg"] = json_number(c.impact_flight_path_angle_rad * kRadToDeg);
+      row["max_altitude_ft"] = json_number(c.max_altitude_ft);
       row["terminal_velocity"] = c.reached_terminal_velocity;
       row["steps"] = c.steps;
     } else {

@@ -17,13 +17,12 @@ namespace {
 
 using json = nlohmann::ordered_json;
 using report_detail::fixed_cell;
+using report_detail::json_number;
 using report_detail::kOrbitQuantities;
 using report_detail::kStagingQuantities;
 using report_detail::round_trip;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-json number(double value) { return std::isfinite(value) ? json(value) : json(nullptr); }
 
 // The Monte Carlo's own quantities, beside the Sec. 15 ones of dispersion_quantities.hpp.
 using Quantity = report_detail::DispersionQuantity;
@@ -206,17 +205,17 @@ json statistic_json(const QuantityStatistics& q) {
   const MonteCarloStatistic& s = q.statistic;
   const bool any = s.count > 0;
   const double mc3 = 3.0 * s.standard_deviation;
-  return json{{"nominal", number(q.nominal)},
+  return json{{"nominal", json_number(q.nominal)},
               {"count", s.count},
-              {"mean", any ? number(s.mean) : json(nullptr)},
-              {"standard_deviation", any ? number(s.standard_deviation) : json(nullptr)},
-              {"p00135", any ? number(s.p00135) : json(nullptr)},
-              {"p50", any ? number(s.p50) : json(nullptr)},
-              {"p99865", any ? number(s.p99865) : json(nullptr)},
-              {"monte_carlo_3sigma", any ? number(mc3) : json(nullptr)},
-              {"rss_3sigma", number(q.rss_three_sigma)},
+              {"mean", any ? json_number(s.mean) : json(nullptr)},
+              {"standard_deviation", any ? json_number(s.standard_deviation) : json(nullptr)},
+              {"p00135", any ? json_number(s.p00135) : json(nullptr)},
+              {"p50", any ? json_number(s.p50) : json(nullptr)},
+              {"p99865", any ? json_number(s.p99865) : json(nullptr)},
+              {"monte_carlo_3sigma", any ? json_number(mc3) : json(nullptr)},
+              {"rss_3sigma", json_number(q.rss_three_sigma)},
               {"monte_carlo_over_rss",
-               (any && q.rss_three_sigma > 0.0) ? number(mc3 / q.rss_three_sigma) : json(nullptr)}};
+               (any && q.rss_three_sigma > 0.0) ? json_number(mc3 / q.rss_three_sigma) : json(nullptr)}};
 }
 
 json codes_json(const std::vector<int>& codes) {
@@ -229,32 +228,32 @@ int final_column(const MonteCarloInputs& in) { return in.linear->staging_count -
 
 json ellipse_json(const DispersionEllipse& e) {
   return json{{"probability", e.probability},
-              {"center_downrange_nmi", number(e.center_downrange_nmi)},
-              {"center_crossrange_nmi", number(e.center_crossrange_nmi)},
-              {"semi_major_nmi", number(e.semi_major_nmi)},
-              {"semi_minor_nmi", number(e.semi_minor_nmi)},
-              {"major_axis_angle_deg", number(e.major_axis_angle_deg)},
-              {"fraction_inside", number(e.fraction_inside)}};
+              {"center_downrange_nmi", json_number(e.center_downrange_nmi)},
+              {"center_crossrange_nmi", json_number(e.center_crossrange_nmi)},
+              {"semi_major_nmi", json_number(e.semi_major_nmi)},
+              {"semi_minor_nmi", json_number(e.semi_minor_nmi)},
+              {"major_axis_angle_deg", json_number(e.major_axis_angle_deg)},
+              {"fraction_inside", json_number(e.fraction_inside)}};
 }
 
 json casing_json(const CasingImpactStatistics& c) {
   const ImpactCase& n = c.nominal;
   const bool flown = ok(n.status);
-  json nominal =
-      json{{"status", status_name(n.status)},
-           {"separation_time_s", flown ? number(n.failure_time_s) : json(nullptr)},
-           {"impact_time_s", flown ? number(n.impact_time_s) : json(nullptr)},
-           {"geodetic_latitude_deg", flown ? number(n.geodetic_latitude_rad * kRadToDeg) : json(nullptr)},
-           {"longitude_deg", flown ? number(n.longitude_rad * kRadToDeg) : json(nullptr)},
-           {"downrange_nmi", flown ? number(n.downrange_rad * kNauticalMilesPerRadian) : json(nullptr)},
-           {"crossrange_nmi", flown ? number(n.crossrange_rad * kNauticalMilesPerRadian) : json(nullptr)}};
-  json mean = json{{"impact_time_s", number(c.mean_impact_time_s)},
-                   {"geodetic_latitude_deg", number(c.mean_geodetic_latitude_deg)},
-                   {"longitude_deg", number(c.mean_longitude_deg)},
-                   {"downrange_nmi", number(c.mean_downrange_nmi)},
-                   {"crossrange_nmi", number(c.mean_crossrange_nmi)}};
+  json nominal = json{
+      {"status", status_name(n.status)},
+      {"separation_time_s", flown ? json_number(n.failure_time_s) : json(nullptr)},
+      {"impact_time_s", flown ? json_number(n.impact_time_s) : json(nullptr)},
+      {"geodetic_latitude_deg", flown ? json_number(n.geodetic_latitude_rad * kRadToDeg) : json(nullptr)},
+      {"longitude_deg", flown ? json_number(n.longitude_rad * kRadToDeg) : json(nullptr)},
+      {"downrange_nmi", flown ? json_number(n.downrange_rad * kNauticalMilesPerRadian) : json(nullptr)},
+      {"crossrange_nmi", flown ? json_number(n.crossrange_rad * kNauticalMilesPerRadian) : json(nullptr)}};
+  json mean = json{{"impact_time_s", json_number(c.mean_impact_time_s)},
+                   {"geodetic_latitude_deg", json_number(c.mean_geodetic_latitude_deg)},
+                   {"longitude_deg", json_number(c.mean_longitude_deg)},
+                   {"downrange_nmi", json_number(c.mean_downrange_nmi)},
+                   {"crossrange_nmi", json_number(c.mean_crossrange_nmi)}};
   return json{{"stage", c.stage},
-              {"casing_weight_lb", number(c.casing_weight_lb)},
+              {"casing_weight_lb", json_number(c.casing_weight_lb)},
               {"nominal", std::move(nominal)},
               {"impacted", c.impacted},
               {"not_impacted", c.not_impacted},
@@ -403,7 +402,7 @@ json monte_carlo_json(const MonteCarloInputs& in, const MonteCarloSummary& s) {
   out["orbit_perigee_altitude_nmi"] = in.orbit_perigee_nmi;
   out["reaching_orbit"] = s.reaching_orbit;
   out["fraction_reaching_orbit"] =
-      s.samples > 0 ? number(static_cast<double>(s.reaching_orbit) / s.samples) : json(nullptr);
+      s.samples > 0 ? json_number(static_cast<double>(s.reaching_orbit) / s.samples) : json(nullptr);
   json points = json::array();
   for (const StagingColumnStatistics& column : s.columns) {
     json point = json::object();

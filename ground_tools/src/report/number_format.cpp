@@ -28,6 +28,20 @@ std::string fixed_cell(double value, int decimals, int width) {
   return buffer;
 }
 
+nlohmann::ordered_json json_number(double value) {
+  return std::isfinite(value) ? nlohmann::ordered_json(value) : nlohmann::ordered_json(nullptr);
+}
+
+std::string right_aligned(const std::string& text, int width) {
+  if (static_cast<int>(text.size()) >= width) return text;
+  return std::string(static_cast<std::size_t>(width) - text.size(), ' ') + text;
+}
+
+std::string left_aligned(const std::string& text, int width) {
+  if (static_cast<int>(text.size()) >= width) return text;
+  return text + std::string(static_cast<std::size_t>(width) - text.size(), ' ');
+}
+
 std::string card_text(const char* text, int capacity) {
   std::size_t length = 0;
   while (length < static_cast<std::size_t>(capacity) && text[length] != '\0') ++length;

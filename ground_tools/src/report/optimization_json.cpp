@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "number_format.hpp"
 #include "tolip/core/constants.hpp"
 #include "tolip/core/state.hpp"
 #include "tolip_ground/autopilot_run.hpp"
@@ -20,19 +21,17 @@ namespace tolip::ground {
 namespace {
 
 using json = nlohmann::ordered_json;
+using report_detail::json_number;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-// A number, or null when it is not finite (JSON has no NaN).
-json number(double value) { return std::isfinite(value) ? json(value) : json(nullptr); }
 
 json payoff_json(const PayoffSummary& payoff) {
   return json{
       {"kind", payoff.kind},
       {"code", payoff.code},
       {"unit", payoff.unit},
-      {"value", number(payoff.value)},
-      {"corrected_value", number(payoff.corrected)},
+      {"value", json_number(payoff.value)},
+      {"corrected_value", json_number(payoff.corrected)},
   };
 }
 
@@ -42,8 +41,8 @@ json adjustable_json(const std::vector<AdjustableSummary>& adjustable) {
     array.push_back(json{
         {"code", a.code},
         {"name", a.name},
-        {"value", number(a.value)},
-        {"initial_value", number(a.initial_value)},
+        {"value", json_number(a.value)},
+        {"initial_value", json_number(a.initial_value)},
         {"unit", a.unit},
     });
   }
@@ -60,8 +59,8 @@ json iterations_json(const OptimizationReport& report, int rows) {
     json partials = json::array();
     json held = json::array();
     for (int i = 1; i <= rows && i < kMaxConstraints; ++i) {
-      corrections.push_back(number(r.constraint_corrections[i]));
-      partials.push_back(number(r.payoff_partials[i]));
+      corrections.push_back(json_number(r.constraint_corrections[i]));
+      partials.push_back(json_number(r.payoff_partials[i]));
       held.push_back(r.constraint_held[i]);
     }
     array.push_back(json{
@@ -69,11 +68,11 @@ json iterations_json(const OptimizationReport& report, int rows) {
         {"kind", run_kind_name(r.kind)},
         {"run_status", status_name(r.run_status)},
         {"successful", r.successful},
-        {"attempted_payoff_improvement", number(r.attempted_payoff_improvement)},
-        {"payoff", number(r.payoff)},
-        {"corrected_payoff", number(r.corrected_payoff)},
-        {"payload_lb", number(r.payload_lb)},
-        {"payload_increment_lb", number(r.payload_increment_lb)},
+        {"attempted_payoff_improvement", json_number(r.attempted_payoff_improvement)},
+        {"payoff", json_number(r.payoff)},
+        {"corrected_payoff", json_number(r.corrected_payoff)},
+        {"payload_lb", json_number(r.payload_lb)},
+        {"payload_increment_lb", json_number(r.payload_increment_lb)},
         {"constraint_corrections", std::move(corrections)},
         {"payoff_partials", std::move(partials)},
         {"constraints_held", std::move(held)},
@@ -90,7 +89,7 @@ json held_constraints_json(const OptimizerResult& result, int rows) {
     json entry = json{{"code", result.codes[i]},
                       {"held_runs", result.held_runs[i]},
                       {"held_at_end", result.constraint_held[i]},
-                      {"steerability_deadbands", number(result.steerability_deadbands[i])}};
+                      {"steerability_deadbands", json_number(result.steerability_deadbands[i])}};
     if (result.held_runs[i] > 0) {
       entry["message"] = "constraint " + std::to_string(i) + " (code " + std::to_string(result.codes[i]) +
                          ") has no first-order effect: held by deadband";
@@ -107,7 +106,7 @@ json theta_history_json(const Trajectory& trajectory) {
   const int count = stored_point_count(trajectory);
   for (int k = 0; k < count; ++k) {
     const TrajectoryPoint& p = trajectory.points[k];
-    array.push_back(json::array({number(p.time_s), number(p.theta_rad * kRadToDeg)}));
+    array.push_back(json::array({json_number(p.time_s), json_number(p.theta_rad * kRadToDeg)}));
   }
   return array;
 }
@@ -121,11 +120,11 @@ json exchange_ratios_json(const OptimizationReport& report) {
   for (int s = 0; s < count; ++s) {
     array.push_back(json{
         {"stage", r.stage_codes[s]},
-        {"burn_rate", number(r.burn_rate[s])},
-        {"propellant_weight", number(r.propellant_weight[s])},
-        {"specific_impulse", number(r.specific_impulse[s])},
-        {"drag", number(r.drag[s])},
-        {"jettison_weight", number(r.jettison_weight[s])},
+        {"burn_rate", json_number(r.burn_rate[s])},
+        {"propellant_weight", json_number(r.propellant_weight[s])},
+        {"specific_impulse", json_number(r.specific_impulse[s])},
+        {"drag", json_number(r.drag[s])},
+        {"jettison_weight", json_number(r.jettison_weight[s])},
     });
   }
   return array;
@@ -135,12 +134,12 @@ json exchange_ratios_json(const OptimizationReport& report) {
 json qbar_alpha_json(const Mission& mission, const Trajectory& trajectory) {
   const QbarAlphaSummary q = qbar_alpha_summary(mission, trajectory);
   return json{
-      {"lift_peak_lb_deg_ft2", number(q.lift_peak_lb_deg_ft2)},
-      {"lift_peak_time_s", number(q.lift_peak_time_s)},
-      {"peak_lb_deg_ft2", number(q.peak_lb_deg_ft2)},
-      {"peak_time_s", number(q.peak_time_s)},
-      {"limit_lb_deg_ft2", q.limit_lb_deg_ft2 > 0.0 ? number(q.limit_lb_deg_ft2) : json(nullptr)},
-      {"excess_integral_s", number(q.excess_integral_s)},
+      {"lift_peak_lb_deg_ft2", json_number(q.lift_peak_lb_deg_ft2)},
+      {"lift_peak_time_s", json_number(q.lift_peak_time_s)},
+      {"peak_lb_deg_ft2", json_number(q.peak_lb_deg_ft2)},
+      {"peak_time_s", json_number(q.peak_time_s)},
+      {"limit_lb_deg_ft2", q.limit_lb_deg_ft2 > 0.0 ? json_number(q.limit_lb_deg_ft2) : json(nullptr)},
+      {"excess_integral_s", json_number(q.excess_integral_s)},
       {"met", q.met},
   };
 }
@@ -161,10 +160,10 @@ json linearized_json(const OptimizationReport& report) {
     const bool merged = rate_continues_previous(p, s);
     segments.push_back(json{
         {"stage", p.stage_code[s]},
-        {"start_stage_time_s", number(p.start_stage_time_s[s])},
-        {"start_time_s", number(p.break_time_s[s])},
-        {"theta_deg", number(p.theta_rad[s] * kRadToDeg)},
-        {"rate_deg_s", number(p.rate_rad_s[s] * kRadToDeg)},
+        {"start_stage_time_s", json_number(p.start_stage_time_s[s])},
+        {"start_time_s", json_number(p.break_time_s[s])},
+        {"theta_deg", json_number(p.theta_rad[s] * kRadToDeg)},
+        {"rate_deg_s", json_number(p.rate_rad_s[s] * kRadToDeg)},
         {"rate_continues_previous", merged},
     });
   }
@@ -172,9 +171,9 @@ json linearized_json(const OptimizationReport& report) {
   for (int j = 0; j < std::clamp(r.constraint_count, 0, kMaxConstraints); ++j) {
     constraints.push_back(json{
         {"code", r.codes[j]},
-        {"desired", number(r.desired[j])},
-        {"achieved", number(r.achieved[j])},
-        {"tolerance", number(r.tolerance[j])},
+        {"desired", json_number(r.desired[j])},
+        {"achieved", json_number(r.achieved[j])},
+        {"tolerance", json_number(r.tolerance[j])},
         {"met", r.met[j]},
     });
   }
@@ -182,12 +181,12 @@ json linearized_json(const OptimizationReport& report) {
       {"status", status_name(report.linearization_status)},
       {"status_message", status_message(report.linearization_status)},
       {"segments", std::move(segments)},
-      {"end_time_s", number(count > 0 ? p.break_time_s[count] : kNaN)},
-      {"end_theta_deg", number(count > 0 ? p.theta_rad[count] * kRadToDeg : kNaN)},
+      {"end_time_s", json_number(count > 0 ? p.break_time_s[count] : kNaN)},
+      {"end_theta_deg", json_number(count > 0 ? p.theta_rad[count] * kRadToDeg : kNaN)},
       {"constraints_met", r.constraints_met},
       {"rate_limits_met", r.rate_limits_met},
-      {"payoff", number(r.payoff)},
-      {"optimum_payoff", number(report.optimum_payoff)},
+      {"payoff", json_number(r.payoff)},
+      {"optimum_payoff", json_number(report.optimum_payoff)},
       {"forward_runs", r.forward_runs},
       {"backward_runs", r.backward_runs},
       {"programs_computed", r.programs_computed},
@@ -208,12 +207,12 @@ json linearized_json(const OptimizationReport& report) {
 json terminal_json(const Trajectory& t) {
   const TrajectoryPoint& p = t.final_point();
   return json{
-      {"time_s", number(p.time_s)},
-      {"altitude_ft", number(p.altitude_ft)},
-      {"velocity_ft_s", number(p.state(kStateV))},
-      {"flight_path_angle_deg", number(p.state(kStateGamma) * kRadToDeg)},
-      {"inertial_velocity_ft_s", number(p.inertial.velocity_ft_s)},
-      {"inertial_flight_path_angle_deg", number(p.inertial.flight_path_angle_rad * kRadToDeg)},
+      {"time_s", json_number(p.time_s)},
+      {"altitude_ft", json_number(p.altitude_ft)},
+      {"velocity_ft_s", json_number(p.state(kStateV))},
+      {"flight_path_angle_deg", json_number(p.state(kStateGamma) * kRadToDeg)},
+      {"inertial_velocity_ft_s", json_number(p.inertial.velocity_ft_s)},
+      {"inertial_flight_path_angle_deg", json_number(p.inertial.flight_path_angle_rad * kRadToDeg)},
   };
 }
 
@@ -250,15 +249,15 @@ json body_dynamics_json(const OptimizationReport& report) {
   out["point_mass_met"] = r->point_mass_met;
   out["relinearized"] = r->body_dynamics;
   if (!r->point_mass_met || !r->finished) return out;
-  out["point_mass_payoff"] = number(r->point_mass_payoff);
-  out["body_dynamics_payoff"] = number(r->payoff);
-  out["payoff_difference"] = number(r->payoff - r->point_mass_payoff);
+  out["point_mass_payoff"] = json_number(r->point_mass_payoff);
+  out["body_dynamics_payoff"] = json_number(r->payoff);
+  out["payoff_difference"] = json_number(r->payoff - r->point_mass_payoff);
   json flown = json::array();
   for (int j = 0; j < std::clamp(r->constraint_count, 0, kMaxConstraints); ++j) {
     flown.push_back(json{{"code", r->codes[j]},
-                         {"desired", number(r->desired[j])},
-                         {"point_mass", number(r->point_mass_achieved[j])},
-                         {"body_dynamics", number(r->point_mass_program_6d_achieved[j])}});
+                         {"desired", json_number(r->desired[j])},
+                         {"point_mass", json_number(r->point_mass_achieved[j])},
+                         {"body_dynamics", json_number(r->point_mass_program_6d_achieved[j])}});
   }
   out["point_mass_program_flown_6d"] = std::move(flown);
   return out;
@@ -273,7 +272,7 @@ json optimization_json(const OptimizationReport& report) {
   const std::vector<AdjustableSummary> adjustable = adjustable_summaries(report);
 
   json partials = json::array();
-  for (const ConstraintSummary& c : constraints) partials.push_back(number(c.payoff_partial));
+  for (const ConstraintSummary& c : constraints) partials.push_back(json_number(c.payoff_partial));
 
   json additions = json::object();
   additions["converged"] = result.converged;
@@ -282,16 +281,16 @@ json optimization_json(const OptimizationReport& report) {
   additions["optimization_runs"] = result.optimization_runs;
   additions["successful_optimization_runs"] = result.successful_optimization_runs;
   additions["final_guidance_met"] = result.final_guidance_met;
-  additions["initial_payoff_improvement"] = number(result.initial_payoff_improvement);
+  additions["initial_payoff_improvement"] = json_number(result.initial_payoff_improvement);
   additions["initial_improvement_from_da13_1"] = result.initial_improvement_from_da13_1;
   additions["case_status"] = status_name(report.case_status);
   additions["case_failed_step"] = report.case_failed_step;
   additions["forward_runs"] = result.forward_runs;
   additions["backward_runs"] = result.backward_runs;
   additions["payoff"] = payoff_json(payoff_summary(report));
-  additions["payload_lb"] = number(mission.vehicle.payload_lb);
+  additions["payload_lb"] = json_number(mission.vehicle.payload_lb);
   additions["initial_payload_lb"] =
-      number(report.initial_mission != nullptr ? report.initial_mission->vehicle.payload_lb : kNaN);
+      json_number(report.initial_mission != nullptr ? report.initial_mission->vehicle.payload_lb : kNaN);
   additions["constraints"] = constraints_json(constraints);
   additions["payoff_partials"] = std::move(partials);
   additions["adjustable"] = adjustable_json(adjustable);

@@ -32,7 +32,9 @@ namespace tolip::ground {
 namespace {
 
 using report_detail::fixed_cell;
+using report_detail::left_aligned;
 using report_detail::Pager;
+using report_detail::right_aligned;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
@@ -157,25 +159,14 @@ ParameterText parameter_text(int code) {
 
 // ---- listing helpers -------------------------------------------------------------------------
 
-std::string right(const std::string& text, int width) {
-  if (static_cast<int>(text.size()) >= width) return text;
-  return std::string(static_cast<std::size_t>(width) - text.size(), ' ') + text;
-}
-
-std::string left(const std::string& text, int width) {
-  std::string padded = text;
-  if (static_cast<int>(padded.size()) < width) padded.resize(static_cast<std::size_t>(width), ' ');
-  return padded;
-}
-
 std::string number_cell(double value, int decimals, int width) { return fixed_cell(value, decimals, width); }
 
 // Scientific notation in a right-aligned cell ("-" when not finite).
 std::string e_cell(double value, int width) {
-  if (!std::isfinite(value)) return right("-", width);
+  if (!std::isfinite(value)) return right_aligned("-", width);
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "%.6E", value);
-  return right(buffer, width);
+  return right_aligned(buffer, width);
 }
 
 std::string upper(const char* text) {
@@ -240,10 +231,11 @@ void write_problem(Pager& pager, const OptimizationReport& report,
     const ConstraintSummary& c = constraints[i];
     ConstraintCode decoded;
     const QuantityText text = code_text(c.code, &decoded);
-    std::string line = right(std::to_string(i + 1), 7) + right(std::to_string(c.code), 6) + "  " +
-                       left(constraint_label(decoded, text) + (c.inequality ? " (MAX)" : ""), 27);
+    std::string line = right_aligned(std::to_string(i + 1), 7) + right_aligned(std::to_string(c.code), 6) +
+                       "  " +
+                       left_aligned(constraint_label(decoded, text) + (c.inequality ? " (MAX)" : ""), 27);
     line += number_cell(c.desired, text.decimals, 16) + number_cell(c.tolerance, text.decimals, 16);
-    line += "  " + left(text.unit_heading, 9);
+    line += "  " + left_aligned(text.unit_heading, 9);
     if (c.angle) {
       line +=
           number_cell(c.desired * kRadToDeg, 6, 16) + number_cell(c.tolerance * kRadToDeg, 6, 14) + "  DEG";
@@ -259,9 +251,9 @@ void write_problem(Pager& pager, const OptimizationReport& report,
     const AdjustableSummary& a = adjustable[p];
     const double weight =
         p < static_cast<std::size_t>(kMaxAdjustableParameters) ? mission.adjustable.weights[p] : kNaN;
-    pager.emit(right(std::to_string(p + 1), 7) + right(std::to_string(a.code), 6) + "  " +
-               left(parameter_text(a.code).heading, 25) + number_cell(a.initial_value, 6, 18) + "  " +
-               left(upper(a.unit.c_str()), 6) + e_cell(weight, 14));
+    pager.emit(right_aligned(std::to_string(p + 1), 7) + right_aligned(std::to_string(a.code), 6) + "  " +
+               left_aligned(parameter_text(a.code).heading, 25) + number_cell(a.initial_value, 6, 18) + "  " +
+               left_aligned(upper(a.unit.c_str()), 6) + e_cell(weight, 14));
   }
   pager.emit("");
 }
@@ -275,8 +267,8 @@ void write_iteration_table(Pager& pager, const OptimizationReport& report) {
     pager.emit(
         "    RUN  KIND              SUCCESSFUL  NOMINAL PAYOFF INCR          PAYOFF  CORRECTED PAYOFF"
         "         PAYLOAD  PAYLOAD INCREMENT");
-    pager.emit("                                       " + right(unit, 19) + right(unit, 16) +
-               right(unit, 18) + right("LB", 16) + right("LB", 19));
+    pager.emit("                                       " + right_aligned(unit, 19) + right_aligned(unit, 16) +
+               right_aligned(unit, 18) + right_aligned("LB", 16) + right_aligned("LB", 19));
   };
   pager.reserve(5);
   headings();
@@ -284,8 +276,9 @@ void write_iteration_table(Pager& pager, const OptimizationReport& report) {
   for (int k = 0; k < count; ++k) {
     const IterationRecord& r = result.iterations[k];
     pager.reserve(1);
-    std::string line = right(std::to_string(r.forward_run), 7) + "  " + left(run_kind_heading(r.kind), 18) +
-                       left(r.successful ? "YES" : "NO", 10);
+    std::string line = right_aligned(std::to_string(r.forward_run), 7) + "  " +
+                       left_aligned(run_kind_heading(r.kind), 18) +
+                       left_aligned(r.successful ? "YES" : "NO", 10);
     line += number_cell(r.attempted_payoff_improvement, 4, 21) + number_cell(r.payoff, 4, 16) +
             number_cell(r.corrected_payoff, 4, 18) + number_cell(r.payload_lb, 4, 16) +
             number_cell(r.payload_increment_lb, 4, 19);
@@ -323,8 +316,8 @@ void write_iteration_details(Pager& pager, const OptimizationReport& report,
         (ok(r.run_status) ? std::string() : std::string("   RUN FAILED: ") + status_name(r.run_status)));
     pager.emit(
         "   NOMINAL PAYOFF INCREMENT          PAYOFF  CORRECTED PAYOFF         PAYLOAD  PAYLOAD INCREMENT");
-    pager.emit("   " + right(payoff, 24) + right(payoff, 16) + right(payoff, 18) + right("LB", 16) +
-               right("LB", 19));
+    pager.emit("   " + right_aligned(payoff, 24) + right_aligned(payoff, 16) + right_aligned(payoff, 18) +
+               right_aligned("LB", 16) + right_aligned("LB", 19));
     pager.emit("   " + number_cell(r.attempted_payoff_improvement, 4, 24) + number_cell(r.payoff, 4, 16) +
                number_cell(r.corrected_payoff, 4, 18) + number_cell(r.payload_lb, 4, 16) +
                number_cell(r.payload_increment_lb, 4, 19));
@@ -342,9 +335,10 @@ void write_iteration_details(Pager& pager, const OptimizationReport& report,
         const QuantityText text = code_text(c.code, &decoded);
         const double correction = (i + 1 < kMaxConstraints) ? r.constraint_corrections[i + 1] : kNaN;
         const double partial = (i + 1 < kMaxConstraints) ? r.payoff_partials[i + 1] : kNaN;
-        std::string line = right(std::to_string(i + 1), 7) + right(std::to_string(c.code), 6) + "  " +
-                           left(constraint_label(decoded, text) + (c.inequality ? " (MAX)" : ""), 27) +
-                           number_cell(correction, text.decimals, 16) + "  " + left(text.unit_heading, 9);
+        std::string line =
+            right_aligned(std::to_string(i + 1), 7) + right_aligned(std::to_string(c.code), 6) + "  " +
+            left_aligned(constraint_label(decoded, text) + (c.inequality ? " (MAX)" : ""), 27) +
+            number_cell(correction, text.decimals, 16) + "  " + left_aligned(text.unit_heading, 9);
         if (c.angle) {
           line += number_cell(correction * kRadToDeg, 6, 16) + "  DEG  ";
         } else {
@@ -390,7 +384,7 @@ void write_summary(Pager& pager, const OptimizationReport& report,
   const auto labelled = [](const std::string& label, const std::string& value, const std::string& unit) {
     std::string text = "   " + label;
     text.resize(30, ' ');
-    text += "= " + right(value, 20);
+    text += "= " + right_aligned(value, 20);
     if (!unit.empty()) text += " " + unit;
     return text;
   };
@@ -468,8 +462,8 @@ void write_summary(Pager& pager, const OptimizationReport& report,
       const ConstraintSummary& c = constraints[i];
       ConstraintCode decoded;
       const QuantityText text = code_text(c.code, &decoded);
-      pager.emit(right(std::to_string(i + 1), 7) + right(std::to_string(c.code), 6) + "  " +
-                 left(constraint_label(decoded, text) + (c.inequality ? " (MAX)" : ""), 27) +
+      pager.emit(right_aligned(std::to_string(i + 1), 7) + right_aligned(std::to_string(c.code), 6) + "  " +
+                 left_aligned(constraint_label(decoded, text) + (c.inequality ? " (MAX)" : ""), 27) +
                  e_cell(c.payoff_partial, 22) + "  " + partial_unit(payoff_heading, text.unit_heading));
     }
     pager.emit("");
@@ -481,8 +475,8 @@ void write_summary(Pager& pager, const OptimizationReport& report,
     pager.emit("    NO.  CODE  PARAMETER                    INITIAL VALUE       FINAL VALUE  UNIT");
     for (std::size_t p = 0; p < adjustable.size(); ++p) {
       const AdjustableSummary& a = adjustable[p];
-      pager.emit(right(std::to_string(p + 1), 7) + right(std::to_string(a.code), 6) + "  " +
-                 left(parameter_text(a.code).heading, 25) + number_cell(a.initial_value, 6, 18) +
+      pager.emit(right_aligned(std::to_string(p + 1), 7) + right_aligned(std::to_string(a.code), 6) + "  " +
+                 left_aligned(parameter_text(a.code).heading, 25) + number_cell(a.initial_value, 6, 18) +
                  number_cell(a.value, 6, 18) + "  " + upper(a.unit.c_str()));
     }
     pager.emit("");
@@ -517,10 +511,11 @@ void write_exchange_ratios(Pager& pager, const OptimizationReport& report) {
   pager.emit(
       "    STAGE         BURN RATE   PROPELLANT WEIGHT    SPECIFIC IMPULSE           DRAG AREA"
       "     JETTISON WEIGHT");
-  pager.emit("          " + right(unit + "/PCT", 18) + right(unit + "/LB", 20) + right(unit + "/PCT", 20) +
-             right(unit + "/FT2", 20) + right(unit + "/LB", 20));
+  pager.emit("          " + right_aligned(unit + "/PCT", 18) + right_aligned(unit + "/LB", 20) +
+             right_aligned(unit + "/PCT", 20) + right_aligned(unit + "/FT2", 20) +
+             right_aligned(unit + "/LB", 20));
   for (int s = 0; s < count; ++s) {
-    pager.emit(right(std::to_string(r->stage_codes[s]), 9) + " " + e_cell(r->burn_rate[s], 18) +
+    pager.emit(right_aligned(std::to_string(r->stage_codes[s]), 9) + " " + e_cell(r->burn_rate[s], 18) +
                e_cell(r->propellant_weight[s], 20) + e_cell(r->specific_impulse[s], 20) +
                e_cell(r->drag[s], 20) + e_cell(r->jettison_weight[s], 20));
   }
@@ -556,7 +551,7 @@ void write_linearized_program(Pager& pager, const OptimizationReport& report) {
   pager.emit("                            SEC               SEC             DEG         DEG/SEC");
   for (int s = 0; s < count; ++s) {
     const bool merged = rate_continues_previous(p, s);
-    pager.emit(right(std::to_string(s + 1), 11) + right(std::to_string(p.stage_code[s]), 7) +
+    pager.emit(right_aligned(std::to_string(s + 1), 11) + right_aligned(std::to_string(p.stage_code[s]), 7) +
                number_cell(p.start_stage_time_s[s], 3, 13) + number_cell(p.break_time_s[s], 3, 18) +
                number_cell(p.theta_rad[s] * kRadToDeg, 5, 16) +
                number_cell(p.rate_rad_s[s] * kRadToDeg, 5, 16) + (merged ? "  (SAME RATE: MERGED)" : ""));
@@ -576,11 +571,11 @@ void write_linearized_program(Pager& pager, const OptimizationReport& report) {
   for (int j = 0; j < constraints; ++j) {
     ConstraintCode decoded;
     const QuantityText text = code_text(r->codes[j], &decoded);
-    pager.emit(right(std::to_string(r->codes[j]), 14) + "  " + left(constraint_label(decoded, text), 27) +
-               number_cell(r->desired[j], text.decimals, 16) +
-               number_cell(r->achieved[j], text.decimals, 16) +
-               number_cell(r->tolerance[j], text.decimals, 16) + "  " + left(text.unit_heading, 9) +
-               (r->met[j] ? "YES" : "NO"));
+    pager.emit(
+        right_aligned(std::to_string(r->codes[j]), 14) + "  " +
+        left_aligned(constraint_label(decoded, text), 27) + number_cell(r->desired[j], text.decimals, 16) +
+        number_cell(r->achieved[j], text.decimals, 16) + number_cell(r->tolerance[j], text.decimals, 16) +
+        "  " + left_aligned(text.unit_heading, 9) + (r->met[j] ? "YES" : "NO"));
   }
   const int ip1 = report.final_trajectory.mission->options.payoff();
   const double loss_percent = 100.0 * (report.optimum_payoff - r->payoff) / report.optimum_payoff;
@@ -618,7 +613,8 @@ void write_linearized_program(Pager& pager, const OptimizationReport& report) {
     for (int j = 0; j < constraints; ++j) {
       ConstraintCode decoded;
       const QuantityText text = code_text(r->codes[j], &decoded);
-      pager.emit(right(std::to_string(r->codes[j]), 14) + "  " + left(constraint_label(decoded, text), 27) +
+      pager.emit(right_aligned(std::to_string(r->codes[j]), 14) + "  " +
+                 left_aligned(constraint_label(decoded, text), 27) +
                  number_cell(r->desired[j], text.decimals, 16) +
                  number_cell(r->point_mass_achieved[j], text.decimals, 26) +
                  number_cell(r->point_mass_program_6d_achieved[j], text.decimals, 16));
@@ -726,12 +722,12 @@ void report_detail::write_constraint_table(Pager& pager, const std::vector<Const
     const ConstraintSummary& c = constraints[i];
     ConstraintCode decoded;
     const QuantityText text = code_text(c.code, &decoded);
-    std::string line = right(std::to_string(i + 1), 7) + right(std::to_string(c.code), 6) + "  " +
-                       left(constraint_label(decoded, text) + (c.inequality ? " (MAX)" : ""), 27) +
-                       number_cell(c.desired, text.decimals, 16) +
-                       number_cell(c.achieved, text.decimals, 16) + number_cell(c.error, text.decimals, 16) +
-                       number_cell(c.tolerance, text.decimals, 16) + "  " + left(text.unit_heading, 9) +
-                       (c.met ? "YES" : "NO");
+    std::string line =
+        right_aligned(std::to_string(i + 1), 7) + right_aligned(std::to_string(c.code), 6) + "  " +
+        left_aligned(constraint_label(decoded, text) + (c.inequality ? " (MAX)" : ""), 27) +
+        number_cell(c.desired, text.decimals, 16) + number_cell(c.achieved, text.decimals, 16) +
+        number_cell(c.error, text.decimals, 16) + number_cell(c.tolerance, text.decimals, 16) + "  " +
+        left_aligned(text.unit_heading, 9) + (c.met ? "YES" : "NO");
     pager.emit(line);
     if (c.angle) {
       pager.emit(std::string(42, ' ') + number_cell(c.desired * kRadToDeg, 6, 16) +
@@ -902,7 +898,7 @@ void write_linearization_programs(Pager& pager, const OptimizationReport& report
       const double rate = s < count ? (p.theta_rad[s + 1] - p.theta_rad[s]) /
                                           (p.break_time_s[s + 1] - p.break_time_s[s]) * kRadToDeg
                                     : std::numeric_limits<double>::quiet_NaN();
-      pager.emit((s < count ? right(std::to_string(s + 1), 11) : std::string(11, ' ')) +
+      pager.emit((s < count ? right_aligned(std::to_string(s + 1), 11) : std::string(11, ' ')) +
                  number_cell(p.break_time_s[s], 3, 12) + number_cell(p.theta_rad[s] * kRadToDeg, 5, 14) +
                  (s < count ? number_cell(rate, 5, 14) : std::string(14, ' ')) +
                  (p.fixed[s] ? "  YES" : "   NO"));

@@ -15,6 +15,7 @@ namespace tolip::ground {
 namespace {
 
 using json = nlohmann::ordered_json;
+using report_detail::json_number;
 
 std::string format(const char* pattern, double value) {
   char buffer[64];
@@ -23,8 +24,6 @@ std::string format(const char* pattern, double value) {
 }
 
 // JSON has no NaN: a non-finite value is null (the core stores none; this is a guard).
-json number(double value) { return std::isfinite(value) ? json(value) : json(nullptr); }
-
 std::string upper(std::string text) {
   for (char& c : text) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
   return text;
@@ -114,22 +113,22 @@ json radar_json(const RadarStep& step) {
     json station = json::object();
     station["id"] = deck.id;
     station["name"] = deck.name;
-    station["geodetic_latitude_deg"] = number(deck.geodetic_latitude_rad * kRadToDeg);
-    station["longitude_deg"] = number(deck.longitude_rad * kRadToDeg);
-    station["altitude_ft"] = number(deck.altitude_ft);
+    station["geodetic_latitude_deg"] = json_number(deck.geodetic_latitude_rad * kRadToDeg);
+    station["longitude_deg"] = json_number(deck.longitude_rad * kRadToDeg);
+    station["altitude_ft"] = json_number(deck.altitude_ft);
     json points = json::array();
     if (r != nullptr && static_cast<int>(s) < r->station_count) {
       for (int i = 0; i < r->point_count; ++i) {
         const LookAngles& look = r->look[s][i];
         json point = json::object();
-        point["time_s"] = number(r->time_s[i]);
+        point["time_s"] = json_number(r->time_s[i]);
         point["stage"] = r->stage_code[i];
-        point["slant_range_ft"] = number(look.slant_range_ft);
-        point["slant_range_yd"] = number(look.slant_range_ft / kFeetPerYard);
-        point["azimuth_deg"] = number(look.azimuth_rad * kRadToDeg);
-        point["azimuth_mils"] = number(look.azimuth_rad * kRadToDeg * kMilsPerDegree);
-        point["elevation_deg"] = number(look.elevation_rad * kRadToDeg);
-        point["elevation_mils"] = number(look.elevation_rad * kRadToDeg * kMilsPerDegree);
+        point["slant_range_ft"] = json_number(look.slant_range_ft);
+        point["slant_range_yd"] = json_number(look.slant_range_ft / kFeetPerYard);
+        point["azimuth_deg"] = json_number(look.azimuth_rad * kRadToDeg);
+        point["azimuth_mils"] = json_number(look.azimuth_rad * kRadToDeg * kMilsPerDegree);
+        point["elevation_deg"] = json_number(look.elevation_rad * kRadToDeg);
+        point["elevation_mils"] = json_number(look.elevation_rad * kRadToDeg * kMilsPerDegree);
         points.push_back(std::move(point));
       }
     }

@@ -15,10 +15,10 @@ namespace tolip::ground {
 namespace {
 
 using json = nlohmann::ordered_json;
+using report_detail::json_number;
 
-// A number, or null when it is not finite (JSON has no NaN).
-json number(double value) { return std::isfinite(value) ? json(value) : json(nullptr); }
-json degrees(double radians) { return number(radians * kRadToDeg); }
+// Radians in degrees, or null when not finite.
+json degrees(double radians) { return json_number(radians * kRadToDeg); }
 
 const char* orbit_type_name(OrbitType type) {
   switch (type) {
@@ -34,7 +34,7 @@ json point_json(const TrajectoryPoint& point) {
   for (const PointColumn& column : trajectory_point_columns()) {
     const double value = column.value(point);
     switch (column.kind) {
-      case ColumnKind::kReal: object[column.name] = number(value); break;
+      case ColumnKind::kReal: object[column.name] = json_number(value); break;
       case ColumnKind::kInteger: object[column.name] = static_cast<long long>(value); break;
       case ColumnKind::kFlag: object[column.name] = value != 0.0; break;
     }
@@ -44,26 +44,26 @@ json point_json(const TrajectoryPoint& point) {
 
 json burnout_json(const TrajectoryPoint& point) {
   return json{
-      {"time_s", number(point.time_s)},
+      {"time_s", json_number(point.time_s)},
       {"stage", point.stage_code},
-      {"stage_time_s", number(point.stage_time_s)},
-      {"velocity_ft_s", number(point.state[kStateV])},
+      {"stage_time_s", json_number(point.stage_time_s)},
+      {"velocity_ft_s", json_number(point.state[kStateV])},
       {"gamma_deg", degrees(point.state[kStateGamma])},
       {"psi_deg", degrees(point.state[kStatePsi])},
-      {"radius_ft", number(point.state[kStateR])},
-      {"altitude_ft", number(point.altitude_ft)},
+      {"radius_ft", json_number(point.state[kStateR])},
+      {"altitude_ft", json_number(point.altitude_ft)},
       {"geocentric_latitude_deg", degrees(point.state[kStateLambda])},
       {"geodetic_latitude_deg", degrees(point.geodetic_latitude_rad)},
-      {"longitude_deg", number(wrap_degrees_180(point.earth_longitude_rad * kRadToDeg))},
-      {"inertial_longitude_deg", number(wrap_degrees_180(point.state[kStateTau] * kRadToDeg))},
-      {"range_nmi", number(point.downrange_rad * kNauticalMilesPerRadian)},
-      {"weight_lb", number(point.weight_lb)},
+      {"longitude_deg", json_number(wrap_degrees_180(point.earth_longitude_rad * kRadToDeg))},
+      {"inertial_longitude_deg", json_number(wrap_degrees_180(point.state[kStateTau] * kRadToDeg))},
+      {"range_nmi", json_number(point.downrange_rad * kNauticalMilesPerRadian)},
+      {"weight_lb", json_number(point.weight_lb)},
   };
 }
 
 json inertial_json(const InertialVelocity& inertial) {
   return json{
-      {"velocity_ft_s", number(inertial.velocity_ft_s)},
+      {"velocity_ft_s", json_number(inertial.velocity_ft_s)},
       {"gamma_deg", degrees(inertial.flight_path_angle_rad)},
       {"psi_deg", degrees(inertial.azimuth_rad)},
   };
@@ -75,10 +75,10 @@ json orbit_json(const OrbitElements& orbit, const Constants& constants) {
   const OrbitSummary summary = summarize_orbit(constants, orbit);
   return json{
       {"type", orbit_type_name(orbit.type)},
-      {"twoe_ft2_s2", number(orbit.twice_energy_ft2_s2)},
-      {"angular_momentum_ft2_s", number(orbit.angular_momentum_ft2_s)},
-      {"perigee_radius_ft", number(orbit.perigee_radius_ft)},
-      {"apogee_radius_ft", elliptic ? number(orbit.apogee_radius_ft) : json(nullptr)},
+      {"twoe_ft2_s2", json_number(orbit.twice_energy_ft2_s2)},
+      {"angular_momentum_ft2_s", json_number(orbit.angular_momentum_ft2_s)},
+      {"perigee_radius_ft", json_number(orbit.perigee_radius_ft)},
+      {"apogee_radius_ft", elliptic ? json_number(orbit.apogee_radius_ft) : json(nullptr)},
       {"inclination_deg", degrees(orbit.inclination_rad)},
       {"argument_of_perigee_deg", degrees(orbit.argument_of_perigee_rad)},
       {"node_longitude_deg", degrees(orbit.node_longitude_rad)},
@@ -86,21 +86,21 @@ json orbit_json(const OrbitElements& orbit, const Constants& constants) {
       {"nu_deg", degrees(orbit.nu_rad)},
       {"in_plane_angle_from_node_deg", degrees(orbit.in_plane_angle_from_node_rad)},
       {"true_anomaly_deg", degrees(orbit.true_anomaly_rad)},
-      {"eccentricity", number(orbit.eccentricity)},
-      {"semi_major_axis_ft", elliptic ? number(orbit.semi_major_axis_ft) : json(nullptr)},
-      {"period_min", elliptic ? number(orbit.period_s / 60.0) : json(nullptr)},
+      {"eccentricity", json_number(orbit.eccentricity)},
+      {"semi_major_axis_ft", elliptic ? json_number(orbit.semi_major_axis_ft) : json(nullptr)},
+      {"period_min", elliptic ? json_number(orbit.period_s / 60.0) : json(nullptr)},
       {"hyperbolic_excess_velocity_ft_s",
-       asymptote ? number(orbit.hyperbolic_excess_velocity_ft_s) : json(nullptr)},
+       asymptote ? json_number(orbit.hyperbolic_excess_velocity_ft_s) : json(nullptr)},
       {"asymptote_right_ascension_deg",
        asymptote ? degrees(orbit.asymptote_right_ascension_rad) : json(nullptr)},
       {"asymptote_declination_deg", asymptote ? degrees(orbit.asymptote_declination_rad) : json(nullptr)},
       // In engineering terms (summarize_orbit): above the oblate Earth at their latitudes.
       {"path", path_class_name(summary.path)},
-      {"perigee_altitude_ft", number(summary.perigee_altitude_ft)},
-      {"perigee_altitude_nmi", number(summary.perigee_altitude_ft / kFeetPerNauticalMile)},
-      {"apogee_altitude_ft", elliptic ? number(summary.apogee_altitude_ft) : json(nullptr)},
+      {"perigee_altitude_ft", json_number(summary.perigee_altitude_ft)},
+      {"perigee_altitude_nmi", json_number(summary.perigee_altitude_ft / kFeetPerNauticalMile)},
+      {"apogee_altitude_ft", elliptic ? json_number(summary.apogee_altitude_ft) : json(nullptr)},
       {"apogee_altitude_nmi",
-       elliptic ? number(summary.apogee_altitude_ft / kFeetPerNauticalMile) : json(nullptr)},
+       elliptic ? json_number(summary.apogee_altitude_ft / kFeetPerNauticalMile) : json(nullptr)},
       {"perigee_geocentric_latitude_deg", degrees(summary.perigee_latitude_rad)},
       {"perigee_below_haero", summary.perigee_in_atmosphere},
   };
@@ -109,7 +109,7 @@ json orbit_json(const OrbitElements& orbit, const Constants& constants) {
 // A point's value, or null when the index is outside the points flown.
 json at_point(const Trajectory& trajectory, int index, double (*value)(const TrajectoryPoint&)) {
   if (index < 0 || index >= stored_point_count(trajectory)) return json(nullptr);
-  return number(value(trajectory.points[index]));
+  return json_number(value(trajectory.points[index]));
 }
 
 json stage_events_json(const Trajectory& trajectory) {
@@ -131,12 +131,13 @@ json stage_events_json(const Trajectory& trajectory) {
         {"start_weight_lb", at_point(trajectory, event.first_point, weight)},
         {"end_velocity_ft_s", at_point(trajectory, event.last_point, velocity)},
         {"end_altitude_ft", at_point(trajectory, event.last_point, altitude)},
-        {"burnout_weight_lb", number(event.burnout_weight_lb)},
+        {"burnout_weight_lb", json_number(event.burnout_weight_lb)},
         {"completed", event.completed},
-        {"jettison_weight_lb",
-         event.completed ? number(event.burnout_weight_lb - event.weight_after_jettison_lb) : json(nullptr)},
+        {"jettison_weight_lb", event.completed
+                                   ? json_number(event.burnout_weight_lb - event.weight_after_jettison_lb)
+                                   : json(nullptr)},
         {"weight_after_jettison_lb",
-         event.completed ? number(event.weight_after_jettison_lb) : json(nullptr)},
+         event.completed ? json_number(event.weight_after_jettison_lb) : json(nullptr)},
     });
   }
   return events;
@@ -152,10 +153,10 @@ nlohmann::ordered_json constraints_json(const std::vector<ConstraintSummary>& co
         {"name", c.name},
         {"stage", c.stage > 0 ? nlohmann::ordered_json(c.stage) : nlohmann::ordered_json(nullptr)},
         {"unit", c.unit},
-        {"desired", number(c.desired)},
-        {"achieved", number(c.achieved)},
-        {"error", number(c.error)},
-        {"tolerance", number(c.tolerance)},
+        {"desired", json_number(c.desired)},
+        {"achieved", json_number(c.achieved)},
+        {"error", json_number(c.error)},
+        {"tolerance", json_number(c.tolerance)},
         {"inequality", c.inequality},
         {"met", c.met},
     });
@@ -171,9 +172,9 @@ json trajectory_json(const SimulationReport& report) {
   static const DeckListingOptions kNoListing;  // blank titles
   json document = report_detail::case_document(
       report.deck_path, report.listing != nullptr ? *report.listing : kNoListing, report.status);
-  document["launch_space_age_date_days"] = number(mission.launch.launch_space_age_date_days);
+  document["launch_space_age_date_days"] = json_number(mission.launch.launch_space_age_date_days);
   document["point_count"] = count;
-  document["heat_integral_btu_ft2"] = number(trajectory.heat_integral_btu_ft2);
+  document["heat_integral_btu_ft2"] = json_number(trajectory.heat_integral_btu_ft2);
 
   if (count > 0) {
     const TrajectoryPoint& last = trajectory.points[count - 1];

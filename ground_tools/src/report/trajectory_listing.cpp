@@ -29,6 +29,7 @@ namespace {
 
 using report_detail::card_text;
 using report_detail::fixed_cell;
+using report_detail::right_aligned;
 
 constexpr int kCellWidth = 11;
 constexpr int kDefaultLinesPerPage = 54;
@@ -84,15 +85,11 @@ constexpr ListingColumn kLine3[] = {
     {"THETADOT", "DEG/SEC", 4, nullptr}, {"DTHETA", "DEG", 4, nullptr}, {"DELTA", "DEG", 4, nullptr},
 };
 
-std::string right(const std::string& text, int width) {
-  if (static_cast<int>(text.size()) >= width) return text;
-  return std::string(static_cast<std::size_t>(width) - text.size(), ' ') + text;
-}
-
 template <std::size_t N>
 std::string heading_line(const ListingColumn (&columns)[N], bool units) {
   std::string line;
-  for (const ListingColumn& column : columns) line += right(units ? column.unit : column.heading, kCellWidth);
+  for (const ListingColumn& column : columns)
+    line += right_aligned(units ? column.unit : column.heading, kCellWidth);
   return line;
 }
 
@@ -340,16 +337,16 @@ void write_stage_events(Pager& pager, const Mission& mission, const Trajectory& 
     const auto time = [](const TrajectoryPoint& p) { return p.time_s; };
     const auto weight = [](const TrajectoryPoint& p) { return p.weight_lb; };
     std::string line = " " + name;
-    line += right(point_value(trajectory, event.first_point, "%.3f", time), 12);
-    line += right(point_value(trajectory, event.last_point, "%.3f", time), 12);
-    line += right(point_value(trajectory, event.first_point, "%.2f", weight), 14);
-    line += right(format("%.2f", event.burnout_weight_lb), 13);
+    line += right_aligned(point_value(trajectory, event.first_point, "%.3f", time), 12);
+    line += right_aligned(point_value(trajectory, event.last_point, "%.3f", time), 12);
+    line += right_aligned(point_value(trajectory, event.first_point, "%.2f", weight), 14);
+    line += right_aligned(format("%.2f", event.burnout_weight_lb), 13);
     if (event.completed) {
-      line += right(format("%.2f", event.burnout_weight_lb - event.weight_after_jettison_lb), 14);
-      line += right(format("%.2f", event.weight_after_jettison_lb), 14);
+      line += right_aligned(format("%.2f", event.burnout_weight_lb - event.weight_after_jettison_lb), 14);
+      line += right_aligned(format("%.2f", event.weight_after_jettison_lb), 14);
     } else {
-      line += right("STOPPED", 14);
-      line += right("-", 14);
+      line += right_aligned("STOPPED", 14);
+      line += right_aligned("-", 14);
     }
     pager.emit(line);
   }
@@ -364,7 +361,7 @@ void write_stage_events(Pager& pager, const Mission& mission, const Trajectory& 
     for (int k = reached; k < sequence_count; ++k) {
       std::string name = stage_name(mission.vehicle.sequence.codes[k]);
       name.resize(26, ' ');
-      pager.emit(" " + name + right("NOT REACHED", 12));
+      pager.emit(" " + name + right_aligned("NOT REACHED", 12));
     }
   }
   pager.emit("");
@@ -390,7 +387,7 @@ void write_stage_names(Pager& pager, const DeckListingOptions& listing) {
 std::string labelled(const std::string& label, const std::string& value, const std::string& unit) {
   std::string text = "   " + label;
   text.resize(20, ' ');
-  text += "= " + right(value, 20);
+  text += "= " + right_aligned(value, 20);
   if (!unit.empty()) text += " " + unit;
   return text;
 }
