@@ -67,6 +67,9 @@ class SixDAutopilotGains final : public SixDGainDesign {
   bool called() const { return called_; }
   int fault_stage() const { return fault_stage_; }
   Status status() const { return status_; }
+  // The design ran and failed: the run stops, and fault_text() names the stage and field.
+  bool failed() const { return called_ && !ok(status_); }
+  std::string fault_text() const;  // autopilot_fault_text of the failed design
 
  private:
   const AutopilotPlan& plan_;

@@ -139,6 +139,15 @@ std::string autopilot_fault_text(const AutopilotStep& step) {
   return text;
 }
 
+std::string SixDAutopilotGains::fault_text() const {
+  AutopilotStep failed;
+  failed.outcome = StepOutcome::kRun;
+  failed.status = status_;
+  failed.fault_stage = fault_stage_;
+  failed.trajectory_kind = "point-mass linearized program";
+  return autopilot_fault_text(failed);
+}
+
 Status SixDAutopilotGains::before_body_dynamics(const Trajectory& point_mass_nominal, Mission* mission) {
   called_ = true;
   auto schedule = std::make_unique<GainScheduleDesign>();

@@ -127,14 +127,8 @@ int run_export_command(const ExportCommandOptions& options, std::ostream& out, s
   const LinearProgram* linearized = nullptr;
   if (mission->options.linearization()) {
     run_optimization(*mission, nullptr, &run);
-    if (six_d_gains != nullptr && six_d_gains->called() && !ok(six_d_gains->status())) {
-      AutopilotStep failed;
-      failed.outcome = StepOutcome::kRun;
-      failed.status = six_d_gains->status();
-      failed.fault_stage = six_d_gains->fault_stage();
-      failed.trajectory_kind = "point-mass linearized program";
-      err << "tolip: " << options.deck_path << ": no table exported: " << autopilot_fault_text(failed)
-          << '\n';
+    if (six_d_gains != nullptr && six_d_gains->failed()) {
+      err << "tolip: " << options.deck_path << ": no table exported: " << six_d_gains->fault_text() << '\n';
       return kExitBadInput;
     }
     // The same rule as `optimize` (optimization_job_status): a case that optimize would not pass is

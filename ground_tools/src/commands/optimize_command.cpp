@@ -134,13 +134,8 @@ int optimize_case(const Deck& deck, const DeckCase& deck_case, OptimizerObserver
   if (level != ListingLevel::kFinal) run.linearization_observer = &linearization_programs;
   run_optimization(*mission, level != ListingLevel::kFinal ? &capture : observer, &run);
   progress.clear();  // before anything else goes to stderr
-  if (six_d_gains != nullptr && six_d_gains->called() && !ok(six_d_gains->status())) {
-    AutopilotStep failed;
-    failed.outcome = StepOutcome::kRun;
-    failed.status = six_d_gains->status();
-    failed.fault_stage = six_d_gains->fault_stage();
-    failed.trajectory_kind = "point-mass linearized program";
-    err << "tolip: " << output->prefix << deck.path << ": " << autopilot_fault_text(failed) << '\n';
+  if (six_d_gains != nullptr && six_d_gains->failed()) {
+    err << "tolip: " << output->prefix << deck.path << ": " << six_d_gains->fault_text() << '\n';
     output->stop = true;
     return kExitBadInput;
   }
