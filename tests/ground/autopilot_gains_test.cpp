@@ -203,6 +203,13 @@ TEST(AutopilotGains, Issue16_BadRequestsExit2NamingStageAndKey) {
          "autopilot_designed_gains = 1\nautopilot_natural_frequency_rad_s = [60.0, 2.0, 2.0]\n"}},
        {"body_dynamics.autopilot_natural_frequency_rad_s[0]", "stage 1",
         "kAutopilotFrequencyBeyondDeflection"}},
+      // The same request with the 6D re-linearization: the design along the accepted point-mass
+      // program (SixDAutopilotGains) fails before any body dynamics fly.
+      {{kDesigned,
+        {"autopilot_designed_gains = 1\n",
+         "autopilot_designed_gains = 1\nautopilot_natural_frequency_rad_s = [60.0, 2.0, 2.0]\n"}},
+       {"data block 33, body_dynamics.autopilot_natural_frequency_rad_s[0] (stage 1, along the point-mass "
+        "linearized program trajectory): kAutopilotFrequencyBeyondDeflection"}},
   };
   for (std::size_t k = 0; k < cases.size(); ++k) {
     const auto deck = write_deck(dir, "bad" + std::to_string(k) + ".toml", edited_deck(cases[k].edits));
@@ -212,6 +219,12 @@ TEST(AutopilotGains, Issue16_BadRequestsExit2NamingStageAndKey) {
       EXPECT_NE(run.err.find(name), std::string::npos) << name << "\n" << run.err;
     EXPECT_FALSE(std::filesystem::exists(out));
   }
+  // optimize stops on the 6D design's failure with the same words (one message for both commands).
+  const auto deck =
+      write_deck(dir, "bad" + std::to_string(cases.size() - 1) + ".toml", edited_deck(cases.back().edits));
+  const CommandResult optimize = run_tolip_executable({"optimize", deck.string(), "--json"});
+  EXPECT_EQ(optimize.exit_code, 2) << optimize.err;
+  EXPECT_NE(optimize.err.find(cases.back().named[0]), std::string::npos) << optimize.err;
 }
 
 }  // namespace
