@@ -17,6 +17,7 @@
 #include "tolip/mission/mission.hpp"
 #include "tolip/orbit/orbit_elements.hpp"
 #include "tolip/trajectory/trajectory.hpp"
+#include "tolip_ground/units.hpp"
 
 namespace tolip::ground {
 
@@ -106,10 +107,6 @@ std::span<const PointColumn> trajectory_point_columns();
 
 // Angle in degrees reduced to (-180, 180].
 double wrap_degrees_180(double degrees);
-
-// The international nautical mile (1852 m) in ft: the unit of the orbit summary's altitudes (data
-// block 19's 300 n.mi. orbit is 1,822,834.647 ft).
-inline constexpr double kFeetPerNauticalMile = 1852.0 / 0.3048;
 
 // What the terminal state's path is, in a trajectory engineer's terms.
 enum class PathClass : int {

@@ -4,31 +4,20 @@
 #include <cstring>
 #include <sstream>
 
+#include "tolip_ground/deck_table.hpp"
+
 namespace tolip::ground {
 namespace {
 
-constexpr double kFtPerInch = 1.0 / 12.0;
-
+// Stacked stage 4/5 tables (block 55) restart at 0 and stay unfinalized: the core splits them.
 template <int N>
 bool fill_table(const DeckTable& deck, Table<N>* table, int block, int code, const std::string& field,
                 DispersionMappingFault* fault) {
-  table->clear();
-  if (deck.empty()) return true;
-  if (deck.size() > N) {
-    fault->data_block = block;
-    fault->code = code;
-    fault->field = field;
-    fault->message = "the table has " + std::to_string(deck.size()) + " points; the core holds at most " +
-                     std::to_string(N);
-    return false;
-  }
-  for (int i = 0; i < deck.size(); ++i) {
-    const std::size_t at = static_cast<std::size_t>(i);
-    (void)table->append(deck.x[at], deck.y[at]);  // finite and increasing (deck reader)
-  }
-  // Stacked stage 4/5 tables (block 55) restart at 0 and stay unfinalized: the core splits them.
-  (void)table->finalize();
-  return true;
+  if (copy_deck_table(deck, 1.0, "the table", table, &fault->message)) return true;
+  fault->data_block = block;
+  fault->code = code;
+  fault->field = field;
+  return false;
 }
 
 // Codes 7-8 with block 55: the stacked tables must split by its durations before anything runs.
@@ -95,7 +84,7 @@ bool fill_dispersion_data(const std::vector<DispersionCase>& deck, DispersionDat
     s.weight_increment_lb = d.weight_increment_lb;
     s.drag_variation_fraction = d.drag_variation_fraction;
     s.misalignment_rad = d.misalignment_rad;
-    s.thrust_station_ft = d.thrust_station_in * kFtPerInch;
+    s.thrust_station_ft = d.thrust_station_in * kFeetPerInch;
     s.deadband_rad = d.deadband_rad;
     s.tipoff_rad = d.tipoff_rad;
     s.launch_change_rad = d.launch_change_rad;

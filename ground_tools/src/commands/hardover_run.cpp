@@ -4,30 +4,19 @@
 #include <ostream>
 
 #include "tolip_ground/card_deck.hpp"
+#include "tolip_ground/deck_table.hpp"
 #include "tolip_ground/radar_run.hpp"
 
 namespace tolip::ground {
 namespace {
 
-constexpr double kFtPerInch = 1.0 / 12.0;
-
 bool fill_table(const DeckTable& deck, HardoverTable* table, const std::string& field,
                 HardoverMappingFault* fault) {
-  table->clear();
-  if (deck.empty()) return true;
-  if (deck.size() > kMaxHardoverTablePoints) {
-    fault->data_block = 44;
-    fault->field = field;
-    fault->message = "the table has " + std::to_string(deck.size()) + " points; the core holds at most " +
-                     std::to_string(kMaxHardoverTablePoints) + " (the 22E12.8 card)";
-    return false;
-  }
-  for (int i = 0; i < deck.size(); ++i) {
-    const std::size_t at = static_cast<std::size_t>(i);
-    (void)table->append(deck.x[at], deck.y[at]);  // finite and increasing (deck reader)
-  }
-  (void)table->finalize();
-  return true;
+  if (copy_deck_table(deck, 1.0, "the table", table, &fault->message)) return true;
+  fault->message += " (the 22E12.8 card)";
+  fault->data_block = 44;
+  fault->field = field;
+  return false;
 }
 
 }  // namespace
@@ -55,7 +44,7 @@ bool fill_hardover_data(const HardoverData& deck, tolip::HardoverData* data, Har
   s1.min_step_s = deck.stage1_min_step_s;
   s1.max_steps_per_turn = deck.stage1_max_steps_per_turn;
   s1.thrust_misalignment_rad = deck.thrust_misalignment_rad[0];
-  s1.thrust_station_ft = deck.stage1_thrust_station_in * kFtPerInch;
+  s1.thrust_station_ft = deck.stage1_thrust_station_in * kFeetPerInch;
   for (int k = 1; k < 3; ++k) {
     const std::size_t upper = static_cast<std::size_t>(k - 1);
     tolip::HardoverStage& s = data->stages[k];
@@ -65,10 +54,10 @@ bool fill_hardover_data(const HardoverData& deck, tolip::HardoverData* data, Har
     s.min_step_s = deck.upper_min_step_s;
     s.max_steps_per_turn = deck.upper_max_steps_per_turn;
     s.thrust_misalignment_rad = deck.thrust_misalignment_rad[static_cast<std::size_t>(k)];
-    s.thrust_station_ft = deck.thrust_station_in[upper] * kFtPerInch;
+    s.thrust_station_ft = deck.thrust_station_in[upper] * kFeetPerInch;
     s.single_jet_force_lbf = deck.mode_b_jet_force_lb[upper];
     s.pitch_yaw_jet_force_lbf = deck.mode_c_jet_force_lb[upper];
-    s.control_jet_station_ft = deck.control_jet_station_in[upper] * kFtPerInch;
+    s.control_jet_station_ft = deck.control_jet_station_in[upper] * kFeetPerInch;
   }
   return true;
 }

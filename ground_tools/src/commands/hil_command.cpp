@@ -25,13 +25,13 @@
 #include "tolip_ground/guidance_table.hpp"
 #include "tolip_ground/hardover_run.hpp"
 #include "tolip_ground/optimization_run.hpp"
+#include "tolip_ground/units.hpp"
 #include "tolip_hal_sim/bench.hpp"
 #include "tolip_hal_sim/qemu_target.hpp"
 
 namespace tolip::ground {
 namespace {
 
-constexpr double kFtPerNmi = 6076.115485564304;
 // Where the cortex-m7 preset builds the processor-in-the-loop image, from the repository root.
 constexpr const char* kDefaultPilImage = "build-cortex-m7/flight_image/tolip_flight_pil.elf";
 
@@ -98,7 +98,7 @@ nlohmann::ordered_json burnout_json(const Burnout& b) {
   nlohmann::ordered_json j;
   j["time_s"] = b.time_s;
   j["altitude_ft"] = b.altitude_ft;
-  j["altitude_nmi"] = b.altitude_ft / kFtPerNmi;
+  j["altitude_nmi"] = b.altitude_ft / kFeetPerNauticalMile;
   j["inertial_velocity_ft_s"] = b.inertial_velocity_ft_s;
   j["inertial_flight_path_deg"] = b.inertial_flight_path_deg;
   j["inclination_deg"] = b.inclination_deg;
@@ -117,9 +117,9 @@ Burnout make_burnout(double time_s, double altitude_ft, double weight_lb, const 
   b.inertial_velocity_ft_s = orbit.inertial.velocity_ft_s;
   b.inertial_flight_path_deg = orbit.inertial.flight_path_angle_rad * kRadToDeg;
   b.inclination_deg = orbit.inclination_rad * kRadToDeg;
-  b.perigee_altitude_nmi = (orbit.perigee_radius_ft - equatorial_radius_ft) / kFtPerNmi;
+  b.perigee_altitude_nmi = (orbit.perigee_radius_ft - equatorial_radius_ft) / kFeetPerNauticalMile;
   b.has_apogee = orbit.type == OrbitType::kElliptic;
-  b.apogee_altitude_nmi = (orbit.apogee_radius_ft - equatorial_radius_ft) / kFtPerNmi;
+  b.apogee_altitude_nmi = (orbit.apogee_radius_ft - equatorial_radius_ft) / kFeetPerNauticalMile;
   return b;
 }
 
@@ -316,7 +316,7 @@ int run_hil_command(const HilCommandOptions& options, std::ostream& out, std::os
       make_burnout(predicted->time_s, predicted->altitude_ft, predicted->weight_lb, predicted_orbit, re);
   const Burnout achieved =
       make_burnout(r.end_time_s, r.burnout_altitude_ft, r.burnout_weight_lb, r.orbit, re);
-  const double d_alt_nmi = (achieved.altitude_ft - ground.altitude_ft) / kFtPerNmi;
+  const double d_alt_nmi = (achieved.altitude_ft - ground.altitude_ft) / kFeetPerNauticalMile;
   const double d_vel = achieved.inertial_velocity_ft_s - ground.inertial_velocity_ft_s;
   const double d_inc = achieved.inclination_deg - ground.inclination_deg;
   const sim::ScenarioInfo& info = sim::scenarios()[static_cast<std::size_t>(config.scenario)];
@@ -414,7 +414,8 @@ int run_hil_command(const HilCommandOptions& options, std::ostream& out, std::os
       out << line;
     };
     row("time (s)", achieved.time_s, ground.time_s);
-    row("altitude (nmi)", achieved.altitude_ft / kFtPerNmi, ground.altitude_ft / kFtPerNmi);
+    row("altitude (nmi)", achieved.altitude_ft / kFeetPerNauticalMile,
+        ground.altitude_ft / kFeetPerNauticalMile);
     row("inertial V (ft/s)", achieved.inertial_velocity_ft_s, ground.inertial_velocity_ft_s);
     row("inertial gamma (deg)", achieved.inertial_flight_path_deg, ground.inertial_flight_path_deg);
     row("inclination (deg)", achieved.inclination_deg, ground.inclination_deg);

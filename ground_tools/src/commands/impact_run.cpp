@@ -2,6 +2,7 @@
 #include "tolip_ground/impact_run.hpp"
 
 #include "tolip/dispersion/dispersion.hpp"
+#include "tolip_ground/deck_table.hpp"
 #include "tolip_ground/dispersion_run.hpp"
 
 namespace tolip::ground {
@@ -14,20 +15,14 @@ bool fill_body(const ImpactDragTable& deck, int block, int stage, const char* gr
                ImpactMappingFault* fault) {
   *body = ImpactBody{};
   if (!deck.present) return true;  // validate_impact_data names a missing table of a flown stage
-  if (deck.cd_vs_mach.size() > AeroTable::kCapacity) {
+  // A non-increasing Mach is left unfinalized: validate_impact_data names it.
+  if (!copy_deck_table(deck.cd_vs_mach, 1.0, "the drag table", &body->drag_coefficient, &fault->message)) {
     fault->data_block = block;
     fault->word = std::string("CD") + str(stage) + (block == 42 ? "F" : "E");
     fault->field = std::string("impact.") + group + "." + str(stage);
-    fault->message = "the drag table has " + str(deck.cd_vs_mach.size()) +
-                     " points; the core holds at most " + str(AeroTable::kCapacity);
     return false;
   }
   body->present = true;
-  for (int i = 0; i < deck.cd_vs_mach.size(); ++i) {
-    const std::size_t at = static_cast<std::size_t>(i);
-    (void)body->drag_coefficient.append(deck.cd_vs_mach.x[at], deck.cd_vs_mach.y[at]);
-  }
-  (void)body->drag_coefficient.finalize();  // a non-increasing Mach is left unfinalized: named below
   body->reference_area_ft2 = deck.reference_area_ft2;
   body->casing_weight_lb = deck.casing_weight_lb;
   return true;

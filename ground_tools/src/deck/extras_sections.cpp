@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "deck_common.hpp"
+#include "tolip_ground/deck_table.hpp"
 #include "toml_reader.hpp"
 
 namespace tolip::ground::deck_detail {
@@ -36,24 +37,12 @@ std::optional<DeckTable> read_optional_table(Section& parent, std::string_view k
 }
 
 // ---- data blocks 33-37 --------------------------------------------------------------------------
-constexpr double kFtPerInch = 1.0 / 12.0;
-
 // A table the deck gave, into the core's fixed-capacity table (y scaled to core units).
 template <int N>
 void fill_core_table(Section& section, const DeckTable& deck, double y_scale, int block,
                      const std::string& field, const std::string& what, Table<N>* table) {
-  table->clear();
-  if (deck.empty()) return;
-  if (deck.size() > N) {
-    section.fail(block, field,
-                 what + " has " + std::to_string(deck.size()) + " points; the core holds at most " +
-                     std::to_string(N));
-  }
-  for (int i = 0; i < deck.size(); ++i) {
-    const std::size_t at = static_cast<std::size_t>(i);
-    (void)table->append(deck.x[at], deck.y[at] * y_scale);  // fits; finite and increasing (read_table)
-  }
-  (void)table->finalize();
+  std::string message;
+  if (!copy_deck_table(deck, y_scale, what, table, &message)) section.fail(block, field, message);
 }
 
 void read_body_dynamics(Section& root, Mission* mission, const FieldTarget& target) {
@@ -113,7 +102,7 @@ void read_body_dynamics(Section& root, Mission* mission, const FieldTarget& targ
       if (auto read = read_optional_table(*cg, str(stage), 37, "stage_time_s", "station_in",
                                           "stage time in s", "c.g. body station in inches", 1.0)) {
         // The deck's inches become the core's ft here, at the edge.
-        fill_core_table(*section, *read, kFtPerInch, 37, "body_dynamics.cg." + str(stage),
+        fill_core_table(*section, *read, kFeetPerInch, 37, "body_dynamics.cg." + str(stage),
                         "the stage " + str(stage) + " c.g. history (data block 37)",
                         &body.cg_station_ft[stage - 1]);
       }

@@ -6,11 +6,10 @@
 #include <string>
 
 #include "tolip/core/constants.hpp"
+#include "tolip_ground/units.hpp"
 
 namespace tolip::ground::deck_detail {
 namespace {
-
-constexpr double kFtPerInch = 1.0 / 12.0;
 
 FieldSlot slot_of(double* value) { return FieldSlot{value, nullptr}; }
 FieldSlot slot_of(int* value) { return FieldSlot{nullptr, value}; }
@@ -777,7 +776,7 @@ double to_core(Conversion conversion, double deck_value) {
     case Conversion::kNone: return deck_value;
     case Conversion::kDegToRad: return deck_value * kDegToRad;
     case Conversion::kPerDegToPerRad: return deck_value / kDegToRad;
-    case Conversion::kInchToFt: return deck_value * kFtPerInch;
+    case Conversion::kInchToFt: return deck_value * kFeetPerInch;
   }
   return deck_value;
 }
@@ -787,7 +786,7 @@ double to_deck(Conversion conversion, double core_value) {
     case Conversion::kNone: return core_value;
     case Conversion::kDegToRad: return core_value * kRadToDeg;
     case Conversion::kPerDegToPerRad: return core_value * kDegToRad;
-    case Conversion::kInchToFt: return core_value / kFtPerInch;
+    case Conversion::kInchToFt: return core_value / kFeetPerInch;
   }
   return core_value;
 }

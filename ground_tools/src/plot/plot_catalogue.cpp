@@ -10,6 +10,7 @@
 #include "plot_map.hpp"
 #include "tolip/optimizer/constraint_set.hpp"
 #include "tolip_ground/plot.hpp"
+#include "tolip_ground/units.hpp"
 
 namespace tolip::ground {
 namespace {
@@ -73,9 +74,6 @@ Figure make_figure(std::string name, std::string title, std::string x_label, std
   figure.y_label = std::move(y_label);
   return figure;
 }
-
-// Feet in a nautical mile (the international one, 1852 m): altitudes in n.mi.
-constexpr double kFeetPerNauticalMile = 1852.0 / 0.3048;
 
 using plot_map::fixed;
 
