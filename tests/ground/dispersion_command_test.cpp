@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "cli_runner.hpp"
 #include "support/pinned_figures.hpp"
@@ -162,6 +163,59 @@ TEST(Sec15DispersionCommand, WindTableLongerThanTheCoreHoldsIsBadInputNamingTheB
   EXPECT_TRUE(run.out.empty());
   EXPECT_NE(run.err.find("data block 53, dispersion code 36"), std::string::npos) << run.err;
   EXPECT_NE(run.err.find("40 points; the core holds at most 32"), std::string::npos) << run.err;
+}
+
+// One rule (tolip_ground/deck_table.hpp) hands every deck table of blocks 33-55 to the core; one
+// point past the core's capacity is bad input naming the block and the field, for each reader.
+TEST(Sec22DeckTables, OnePointPastTheCoreCapacityIsBadInputNamingBlockAndField) {
+  ScratchDirectory scratch("deck_table_capacity");
+  struct Case {
+    const char* section;  // replaced up to the next blank line
+    const char* x_key;
+    const char* y_key;
+    int points;
+    std::vector<std::string> named;
+  };
+  const std::vector<Case> cases = {
+      {"[body_dynamics.cg.1]",
+       "stage_time_s",
+       "station_in",
+       11,
+       {"data block 37", "body_dynamics.cg.1", "has 11 points; the core holds at most 10"}},
+      {"[impact.failure_drag.1]",
+       "mach",
+       "cd",
+       21,
+       {"data block 42", "impact.failure_drag.1", "the drag table has 21 points; the core holds at most 20"}},
+      {"[hardover.pitch_inertia.1]",
+       "stage_time_s",
+       "iyy_slug_ft2",
+       11,
+       {"data block 44", "hardover.pitch_inertia", "the table has 11 points; the core holds at most 10"}},
+  };
+  for (const Case& c : cases) {
+    std::string text = read_text_file(mission_deck());
+    const std::size_t from = text.find(c.section);
+    ASSERT_NE(from, std::string::npos) << c.section;
+    const std::size_t to = text.find("\n\n", from);
+    ASSERT_NE(to, std::string::npos) << c.section;
+    std::string table = std::string(c.section) + "\n";
+    if (std::string(c.section).rfind("[impact", 0) == 0) table += "reference_area_ft2 = 8.7266\n";
+    table += std::string(c.x_key) + " = [";
+    for (int i = 0; i < c.points; ++i) table += std::to_string(i) + ".0, ";
+    table += "]\n" + std::string(c.y_key) + " = [";
+    for (int i = 0; i < c.points; ++i) table += "400.0, ";
+    table += "]";
+    text.replace(from, to - from, table);
+    const std::string deck = (scratch / "long.toml").string();
+    std::ofstream(deck) << text;
+    const CommandResult run = run_tolip_executable({"optimize", deck, "--json"});
+    EXPECT_EQ(run.exit_code, 2) << c.section << ": " << run.err;
+    EXPECT_TRUE(run.out.empty()) << c.section;
+    for (const std::string& name : c.named) {
+      EXPECT_NE(run.err.find(name), std::string::npos) << c.section << ": " << name << "\n" << run.err;
+    }
+  }
 }
 
 // IP(7) = 0: the dispersions are about the optimum (point mass); the codes that act through the
