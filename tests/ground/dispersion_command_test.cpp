@@ -15,14 +15,10 @@
 
 #include "cli_runner.hpp"
 #include "support/pinned_figures.hpp"
-#include "support/repository_paths.hpp"
+#include "support/reference_data.hpp"
 
 namespace tolip::test {
 namespace {
-
-std::string mission_deck() {
-  return std::string(tolip::repository_paths::examples_dir()) + "/scout/mission.toml";
-}
 
 struct Runs {
   ScratchDirectory scratch{"dispersions"};
@@ -456,9 +452,8 @@ TEST(Sec15DispersionsCommand, StandaloneAnalysisEqualsTheOptimizeStepBitForBit) 
 TEST(Sec15DispersionsCommand, DeckWithoutBlock46IsBadInputNamingTheBlock) {
   ScratchDirectory scratch("dispersions_none");
   const std::string csv = (scratch / "none.csv").string();
-  const CommandResult run = run_tolip_executable(
-      {"dispersions", std::string(tolip::repository_paths::examples_dir()) + "/strapon/mission.toml", "--csv",
-       csv});
+  const CommandResult run =
+      run_tolip_executable({"dispersions", example_path("strapon/mission.toml"), "--csv", csv});
   EXPECT_EQ(run.exit_code, 2) << run.err;
   EXPECT_TRUE(run.out.empty());
   EXPECT_NE(run.err.find("data block 46 (dispersion)"), std::string::npos) << run.err;

@@ -13,14 +13,10 @@
 
 #include "cli_runner.hpp"
 #include "support/pinned_figures.hpp"
-#include "support/repository_paths.hpp"
+#include "support/reference_data.hpp"
 
 namespace tolip::test {
 namespace {
-
-std::string mission_deck() {
-  return std::string(tolip::repository_paths::examples_dir()) + "/scout/mission.toml";
-}
 
 struct Runs {
   ScratchDirectory scratch{"impact_command"};

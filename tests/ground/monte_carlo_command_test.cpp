@@ -16,14 +16,11 @@
 #include <string>
 
 #include "cli_runner.hpp"
+#include "support/reference_data.hpp"
 #include "support/repository_paths.hpp"
 
 namespace tolip::test {
 namespace {
-
-std::string mission_deck() {
-  return std::string(tolip::repository_paths::examples_dir()) + "/scout/mission.toml";
-}
 
 TEST(MonteCarloCommand, SameSeedGivesTheSameJsonAndCsvOnOneTwoAndThreeThreads) {
   ScratchDirectory scratch("montecarlo_threads");
