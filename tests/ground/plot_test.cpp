@@ -643,6 +643,24 @@ TEST(PlotCommand, MalformedJsonIsNamedAndNothingIsWritten) {
   EXPECT_EQ(plot.err,
             "tolip: " + nothing + ": nothing to plot: altitude_downrange_ascent (no member 'trajectory')\n");
 
+  // The Monte Carlo and dispersion documents: what to run instead, not a missing 'trajectory'.
+  const std::string statistics =
+      write_file(scratch, "montecarlo.json",
+                 R"({"seed": 7, "samples": 10, "sampled_codes": [1], "staging_points": []})");
+  plot = run_tolip_executable({"plot", statistics, "--out", out.string()});
+  EXPECT_EQ(plot.exit_code, 2);
+  EXPECT_EQ(plot.err, "tolip: " + statistics +
+                          ": nothing to plot: a 'tolip montecarlo' document holds the statistics, not the "
+                          "samples its figures need: they are drawn by 'tolip montecarlo DECK --samples N "
+                          "--seed S --plots DIR'\n");
+  const std::string tables =
+      write_file(scratch, "dispersions.json", R"({"case": 1, "optimizer_status": "kOk", "dispersions": {}})");
+  plot = run_tolip_executable({"plot", tables, "--out", out.string()});
+  EXPECT_EQ(plot.exit_code, 2);
+  EXPECT_NE(plot.err.find("a 'tolip dispersions' document holds the dispersion tables"), std::string::npos)
+      << plot.err;
+  EXPECT_FALSE(fs::exists(out));
+
   plot = run_tolip_executable({"plot", (scratch / "absent.json").string(), "--out", out.string()});
   EXPECT_EQ(plot.exit_code, 2);
   EXPECT_EQ(plot.err, "tolip: " + (scratch / "absent.json").string() +

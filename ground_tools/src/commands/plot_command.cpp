@@ -23,6 +23,21 @@ std::string parse_message(const char* what) {
   return message;
 }
 
+// The result documents of the analyses whose figures `tolip plot` does not draw, told by their
+// members (docs/cli.md): what to run instead. Null for any other document.
+const char* document_without_figures(const nlohmann::json& document) {
+  if (!document.is_object() || document.contains("trajectory")) return nullptr;
+  if (document.contains("sampled_codes") && document.contains("staging_points")) {
+    return "a 'tolip montecarlo' document holds the statistics, not the samples its figures need: "
+           "they are drawn by 'tolip montecarlo DECK --samples N --seed S --plots DIR'";
+  }
+  if (document.contains("dispersions") && document.contains("optimizer_status")) {
+    return "a 'tolip dispersions' document holds the dispersion tables, which have no figure: the "
+           "final nominal's figures are drawn from 'tolip optimize DECK --json'";
+  }
+  return nullptr;
+}
+
 }  // namespace
 
 int run_plot_command(const PlotCommandOptions& options, std::ostream& out, std::ostream& err) {
@@ -66,7 +81,11 @@ int run_plot_command(const PlotCommandOptions& options, std::ostream& out, std::
   for (const std::string& note : figures.notes) err << "tolip: " << source << ": " << note << '\n';
   if (figures.figures.empty()) {
     err << "tolip: " << source << ": nothing to plot";
-    if (!figures.skipped.empty()) err << ": " << figures.skipped[0];
+    if (const char* kind = document_without_figures(*documents[0])) {
+      err << ": " << kind;
+    } else if (!figures.skipped.empty()) {
+      err << ": " << figures.skipped[0];
+    }
     err << '\n';
     return kExitBadInput;
   }
