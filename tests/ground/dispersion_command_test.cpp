@@ -427,6 +427,24 @@ TEST(Sec15DispersionCommand, StackedStage45TablesFlyFromTomlAndCards) {
     EXPECT_NE(run.err.find("data block 55, dispersion code 8"), std::string::npos) << run.err;
     EXPECT_NE(run.err.find("kDispersionStageDurationsMismatch"), std::string::npos) << run.err;
   }
+
+  // The stacked tables without block 55: the refilled weight is named with the form it needs, before
+  // anything is optimized (dispersions and optimize alike), not as a failure of the analysis.
+  const std::string unsplit = (scratch / "stacked_no55.toml").string();
+  std::string no55_code8 = code8;
+  const std::string block55 = "stage_durations_s = [28.0, 14.563106796116505]\n";
+  no55_code8.replace(no55_code8.find(block55), block55.size(), "");
+  std::ofstream(unsplit) << text + no55_code8;
+  for (const char* command : {"dispersions", "optimize"}) {
+    const CommandResult run = run_tolip_executable({command, unsplit, "--json"});
+    EXPECT_EQ(run.exit_code, 2) << command << ": " << run.err;
+    EXPECT_TRUE(run.out.empty()) << command;
+    EXPECT_NE(run.err.find(unsplit + ": data block 38, dispersion code 8, dispersion[1].consumable_weight: "
+                                     "kConsumableWeightIncreases: "),
+              std::string::npos)
+        << command << ": " << run.err;
+    EXPECT_NE(run.err.find("it needs data block 55, stage_durations_s"), std::string::npos) << run.err;
+  }
 }
 
 // `tolip dispersions` (the analysis alone, whatever IP(21) says) computes exactly what optimize's

@@ -372,6 +372,17 @@ TEST(MonteCarloCommand, BadInputExitsTwoNamingTheFieldAndWritesNothing) {
   const std::string unknown = edited_example_deck(scratch, "unknown.toml", {{"code = 40", "code = 39"}});
   expect_bad_input(scratch, {"montecarlo", unknown, "--samples", "5", "--seed", "1"},
                    "unknown dispersion code 39");
+  // A replacement table that breaks the block 38 rules (the remaining weight rises): named at the
+  // boundary by block, code and key, not reported after the flights as "the nominal did not fly".
+  const std::string code1_weights =
+      "  42.233, 42.8155, 43.301, 43.6893,\n]\nremaining_lb = [\n  20200.0, 20186.468,";  // code 1's (times
+                                                                                          // / 1.03)
+  std::string rising_weights = code1_weights;
+  rising_weights.replace(rising_weights.find("20186.468"), 9, "20286.468");
+  const std::string rising = edited_example_deck(scratch, "rising.toml", {{code1_weights, rising_weights}});
+  expect_bad_input(scratch, {"montecarlo", rising, "--samples", "5", "--seed", "1"},
+                   "data block 38, dispersion code 1, dispersion[0].consumable_weight: "
+                   "kConsumableWeightIncreases: ");
   // A code without its data block.
   const std::string missing =
       edited_example_deck(scratch, "missing.toml", {{"weight_increment_lb = 150.0 ", "# "}});

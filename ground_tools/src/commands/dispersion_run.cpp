@@ -48,6 +48,54 @@ bool stacked_tables_split(const DispersionSource& source, const std::string& pat
   return false;
 }
 
+// Where validate_dispersion_data() found source `k` (code `code`) at fault: the data block and the
+// deck key of what the status is about, and, for codes 7-8 whose tables hold stages 4 and 5
+// without block 55, the form they need.
+void name_source_fault(const DispersionCase& source, const DispersionSource& core, std::size_t k,
+                       Status status, DispersionMappingFault* fault) {
+  const std::string path = "dispersion[" + std::to_string(k) + "]";
+  DispersionCodeInfo info;
+  const bool known = dispersion_code_info(source.code, &info);
+  fault->code = source.code;
+  fault->data_block = 46;
+  fault->field = path;
+  if (status == Status::kDispersionCodeInvalid) {
+    fault->field = path + ".code";
+  } else if (status == Status::kDispersionStageCodeMismatch || status == Status::kDispersionStageNotSpun) {
+    fault->data_block = info.kind == DispersionKind::kTipoff ? 51 : 46;
+    fault->field = path + ".stage";
+  } else if (status == Status::kDispersionStageDurationsMismatch) {
+    fault->data_block = 55;
+    fault->field = path + ".stage_durations_s";
+  } else if (status == Status::kDispersionDragVariationOutOfRange) {
+    fault->data_block = 48;
+    fault->field = path + ".drag_variation_fraction";
+  } else if (known && info.kind == DispersionKind::kVacuumThrust) {
+    const bool weight = status == Status::kNegativeWeight || status == Status::kConsumableWeightIncreases;
+    fault->data_block = weight ? 38 : 30;
+    fault->field = path + (weight ? ".consumable_weight" : ".thrust");
+  } else if (known && info.kind == DispersionKind::kPitchingMoment) {
+    fault->data_block = 35;
+    fault->field = path + ".pitching_moment";
+  } else if (known && info.kind == DispersionKind::kWind) {
+    // The core checks both tables' presence, then both tables' order, the speed first.
+    const bool speed =
+        status == Status::kTableEmpty ? core.wind.speed_ft_s.empty() : !core.wind.speed_ft_s.finalized();
+    fault->data_block = speed ? 53 : 54;
+    fault->field = path + (fault->data_block == 53 ? ".wind_speed" : ".wind_azimuth");
+  }
+  fault->message = std::string(status_name(status)) + ": " + status_message(status);
+  const bool restarts_or_refills = status == Status::kConsumableWeightIncreases ||
+                                   status == Status::kTableNotMonotonic ||
+                                   status == Status::kDispersionThrustTableTimesInvalid;
+  if (known && info.stage == 4 && info.kind == DispersionKind::kVacuumThrust && !source.has_stage_durations &&
+      restarts_or_refills) {
+    fault->message +=
+        " (stages 4 and 5 in these tables are the manual's stacked form, page 22-30: it needs data block "
+        "55, stage_durations_s)";
+  }
+}
+
 }  // namespace
 
 bool fill_dispersion_data(const std::vector<DispersionCase>& deck, DispersionData* data,
@@ -90,7 +138,15 @@ bool fill_dispersion_data(const std::vector<DispersionCase>& deck, DispersionDat
     s.launch_change_rad = d.launch_change_rad;
     ++data->count;
   }
-  return true;
+  // The core's rules of the sources (a code's tables, stage and values) at the boundary, before
+  // anything flies: the block and the field named like the deck's own errors.
+  int code = 0;
+  const Status status = validate_dispersion_data(*data, &code);
+  if (ok(status)) return true;
+  std::size_t k = 0;
+  while (k + 1 < deck.size() && deck[k].code != code) ++k;
+  name_source_fault(deck[k], data->sources[k], k, status, fault);
+  return false;
 }
 
 bool final_dispersion_nominal(const Mission& mission, const OptimizationRun& run, DispersionNominal* nominal,
