@@ -1,5 +1,6 @@
-// A table the deck gave, into the core's fixed-capacity form (one rule for every deck table the
-// ground tools hand to the core: data blocks 33-37, 42-45 and 46-55).
+// A table the deck gave, into the core's fixed-capacity form: one rule for the analyses' tables the
+// ground tools hand to the core (data blocks 33-37, 42-45 and 46-55). The mission's own tables
+// (blocks 30-32, 38, 40) are read entry by entry, each entry's fault named, in mission_sections.cpp.
 #pragma once
 
 #include <string>

@@ -48,8 +48,8 @@ bool stacked_tables_split(const DispersionSource& source, const std::string& pat
   return false;
 }
 
-// Where validate_dispersion_data() found source `k` (code `code`) at fault: the data block and the
-// deck key of what the status is about, and, for codes 7-8 whose tables hold stages 4 and 5
+// Where validate_dispersion_data() found the deck's source `k` at fault with `status`: the data block
+// and the deck key of what the status is about, and, for codes 7-8 whose tables hold stages 4 and 5
 // without block 55, the form they need.
 void name_source_fault(const DispersionCase& source, const DispersionSource& core, std::size_t k,
                        Status status, DispersionMappingFault* fault) {
@@ -138,15 +138,23 @@ bool fill_dispersion_data(const std::vector<DispersionCase>& deck, DispersionDat
     s.launch_change_rad = d.launch_change_rad;
     ++data->count;
   }
-  // The core's rules of the sources (a code's tables, stage and values) at the boundary, before
-  // anything flies: the block and the field named like the deck's own errors.
-  int code = 0;
-  const Status status = validate_dispersion_data(*data, &code);
-  if (ok(status)) return true;
-  std::size_t k = 0;
-  while (k + 1 < deck.size() && deck[k].code != code) ++k;
-  name_source_fault(deck[k], data->sources[k], k, status, fault);
-  return false;
+  // The core's rules of the sources (a code's tables, stage and values, the codes' order) at the
+  // boundary, before anything flies, named like the deck's own errors. The core checks the sources
+  // in order and stops at the first at fault: checking the first k + 1 of them finds which one.
+  const int filled = data->count;
+  for (int k = 0; k < filled; ++k) {
+    data->count = k + 1;
+    int code = 0;
+    const Status status = validate_dispersion_data(*data, &code);
+    if (!ok(status)) {
+      data->count = filled;
+      const std::size_t at = static_cast<std::size_t>(k);
+      name_source_fault(deck[at], data->sources[k], at, status, fault);
+      return false;
+    }
+  }
+  data->count = filled;
+  return true;
 }
 
 bool final_dispersion_nominal(const Mission& mission, const OptimizationRun& run, DispersionNominal* nominal,
