@@ -22,11 +22,11 @@ struct DispersionMappingFault {
 };
 
 // Deck data blocks 46-55 -> core (stations inches -> ft; angles are already rad). False with *fault
-// when a table is longer than the core's capacity (blocks 30/38: 120 points, 35: 20, 53-54: 32),
-// when the stacked stage 4/5 tables of codes 7-8 with block 55 do not split by its durations
-// (find_stacked_stage4_5_split: block 55 for durations that do not match, else 30 or 38), or when
-// a source breaks a rule of validate_dispersion_data (its block and key named): every command
-// rejects such a deck before it optimizes or flies anything.
+// when a table is longer than the core's capacity (blocks 30/38: 120 points, 35: 20, 53-54: 32), or
+// when a source breaks a rule of validate_dispersion_data, its block and key named: among them the
+// stacked stage 4/5 tables of codes 7-8 with block 55 that do not split by its durations
+// (find_stacked_stage4_5_split: block 55 for durations that do not match, else 30 or 38). Every
+// command rejects such a deck before it optimizes or flies anything.
 bool fill_dispersion_data(const std::vector<DispersionCase>& deck, DispersionData* data,
                           DispersionMappingFault* fault);
 

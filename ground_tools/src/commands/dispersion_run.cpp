@@ -20,37 +20,10 @@ bool fill_table(const DeckTable& deck, Table<N>* table, int block, int code, con
   return false;
 }
 
-// Codes 7-8 with block 55: the stacked tables must split by its durations before anything runs.
-bool stacked_tables_split(const DispersionSource& source, const std::string& path,
-                          DispersionMappingFault* fault) {
-  StackedStage45Split split;
-  const Status status = find_stacked_stage4_5_split(source, &split);
-  if (ok(status)) return true;
-  fault->code = source.code;
-  if (status == Status::kDispersionStageDurationsMismatch) {
-    fault->data_block = 55;
-    fault->field = path + ".stage_durations_s";
-  } else if (status == Status::kNegativeWeight || status == Status::kConsumableWeightIncreases) {
-    fault->data_block = 38;
-    fault->field = path + ".consumable_weight";
-  } else {
-    fault->data_block = 30;
-    fault->field = path + ".thrust";
-  }
-  std::ostringstream given;
-  given.precision(10);
-  given << " (data block 55: stage 4 " << source.stage4_5_durations_s[0] << " s, stage 5 "
-        << source.stage4_5_durations_s[1] << " s)";
-  fault->message = std::string(
-                       "the stacked stage 4 and 5 tables (data blocks 30 and 38 with data block 55, "
-                       "manual page 22-30): ") +
-                   status_name(status) + ": " + status_message(status) + given.str();
-  return false;
-}
-
 // Where validate_dispersion_data() found the deck's source `k` at fault with `status`: the data block
-// and the deck key of what the status is about, and, for codes 7-8 whose tables hold stages 4 and 5
-// without block 55, the form they need.
+// and the deck key of what the status is about; for stacked stage 4/5 tables (codes 7-8 with block
+// 55) the durations given, and for codes 7-8 whose tables hold stages 4 and 5 without block 55 the
+// form they need.
 void name_source_fault(const DispersionCase& source, const DispersionSource& core, std::size_t k,
                        Status status, DispersionMappingFault* fault) {
   const std::string path = "dispersion[" + std::to_string(k) + "]";
@@ -85,6 +58,16 @@ void name_source_fault(const DispersionCase& source, const DispersionSource& cor
     fault->field = path + (fault->data_block == 53 ? ".wind_speed" : ".wind_azimuth");
   }
   fault->message = std::string(status_name(status)) + ": " + status_message(status);
+  if (core.stacked_stage4_5_tables) {
+    // Codes 7-8 with block 55 (find_stacked_stage4_5_split): the durations given beside the status.
+    std::ostringstream given;
+    given.precision(10);
+    given << " (data block 55: stage 4 " << core.stage4_5_durations_s[0] << " s, stage 5 "
+          << core.stage4_5_durations_s[1] << " s)";
+    fault->message =
+        "the stacked stage 4 and 5 tables (data blocks 30 and 38 with data block 55, manual page 22-30): " +
+        fault->message + given.str();
+  }
   const bool restarts_or_refills = status == Status::kConsumableWeightIncreases ||
                                    status == Status::kTableNotMonotonic ||
                                    status == Status::kDispersionThrustTableTimesInvalid;
@@ -128,7 +111,6 @@ bool fill_dispersion_data(const std::vector<DispersionCase>& deck, DispersionDat
     s.stacked_stage4_5_tables = d.has_stage_durations;
     s.stage4_5_durations_s[0] = d.stage4_5_durations_s[0];
     s.stage4_5_durations_s[1] = d.stage4_5_durations_s[1];
-    if (s.stacked_stage4_5_tables && !stacked_tables_split(s, path, fault)) return false;
     s.weight_increment_lb = d.weight_increment_lb;
     s.drag_variation_fraction = d.drag_variation_fraction;
     s.misalignment_rad = d.misalignment_rad;
