@@ -740,6 +740,23 @@ TEST(PlotCatalogue, FigureWithoutAFiniteValueIsSkippedWithANote) {
   }
 }
 
+// The per-station, hardover, HIL and autopilot figures are named in their notes too: the note of a
+// radar station whose every point is null names its figure (radar_wallops), as the catalogue's do.
+TEST(PlotCatalogue, SkippedRadarFigureIsNamedInItsNote) {
+  json document = result_with_altitudes(json(1000.0));
+  json points = json::array();
+  for (int i = 0; i < 3; ++i) {
+    points.push_back({{"time_s", nullptr}, {"azimuth_deg", nullptr}, {"elevation_deg", nullptr}});
+  }
+  document["radar"] = {{"stations", json::array({{{"id", "WALLOPS"}, {"points", points}}})}};
+  const tolip::ground::DocumentFigures figures = tolip::ground::figures_for_document(document);
+  for (const tolip::ground::Figure& figure : figures.figures) EXPECT_NE(figure.name, "radar_wallops");
+  ASSERT_FALSE(figures.notes.empty());
+  EXPECT_EQ(figures.notes.back(),
+            "figure radar_wallops skipped: no finite value to draw (every value null, or beyond 1e30 in "
+            "magnitude)");
+}
+
 TEST(PlotCommand, AltitudeAllNullOrHugeSkipsThatFigureAndDrawsTheRest) {
   if (!gnuplot_installed()) GTEST_SKIP() << "gnuplot is not installed (gnuplot-nox)";
   ScratchDirectory scratch("hostile_plot_null");

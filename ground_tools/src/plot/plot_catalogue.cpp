@@ -753,8 +753,10 @@ DocumentFigures figures_for_document(const nlohmann::json& document) {
         document.type_name());
   }
   DocumentFigures result;
-  // A figure joins the result with its drawable curves only (notes name what was left out).
-  const auto add = [&](const std::string& name, Figure figure) {
+  // A figure joins the result with its drawable curves only (notes name what was left out, by the
+  // figure's own name: a name passed beside the moved figure would be read after the move).
+  const auto add = [&](Figure figure) {
+    const std::string& name = figure.name;
     std::vector<PlotSeries> drawable;
     for (PlotSeries& series : figure.series) {
       if (keep_drawable_points(&series)) {
@@ -777,7 +779,7 @@ DocumentFigures figures_for_document(const nlohmann::json& document) {
   for (const PlotKind& kind : plot_catalogue()) {
     std::optional<Figure> figure = kind.build(document);
     if (figure) {
-      add(kind.name, std::move(*figure));
+      add(std::move(*figure));
     } else {
       const json* data = member(document, kind.member);
       result.skipped.push_back(std::string(kind.name) +
@@ -787,10 +789,10 @@ DocumentFigures figures_for_document(const nlohmann::json& document) {
     }
   }
   // One figure per radar station (member "radar"; radar_plots.cpp).
-  for (Figure& figure : hardover_figures(document)) add(figure.name, std::move(figure));
-  for (Figure& figure : hil_figures(document)) add(figure.name, std::move(figure));
-  for (Figure& figure : autopilot_figures(document)) add(figure.name, std::move(figure));
-  for (Figure& figure : radar_figures(document)) add(figure.name, std::move(figure));
+  for (Figure& figure : hardover_figures(document)) add(std::move(figure));
+  for (Figure& figure : hil_figures(document)) add(std::move(figure));
+  for (Figure& figure : autopilot_figures(document)) add(std::move(figure));
+  for (Figure& figure : radar_figures(document)) add(std::move(figure));
   return result;
 }
 
