@@ -214,7 +214,7 @@ std::vector<PointMarker> staging_points(const Flight& flight, const std::vector<
     if (!event.powered) continue;
     const long ignition = first_powered ? 0 : event.first_point;
     first_powered = false;
-    if (ignition >= 0 && ignition > 0)
+    if (ignition > 0)  // the first powered stage ignites at the pad point: no marker there
       points.push_back({x[ignition], y[ignition], stage_name(event.stage) + " ign", 0});
     if (event.last_point >= 0) {
       points.push_back({x[event.last_point], y[event.last_point], stage_name(event.stage) + " bo", 0});
