@@ -602,6 +602,59 @@ TEST(MonteCarlo, UnionGridsBeyondTheTableCapacityAreNamedByCode) {
   EXPECT_EQ(check_monte_carlo_data(nominal_of(*f, false), d, &fault_code), Status::kOk) << "not drawn in 3D";
 }
 
+// A thrust source's draw c blends b = b_n + c (b_s - b_n) and T = T_n + c (T_s - T_n) (a negative c
+// mirrors the table about the nominal): a draw that takes the burn time to zero or below, or a
+// thrust below zero, is that sample's named failure (kMonteCarloBurnTimeNotPositive,
+// kMonteCarloThrustNegative), not a flight; the same source's other draws build. The sources are
+// deliberately far from the nominal (ten times its thrust, twenty times its burn time) so that a
+// draw of a third of a sigma already crosses; the samples are found from counter_normal itself.
+TEST(MonteCarlo, DrawsThatTakeABlendedBurnTimeOrThrustBelowZeroAreTheSamplesNamedFailure) {
+  auto f = make_fixture();
+  const StageData& stage2 = f->mission.vehicle.stages[stage_index(2)];
+  const ThrustTable& nominal_thrust = stage2.vacuum_thrust_lbf;
+  const std::uint64_t seed = 11;
+  const auto draw = [&](std::uint64_t sample) { return counter_normal(seed, sample, 3u) / 3.0; };
+  const auto first_sample = [&](auto predicate) {
+    std::uint64_t sample = 0;
+    while (!predicate(draw(sample))) ++sample;
+    return sample;
+  };
+  const DispersionNominal nominal = nominal_of(*f, false);
+  int fault_code = -1;
+  struct Case {
+    const char* what;
+    double time_scale;
+    double thrust_scale;
+    double failing_draw_below;  // the draws below it fail (the crossing, with a margin)
+    Status status;
+  };
+  // Burn time: b = b_n (1 + 19 c) <= 0 for c <= -1/19. Thrust: T = T_n (1 + 9 c) < 0 for c < -1/9
+  // wherever T_n > 0 (the burn time stays b_n).
+  for (const Case& c : {Case{"burn time x 20", 20.0, 1.0, -0.06, Status::kMonteCarloBurnTimeNotPositive},
+                        Case{"thrust x 10", 1.0, 10.0, -0.12, Status::kMonteCarloThrustNegative}}) {
+    SCOPED_TRACE(c.what);
+    f->data.count = 0;
+    DispersionSource& source = add(&f->data, 3);
+    for (int i = 0; i < nominal_thrust.size(); ++i) {
+      const double t = nominal_thrust.x(i);
+      ASSERT_EQ(source.vacuum_thrust_lbf.append(c.time_scale * t, c.thrust_scale * nominal_thrust.y(i)),
+                Status::kOk);
+      ASSERT_EQ(source.consumable_weight_lb.append(c.time_scale * t, stage2.consumable_weight_lb(t)),
+                Status::kOk);
+    }
+    ASSERT_EQ(source.vacuum_thrust_lbf.finalize(), Status::kOk);
+    ASSERT_EQ(source.consumable_weight_lb.finalize(), Status::kOk);
+    ASSERT_EQ(check_monte_carlo_data(nominal, f->data, &fault_code), Status::kOk);
+
+    const std::uint64_t failing = first_sample([&](double z) { return z < c.failing_draw_below; });
+    const std::uint64_t building = first_sample([](double z) { return z > 0.05; });
+    EXPECT_EQ(build_monte_carlo_case(nominal, f->prepared, f->data, seed, failing, &f->workspace), c.status)
+        << "sample " << failing << ", c = " << draw(failing);
+    EXPECT_EQ(build_monte_carlo_case(nominal, f->prepared, f->data, seed, building, &f->workspace), Status::kOk)
+        << "sample " << building << ", c = " << draw(building);
+  }
+}
+
 // FlightInputs::air_alpha_rad is "what record_dispersed_trajectory() would recompute from the
 // point": recorded from the wind alone, the max |q-bar alpha| of a windy flight is the one recorded
 // from the flight's own air-relative alpha; without the wind it is the inertial alpha's, another.
