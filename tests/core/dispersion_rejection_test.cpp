@@ -603,50 +603,62 @@ TEST(MonteCarlo, UnionGridsBeyondTheTableCapacityAreNamedByCode) {
 }
 
 // A thrust source's draw c blends b = b_n + c (b_s - b_n) and T = T_n + c (T_s - T_n) (a negative c
-// mirrors the table about the nominal): a draw that takes the burn time to zero or below, or a
-// thrust below zero, is that sample's named failure (kMonteCarloBurnTimeNotPositive,
-// kMonteCarloThrustNegative), not a flight; the same source's other draws build. The sources are
+// mirrors the table about the nominal): a draw that takes the burn time to zero or below, a thrust
+// below zero, or stage 1's burn time inside the lift-off interval, is that sample's named failure
+// (kMonteCarloBurnTimeNotPositive, kMonteCarloThrustNegative, kLiftoffLongerThanStage1), not a
+// flight; the same source's other draws build, in the workspace the failure left. The sources are
 // deliberately far from the nominal (ten times its thrust, twenty times its burn time) so that a
-// draw of a third of a sigma already crosses; the samples are found from counter_normal itself.
+// small draw already crosses; the samples are found from counter_normal itself.
 TEST(MonteCarlo, DrawsThatTakeABlendedBurnTimeOrThrustBelowZeroAreTheSamplesNamedFailure) {
   auto f = make_fixture();
-  const StageData& stage2 = f->mission.vehicle.stages[stage_index(2)];
-  const ThrustTable& nominal_thrust = stage2.vacuum_thrust_lbf;
   const std::uint64_t seed = 11;
-  const auto draw = [&](std::uint64_t sample) { return counter_normal(seed, sample, 3u) / 3.0; };
-  const auto first_sample = [&](auto predicate) {
-    std::uint64_t sample = 0;
-    while (!predicate(draw(sample))) ++sample;
-    return sample;
-  };
   const DispersionNominal nominal = nominal_of(*f, false);
   int fault_code = -1;
   struct Case {
     const char* what;
+    int code;  // 1: stage 1's tables, 3: stage 2's
     double time_scale;
     double thrust_scale;
-    double failing_draw_below;  // the draws below it fail (the crossing, with a margin)
+    double failing_draws_from, failing_draws_to;  // the draws c in [from, to) fail
     Status status;
   };
-  // Burn time: b = b_n (1 + 19 c) <= 0 for c <= -1/19. Thrust: T = T_n (1 + 9 c) < 0 for c < -1/9
-  // wherever T_n > 0 (the burn time stays b_n).
-  for (const Case& c : {Case{"burn time x 20", 20.0, 1.0, -0.06, Status::kMonteCarloBurnTimeNotPositive},
-                        Case{"thrust x 10", 1.0, 10.0, -0.12, Status::kMonteCarloThrustNegative}}) {
+  // Burn time: b = b_n (1 + 19 c) <= 0 for c <= -1/19 = -0.0526. Thrust: T = T_n (1 + 9 c) < 0 for
+  // c < -1/9 wherever T_n > 0 (the burn time stays b_n). Stage 1: 0 < 45 s (1 + 19 c) <= 3 s (the
+  // lift-off) for -0.0526 < c <= -0.0491.
+  const double liftoff_s = f->mission.launch.liftoff_duration_s;
+  const double stage1_s = f->mission.vehicle.stages[stage_index(1)].duration_s;
+  const Case cases[] = {
+      {"burn time x 20", 3, 20.0, 1.0, -1e9, -0.06, Status::kMonteCarloBurnTimeNotPositive},
+      {"thrust x 10", 3, 1.0, 10.0, -1e9, -0.12, Status::kMonteCarloThrustNegative},
+      {"stage 1 burn time x 20", 1, 20.0, 1.0, -1.0 / 19.0 + 1e-4, (liftoff_s / stage1_s - 1.0) / 19.0 - 1e-4,
+       Status::kLiftoffLongerThanStage1}};
+  for (const Case& c : cases) {
     SCOPED_TRACE(c.what);
+    const StageData& stage = f->mission.vehicle.stages[stage_index(c.code == 1 ? 1 : 2)];
+    const auto draw = [&](std::uint64_t sample) {
+      return counter_normal(seed, sample, static_cast<std::uint32_t>(c.code)) / 3.0;
+    };
+    const auto first_sample = [&](auto predicate) {
+      std::uint64_t sample = 0;
+      while (!predicate(draw(sample))) ++sample;
+      return sample;
+    };
     f->data.count = 0;
-    DispersionSource& source = add(&f->data, 3);
+    DispersionSource& source = add(&f->data, c.code);
+    const ThrustTable& nominal_thrust = stage.vacuum_thrust_lbf;
     for (int i = 0; i < nominal_thrust.size(); ++i) {
       const double t = nominal_thrust.x(i);
       ASSERT_EQ(source.vacuum_thrust_lbf.append(c.time_scale * t, c.thrust_scale * nominal_thrust.y(i)),
                 Status::kOk);
-      ASSERT_EQ(source.consumable_weight_lb.append(c.time_scale * t, stage2.consumable_weight_lb(t)),
+      ASSERT_EQ(source.consumable_weight_lb.append(c.time_scale * t, stage.consumable_weight_lb(t)),
                 Status::kOk);
     }
     ASSERT_EQ(source.vacuum_thrust_lbf.finalize(), Status::kOk);
     ASSERT_EQ(source.consumable_weight_lb.finalize(), Status::kOk);
     ASSERT_EQ(check_monte_carlo_data(nominal, f->data, &fault_code), Status::kOk);
 
-    const std::uint64_t failing = first_sample([&](double z) { return z < c.failing_draw_below; });
+    const std::uint64_t failing =
+        first_sample([&](double z) { return z >= c.failing_draws_from && z < c.failing_draws_to; });
     const std::uint64_t building = first_sample([](double z) { return z > 0.05; });
     EXPECT_EQ(build_monte_carlo_case(nominal, f->prepared, f->data, seed, failing, &f->workspace), c.status)
         << "sample " << failing << ", c = " << draw(failing);
