@@ -128,7 +128,7 @@ Status SerialFlightLink::cycle(const std::uint8_t* sensor, std::size_t size, std
                                hal::TelemetryFrame* telemetry) {
   if (!error_.empty()) return Status::kHalLinkFrameCorrupt;
   std::string cause;
-  bool sent;
+  bool sent = false;
   if (size == 0) {
     // A sensor frame lost in the link: the tick frame starts the cycle without one.
     std::uint8_t tick[hal::kShortFrameSize];
