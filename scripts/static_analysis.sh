@@ -4,23 +4,31 @@
 # every source of fsw_core/src (and, through them, the headers of fsw_core/include). Prints each
 # finding as file:line: tool: check: message and the counts; exits 1 when there is any finding.
 #
-#   scripts/static_analysis.sh [--build DIR] [--only clang-tidy|cppcheck] [--sources DIR]
+#   scripts/static_analysis.sh [--build DIR] [--only clang-tidy|cppcheck] [--sources DIR] [--ground]
 #
 # DIR is a configured build directory holding compile_commands.json (every build directory does:
 # CMAKE_EXPORT_COMPILE_COMMANDS is on); default build/. --sources replaces fsw_core/src (the
-# canary uses it). --only makes the other tool's count 0. Exit 77 when a tool is missing (the CTest skips; scripts/lib/deps.sh installs
+# canary uses it). --only makes the other tool's count 0. --ground analyses the ground side
+# instead (ground_tools/src and hal_sim/src) with clang-tidy alone and its bug-class rule set,
+# tests/static_analysis/ground.clang-tidy (docs/verification/static-analysis.md, "The ground side"). Exit 77 when a tool is missing (the CTest skips; scripts/lib/deps.sh installs
 # clang-tidy and cppcheck).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build="$root/build"
 only=""
-sources="$root/fsw_core/src"
+sources=("$root/fsw_core/src")
+config="$root/.clang-tidy"
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --build) build=$2; shift 2 ;;
     --only) only=$2; shift 2 ;;
-    --sources) sources=$2; shift 2 ;;
-    *) echo "usage: $0 [--build DIR] [--only clang-tidy|cppcheck] [--sources DIR]" >&2; exit 2 ;;
+    --sources) sources=("$2"); shift 2 ;;
+    --ground)
+      sources=("$root/ground_tools/src" "$root/hal_sim/src")
+      config="$root/tests/static_analysis/ground.clang-tidy"
+      only=clang-tidy
+      shift ;;
+    *) echo "usage: $0 [--build DIR] [--only clang-tidy|cppcheck] [--sources DIR] [--ground]" >&2; exit 2 ;;
   esac
 done
 tidy=$(command -v clang-tidy-14 || command -v clang-tidy || true)
@@ -30,8 +38,8 @@ if [[ ( -z "$tidy" && "$only" != cppcheck ) || ( -z "$cppcheck" && "$only" != cl
   exit 77
 fi
 [[ -f "$build/compile_commands.json" ]] || { echo "static_analysis.sh: no $build/compile_commands.json: configure first" >&2; exit 2; }
-mapfile -t files < <(find "$sources" -name '*.cpp' | sort)
-[[ ${#files[@]} -gt 0 ]] || { echo "static_analysis.sh: no source under $sources" >&2; exit 2; }
+mapfile -t files < <(find "${sources[@]}" -name '*.cpp' | sort)
+[[ ${#files[@]} -gt 0 ]] || { echo "static_analysis.sh: no source under ${sources[*]}" >&2; exit 2; }
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 # clang-tidy reads the compile database without GCC's link-time optimization flags (the fat LTO
@@ -46,8 +54,8 @@ if [[ "$only" != cppcheck ]]; then
   # One clang-tidy per file, two at a time (a file outside the compile database, the canary's,
   # gets the flags of the nearest file in it).
   printf '%s\n' "${files[@]}" | xargs -P 2 -I{} sh -c \
-    '"$1" -p "$2" --quiet --config-file="$3/.clang-tidy" "$4" 2>/dev/null' \
-    _ "$tidy" "$scratch/db" "$root" {} > "$scratch/tidy.txt" || true
+    '"$1" -p "$2" --quiet --config-file="$3" "$4" 2>/dev/null' \
+    _ "$tidy" "$scratch/db" "$config" {} > "$scratch/tidy.txt" || true
   grep -E '^[^ ]+:[0-9]+:[0-9]+: (warning|error): ' "$scratch/tidy.txt" \
     | sed -E "s#^$root/##; s#^([^:]+:[0-9]+):[0-9]+: (warning|error): (.*) \[([^],]+)[^]]*\]\$#\1: clang-tidy: \4: \3#" \
     | sort -u > "$scratch/tidy-findings.txt" || true
