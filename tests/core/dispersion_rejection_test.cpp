@@ -627,11 +627,10 @@ TEST(MonteCarlo, DrawsThatTakeABlendedBurnTimeOrThrustBelowZeroAreTheSamplesName
   // lift-off) for -0.0526 < c <= -0.0491.
   const double liftoff_s = f->mission.launch.liftoff_duration_s;
   const double stage1_s = f->mission.vehicle.stages[stage_index(1)].duration_s;
-  const Case cases[] = {
-      {"burn time x 20", 3, 20.0, 1.0, -1e9, -0.06, Status::kMonteCarloBurnTimeNotPositive},
-      {"thrust x 10", 3, 1.0, 10.0, -1e9, -0.12, Status::kMonteCarloThrustNegative},
-      {"stage 1 burn time x 20", 1, 20.0, 1.0, -1.0 / 19.0 + 1e-4, (liftoff_s / stage1_s - 1.0) / 19.0 - 1e-4,
-       Status::kLiftoffLongerThanStage1}};
+  const Case cases[] = {{"burn time x 20", 3, 20.0, 1.0, -1e9, -0.06, Status::kMonteCarloBurnTimeNotPositive},
+                        {"thrust x 10", 3, 1.0, 10.0, -1e9, -0.12, Status::kMonteCarloThrustNegative},
+                        {"stage 1 burn time x 20", 1, 20.0, 1.0, -1.0 / 19.0 + 1e-4,
+                         (liftoff_s / stage1_s - 1.0) / 19.0 - 1e-4, Status::kLiftoffLongerThanStage1}};
   for (const Case& c : cases) {
     SCOPED_TRACE(c.what);
     const StageData& stage = f->mission.vehicle.stages[stage_index(c.code == 1 ? 1 : 2)];
@@ -662,7 +661,8 @@ TEST(MonteCarlo, DrawsThatTakeABlendedBurnTimeOrThrustBelowZeroAreTheSamplesName
     const std::uint64_t building = first_sample([](double z) { return z > 0.05; });
     EXPECT_EQ(build_monte_carlo_case(nominal, f->prepared, f->data, seed, failing, &f->workspace), c.status)
         << "sample " << failing << ", c = " << draw(failing);
-    EXPECT_EQ(build_monte_carlo_case(nominal, f->prepared, f->data, seed, building, &f->workspace), Status::kOk)
+    EXPECT_EQ(build_monte_carlo_case(nominal, f->prepared, f->data, seed, building, &f->workspace),
+              Status::kOk)
         << "sample " << building << ", c = " << draw(building);
   }
 }
