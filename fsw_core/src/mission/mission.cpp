@@ -84,7 +84,7 @@ struct Check {
   // in and, when the range cannot say it, what was expected.
   Status fail(Status status, int data_block, int stage_code, const char* field, int index, double value,
               const char* unit, const ValueRange& range, const char* expected = "") const {
-    fail(status, data_block, stage_code, field);
+    const Status failed = fail(status, data_block, stage_code, field);
     if (fault != nullptr) {
       fault->index = index;
       fault->has_value = true;
@@ -93,7 +93,7 @@ struct Check {
       fault->range = range;
       fault->expected = expected;
     }
-    return status;
+    return failed;
   }
 
   // kOk when the value lies in the range, else `status` with the value and the range.
