@@ -75,8 +75,10 @@ void BM_MonteCarloOneSample(benchmark::State& state) {
   auto ws = std::make_unique<tolip::DispersionWorkspace>();
   if (!tolip::ok(tolip::prepare_monte_carlo(p.nominal, *p.data, ws.get()))) std::exit(1);
   tolip::DispersedTrajectory nominal_values;
-  tolip::record_dispersed_trajectory(*p.nominal.mission, ws->nominal_prepared, ws->nominal, ws->nominal,
-                                     nullptr, &nominal_values);
+  if (!tolip::ok(tolip::record_dispersed_trajectory(*p.nominal.mission, ws->nominal_prepared, ws->nominal,
+                                                    ws->nominal, nullptr, &nominal_values))) {
+    std::exit(1);
+  }
   tolip::DispersedTrajectory out;
   std::uint64_t sample = 0;
   for (auto _ : state) {
@@ -102,8 +104,10 @@ void BM_MonteCarloOneSampleWithImpacts(benchmark::State& state) {
   auto impact_ws = std::make_unique<tolip::ImpactWorkspace>();
   if (!tolip::ok(tolip::prepare_monte_carlo(p.nominal, *p.data, ws.get()))) std::exit(1);
   tolip::DispersedTrajectory nominal_values;
-  tolip::record_dispersed_trajectory(*p.nominal.mission, ws->nominal_prepared, ws->nominal, ws->nominal,
-                                     nullptr, &nominal_values);
+  if (!tolip::ok(tolip::record_dispersed_trajectory(*p.nominal.mission, ws->nominal_prepared, ws->nominal,
+                                                    ws->nominal, nullptr, &nominal_values))) {
+    std::exit(1);
+  }
   tolip::DispersedTrajectory out;
   tolip::MonteCarloImpacts impacts;
   std::uint64_t sample = 0;

@@ -97,8 +97,10 @@ BENCHMARK(BM_FullReferenceOptimizationWithoutHeadingHold)->Unit(benchmark::kMill
 void BM_BackwardRun(benchmark::State& state) {
   const tolip::Mission& mission = load("scout/reference_optimum.toml");
   tolip::OptimizerWorkspace& ws = workspace();
-  tolip::prepare_case(mission, &ws.prepared);
-  tolip::fly_trajectory(mission, ws.prepared, &ws.nominal);
+  if (!tolip::ok(tolip::prepare_case(mission, &ws.prepared)) ||
+      !tolip::ok(tolip::fly_trajectory(mission, ws.prepared, &ws.nominal))) {
+    std::exit(1);
+  }
   tolip::ConstraintTerminal terminals[4];
   for (int j = 0; j < 4; ++j) {
     terminals[j].point = ws.nominal.point_count - 1;
@@ -116,8 +118,10 @@ BENCHMARK(BM_BackwardRun)->Unit(benchmark::kMicrosecond);
 void BM_ForwardRunWithProgram(benchmark::State& state) {
   const tolip::Mission& mission = load("scout/reference_optimum.toml");
   tolip::OptimizerWorkspace& ws = workspace();
-  tolip::prepare_case(mission, &ws.prepared);
-  tolip::fly_trajectory(mission, ws.prepared, &ws.nominal);
+  if (!tolip::ok(tolip::prepare_case(mission, &ws.prepared)) ||
+      !tolip::ok(tolip::fly_trajectory(mission, ws.prepared, &ws.nominal))) {
+    std::exit(1);
+  }
   ws.program.point_count = ws.nominal.point_count;
   for (int k = 0; k < ws.nominal.point_count; ++k) ws.program.theta_rad[k] = ws.nominal.points[k].theta_rad;
   for (auto _ : state) {

@@ -98,9 +98,9 @@ TEST(Sec22Optimizer, FamilyOfStartingProgramsConvergesToTheSamePayload) {
         start == 1 ? test::ReferenceProgram::kOptimum : test::ReferenceProgram::kInitialNominal, &mission);
     if (start == 2) {  // a straight-line pitch-over and a short coast guess
       mission.pitch_program_rad.clear();
-      mission.pitch_program_rad.append(0.0, 0.5 * kPi);
-      mission.pitch_program_rad.append(3.0, 0.5 * kPi);
-      mission.pitch_program_rad.append(130.0, 20.0 * kDegToRad);
+      ASSERT_EQ(mission.pitch_program_rad.append(0.0, 0.5 * kPi), Status::kOk);
+      ASSERT_EQ(mission.pitch_program_rad.append(3.0, 0.5 * kPi), Status::kOk);
+      ASSERT_EQ(mission.pitch_program_rad.append(130.0, 20.0 * kDegToRad), Status::kOk);
       ASSERT_EQ(mission.pitch_program_rad.finalize(), Status::kOk);
       mission.vehicle.stages[stage_index(8)].duration_s = 400.0;
     }

@@ -66,11 +66,11 @@ void add_stage5(Mission* m) {
   const double thrust[] = {0.0, 1500.0, 1500.0, 0.0};
   const double weight[] = {80.0, 79.99, 0.01, 0.0};
   for (int i = 0; i < 4; ++i) {
-    s5.vacuum_thrust_lbf.append(times[i], thrust[i]);
-    s5.consumable_weight_lb.append(times[i], weight[i]);
+    ASSERT_EQ(s5.vacuum_thrust_lbf.append(times[i], thrust[i]), Status::kOk);
+    ASSERT_EQ(s5.consumable_weight_lb.append(times[i], weight[i]), Status::kOk);
   }
-  s5.vacuum_thrust_lbf.finalize();
-  s5.consumable_weight_lb.finalize();
+  ASSERT_EQ(s5.vacuum_thrust_lbf.finalize(), Status::kOk);
+  ASSERT_EQ(s5.consumable_weight_lb.finalize(), Status::kOk);
 }
 
 // Flies the case with the data block 40 table, then with a program in which every point of the
@@ -350,8 +350,8 @@ TEST(Sec22Optimizer, Sec5_IP9Is2SteersTheStage4PitchProgram) {
   test::build_reference_mission(test::ReferenceProgram::kOptimum, &mission);
   make_stage4_continuous(&mission);
   // The table holds its last node (18 deg at 130 s) through stage 4: start it at the spun attitude.
-  mission.pitch_program_rad.append(380.0, mission.misc.stage4_theta_rad);
-  mission.pitch_program_rad.finalize();
+  ASSERT_EQ(mission.pitch_program_rad.append(380.0, mission.misc.stage4_theta_rad), Status::kOk);
+  ASSERT_EQ(mission.pitch_program_rad.finalize(), Status::kOk);
   MissionFault fault;
   ASSERT_EQ(validate_mission(mission, &fault), Status::kOk) << fault.field;
   const Status status = optimize_trajectory(mission, &ws, &result);

@@ -191,12 +191,13 @@ void build_reference_mission(ReferenceProgram program, Mission* m) {
   m->pitch_program_rad.clear();
   if (optimum) {
     const nlohmann::json& pp = oracle["pitch_program"];
-    m->pitch_program_rad.append(0.0, 0.5 * kPi);
+    nlohmann::json times = nlohmann::json::array({0.0});
+    nlohmann::json thetas = nlohmann::json::array({0.5 * kPi});
     for (size_t i = 0; i < pp["node_times_s"].size(); ++i) {
-      m->pitch_program_rad.append(pp["node_times_s"][i].get<double>(),
-                                  pp["theta_deg_as_flown"][i].get<double>() * kDegToRad);
+      times.push_back(pp["node_times_s"][i].get<double>());
+      thetas.push_back(pp["theta_deg_as_flown"][i].get<double>() * kDegToRad);
     }
-    m->pitch_program_rad.finalize();
+    fill(&m->pitch_program_rad, times, thetas);
   } else {
     fill(&m->pitch_program_rad, initial["time_s"], initial["theta_deg"], kDegToRad);
   }

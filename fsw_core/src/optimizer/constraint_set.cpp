@@ -52,11 +52,8 @@ bool is_asymptote(ConstraintQuantity kind) {
          kind == ConstraintQuantity::kAsymptoteDeclination;
 }
 
-ConstraintCode twice_energy_code() {
-  ConstraintCode energy;
-  decode_constraint_code(9, &energy);
-  return energy;
-}
+// Code 9, twice the energy (2E): the Addendum H stand-in's quantity.
+Status twice_energy_code(ConstraintCode* energy) { return decode_constraint_code(9, energy); }
 
 }  // namespace
 
@@ -77,8 +74,10 @@ bool needs_hyperbolic_stand_in(const ConstraintSet& set, const Mission& mission,
   if (!listed || trajectory.point_count < 1) return false;
   const ConstraintPoint point = constraint_point_at(mission, trajectory, trajectory.point_count - 1);
   double twice_energy = 0.0;
+  ConstraintCode energy;
   // Without a 2E (a non-finite state) there is nothing to continue from; the evaluation fails.
-  if (!ok(constraint_value(mission.constants, mission.launch, twice_energy_code(), point, &twice_energy))) {
+  if (!ok(twice_energy_code(&energy)) ||
+      !ok(constraint_value(mission.constants, mission.launch, energy, point, &twice_energy))) {
     return false;
   }
   return twice_energy <= 0.0 || twice_energy < 0.25 * desired_ft_s * desired_ft_s;
@@ -94,8 +93,10 @@ Status evaluate_constraints(const ConstraintSet& set, const Mission& mission, co
       achieved[i] = std::numeric_limits<double>::quiet_NaN();
       if (set.codes[i].kind != ConstraintQuantity::kHyperbolicExcessVelocity) continue;
       double twice_energy = 0.0;
-      const Status status =
-          constraint_value(mission.constants, mission.launch, twice_energy_code(), point, &twice_energy);
+      ConstraintCode energy;
+      Status status = twice_energy_code(&energy);
+      if (ok(status))
+        status = constraint_value(mission.constants, mission.launch, energy, point, &twice_energy);
       if (!ok(status)) return status;
       achieved[i] = hyperbolic_excess_stand_in_ft_s(twice_energy, set.desired[i]);
       continue;
@@ -121,11 +122,14 @@ Status constraint_terminals(const ConstraintSet& set, const Mission& mission, co
       const bool stand_in =
           set.codes[i].kind == ConstraintQuantity::kHyperbolicExcessVelocity && set.desired[i] > 0.0;
       if (!stand_in) continue;  // deferred: no adjoint
-      AdjointVector energy;
-      const Status status =
-          constraint_partials(mission.constants, mission.launch, twice_energy_code(), point, &energy);
+      ConstraintCode energy;
+      AdjointVector energy_partials;
+      Status status = twice_energy_code(&energy);
+      if (ok(status)) {
+        status = constraint_partials(mission.constants, mission.launch, energy, point, &energy_partials);
+      }
       if (!ok(status)) return status;
-      terminals[i].partials = energy / (2.0 * set.desired[i]);
+      terminals[i].partials = energy_partials / (2.0 * set.desired[i]);
       continue;
     }
     const Status status =

@@ -103,27 +103,33 @@ Status make_problem(const Mission& mission, Problem* problem) {
 }
 
 // Sec. 13: once the heat integral exceeds its limit the heating constraint is appended to the list
-// and kept for the rest of the case.
-void activate_heating_if_exceeded(const Trajectory& nominal, const Options& options, Problem* problem) {
-  if (!problem->heating_listed || problem->heating_active) return;
-  if (!(nominal.heat_integral_btu_ft2 > problem->heating_limit_btu_ft2)) return;
+// and kept for the rest of the case. (Room and a positive deadband were checked by make_problem, so
+// a failure here is a fault of the optimizer, passed on by name rather than flown past.)
+Status activate_heating_if_exceeded(const Trajectory& nominal, const Options& options, Problem* problem) {
+  if (!problem->heating_listed || problem->heating_active) return Status::kOk;
+  if (!(nominal.heat_integral_btu_ft2 > problem->heating_limit_btu_ft2)) return Status::kOk;
   ConstraintCode heating;
-  decode_constraint_code(14, &heating);
-  // Room and a positive deadband were checked by make_problem.
-  append_constraint(heating, problem->heating_limit_btu_ft2, problem->heating_deadband_btu_ft2, options,
-                    problem);
+  Status status = decode_constraint_code(14, &heating);
+  if (ok(status)) {
+    status = append_constraint(heating, problem->heating_limit_btu_ft2, problem->heating_deadband_btu_ft2,
+                               options, problem);
+  }
+  if (!ok(status)) return status;
   problem->heating_active = true;
+  return Status::kOk;
 }
 
-// The q-bar x alpha limit likewise: appended once a nominal's excess integral is positive.
-void activate_qbar_alpha_if_exceeded(const Mission& mission, const Trajectory& nominal, Problem* problem) {
-  if (!problem->qbar_alpha_listed || problem->qbar_alpha_active) return;
-  if (!(qbar_alpha_excess_s(mission, nominal) > 0.0)) return;
+// The q-bar x alpha limit likewise: appended once a nominal's excess integral is positive (room
+// checked by make_problem; the deadband is a positive constant).
+Status activate_qbar_alpha_if_exceeded(const Mission& mission, const Trajectory& nominal, Problem* problem) {
+  if (!problem->qbar_alpha_listed || problem->qbar_alpha_active) return Status::kOk;
+  if (!(qbar_alpha_excess_s(mission, nominal) > 0.0)) return Status::kOk;
   ConstraintCode code;
-  decode_constraint_code(kQbarAlphaConstraintCode, &code);
-  // Room was checked by make_problem; the deadband is a positive constant.
-  append_constraint(code, 0.0, kQbarAlphaExcessDeadbandS, mission.options, problem);
+  Status status = decode_constraint_code(kQbarAlphaConstraintCode, &code);
+  if (ok(status)) status = append_constraint(code, 0.0, kQbarAlphaExcessDeadbandS, mission.options, problem);
+  if (!ok(status)) return status;
   problem->qbar_alpha_active = true;
+  return Status::kOk;
 }
 
 // ---- constraint values: tolip/optimizer/constraint_set.hpp -------------------------------------
@@ -598,7 +604,7 @@ class Iteration {
   Status backward(int first, Steering* steering);
   Status launch_sensitivities();
   Status fly_candidate(const Steering& steering, const ConstraintVector& dpsi, double step_fraction);
-  void accept_candidate();
+  Status accept_candidate();
   Status guidance_phase(int budget, Steering* steering);
   Status optimization_phase(int budget, Steering* steering);
   void record(RunKind kind, Status run_status, bool successful, double attempted);
@@ -701,7 +707,8 @@ Status Iteration::fly_nominal_from_table() {
     ws_->program.theta_rad[k] = ws_->nominal.points[k].theta_rad;
   }
   classify_points(ws_->mission, ws_->nominal, &roles_);
-  activate_heating_if_exceeded(ws_->nominal, ws_->mission.options, &problem_);
+  status = activate_heating_if_exceeded(ws_->nominal, ws_->mission.options, &problem_);
+  if (!ok(status)) return status;
   problem_.hyperbolic_stand_in = needs_hyperbolic_stand_in(problem_, ws_->mission, ws_->nominal);
   status = evaluate_constraints(problem_, ws_->mission, ws_->nominal, nominal_achieved_);
   if (!ok(status)) return status;
@@ -852,7 +859,7 @@ Status Iteration::fly_candidate(const Steering& steering, const ConstraintVector
   return evaluate_constraints(problem_, m, ws_->candidate, candidate_achieved_);
 }
 
-void Iteration::accept_candidate() {
+Status Iteration::accept_candidate() {
   ws_->mission = ws_->candidate_mission;
   ws_->prepared = ws_->candidate_prepared;
   ws_->program = ws_->candidate_program;
@@ -871,7 +878,8 @@ void Iteration::accept_candidate() {
     }
   }
   if (!problem_.heating_active) {
-    activate_heating_if_exceeded(ws_->nominal, ws_->mission.options, &problem_);
+    const Status status = activate_heating_if_exceeded(ws_->nominal, ws_->mission.options, &problem_);
+    if (!ok(status)) return status;
     if (problem_.heating_active) {
       const int i = problem_.count - 1;
       nominal_achieved_[i] = ws_->nominal.heat_integral_btu_ft2;
@@ -882,13 +890,15 @@ void Iteration::accept_candidate() {
   // initial program flies 10,100 lb deg/ft^2 at the end of coast 6), and asking guidance to remove
   // an excess of thousands of deadbands at once sends the step below the surface.
   if (!problem_.qbar_alpha_active && within_deadbands(problem_, nominal_achieved_)) {
-    activate_qbar_alpha_if_exceeded(ws_->mission, ws_->nominal, &problem_);
+    const Status status = activate_qbar_alpha_if_exceeded(ws_->mission, ws_->nominal, &problem_);
+    if (!ok(status)) return status;
     if (problem_.qbar_alpha_active) {
       const int i = problem_.count - 1;
       nominal_achieved_[i] = qbar_alpha_excess_s(ws_->mission, ws_->nominal);
       path_constraint_joined_ = true;
     }
   }
+  return Status::kOk;
 }
 
 // Guidance, as run() describes it. A failed backward run is returned; a step that never flew ends
@@ -913,7 +923,8 @@ Status Iteration::guidance_phase(int budget, Steering* steering_out) {
       if (flown ? attempt >= kGuidanceStepHalvings : attempt >= kCrashRecoveryHalvings) break;
     }
     if (ok(status)) {
-      accept_candidate();
+      status = accept_candidate();
+      if (!ok(status)) return status;
     } else {
       guidance_stuck_ = true;
     }
@@ -955,7 +966,8 @@ Status Iteration::optimization_phase(int budget, Steering* steering_out) {
     if (!improved) break;
     ++result_->successful_optimization_runs;
     const bool joined_before = path_constraint_joined_;
-    accept_candidate();
+    status = accept_candidate();
+    if (!ok(status)) return status;
     // A path constraint that joined at this nominal ends the phase: the next sizes its first attempt
     // anew (a join earlier, in guidance, leaves the halved attempt as it is).
     if (path_constraint_joined_ && !joined_before) first_attempt_ = true;
@@ -1013,7 +1025,10 @@ Status Iteration::run(const Mission& input) {
                                                : ok(status) && error_norm(problem_, candidate_achieved_) <=
                                                                    error_norm(problem_, nominal_achieved_);
   record(RunKind::kFinalGuidance, status, result_->final_guidance_met, 0.0);
-  if (final_accepted) accept_candidate();
+  if (final_accepted) {
+    status = accept_candidate();
+    if (!ok(status)) return status;
+  }
 
   result_->converged = guidance_converged && result_->optimization_runs > 0 &&
                        result_->optimization_stop == OptimizationStop::kImprovementBelowMinimum &&
