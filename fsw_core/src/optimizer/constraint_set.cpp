@@ -95,8 +95,9 @@ Status evaluate_constraints(const ConstraintSet& set, const Mission& mission, co
       double twice_energy = 0.0;
       ConstraintCode energy;
       Status status = twice_energy_code(&energy);
-      if (ok(status))
+      if (ok(status)) {
         status = constraint_value(mission.constants, mission.launch, energy, point, &twice_energy);
+      }
       if (!ok(status)) return status;
       achieved[i] = hyperbolic_excess_stand_in_ft_s(twice_energy, set.desired[i]);
       continue;
