@@ -637,9 +637,12 @@ TEST(MonteCarlo, DrawsThatTakeABlendedBurnTimeOrThrustBelowZeroAreTheSamplesName
     const auto draw = [&](std::uint64_t sample) {
       return counter_normal(seed, sample, static_cast<std::uint32_t>(c.code)) / 3.0;
     };
+    // The first sample whose draw the predicate accepts, among the first million (the narrowest
+    // window, stage 1's, holds about one draw in 230).
+    constexpr std::uint64_t kSearched = 1000000;
     const auto first_sample = [&](auto predicate) {
       std::uint64_t sample = 0;
-      while (!predicate(draw(sample))) ++sample;
+      while (sample < kSearched && !predicate(draw(sample))) ++sample;
       return sample;
     };
     f->data.count = 0;
@@ -659,6 +662,8 @@ TEST(MonteCarlo, DrawsThatTakeABlendedBurnTimeOrThrustBelowZeroAreTheSamplesName
     const std::uint64_t failing =
         first_sample([&](double z) { return z >= c.failing_draws_from && z < c.failing_draws_to; });
     const std::uint64_t building = first_sample([](double z) { return z > 0.05; });
+    ASSERT_LT(failing, kSearched);
+    ASSERT_LT(building, kSearched);
     EXPECT_EQ(build_monte_carlo_case(nominal, f->prepared, f->data, seed, failing, &f->workspace), c.status)
         << "sample " << failing << ", c = " << draw(failing);
     EXPECT_EQ(build_monte_carlo_case(nominal, f->prepared, f->data, seed, building, &f->workspace),
