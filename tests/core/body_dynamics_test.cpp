@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "support/reference_mission.hpp"
 #include "tolip/body/body_dynamics.hpp"
@@ -244,15 +245,61 @@ TEST(BodyDynamics, Sec7_GuardsNeverLetNaNOut) {
   EXPECT_EQ(f.control_x_lbf, 0.0);
   EXPECT_EQ(f.control_z_lbf, 0.0);
   EXPECT_TRUE(f.local_lbf.allFinite());
-  // Non-finite moments: follows the command, finite output.
+  // Non-finite moments: follows the command with a finite output, and says so by name (a NaN
+  // never passes as kOk, unlike "no moment at all" above).
   UnitMoments broken;
   broken.m_alpha_lbf_ft_per_rad = std::nan("");
   broken.m_delta_lbf_ft_per_rad = 1.0;
-  // A scale K_theta M_delta - M_alpha that is not finite takes the guard of "no moment at all"
-  // (kOk, the command followed); the moments' NaN is the caller's to name (unit_moments' inputs).
-  EXPECT_EQ(steady_state_attitude(AutopilotGains{1.0, 0.35}, broken, command, v, &a), Status::kOk);
+  EXPECT_EQ(steady_state_attitude(AutopilotGains{1.0, 0.35}, broken, command, v, &a),
+            Status::kBodyDynamicsNotFinite);
   EXPECT_TRUE(a.follows_command);
-  EXPECT_TRUE(std::isfinite(a.theta_rad) && std::isfinite(a.chi_rad));
+  EXPECT_TRUE(std::isfinite(a.theta_rad) && std::isfinite(a.chi_rad) &&
+              std::isfinite(a.pitch_deflection_rad));
+}
+
+// Sec. 7: every way a non-finite number can reach eqs. 7-6 and 7-7 (a unit moment, a gain, the
+// command, the velocity angles, an overflow of the quotient) is kBodyDynamicsNotFinite, from each
+// branch of the guards: the trimmable one, "no moment at all" and the untrimmable one.
+TEST(BodyDynamics, Sec7_NonFiniteInputsAreNamedOnEveryBranch) {
+  const double nan = std::nan("");
+  const double inf = std::numeric_limits<double>::infinity();
+  UnitMoments trimmable;  // K_theta M_delta - M_alpha > 0: eq. 7-6 is solved
+  trimmable.m_alpha_lbf_ft_per_rad = -2000.0;
+  trimmable.m_delta_lbf_ft_per_rad = 5000.0;
+  trimmable.control_lever_ft = 20.0;
+  const AutopilotGains gains{1.2, 0.35};
+  AutopilotCommand command;
+  command.theta_rad = 0.7;
+  const PlatformVelocityAngles v{0.6, 0.02};
+  SteadyAttitude a;
+  ASSERT_EQ(steady_state_attitude(gains, trimmable, command, v, &a), Status::kOk);  // the control
+  EXPECT_FALSE(a.follows_command);
+
+  UnitMoments m = trimmable;
+  m.m_delta_lbf_ft_per_rad = inf;
+  EXPECT_EQ(steady_state_attitude(gains, m, command, v, &a), Status::kBodyDynamicsNotFinite);
+  EXPECT_EQ(steady_state_attitude(AutopilotGains{1.2, nan}, trimmable, command, v, &a),
+            Status::kBodyDynamicsNotFinite);
+  AutopilotCommand bad = command;
+  bad.chi_rate_rad_s = nan;
+  EXPECT_EQ(steady_state_attitude(gains, trimmable, bad, v, &a), Status::kBodyDynamicsNotFinite);
+  EXPECT_TRUE(a.follows_command);
+  EXPECT_EQ(steady_state_attitude(gains, trimmable, command, PlatformVelocityAngles{nan, 0.02}, &a),
+            Status::kBodyDynamicsNotFinite);
+  UnitMoments huge = trimmable;  // finite inputs whose numerator M_alpha gamma_w overflows
+  huge.m_alpha_lbf_ft_per_rad = -1e300;
+  EXPECT_EQ(steady_state_attitude(gains, huge, command, PlatformVelocityAngles{-1e300, 0.0}, &a),
+            Status::kBodyDynamicsNotFinite);
+
+  // No moment at all, yet the command is not finite: not kOk either.
+  bad = command;
+  bad.theta_rad = nan;
+  EXPECT_EQ(steady_state_attitude(gains, UnitMoments{}, bad, v, &a), Status::kBodyDynamicsNotFinite);
+  // Untrimmable with a NaN command: still named as not finite (the output is what is wrong).
+  UnitMoments balanced = trimmable;
+  balanced.m_alpha_lbf_ft_per_rad = 6000.0;
+  EXPECT_EQ(steady_state_attitude(gains, balanced, command, v, &a), Status::kBodyDynamicsNotTrimmable);
+  EXPECT_EQ(steady_state_attitude(gains, balanced, bad, v, &a), Status::kBodyDynamicsNotFinite);
 }
 
 // ---- Sec. 11: platform velocity angles, CONTRL, force resolution ----------------------------------

@@ -130,13 +130,17 @@ Status steady_state_attitude(const AutopilotGains& gains, const UnitMoments& mom
   const double denominator = k_m_delta - m_alpha;
   const double scale = std::fabs(k_m_delta) + std::fabs(m_alpha);
 
+  // Each guard leaves the body on its command with a finite deflection; only "no moment at all" is
+  // normal flight, the others are named.
   Status status = Status::kOk;
-  bool follow = !(scale > 0.0) || !std::isfinite(scale) || !std::isfinite(q_m_delta);
-  if (!follow && !(denominator > kTrimTolerance * scale)) {
-    follow = true;
+  bool follow = true;
+  if (!std::isfinite(k_m_delta) || !std::isfinite(q_m_delta) || !std::isfinite(m_alpha)) {
+    status = Status::kBodyDynamicsNotFinite;
+  } else if (!(scale > 0.0)) {
+    // No moment at all: q = 0 and no thrust (kOk).
+  } else if (!(denominator > kTrimTolerance * scale)) {
     status = Status::kBodyDynamicsNotTrimmable;
-  }
-  if (!follow) {
+  } else {
     double pitch_numerator =
         k_m_delta * command.theta_rad - q_m_delta * command.theta_rate_rad_s - m_alpha * velocity.gamma_w_rad;
     double yaw_numerator =
@@ -147,6 +151,7 @@ Status steady_state_attitude(const AutopilotGains& gains, const UnitMoments& mom
     out->theta_rad = pitch_numerator / denominator;
     out->chi_rad = yaw_numerator / denominator;
     follow = !std::isfinite(out->theta_rad) || !std::isfinite(out->chi_rad);
+    if (follow) status = Status::kBodyDynamicsNotFinite;  // the command or the velocity angles
   }
   out->follows_command = follow;
   if (follow) {
@@ -158,6 +163,11 @@ Status steady_state_attitude(const AutopilotGains& gains, const UnitMoments& mom
                               gains.rate_gain_s * command.theta_rate_rad_s;
   out->yaw_deflection_rad =
       gains.position_gain * (command.chi_rad - out->chi_rad) - gains.rate_gain_s * command.chi_rate_rad_s;
+  // A command or gain that is not finite reaches the outputs on every path: named, never kOk.
+  if (!std::isfinite(out->theta_rad) || !std::isfinite(out->chi_rad) ||
+      !std::isfinite(out->pitch_deflection_rad) || !std::isfinite(out->yaw_deflection_rad)) {
+    status = Status::kBodyDynamicsNotFinite;
+  }
   return status;
 }
 

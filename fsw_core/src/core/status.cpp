@@ -94,6 +94,7 @@ const char* status_name(Status status) {
     case Status::kAdjustableParameterNotSupported: return "kAdjustableParameterNotSupported";
     case Status::kPayoffNotSupported: return "kPayoffNotSupported";
     case Status::kBodyDynamicsNotTrimmable: return "kBodyDynamicsNotTrimmable";
+    case Status::kBodyDynamicsNotFinite: return "kBodyDynamicsNotFinite";
     case Status::kNotPrepared: return "kNotPrepared";
     case Status::kTableImageTruncated: return "kTableImageTruncated";
     case Status::kTableImageSizeMismatch: return "kTableImageSizeMismatch";
@@ -386,6 +387,9 @@ const char* status_message(Status status) {
     case Status::kBodyDynamicsNotTrimmable:
       return "the autopilot has no steady state (Sec. 7): K_theta M_delta - M_alpha is not positive, a "
              "statically unstable vehicle with too little control moment";
+    case Status::kBodyDynamicsNotFinite:
+      return "the autopilot's steady state (Sec. 7, eqs. 7-6 and 7-7) is not a finite number: a unit moment "
+             "M_alpha or M_delta, an autopilot gain or the commanded attitude is not finite";
     case Status::kPayoffNotSupported:
       return "the payoff of data block 8 does not match option IP(1) or is not supported";
     case Status::kNotPrepared: return "the case was not prepared (prepare_case) before use";

@@ -115,9 +115,10 @@ struct SteadyAttitude {
 //   theta = (K_theta M_delta theta_c - K_q M_delta theta_c-dot - M_alpha gamma_w) / (K_theta M_delta -
 //   M_alpha) chi   = (K_theta M_delta chi_c   - K_q M_delta chi_c-dot   - M_alpha A_zw)    / (K_theta M_delta
 //   - M_alpha)
-// Guards: with no moment at all (q = 0 and no thrust) the body follows the command (kOk); when
-// K_theta M_delta - M_alpha is not positive against |K_theta M_delta| + |M_alpha| (no stable
-// steady state) it follows the command too and kBodyDynamicsNotTrimmable is returned.
+// Guards, each of which leaves the body on its command: with no moment at all (q = 0 and no thrust)
+// it returns kOk; when K_theta M_delta - M_alpha is not positive against |K_theta M_delta| +
+// |M_alpha| (no stable steady state), kBodyDynamicsNotTrimmable; when a unit moment, a gain, the
+// command or the solved attitude is not finite, kBodyDynamicsNotFinite (a NaN never passes as kOk).
 Status steady_state_attitude(const AutopilotGains& gains, const UnitMoments& moments,
                              const AutopilotCommand& command, const PlatformVelocityAngles& velocity,
                              SteadyAttitude* out);

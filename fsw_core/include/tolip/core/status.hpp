@@ -257,6 +257,8 @@ enum class Status : int {
   kDispersionStackedTablesNeedStage5,
   // Data block 4 against data block 5 and IP(9): the stage-5 yaw option IP(10) (Sec. 22)
   kStage5YawOptionInconsistent,
+  // Sec. 7: a unit moment, an autopilot gain or the command that reaches eqs. 7-6 and 7-7 not finite
+  kBodyDynamicsNotFinite,
 };
 
 const char* status_name(Status status);
