@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Canary for Verification_EveryRequirementIsTracedToAKnownTest: tests/scripts/traceability.py
 # check must flag a deliberately broken mapping (a requirement without a test, a requirement
-# naming a test that does not exist, a test source naming a requirement that does not exist),
+# naming a test that does not exist, a test source naming a requirement that does not exist, a
+# test of the build that no requirement traces: Canary.Other),
 # or the traceability check could pass on anything. Made in a scratch folder so that the
 # repository's own check never sees the broken tag.
 set -euo pipefail

@@ -8,8 +8,11 @@ test of add_test (shell-style wildcards allowed). A test source may also name re
 comment `Verifies: REQ-XXX-NNN`.
 
   check   fails (exit 1) when a requirement lists no test, when a listed name matches no known
-          test, when a requirement id is defined twice, or when a test source names an id the
-          file does not define.
+          test, when a requirement id is defined twice, when a test source names an id the
+          file does not define, or when a test of the build traces to no requirement (neither
+          listed on a `Tests:` line nor defined, `TEST(Suite, Name)`, in a source that names a
+          requirement): traceability both ways, so that no test proves a function nobody asked for
+          and no requirement goes without its proof.
   matrix  writes the matrix requirement -> tests -> last result (from ctest's JUnit output,
           `ctest --output-junit`) as Markdown.
 
@@ -33,6 +36,7 @@ FIELD = re.compile(r"^-\s+(Source|Method|Tests):\s*(.*)$")
 TAG = re.compile(r"Verifies:\s*((?:REQ-[A-Z]+-\d{3}[\s,]*)+)")
 TAG_ID = re.compile(r"REQ-[A-Z]+-\d{3}")
 ADD_TEST = re.compile(r"add_test\(\s*NAME\s+([A-Za-z0-9_.+-]+)")
+GTEST = re.compile(r"\bTEST(?:_F|_P)?\(\s*(\w+)\s*,\s*(\w+)\s*\)")
 SKIP_DIRS = {".git", "__pycache__"}
 
 
@@ -100,6 +104,18 @@ def tags(tag_dirs):
     return found
 
 
+def tagged_tests(tag_dirs):
+    """Returns the GoogleTest names `Suite.Name` defined in the sources that carry a `Verifies:` tag."""
+    found = set()
+    for root in tag_dirs:
+        for path in walk_files(root, (".cpp", ".cc")):
+            with open(path, encoding="utf-8", errors="replace") as f:
+                text = f.read()
+            if TAG.search(text):
+                found.update(f"{m.group(1)}.{m.group(2)}" for m in GTEST.finditer(text))
+    return found
+
+
 def matches(pattern, names):
     return sorted(n for n in names if fnmatch.fnmatchcase(n, pattern))
 
@@ -134,17 +150,19 @@ def check(args):
     for rid, files in sorted(tags(args.tags).items()):
         if rid not in ids:
             findings.append(f"{files[0]}: names an unknown requirement: {rid}")
+    traced = tagged_tests(args.tags) & built
+    for r in reqs:
+        for pattern in r["Tests"]:
+            traced.update(matches(pattern, built))
+    for name in sorted(built - traced):
+        findings.append(f"{args.requirements}: test {name} traces to no requirement")
     for line in findings:
         print(line)
     if findings:
         print(f"traceability: {len(findings)} finding(s)")
         return 1
-    traced = set()
-    for r in reqs:
-        for pattern in r["Tests"]:
-            traced.update(matches(pattern, built))
     print(f"traceability: {len(reqs)} requirements, each traced to a known test; "
-          f"{len(traced)} of {len(built)} tests of the build trace to a requirement")
+          f"each of the {len(built)} tests of the build traces to a requirement")
     return 0
 
 
